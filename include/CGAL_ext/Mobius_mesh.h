@@ -1,0 +1,1154 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Mobius_mesh: a halfedge mesh that holds orientable and non-orientable
+// 2-manifolds (with or without border) and walks both the same way.
+
+#ifndef CGAL_EXT_MOBIUS_MESH_H
+#define CGAL_EXT_MOBIUS_MESH_H
+
+#include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <iostream>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgMobiusMesh
+/// A typed index into one of the element arrays of a `Mobius_mesh`.
+template <class Tag>
+class Index
+{
+public:
+  using size_type = std::uint32_t;
+  static constexpr size_type null_value = (std::numeric_limits<size_type>::max)();
+
+  constexpr Index() = default;
+  constexpr explicit Index(size_type i) : idx_(i) {}
+  constexpr explicit Index(std::size_t i) : idx_(static_cast<size_type>(i)) {}
+  constexpr explicit Index(int i) : idx_(static_cast<size_type>(i)) {}
+
+  constexpr size_type idx() const { return idx_; }
+  constexpr explicit operator size_type() const { return idx_; }
+  constexpr bool is_valid() const { return idx_ != null_value; }
+  void reset() { idx_ = null_value; }
+
+  constexpr bool operator==(Index o) const { return idx_ == o.idx_; }
+  constexpr bool operator!=(Index o) const { return idx_ != o.idx_; }
+  constexpr bool operator<(Index o) const { return idx_ < o.idx_; }
+  constexpr bool operator>(Index o) const { return idx_ > o.idx_; }
+
+  friend std::ostream& operator<<(std::ostream& os, Index i)
+  {
+    os << Tag::prefix;
+    return i.is_valid() ? (os << i.idx_) : (os << "null");
+  }
+  friend std::size_t hash_value(Index i) { return std::hash<size_type>()(i.idx_); }
+
+private:
+  size_type idx_ = null_value;
+};
+
+struct Vertex_tag { static constexpr const char* prefix = "v"; };
+struct Halfedge_tag { static constexpr const char* prefix = "h"; };
+struct Edge_tag { static constexpr const char* prefix = "e"; };
+struct Face_tag { static constexpr const char* prefix = "f"; };
+
+using Vertex_index = Index<Vertex_tag>;
+using Halfedge_index = Index<Halfedge_tag>;
+using Edge_index = Index<Edge_tag>;
+using Face_index = Index<Face_tag>;
+
+/// \ingroup PkgMobiusMesh
+/// A dart is a halfedge together with an orientation bit. The unflipped dart
+/// walks the halfedge along the orientation of its face; the flipped dart is
+/// the same halfedge walked against it (source and target, next and prev swap).
+/// Links between darts make all orientable halfedge identities hold on
+/// non-orientable meshes too.
+class Dart
+{
+public:
+  using size_type = std::uint32_t;
+  static constexpr size_type null_value = (std::numeric_limits<size_type>::max)();
+
+  constexpr Dart() = default;
+  constexpr Dart(Halfedge_index h, bool flipped)
+    : bits_(h.is_valid() ? (h.idx() << 1) | size_type(flipped) : null_value)
+  {}
+  constexpr explicit Dart(Halfedge_index h) : Dart(h, false) {}
+
+  static constexpr Dart from_bits(size_type b)
+  {
+    Dart d;
+    d.bits_ = b;
+    return d;
+  }
+  constexpr size_type bits() const { return bits_; }
+  constexpr Halfedge_index halfedge() const
+  {
+    return is_valid() ? Halfedge_index(size_type(bits_ >> 1)) : Halfedge_index();
+  }
+  constexpr bool is_flipped() const { return (bits_ & 1u) != 0; }
+  constexpr Dart flipped() const { return from_bits(bits_ ^ 1u); }
+  constexpr bool is_valid() const { return bits_ != null_value; }
+
+  constexpr bool operator==(Dart o) const { return bits_ == o.bits_; }
+  constexpr bool operator!=(Dart o) const { return bits_ != o.bits_; }
+  constexpr bool operator<(Dart o) const { return bits_ < o.bits_; }
+
+  friend std::ostream& operator<<(std::ostream& os, Dart d)
+  {
+    if (!d.is_valid())
+      return os << "d:null";
+    return os << d.halfedge() << (d.is_flipped() ? "~" : "");
+  }
+  friend std::size_t hash_value(Dart d) { return std::hash<size_type>()(d.bits_); }
+
+private:
+  size_type bits_ = null_value;
+};
+
+namespace internal {
+
+// Random-access iterator over the indices [0, n) of one element kind.
+template <class I>
+class Index_iterator
+{
+public:
+  using iterator_category = std::random_access_iterator_tag;
+  using value_type = I;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const I*;
+  using reference = I;
+
+  Index_iterator() = default;
+  explicit Index_iterator(typename I::size_type i) : i_(i) {}
+
+  I operator*() const { return I(i_); }
+  I operator[](difference_type n) const { return I(typename I::size_type(i_ + n)); }
+  Index_iterator& operator++() { ++i_; return *this; }
+  Index_iterator operator++(int) { Index_iterator t = *this; ++i_; return t; }
+  Index_iterator& operator--() { --i_; return *this; }
+  Index_iterator operator--(int) { Index_iterator t = *this; --i_; return t; }
+  Index_iterator& operator+=(difference_type n) { i_ = typename I::size_type(i_ + n); return *this; }
+  Index_iterator& operator-=(difference_type n) { i_ = typename I::size_type(i_ - n); return *this; }
+  friend Index_iterator operator+(Index_iterator it, difference_type n) { return it += n; }
+  friend Index_iterator operator+(difference_type n, Index_iterator it) { return it += n; }
+  friend Index_iterator operator-(Index_iterator it, difference_type n) { return it -= n; }
+  friend difference_type operator-(Index_iterator a, Index_iterator b)
+  {
+    return difference_type(a.i_) - difference_type(b.i_);
+  }
+  bool operator==(Index_iterator o) const { return i_ == o.i_; }
+  bool operator!=(Index_iterator o) const { return i_ != o.i_; }
+  bool operator<(Index_iterator o) const { return i_ < o.i_; }
+
+private:
+  typename I::size_type i_ = 0;
+};
+
+template <class It>
+class Iterator_range
+{
+public:
+  Iterator_range(It b, It e) : b_(b), e_(e) {}
+  It begin() const { return b_; }
+  It end() const { return e_; }
+  std::size_t size() const { return std::size_t(std::distance(b_, e_)); }
+  bool empty() const { return b_ == e_; }
+
+private:
+  It b_, e_;
+};
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMesh
+///
+/// A halfedge data structure for polygon meshes that are 2-manifolds, with or
+/// without border, orientable or not.
+///
+/// Storage follows `CGAL::Surface_mesh`: index handles, struct-of-arrays
+/// connectivity, and named dynamic property maps for user data. Halfedges
+/// come in pairs per edge (`2e`, `2e+1`). Each face has its own orientation,
+/// and each edge has a *Möbius bit*, set when the two faces of the edge run
+/// along it in the same direction (a Möbius connection). Border halfedges
+/// have a null face; border edges are never Möbius.
+///
+/// All navigation goes through `Dart`s, for which the orientable identities
+/// hold on every mesh:
+/// `opposite(opposite(d)) == d`, `next(prev(d)) == d`,
+/// `target(opposite(d)) == source(d)`, `source(next(d)) == target(d)`.
+/// Circulating around a vertex with `opposite(next(d))` crosses Möbius edges
+/// and borders without special cases.
+///
+/// \tparam P the point type, for example `Kernel::Point_3` of any CGAL kernel.
+template <class P>
+class Mobius_mesh
+{
+public:
+  using Point = P;
+  using size_type = std::uint32_t;
+  using Vertex_index = CGAL_ext::Vertex_index;
+  using Halfedge_index = CGAL_ext::Halfedge_index;
+  using Edge_index = CGAL_ext::Edge_index;
+  using Face_index = CGAL_ext::Face_index;
+  using Dart = CGAL_ext::Dart;
+
+  template <class I, class T>
+  using Property_map = internal::Property_map<I, T>;
+
+  using Vertex_range = internal::Iterator_range<internal::Index_iterator<Vertex_index>>;
+  using Halfedge_range = internal::Iterator_range<internal::Index_iterator<Halfedge_index>>;
+  using Edge_range = internal::Iterator_range<internal::Index_iterator<Edge_index>>;
+  using Face_range = internal::Iterator_range<internal::Index_iterator<Face_index>>;
+
+  // ---------------------------------------------------------------- lifecycle
+
+  Mobius_mesh() { init_points(); }
+  Mobius_mesh(const Mobius_mesh& o) { *this = o; }
+  Mobius_mesh(Mobius_mesh&& o) noexcept { *this = std::move(o); }
+  Mobius_mesh& operator=(const Mobius_mesh& o)
+  {
+    if (this != &o) {
+      copy_connectivity(o);
+      vprops_ = o.vprops_;
+      hprops_ = o.hprops_;
+      eprops_ = o.eprops_;
+      fprops_ = o.fprops_;
+      points_ = Property_map<Vertex_index, Point>(vprops_.template get<Point>("v:point"));
+    }
+    return *this;
+  }
+  Mobius_mesh& operator=(Mobius_mesh&& o) noexcept
+  {
+    if (this != &o) {
+      v_halfedge_ = std::move(o.v_halfedge_);
+      h_target_ = std::move(o.h_target_);
+      h_next_ = std::move(o.h_next_);
+      h_prev_ = std::move(o.h_prev_);
+      h_face_ = std::move(o.h_face_);
+      e_mobius_ = std::move(o.e_mobius_);
+      f_halfedge_ = std::move(o.f_halfedge_);
+      vprops_ = std::move(o.vprops_);
+      hprops_ = std::move(o.hprops_);
+      eprops_ = std::move(o.eprops_);
+      fprops_ = std::move(o.fprops_);
+      points_ = o.points_;
+      o.clear();
+    }
+    return *this;
+  }
+
+  /// Removes all elements and all property maps but the point map.
+  void clear()
+  {
+    v_halfedge_.clear();
+    h_target_.clear();
+    h_next_.clear();
+    h_prev_.clear();
+    h_face_.clear();
+    e_mobius_.clear();
+    f_halfedge_.clear();
+    vprops_.clear();
+    hprops_.clear();
+    eprops_.clear();
+    fprops_.clear();
+    init_points();
+  }
+
+  /// Reserves storage for the given numbers of elements.
+  void reserve(size_type nv, size_type ne, size_type nf)
+  {
+    v_halfedge_.reserve(nv);
+    vprops_.reserve(nv);
+    h_target_.reserve(2 * std::size_t(ne));
+    h_next_.reserve(2 * std::size_t(ne));
+    h_prev_.reserve(2 * std::size_t(ne));
+    h_face_.reserve(2 * std::size_t(ne));
+    hprops_.reserve(2 * std::size_t(ne));
+    e_mobius_.reserve(ne);
+    eprops_.reserve(ne);
+    f_halfedge_.reserve(nf);
+    fprops_.reserve(nf);
+  }
+
+  /// Releases unused capacity.
+  void shrink_to_fit()
+  {
+    v_halfedge_.shrink_to_fit();
+    h_target_.shrink_to_fit();
+    h_next_.shrink_to_fit();
+    h_prev_.shrink_to_fit();
+    h_face_.shrink_to_fit();
+    e_mobius_.shrink_to_fit();
+    f_halfedge_.shrink_to_fit();
+    vprops_.shrink_to_fit();
+    hprops_.shrink_to_fit();
+    eprops_.shrink_to_fit();
+    fprops_.shrink_to_fit();
+  }
+
+  // ---------------------------------------------------------------- counts and ranges
+
+  size_type number_of_vertices() const { return size_type(v_halfedge_.size()); }
+  size_type number_of_halfedges() const { return size_type(h_target_.size()); }
+  size_type number_of_edges() const { return size_type(e_mobius_.size()); }
+  size_type number_of_faces() const { return size_type(f_halfedge_.size()); }
+  bool is_empty() const { return number_of_vertices() == 0; }
+
+  Vertex_range vertices() const { return range<Vertex_index>(number_of_vertices()); }
+  Halfedge_range halfedges() const { return range<Halfedge_index>(number_of_halfedges()); }
+  Edge_range edges() const { return range<Edge_index>(number_of_edges()); }
+  Face_range faces() const { return range<Face_index>(number_of_faces()); }
+
+  static constexpr Vertex_index null_vertex() { return Vertex_index(); }
+  static constexpr Halfedge_index null_halfedge() { return Halfedge_index(); }
+  static constexpr Edge_index null_edge() { return Edge_index(); }
+  static constexpr Face_index null_face() { return Face_index(); }
+  static constexpr Dart null_dart() { return Dart(); }
+
+  bool is_valid(Vertex_index v) const { return v.idx() < number_of_vertices(); }
+  bool is_valid(Halfedge_index h) const { return h.idx() < number_of_halfedges(); }
+  bool is_valid(Edge_index e) const { return e.idx() < number_of_edges(); }
+  bool is_valid(Face_index f) const { return f.idx() < number_of_faces(); }
+  bool is_valid(Dart d) const { return d.is_valid() && is_valid(d.halfedge()); }
+
+  // ---------------------------------------------------------------- darts
+
+  /// The dart of `h`; unflipped runs along the orientation of `h`'s face.
+  static constexpr Dart dart(Halfedge_index h, bool flipped = false) { return Dart(h, flipped); }
+  static constexpr Dart flip(Dart d) { return d.flipped(); }
+
+  Vertex_index target(Dart d) const
+  {
+    return d.is_flipped() ? source_of(d.halfedge()) : h_target_[d.halfedge().idx()];
+  }
+  Vertex_index source(Dart d) const
+  {
+    return d.is_flipped() ? h_target_[d.halfedge().idx()] : source_of(d.halfedge());
+  }
+  Dart next(Dart d) const
+  {
+    const size_type h = d.halfedge().idx();
+    return d.is_flipped() ? h_prev_[h].flipped() : h_next_[h];
+  }
+  Dart prev(Dart d) const
+  {
+    const size_type h = d.halfedge().idx();
+    return d.is_flipped() ? h_next_[h].flipped() : h_prev_[h];
+  }
+  /// The dart of the other halfedge of the edge that runs against `d`.
+  Dart opposite(Dart d) const
+  {
+    const size_type b = d.bits();
+    return Dart::from_bits((b ^ 2u) ^ size_type(e_mobius_[b >> 2]));
+  }
+  Face_index face(Dart d) const { return h_face_[d.halfedge().idx()]; }
+  Edge_index edge(Dart d) const { return Edge_index(size_type(d.bits() >> 2)); }
+  static Halfedge_index halfedge(Dart d) { return d.halfedge(); }
+
+  /// An incoming dart of `v` (target `v`); a border dart if `v` is on the border.
+  Dart halfedge(Vertex_index v) const { return v_halfedge_[v.idx()]; }
+  /// The unflipped dart of the stored halfedge of `f`.
+  Dart halfedge(Face_index f) const { return Dart(f_halfedge_[f.idx()], false); }
+  /// The unflipped dart of the first halfedge of `e`.
+  static Dart halfedge(Edge_index e) { return Dart(Halfedge_index(size_type(2 * e.idx())), false); }
+  static Halfedge_index halfedge(Edge_index e, unsigned i)
+  {
+    return Halfedge_index(size_type(2 * e.idx() + i));
+  }
+  static Edge_index edge(Halfedge_index h) { return Edge_index(size_type(h.idx() >> 1)); }
+  static Halfedge_index opposite_halfedge(Halfedge_index h) { return Halfedge_index(size_type(h.idx() ^ 1u)); }
+
+  Vertex_index target(Halfedge_index h) const { return target(dart(h)); }
+  Vertex_index source(Halfedge_index h) const { return source(dart(h)); }
+  Face_index face(Halfedge_index h) const { return h_face_[h.idx()]; }
+  Vertex_index vertex(Edge_index e, unsigned i) const
+  {
+    return i == 0 ? source(halfedge(e)) : target(halfedge(e));
+  }
+
+  // ---------------------------------------------------------------- queries
+
+  bool is_border(Dart d) const { return !h_face_[d.halfedge().idx()].is_valid(); }
+  bool is_border(Halfedge_index h) const { return !h_face_[h.idx()].is_valid(); }
+  bool is_border(Edge_index e) const
+  {
+    return is_border(halfedge(e, 0)) || is_border(halfedge(e, 1));
+  }
+  /// True if `v` is on the border or isolated.
+  bool is_border(Vertex_index v) const
+  {
+    const Dart d = v_halfedge_[v.idx()];
+    return !d.is_valid() || is_border(d);
+  }
+  bool is_isolated(Vertex_index v) const { return !v_halfedge_[v.idx()].is_valid(); }
+  /// True if the two faces of `e` run along it in the same direction.
+  bool is_mobius(Edge_index e) const { return e_mobius_[e.idx()] != 0; }
+  /// True if `v` is an end of a Möbius edge.
+  bool is_on_mobius_connection(Vertex_index v) const;
+
+  /// Number of incident edges.
+  size_type degree(Vertex_index v) const;
+  /// Number of sides.
+  size_type degree(Face_index f) const;
+
+  // ---------------------------------------------------------------- points and properties
+
+  const Point& point(Vertex_index v) const { return points_[v]; }
+  Point& point(Vertex_index v) { return points_[v]; }
+  Property_map<Vertex_index, Point> points() const { return points_; }
+
+  /// Adds a property map named `name` with value type `T`, or returns the
+  /// existing one; `second` tells whether it was created. If a map of that
+  /// name exists with another value type, returns a null map and `false`.
+  template <class I, class T>
+  std::pair<Property_map<I, T>, bool> add_property_map(const std::string& name, const T& t = T())
+  {
+    auto [array, created] = container<I>().template add<T>(name, t);
+    return {Property_map<I, T>(array), created};
+  }
+  /// The property map named `name` of value type `T`, if any.
+  template <class I, class T>
+  std::optional<Property_map<I, T>> property_map(const std::string& name) const
+  {
+    if (auto* array = container<I>().template get<T>(name))
+      return Property_map<I, T>(array);
+    return std::nullopt;
+  }
+  /// Removes a property map; the point map cannot be removed.
+  template <class I, class T>
+  bool remove_property_map(Property_map<I, T>& map)
+  {
+    if (!map || static_cast<const void*>(map.array()) == static_cast<const void*>(points_.array()))
+      return false;
+    const bool removed = container<I>().remove(map.array());
+    map = Property_map<I, T>();
+    return removed;
+  }
+  template <class I>
+  std::vector<std::string> properties() const { return container<I>().names(); }
+
+  // ---------------------------------------------------------------- construction
+
+  /// Adds an isolated vertex.
+  Vertex_index add_vertex(const Point& p = Point())
+  {
+    const Vertex_index v = add_vertex_record();
+    points_[v] = p;
+    return v;
+  }
+
+  /// Adds a face given its vertices in order. A face is refused (the mesh is
+  /// left unchanged and `null_face()` returned, with the reason in `*why`)
+  /// if it has fewer than three vertices, a repeated or invalid vertex, an
+  /// edge that already has two faces, or if it would make a vertex
+  /// non-manifold (join two separate fans, or touch a vertex whose fan is
+  /// closed). Faces may be added in any order that keeps every vertex's faces
+  /// one edge-connected fan; `polygon_soup_to_mobius_mesh()` accepts any order.
+  template <class VertexRange>
+  Face_index add_face(const VertexRange& vertices, std::string* why = nullptr);
+  Face_index add_face(std::initializer_list<Vertex_index> vertices, std::string* why = nullptr)
+  {
+    return add_face<std::initializer_list<Vertex_index>>(vertices, why);
+  }
+
+  /// Appends a disjoint copy of `other`; returns the offsets of its vertex,
+  /// edge and face indices in this mesh (halfedges are offset by twice the
+  /// edge offset). Property maps of the same name and type are copied.
+  struct Join_offsets { size_type vertices, edges, faces; };
+  Join_offsets join(const Mobius_mesh& other);
+
+  /// Reverses the orientation of face `f`: its halfedges change direction,
+  /// Möbius bits of its interior edges toggle, border links stay consistent.
+  void reverse_face_orientation(Face_index f);
+
+  // ---- low-level construction, as in Surface_mesh; the mesh may be invalid
+  //      until the caller has set every link.
+
+  Vertex_index add_vertex_record()
+  {
+    v_halfedge_.push_back(Dart());
+    vprops_.resize(v_halfedge_.size());
+    return Vertex_index(size_type(v_halfedge_.size() - 1));
+  }
+  /// Adds an edge with two unlinked halfedges `2e` (target `t0`) and `2e+1` (target `t1`).
+  Edge_index add_edge(Vertex_index t0, Vertex_index t1, bool mobius = false)
+  {
+    h_target_.push_back(t0);
+    h_target_.push_back(t1);
+    h_next_.resize(h_next_.size() + 2);
+    h_prev_.resize(h_prev_.size() + 2);
+    h_face_.resize(h_face_.size() + 2);
+    hprops_.resize(h_target_.size());
+    e_mobius_.push_back(mobius ? 1 : 0);
+    eprops_.resize(e_mobius_.size());
+    return Edge_index(size_type(e_mobius_.size() - 1));
+  }
+  Face_index add_face_record(Halfedge_index h = Halfedge_index())
+  {
+    f_halfedge_.push_back(h);
+    fprops_.resize(f_halfedge_.size());
+    return Face_index(size_type(f_halfedge_.size() - 1));
+  }
+  /// Resizes all element arrays at once (new elements are unlinked).
+  void resize(size_type nv, size_type ne, size_type nf)
+  {
+    v_halfedge_.resize(nv);
+    vprops_.resize(nv);
+    h_target_.resize(2 * std::size_t(ne));
+    h_next_.resize(2 * std::size_t(ne));
+    h_prev_.resize(2 * std::size_t(ne));
+    h_face_.resize(2 * std::size_t(ne));
+    hprops_.resize(2 * std::size_t(ne));
+    e_mobius_.resize(ne);
+    eprops_.resize(ne);
+    f_halfedge_.resize(nf);
+    fprops_.resize(nf);
+  }
+  /// Links `a` to `b`: afterwards `next(a) == b` and `prev(b) == a`.
+  void set_next(Dart a, Dart b)
+  {
+    if (a.is_flipped())
+      h_prev_[a.halfedge().idx()] = b.flipped();
+    else
+      h_next_[a.halfedge().idx()] = b;
+    if (b.is_flipped())
+      h_next_[b.halfedge().idx()] = a.flipped();
+    else
+      h_prev_[b.halfedge().idx()] = a;
+  }
+  void set_target(Halfedge_index h, Vertex_index v) { h_target_[h.idx()] = v; }
+  void set_face(Halfedge_index h, Face_index f) { h_face_[h.idx()] = f; }
+  void set_halfedge(Vertex_index v, Dart d) { v_halfedge_[v.idx()] = d; }
+  void set_halfedge(Face_index f, Halfedge_index h) { f_halfedge_[f.idx()] = h; }
+  void set_mobius(Edge_index e, bool m) { e_mobius_[e.idx()] = m ? 1 : 0; }
+  /// Makes `halfedge(v)` a border dart when `v` is on the border.
+  void adjust_border_halfedge(Vertex_index v);
+
+  // ---------------------------------------------------------------- validity
+
+  /// Checks every link identity; returns an empty string if the mesh is
+  /// valid, otherwise an explanation of the first failure found.
+  std::string validity_report() const;
+  /// `validity_report().empty()`, printing the report to `std::cerr` if `verbose`.
+  bool is_valid(bool verbose = false) const
+  {
+    const std::string report = validity_report();
+    if (verbose && !report.empty())
+      std::cerr << "Mobius_mesh is invalid: " << report << std::endl;
+    return report.empty();
+  }
+
+private:
+  template <class I>
+  static internal::Iterator_range<internal::Index_iterator<I>> range(size_type n)
+  {
+    return {internal::Index_iterator<I>(0), internal::Index_iterator<I>(n)};
+  }
+
+  // Border edges are never Möbius, so the source of a halfedge is the target
+  // of its partner, except across a Möbius edge, where it is the target of
+  // the previous halfedge in its face (face cycles are never flipped).
+  Vertex_index source_of(Halfedge_index h) const
+  {
+    const size_type i = h.idx();
+    if (e_mobius_[i >> 1] == 0)
+      return h_target_[i ^ 1u];
+    return h_target_[h_prev_[i].halfedge().idx()];
+  }
+
+  void init_points()
+  {
+    points_ = Property_map<Vertex_index, Point>(vprops_.template add<Point>("v:point", Point()).first);
+  }
+
+  void copy_connectivity(const Mobius_mesh& o)
+  {
+    v_halfedge_ = o.v_halfedge_;
+    h_target_ = o.h_target_;
+    h_next_ = o.h_next_;
+    h_prev_ = o.h_prev_;
+    h_face_ = o.h_face_;
+    e_mobius_ = o.e_mobius_;
+    f_halfedge_ = o.f_halfedge_;
+  }
+
+  void reverse_border_halfedge(Halfedge_index g);
+
+  template <class I>
+  internal::Property_container& container()
+  {
+    return const_cast<internal::Property_container&>(std::as_const(*this).template container<I>());
+  }
+  template <class I>
+  const internal::Property_container& container() const
+  {
+    if constexpr (std::is_same_v<I, Vertex_index>)
+      return vprops_;
+    else if constexpr (std::is_same_v<I, Halfedge_index>)
+      return hprops_;
+    else if constexpr (std::is_same_v<I, Edge_index>)
+      return eprops_;
+    else {
+      static_assert(std::is_same_v<I, Face_index>, "property maps are keyed by element indices");
+      return fprops_;
+    }
+  }
+
+  // Connectivity, one array per attribute.
+  std::vector<Dart> v_halfedge_;
+  std::vector<Vertex_index> h_target_;
+  std::vector<Dart> h_next_;
+  std::vector<Dart> h_prev_;
+  std::vector<Face_index> h_face_;
+  std::vector<std::uint8_t> e_mobius_;
+  std::vector<Halfedge_index> f_halfedge_;
+
+  internal::Property_container vprops_, hprops_, eprops_, fprops_;
+  Property_map<Vertex_index, Point> points_;
+};
+
+// ============================================================================
+// Circulators: ranges over darts that follow one step function until they
+// come back to the start. They work on borders and across Möbius edges.
+// ============================================================================
+
+namespace internal {
+
+template <class Mesh, class Step, class Value>
+class Dart_cycle_range
+{
+public:
+  class iterator
+  {
+  public:
+    using iterator_category = std::forward_iterator_tag;
+    using value_type = decltype(Value()(std::declval<const Mesh&>(), Dart()));
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = value_type;
+
+    iterator() = default;
+    iterator(const Mesh* m, Dart start, Dart cur, bool done)
+      : m_(m), start_(start), cur_(cur), done_(done)
+    {}
+
+    reference operator*() const { return Value()(*m_, cur_); }
+    iterator& operator++()
+    {
+      cur_ = Step()(*m_, cur_);
+      if (cur_ == start_)
+        done_ = true;
+      return *this;
+    }
+    iterator operator++(int)
+    {
+      iterator t = *this;
+      ++*this;
+      return t;
+    }
+    bool operator==(const iterator& o) const { return done_ == o.done_ && cur_ == o.cur_; }
+    bool operator!=(const iterator& o) const { return !(*this == o); }
+    Dart dart() const { return cur_; }
+
+  private:
+    const Mesh* m_ = nullptr;
+    Dart start_, cur_;
+    bool done_ = true;
+  };
+
+  Dart_cycle_range(const Mesh& m, Dart start) : m_(&m), start_(start) {}
+  iterator begin() const { return iterator(m_, start_, start_, !start_.is_valid()); }
+  iterator end() const { return iterator(m_, start_, start_, true); }
+  std::size_t size() const { return std::size_t(std::distance(begin(), end())); }
+  bool empty() const { return !start_.is_valid(); }
+
+private:
+  const Mesh* m_;
+  Dart start_;
+};
+
+struct Next_step { template <class M> Dart operator()(const M& m, Dart d) const { return m.next(d); } };
+struct Prev_step { template <class M> Dart operator()(const M& m, Dart d) const { return m.prev(d); } };
+// Incoming darts of a vertex, in the rotational direction of the start dart's face.
+struct Around_target_step
+{
+  template <class M> Dart operator()(const M& m, Dart d) const { return m.opposite(m.next(d)); }
+};
+struct Around_target_reverse_step
+{
+  template <class M> Dart operator()(const M& m, Dart d) const { return m.prev(m.opposite(d)); }
+};
+
+struct Dart_value { template <class M> Dart operator()(const M&, Dart d) const { return d; } };
+struct Opposite_value { template <class M> Dart operator()(const M& m, Dart d) const { return m.opposite(d); } };
+struct Target_value
+{
+  template <class M> Vertex_index operator()(const M& m, Dart d) const { return m.target(d); }
+};
+struct Source_value { template <class M> Vertex_index operator()(const M& m, Dart d) const { return m.source(d); } };
+struct Face_value { template <class M> Face_index operator()(const M& m, Dart d) const { return m.face(d); } };
+struct Opposite_face_value
+{
+  template <class M> Face_index operator()(const M& m, Dart d) const { return m.face(m.opposite(d)); }
+};
+struct Edge_value { template <class M> Edge_index operator()(const M& m, Dart d) const { return m.edge(d); } };
+
+} // namespace internal
+
+/// \name Circulators
+/// Ranges usable in a range-`for`, as `CGAL::halfedges_around_target()` and
+/// friends are for `Surface_mesh`. Functions taking a vertex start at
+/// `halfedge(v)` (a border dart if `v` is on the border); those taking a
+/// dart start there. `reverse = true` walks the other way round.
+/// @{
+
+/// Darts of the face (or border loop) of `d`, starting at `d`.
+template <class P>
+auto halfedges_around_face(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Dart_value>(m, d);
+}
+template <class P>
+auto halfedges_around_face_reverse(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Prev_step, internal::Dart_value>(m, d);
+}
+template <class P>
+auto vertices_around_face(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Target_value>(m, d);
+}
+/// Faces across the edges of the face of `d` (null faces across border edges).
+template <class P>
+auto faces_around_face(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Opposite_face_value>(m, d);
+}
+template <class P>
+auto edges_around_face(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Edge_value>(m, d);
+}
+template <class P>
+auto halfedges_around_face(Face_index f, const Mobius_mesh<P>& m) { return halfedges_around_face(m.halfedge(f), m); }
+template <class P>
+auto vertices_around_face(Face_index f, const Mobius_mesh<P>& m) { return vertices_around_face(m.halfedge(f), m); }
+template <class P>
+auto faces_around_face(Face_index f, const Mobius_mesh<P>& m) { return faces_around_face(m.halfedge(f), m); }
+template <class P>
+auto edges_around_face(Face_index f, const Mobius_mesh<P>& m) { return edges_around_face(m.halfedge(f), m); }
+
+/// Incoming darts of `target(d)`, starting at `d`.
+template <class P>
+auto halfedges_around_target(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Dart_value>(m, d);
+}
+template <class P>
+auto halfedges_around_target_reverse(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_reverse_step, internal::Dart_value>(m, d);
+}
+/// Outgoing darts of `target(d)`: the opposites of the incoming ones.
+template <class P>
+auto halfedges_around_source(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Opposite_value>(m, d);
+}
+/// Faces around `target(d)`; a null face stands for the border gap.
+template <class P>
+auto faces_around_target(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Face_value>(m, d);
+}
+/// Vertices adjacent to `target(d)`.
+template <class P>
+auto vertices_around_target(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Source_value>(m, d);
+}
+template <class P>
+auto edges_around_target(Dart d, const Mobius_mesh<P>& m)
+{
+  return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Edge_value>(m, d);
+}
+
+template <class P>
+auto halfedges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return halfedges_around_target(m.halfedge(v), m); }
+template <class P>
+auto halfedges_around_target_reverse(Vertex_index v, const Mobius_mesh<P>& m)
+{
+  return halfedges_around_target_reverse(m.halfedge(v), m);
+}
+template <class P>
+auto halfedges_around_source(Vertex_index v, const Mobius_mesh<P>& m) { return halfedges_around_source(m.halfedge(v), m); }
+template <class P>
+auto faces_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return faces_around_target(m.halfedge(v), m); }
+template <class P>
+auto vertices_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return vertices_around_target(m.halfedge(v), m); }
+template <class P>
+auto edges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return edges_around_target(m.halfedge(v), m); }
+
+/// @}
+
+// ============================================================================
+// Out-of-line members
+// ============================================================================
+
+template <class P>
+bool Mobius_mesh<P>::is_on_mobius_connection(Vertex_index v) const
+{
+  for (Edge_index e : edges_around_target(v, *this))
+    if (is_mobius(e))
+      return true;
+  return false;
+}
+
+template <class P>
+typename Mobius_mesh<P>::size_type Mobius_mesh<P>::degree(Vertex_index v) const
+{
+  return size_type(halfedges_around_target(halfedge(v), *this).size());
+}
+
+template <class P>
+typename Mobius_mesh<P>::size_type Mobius_mesh<P>::degree(Face_index f) const
+{
+  return size_type(halfedges_around_face(halfedge(f), *this).size());
+}
+
+template <class P>
+void Mobius_mesh<P>::adjust_border_halfedge(Vertex_index v)
+{
+  const Dart start = v_halfedge_[v.idx()];
+  if (!start.is_valid())
+    return;
+  for (Dart d : halfedges_around_target(start, *this)) {
+    if (is_border(d)) {
+      v_halfedge_[v.idx()] = d;
+      return;
+    }
+  }
+}
+
+template <class P>
+template <class VertexRange>
+typename Mobius_mesh<P>::Face_index
+Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
+{
+  const std::vector<Vertex_index> vs(std::begin(vertex_range), std::end(vertex_range));
+  const std::size_t n = vs.size();
+  auto refuse = [&](const std::string& reason) {
+    if (why)
+      *why = reason;
+    return null_face();
+  };
+  if (n < 3)
+    return refuse("a face needs at least three vertices");
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!is_valid(vs[i]))
+      return refuse("vertex index " + std::to_string(vs[i].idx()) + " is not in the mesh");
+    for (std::size_t j = 0; j < i; ++j)
+      if (vs[i] == vs[j])
+        return refuse("vertex v" + std::to_string(vs[i].idx()) + " is repeated in the face");
+  }
+
+  // Existing dart from vs[i] to vs[i+1], if any (found around vs[i+1]).
+  std::vector<Dart> existing(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vertex_index a = vs[i], b = vs[(i + 1) % n];
+    if (is_isolated(b))
+      continue;
+    for (Dart d : halfedges_around_target(halfedge(b), *this)) {
+      if (source(d) == a) {
+        const Edge_index e = edge(d);
+        if (!is_border(e))
+          return refuse("edge (v" + std::to_string(a.idx()) + ", v" + std::to_string(b.idx()) +
+                        ") already has two faces");
+        existing[i] = d;
+        break;
+      }
+    }
+  }
+
+  // A vertex keeps one fan: an isolated vertex is free; a border vertex takes
+  // the new face only in its gap, i.e. through at least one of its two border
+  // edges; a vertex with a closed fan takes nothing.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vertex_index v = vs[i];
+    if (is_isolated(v))
+      continue;
+    const std::string name = "v" + std::to_string(v.idx());
+    if (!is_border(v))
+      return refuse("vertex " + name + " is interior; another face would make it non-manifold");
+    const bool in_edge = existing[(i + n - 1) % n].is_valid();
+    const bool out_edge = existing[i].is_valid();
+    if (!in_edge && !out_edge)
+      return refuse("the face would give vertex " + name + " a second fan (non-manifold vertex)");
+  }
+
+  // Commit. New edges get the face halfedge 2e and a border halfedge 2e+1.
+  const Face_index f = add_face_record();
+  std::vector<Halfedge_index> face_halfedges(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vertex_index a = vs[i], b = vs[(i + 1) % n];
+    if (!existing[i].is_valid()) {
+      const Edge_index e = add_edge(b, a);
+      face_halfedges[i] = halfedge(e, 0);
+      continue;
+    }
+    // Take over the border halfedge of the existing edge.
+    const Halfedge_index g = is_border(existing[i].halfedge()) ? existing[i].halfedge()
+                                                                 : opposite_halfedge(existing[i].halfedge());
+    const Halfedge_index h_other = opposite_halfedge(g);
+    // The old face runs along the edge a->b too: a Möbius connection.
+    const bool mobius = (h_target_[h_other.idx()] == b);
+    h_target_[g.idx()] = b;
+    e_mobius_[edge(g).idx()] = mobius ? 1 : 0;
+    face_halfedges[i] = g;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    h_face_[face_halfedges[i].idx()] = f;
+    set_next(dart(face_halfedges[i]), dart(face_halfedges[(i + 1) % n]));
+  }
+  f_halfedge_[f.idx()] = face_halfedges[0];
+
+  // Relink the border at each vertex of the face. With one fan per vertex, a
+  // border vertex has exactly two border halfedges; walking the fan through
+  // faces from the new corner finds them.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vertex_index v = vs[(i + 1) % n];
+    const Dart corner = dart(face_halfedges[i]); // target v
+    Dart in = corner;
+    for (;;) {
+      const Dart o = opposite(next(in));
+      if (is_border(o)) {
+        in = o;
+        break;
+      }
+      in = o;
+      if (in == corner)
+        break;
+    }
+    if (!is_border(in)) {
+      v_halfedge_[v.idx()] = corner;
+      continue;
+    }
+    Dart out = opposite(corner); // source v
+    while (!is_border(out))
+      out = opposite(prev(out));
+    set_next(in, out);
+    v_halfedge_[v.idx()] = in;
+  }
+  return f;
+}
+
+template <class P>
+typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
+{
+  const Join_offsets off{number_of_vertices(), number_of_edges(), number_of_faces()};
+  const size_type hoff = 2 * off.edges;
+  auto shift_dart = [hoff](Dart d) {
+    return d.is_valid() ? Dart::from_bits(d.bits() + 2 * hoff) : d;
+  };
+  for (Dart d : o.v_halfedge_)
+    v_halfedge_.push_back(shift_dart(d));
+  for (Vertex_index v : o.h_target_)
+    h_target_.push_back(Vertex_index(size_type(v.idx() + off.vertices)));
+  for (Dart d : o.h_next_)
+    h_next_.push_back(shift_dart(d));
+  for (Dart d : o.h_prev_)
+    h_prev_.push_back(shift_dart(d));
+  for (Face_index f : o.h_face_)
+    h_face_.push_back(f.is_valid() ? Face_index(size_type(f.idx() + off.faces)) : f);
+  e_mobius_.insert(e_mobius_.end(), o.e_mobius_.begin(), o.e_mobius_.end());
+  for (Halfedge_index h : o.f_halfedge_)
+    f_halfedge_.push_back(Halfedge_index(size_type(h.idx() + hoff)));
+  vprops_.append(o.vprops_);
+  hprops_.append(o.hprops_);
+  eprops_.append(o.eprops_);
+  fprops_.append(o.fprops_);
+  points_ = Property_map<Vertex_index, Point>(vprops_.template get<Point>("v:point"));
+  return off;
+}
+
+template <class P>
+void Mobius_mesh<P>::reverse_border_halfedge(Halfedge_index g)
+{
+  const Dart d = dart(g);
+  const Dart old_next = next(d), old_prev = prev(d);
+  // What was the dart (g, unflipped) is now (g, flipped).
+  h_target_[g.idx()] = source(d);
+  set_next(d.flipped(), old_next);
+  set_next(old_prev, d.flipped());
+}
+
+template <class P>
+void Mobius_mesh<P>::reverse_face_orientation(Face_index f)
+{
+  std::vector<Halfedge_index> hs;
+  std::vector<Vertex_index> sources;
+  for (Dart d : halfedges_around_face(halfedge(f), *this)) {
+    hs.push_back(d.halfedge());
+    sources.push_back(source(d));
+  }
+  // Border edges stay non-Möbius: their border halfedges turn round too.
+  std::vector<Halfedge_index> reversed = hs;
+  for (Halfedge_index h : hs) {
+    const Halfedge_index g = opposite_halfedge(h);
+    if (is_border(g)) {
+      reverse_border_halfedge(g);
+      reversed.push_back(g);
+    }
+  }
+  for (std::size_t i = 0; i < hs.size(); ++i) {
+    const size_type h = hs[i].idx();
+    h_target_[h] = sources[i];
+    std::swap(h_next_[h], h_prev_[h]);
+  }
+  for (Halfedge_index h : hs) {
+    const Face_index other = face(opposite_halfedge(h));
+    if (other.is_valid() && other != f)
+      e_mobius_[edge(h).idx()] ^= 1u;
+  }
+  // A vertex dart on a turned halfedge names the same walk with the other bit.
+  for (std::size_t i = 0; i < hs.size(); ++i) {
+    Dart& vd = v_halfedge_[sources[i].idx()];
+    if (std::find(reversed.begin(), reversed.end(), vd.halfedge()) != reversed.end())
+      vd = vd.flipped();
+  }
+}
+
+template <class P>
+std::string Mobius_mesh<P>::validity_report() const
+{
+  std::ostringstream out;
+  const size_type nv = number_of_vertices(), nh = number_of_halfedges(), nf = number_of_faces();
+  if (h_next_.size() != nh || h_prev_.size() != nh || h_face_.size() != nh || nh != 2 * e_mobius_.size())
+    return "connectivity arrays have inconsistent sizes";
+  if (vprops_.size() != nv || hprops_.size() != nh || eprops_.size() != number_of_edges() ||
+      fprops_.size() != nf)
+    return "property arrays have inconsistent sizes";
+
+  for (size_type i = 0; i < nh; ++i) {
+    const Halfedge_index h(i);
+    if (!is_valid(h_target_[i]))
+      return (out << h << " has an invalid target", out.str());
+    if (!is_valid(h_next_[i]) || !is_valid(h_prev_[i]))
+      return (out << h << " has an invalid next or prev link", out.str());
+    if (h_face_[i].is_valid() && !is_valid(h_face_[i]))
+      return (out << h << " has an invalid face", out.str());
+  }
+  for (size_type e = 0; e < number_of_edges(); ++e) {
+    const Halfedge_index h0(2 * e), h1(2 * e + 1);
+    if (is_border(h0) && is_border(h1))
+      return (out << Edge_index(e) << " has no face", out.str());
+    if (is_mobius(Edge_index(e)) && (is_border(h0) || is_border(h1)))
+      return (out << "border " << Edge_index(e) << " is marked Möbius", out.str());
+  }
+  for (size_type i = 0; i < nh; ++i) {
+    for (bool flipped : {false, true}) {
+      const Dart d(Halfedge_index(i), flipped);
+      if (next(prev(d)) != d)
+        return (out << "next(prev(" << d << ")) != " << d, out.str());
+      if (prev(next(d)) != d)
+        return (out << "prev(next(" << d << ")) != " << d, out.str());
+      if (opposite(opposite(d)) != d)
+        return (out << "opposite(opposite(" << d << ")) != " << d, out.str());
+      if (source(d) == target(d))
+        return (out << d << " is a loop at " << target(d), out.str());
+      if (target(opposite(d)) != source(d))
+        return (out << "target(opposite(" << d << ")) != source(" << d << ")", out.str());
+      if (source(next(d)) != target(d))
+        return (out << "source(next(" << d << ")) != target(" << d << ")", out.str());
+      if (face(next(d)) != face(d))
+        return (out << "next(" << d << ") lies in another face", out.str());
+      if (!is_border(d) && next(d).is_flipped() != d.is_flipped())
+        return (out << "the cycle of face " << face(d) << " mixes orientations at " << d, out.str());
+    }
+  }
+  // Face cycles: each face's halfedges are exactly those whose face it is.
+  std::vector<size_type> face_size(nf, 0);
+  for (size_type i = 0; i < nh; ++i)
+    if (h_face_[i].is_valid())
+      ++face_size[h_face_[i].idx()];
+  for (size_type f = 0; f < nf; ++f) {
+    const Halfedge_index h = f_halfedge_[f];
+    if (!is_valid(h) || face(h) != Face_index(f))
+      return (out << Face_index(f) << " has a halfedge of another face", out.str());
+    size_type k = 0;
+    for (Dart d : halfedges_around_face(dart(h), *this)) {
+      (void)d;
+      if (++k > face_size[f])
+        break;
+    }
+    if (k != face_size[f])
+      return (out << "the cycle of " << Face_index(f) << " has " << k << " halfedges, but " << face_size[f]
+                  << " halfedges name it",
+              out.str());
+    if (k < 3)
+      return (out << Face_index(f) << " has fewer than three sides", out.str());
+  }
+  // Vertices: one fan each, seen from the stored dart; border vertices store a border dart.
+  std::vector<size_type> incident(nv, 0);
+  for (size_type e = 0; e < number_of_edges(); ++e) {
+    ++incident[vertex(Edge_index(e), 0).idx()];
+    ++incident[vertex(Edge_index(e), 1).idx()];
+  }
+  for (size_type i = 0; i < nv; ++i) {
+    const Vertex_index v(i);
+    const Dart d = v_halfedge_[i];
+    if (!d.is_valid()) {
+      if (incident[i] != 0)
+        return (out << v << " has edges but no halfedge", out.str());
+      continue;
+    }
+    if (!is_valid(d) || target(d) != v)
+      return (out << "halfedge(" << v << ") does not end at it", out.str());
+    size_type k = 0, border = 0;
+    for (Dart c : halfedges_around_target(d, *this)) {
+      if (is_border(c))
+        ++border;
+      if (++k > incident[i])
+        break;
+    }
+    if (k != incident[i])
+      return (out << v << " has " << incident[i] << " edges but its fan reaches " << k
+                  << " (non-manifold vertex)",
+              out.str());
+    if (border > 1)
+      return (out << v << " has " << border << " border gaps (non-manifold vertex)", out.str());
+    if (border == 1 && !is_border(d))
+      return (out << v << " is on the border but halfedge(" << v << ") is not a border dart", out.str());
+  }
+  return std::string();
+}
+
+} // namespace CGAL_ext
+
+namespace std {
+template <class Tag>
+struct hash<CGAL_ext::Index<Tag>>
+{
+  std::size_t operator()(CGAL_ext::Index<Tag> i) const { return hash_value(i); }
+};
+template <>
+struct hash<CGAL_ext::Dart>
+{
+  std::size_t operator()(CGAL_ext::Dart d) const { return hash_value(d); }
+};
+} // namespace std
+
+#endif // CGAL_EXT_MOBIUS_MESH_H

@@ -1,0 +1,246 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Type-erased, named struct-of-arrays storage for the per-element properties
+// of Mobius_mesh (the same idea as Surface_mesh's Property_container).
+
+#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_PROPERTY_CONTAINER_H
+#define CGAL_EXT_MOBIUS_MESH_INTERNAL_PROPERTY_CONTAINER_H
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <typeinfo>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace internal {
+
+class Base_property_array
+{
+public:
+  explicit Base_property_array(std::string name) : name_(std::move(name)) {}
+  virtual ~Base_property_array() = default;
+
+  virtual void resize(std::size_t n) = 0;
+  virtual void reserve(std::size_t n) = 0;
+  virtual void shrink_to_fit() = 0;
+  // Appends `n` elements of `other` (same type), starting at its index `from`.
+  virtual void append_from(const Base_property_array& other, std::size_t from, std::size_t n) = 0;
+  // Copies element `from` onto element `to`.
+  virtual void copy_element(std::size_t from, std::size_t to) = 0;
+  virtual std::unique_ptr<Base_property_array> clone() const = 0;
+  virtual std::unique_ptr<Base_property_array> empty_clone() const = 0;
+  virtual const std::type_info& value_type() const = 0;
+
+  const std::string& name() const { return name_; }
+
+private:
+  std::string name_;
+};
+
+template <class T>
+class Property_array final : public Base_property_array
+{
+public:
+  Property_array(std::string name, T default_value)
+    : Base_property_array(std::move(name)), default_(std::move(default_value))
+  {}
+
+  void resize(std::size_t n) override { data_.resize(n, default_); }
+  void reserve(std::size_t n) override { data_.reserve(n); }
+  void shrink_to_fit() override { data_.shrink_to_fit(); }
+  void append_from(const Base_property_array& other, std::size_t from, std::size_t n) override
+  {
+    const auto& o = static_cast<const Property_array&>(other);
+    data_.insert(data_.end(), o.data_.begin() + from, o.data_.begin() + from + n);
+  }
+  void copy_element(std::size_t from, std::size_t to) override { data_[to] = data_[from]; }
+  std::unique_ptr<Base_property_array> clone() const override
+  {
+    return std::make_unique<Property_array>(*this);
+  }
+  std::unique_ptr<Base_property_array> empty_clone() const override
+  {
+    return std::make_unique<Property_array>(name(), default_);
+  }
+  const std::type_info& value_type() const override { return typeid(T); }
+
+  std::vector<T>& data() { return data_; }
+  const std::vector<T>& data() const { return data_; }
+  const T& default_value() const { return default_; }
+
+private:
+  std::vector<T> data_;
+  T default_;
+};
+
+// A lightweight handle on one property array: a model of LvaluePropertyMap.
+// It stays valid while the property exists, across element insertions.
+template <class Key, class T>
+class Property_map
+{
+public:
+  using key_type = Key;
+  using value_type = T;
+  using reference = T&;
+  using category = boost::lvalue_property_map_tag;
+
+  Property_map() = default;
+  explicit Property_map(Property_array<T>* array) : array_(array) {}
+
+  reference operator[](Key k) const { return array_->data()[k.idx()]; }
+  std::vector<T>& data() const { return array_->data(); }
+  explicit operator bool() const { return array_ != nullptr; }
+  const std::string& name() const { return array_->name(); }
+
+  friend reference get(const Property_map& m, Key k) { return m[k]; }
+  friend void put(const Property_map& m, Key k, const T& v) { m[k] = v; }
+
+  bool operator==(const Property_map& o) const { return array_ == o.array_; }
+  bool operator!=(const Property_map& o) const { return array_ != o.array_; }
+
+  Property_array<T>* array() const { return array_; }
+
+private:
+  Property_array<T>* array_ = nullptr;
+};
+
+// The named arrays of one element kind; all arrays always have the same size.
+class Property_container
+{
+public:
+  Property_container() = default;
+  Property_container(const Property_container& o) { *this = o; }
+  Property_container(Property_container&&) noexcept = default;
+  Property_container& operator=(const Property_container& o)
+  {
+    if (this == &o)
+      return *this;
+    arrays_.clear();
+    arrays_.reserve(o.arrays_.size());
+    for (const auto& a : o.arrays_)
+      arrays_.push_back(a->clone());
+    size_ = o.size_;
+    return *this;
+  }
+  Property_container& operator=(Property_container&&) noexcept = default;
+
+  std::size_t size() const { return size_; }
+
+  void resize(std::size_t n)
+  {
+    for (auto& a : arrays_)
+      a->resize(n);
+    size_ = n;
+  }
+  void reserve(std::size_t n)
+  {
+    for (auto& a : arrays_)
+      a->reserve(n);
+  }
+  void shrink_to_fit()
+  {
+    for (auto& a : arrays_)
+      a->shrink_to_fit();
+  }
+  void clear()
+  {
+    arrays_.clear();
+    size_ = 0;
+  }
+  void copy_element(std::size_t from, std::size_t to)
+  {
+    for (auto& a : arrays_)
+      a->copy_element(from, to);
+  }
+
+  // Appends all elements of `other`; arrays of the same name and type are
+  // copied, others get their default values; arrays only in `other` are added.
+  void append(const Property_container& other)
+  {
+    const std::size_t old_size = size_;
+    for (const auto& oa : other.arrays_) {
+      if (find(oa->name(), oa->value_type()) == nullptr) {
+        auto a = oa->empty_clone();
+        a->resize(old_size);
+        arrays_.push_back(std::move(a));
+      }
+    }
+    for (auto& a : arrays_) {
+      if (const Base_property_array* oa = other.find(a->name(), a->value_type()))
+        a->append_from(*oa, 0, other.size_);
+      else
+        a->resize(old_size + other.size_);
+    }
+    size_ = old_size + other.size_;
+  }
+
+  template <class T>
+  std::pair<Property_array<T>*, bool> add(const std::string& name, const T& default_value)
+  {
+    if (Base_property_array* a = find_by_name(name)) {
+      if (a->value_type() == typeid(T))
+        return {static_cast<Property_array<T>*>(a), false};
+      return {nullptr, false};
+    }
+    auto array = std::make_unique<Property_array<T>>(name, default_value);
+    array->resize(size_);
+    Property_array<T>* raw = array.get();
+    arrays_.push_back(std::move(array));
+    return {raw, true};
+  }
+
+  template <class T>
+  Property_array<T>* get(const std::string& name) const
+  {
+    return static_cast<Property_array<T>*>(find(name, typeid(T)));
+  }
+
+  bool remove(const Base_property_array* array)
+  {
+    for (auto it = arrays_.begin(); it != arrays_.end(); ++it) {
+      if (it->get() == array) {
+        arrays_.erase(it);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  std::vector<std::string> names() const
+  {
+    std::vector<std::string> result;
+    for (const auto& a : arrays_)
+      result.push_back(a->name());
+    return result;
+  }
+
+private:
+  Base_property_array* find(const std::string& name, const std::type_info& type) const
+  {
+    for (const auto& a : arrays_)
+      if (a->name() == name && a->value_type() == type)
+        return a.get();
+    return nullptr;
+  }
+  Base_property_array* find_by_name(const std::string& name) const
+  {
+    for (const auto& a : arrays_)
+      if (a->name() == name)
+        return a.get();
+    return nullptr;
+  }
+
+  std::vector<std::unique_ptr<Base_property_array>> arrays_;
+  std::size_t size_ = 0;
+};
+
+} // namespace internal
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_PROPERTY_CONTAINER_H

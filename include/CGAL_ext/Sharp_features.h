@@ -1,0 +1,65 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Sharp features of a mesh, with OpenSubdiv's names and conventions: edge
+// and vertex sharpness, and the mesh-level options that OpenSubdiv's OBJ
+// tags carry. Read and written by the OBJ reader and writer, used by
+// subdivision.
+
+#ifndef CGAL_EXT_SHARP_FEATURES_H
+#define CGAL_EXT_SHARP_FEATURES_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+
+#include <optional>
+
+namespace CGAL_ext {
+
+/// Sharpness at or above this value is infinite (OpenSubdiv's `SHARPNESS_INFINITE`).
+/// Sharpness is a `float`, as in OpenSubdiv: its arithmetic is float
+/// arithmetic, which matters when matching OpenSubdiv's results.
+constexpr float infinitely_sharp = 10.0f;
+
+/// How the border is interpolated (OpenSubdiv's `VtxBoundaryInterpolation`).
+enum class Boundary_interpolation {
+  none,           ///< border faces are not part of the limit surface
+  edge_only,      ///< border edges are infinitely sharp creases
+  edge_and_corner ///< also border vertices with one face are corners
+};
+
+/// How semi-sharp creases decay from level to level (OpenSubdiv's `CreasingMethod`).
+enum class Crease_method { uniform, chaikin };
+
+/// Catmull–Clark rule on triangles (OpenSubdiv's `TriangleSubdivision`).
+enum class Triangle_subdivision { catmark, smooth };
+
+/// The mesh-level options of a shape, as OpenSubdiv's OBJ tags give them;
+/// unset where a file says nothing.
+struct Sharp_feature_options
+{
+  std::optional<Boundary_interpolation> boundary_interpolation;
+  std::optional<Crease_method> crease_method;
+  std::optional<Triangle_subdivision> triangle_subdivision;
+};
+
+/// The names of the property maps that hold sharpness.
+inline constexpr const char* edge_sharpness_name = "e:sharpness";
+inline constexpr const char* vertex_sharpness_name = "v:sharpness";
+
+/// The edge sharpness map of `mesh` (created, all 0, if missing).
+template <class P>
+typename Mobius_mesh<P>::template Property_map<Edge_index, float> edge_sharpness_map(Mobius_mesh<P>& mesh)
+{
+  return mesh.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first;
+}
+
+/// The vertex sharpness map of `mesh` (created, all 0, if missing).
+template <class P>
+typename Mobius_mesh<P>::template Property_map<Vertex_index, float> vertex_sharpness_map(Mobius_mesh<P>& mesh)
+{
+  return mesh.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first;
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SHARP_FEATURES_H

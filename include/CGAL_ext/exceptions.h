@@ -1,0 +1,81 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The exceptions CGAL_ext throws for bad input. Bad input is not a
+// programming error, so it is reported by exceptions that say what is wrong
+// and where, never by assertions.
+
+#ifndef CGAL_EXT_EXCEPTIONS_H
+#define CGAL_EXT_EXCEPTIONS_H
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+
+/// Base class of every exception CGAL_ext throws.
+class Error : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A parameter value is out of its domain (e.g. a negative or NaN tolerance).
+class Parameter_error : public Error
+{
+public:
+  using Error::Error;
+};
+
+/// A polygon soup that does not describe a 2-manifold polygon mesh.
+class Soup_error : public Error
+{
+public:
+  enum class Kind {
+    index_out_of_range,  ///< a polygon names a point that does not exist
+    degenerate_polygon,  ///< a polygon has fewer than three vertices
+    repeated_vertex,     ///< a polygon visits a vertex twice
+    non_manifold_edge,   ///< an edge is shared by three or more polygons
+    non_manifold_vertex, ///< the polygons around a vertex form several fans
+    non_finite_point     ///< a coordinate is infinite or NaN
+  };
+
+  Soup_error(Kind kind, std::string message, std::vector<std::size_t> polygons,
+             std::vector<std::size_t> vertices)
+    : Error(std::move(message)), kind_(kind), polygons_(std::move(polygons)), vertices_(std::move(vertices))
+  {}
+
+  Kind kind() const { return kind_; }
+  /// Indices of the offending polygons, in the order of the soup.
+  const std::vector<std::size_t>& polygons() const { return polygons_; }
+  /// Indices of the offending points.
+  const std::vector<std::size_t>& vertices() const { return vertices_; }
+
+private:
+  Kind kind_;
+  std::vector<std::size_t> polygons_;
+  std::vector<std::size_t> vertices_;
+};
+
+/// A file that cannot be read or written, or whose content is malformed.
+/// `line()` is 0 where no line can be named.
+class IO_error : public Error
+{
+public:
+  IO_error(const std::string& file, std::size_t line, const std::string& what)
+    : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": " + what), file_(file), line_(line)
+  {}
+  const std::string& file() const { return file_; }
+  std::size_t line() const { return line_; }
+
+private:
+  std::string file_;
+  std::size_t line_;
+};
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_EXCEPTIONS_H

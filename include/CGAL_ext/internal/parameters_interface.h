@@ -1,0 +1,13 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The named parameters that CGAL_ext adds to CGAL's, one per line, in the
+// form of CGAL's own list: (tag type, tag value, function name).
+// No include guard: this list is expanded several times.
+
+// polygon soups and merging
+CGAL_EXT_add_named_parameter(tolerance_t, tolerance, tolerance)
+CGAL_EXT_add_named_parameter(split_non_manifold_vertices_t, split_non_manifold_vertices, split_non_manifold_vertices)
+// sharp features, read and written by the OBJ tag reader and used by subdivision
+CGAL_EXT_add_named_parameter(edge_sharpness_t, edge_sharpness, edge_sharpness_map)
+CGAL_EXT_add_named_parameter(vertex_sharpness_t, vertex_sharpness, vertex_sharpness_map)
