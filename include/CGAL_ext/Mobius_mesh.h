@@ -450,13 +450,17 @@ public:
     return v;
   }
 
-  /// Adds a face given its vertices in order. A face is refused (the mesh is
-  /// left unchanged and `null_face()` returned, with the reason in `*why`)
-  /// if it has fewer than three vertices, a repeated or invalid vertex, an
-  /// edge that already has two faces, or if it would make a vertex
-  /// non-manifold (join two separate fans, or touch a vertex whose fan is
-  /// closed). Faces may be added in any order that keeps every vertex's faces
-  /// one edge-connected fan; `polygon_soup_to_mobius_mesh()` accepts any order.
+  /// Adds a face given its vertices in order; an edge it shares with an
+  /// existing face becomes a Möbius edge if both faces run along it the same
+  /// way. A face is refused (the mesh is left unchanged and `null_face()`
+  /// returned, with the reason in `*why`) if it has fewer than three
+  /// vertices, a repeated or invalid vertex, an edge that already has two
+  /// faces, or if it would make a vertex non-manifold for good: touch a
+  /// vertex whose fan is closed, or close one fan of a vertex that has
+  /// others. As in `Surface_mesh`, faces may come in any order, so a vertex
+  /// may hold several fans until the faces between them are added
+  /// (`is_valid()` reports such vertices); `polygon_soup_to_mobius_mesh()`
+  /// builds a whole mesh at once.
   template <class VertexRange>
   Face_index add_face(const VertexRange& vertices, std::string* why = nullptr);
   Face_index add_face(std::initializer_list<Vertex_index> vertices, std::string* why = nullptr)
@@ -855,6 +859,7 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
       *why = reason;
     return null_face();
   };
+  auto name = [](Vertex_index v) { return "v" + std::to_string(v.idx()); };
   if (n < 3)
     return refuse("a face needs at least three vertices");
   for (std::size_t i = 0; i < n; ++i) {
@@ -862,61 +867,79 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
       return refuse("vertex index " + std::to_string(vs[i].idx()) + " is not in the mesh");
     for (std::size_t j = 0; j < i; ++j)
       if (vs[i] == vs[j])
-        return refuse("vertex v" + std::to_string(vs[i].idx()) + " is repeated in the face");
+        return refuse("vertex " + name(vs[i]) + " is repeated in the face");
   }
 
-  // Existing dart from vs[i] to vs[i+1], if any (found around vs[i+1]).
+  // The fans around each vertex, as (first outgoing, last incoming) border
+  // darts in the cyclic order the border links give them. A vertex may hold
+  // several fans while a mesh is built face by face, as in Surface_mesh.
+  struct Fan { Dart first_out, last_in; };
+  std::vector<std::vector<Fan>> fans(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vertex_index v = vs[i];
+    if (is_isolated(v))
+      continue;
+    if (!is_border(v))
+      return refuse("vertex " + name(v) + " is interior; another face would make it non-manifold");
+    std::vector<Dart> border_in;
+    for (Dart d : halfedges_around_target(halfedge(v), *this))
+      if (is_border(d))
+        border_in.push_back(d);
+    for (std::size_t k = 0; k < border_in.size(); ++k)
+      fans[i].push_back(Fan{next(border_in[k]), border_in[(k + 1) % border_in.size()]});
+  }
+
+  // Existing edges of the face: the border dart from vs[i] to vs[i+1].
   std::vector<Dart> existing(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex_index a = vs[i], b = vs[(i + 1) % n];
     if (is_isolated(b))
       continue;
     for (Dart d : halfedges_around_target(halfedge(b), *this)) {
-      if (source(d) == a) {
-        const Edge_index e = edge(d);
-        if (!is_border(e))
-          return refuse("edge (v" + std::to_string(a.idx()) + ", v" + std::to_string(b.idx()) +
-                        ") already has two faces");
-        existing[i] = d;
-        break;
-      }
+      if (source(d) != a)
+        continue;
+      if (!is_border(edge(d)))
+        return refuse("edge (" + name(a) + ", " + name(b) + ") already has two faces");
+      existing[i] = is_border(d) ? d : opposite(d);
+      break;
     }
   }
 
-  // A vertex keeps one fan: an isolated vertex is free; a border vertex takes
-  // the new face only in its gap, i.e. through at least one of its two border
-  // edges; a vertex with a closed fan takes nothing.
+  // The new corner at vs[i] lies between the edges in = (vs[i-1], vs[i]) and
+  // out = (vs[i], vs[i+1]). Each existing one is a border edge of some fan.
+  auto fan_at = [&](std::size_t i, Edge_index e) {
+    for (std::size_t k = 0; k < fans[i].size(); ++k)
+      if (edge(fans[i][k].first_out) == e || edge(fans[i][k].last_in) == e)
+        return k;
+    return fans[i].size();
+  };
   for (std::size_t i = 0; i < n; ++i) {
-    const Vertex_index v = vs[i];
-    if (is_isolated(v))
-      continue;
-    const std::string name = "v" + std::to_string(v.idx());
-    if (!is_border(v))
-      return refuse("vertex " + name + " is interior; another face would make it non-manifold");
-    const bool in_edge = existing[(i + n - 1) % n].is_valid();
-    const bool out_edge = existing[i].is_valid();
-    if (!in_edge && !out_edge)
-      return refuse("the face would give vertex " + name + " a second fan (non-manifold vertex)");
+    const Dart in = existing[(i + n - 1) % n], out = existing[i];
+    if (in.is_valid() && out.is_valid() && fan_at(i, edge(in)) == fan_at(i, edge(out)) && fans[i].size() > 1)
+      return refuse("the face would close one fan of vertex " + name(vs[i]) +
+                    " while others remain (non-manifold vertex)");
   }
 
-  // Commit. New edges get the face halfedge 2e and a border halfedge 2e+1.
+  // ---- Commit: face halfedges, taking over existing border halfedges.
   const Face_index f = add_face_record();
   std::vector<Halfedge_index> face_halfedges(n);
+  std::vector<Dart> new_border_out(n), new_border_in(n); // new border darts at vs[i]
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex_index a = vs[i], b = vs[(i + 1) % n];
     if (!existing[i].is_valid()) {
       const Edge_index e = add_edge(b, a);
       face_halfedges[i] = halfedge(e, 0);
+      // The border halfedge 2e+1 runs b -> a: outgoing at b, incoming at a.
+      new_border_out[(i + 1) % n] = dart(halfedge(e, 1));
+      new_border_in[i] = dart(halfedge(e, 1));
       continue;
     }
-    // Take over the border halfedge of the existing edge.
-    const Halfedge_index g = is_border(existing[i].halfedge()) ? existing[i].halfedge()
-                                                                 : opposite_halfedge(existing[i].halfedge());
-    const Halfedge_index h_other = opposite_halfedge(g);
-    // The old face runs along the edge a->b too: a Möbius connection.
-    const bool mobius = (h_target_[h_other.idx()] == b);
+    const Halfedge_index g = existing[i].halfedge();
+    // The old face runs along the edge a -> b as well: a Möbius connection.
+    const bool mobius = h_target_[opposite_halfedge(g).idx()] == b;
     h_target_[g.idx()] = b;
     e_mobius_[edge(g).idx()] = mobius ? 1 : 0;
+    h_face_[g.idx()] = f;
     face_halfedges[i] = g;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -925,32 +948,40 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
   }
   f_halfedge_[f.idx()] = face_halfedges[0];
 
-  // Relink the border at each vertex of the face. With one fan per vertex, a
-  // border vertex has exactly two border halfedges; walking the fan through
-  // faces from the new corner finds them.
+  // ---- Relink the border at each vertex: merge the new corner with the
+  //      fans it touches, walking each fan in the direction that agrees with
+  //      the new face, then link the fans in a cycle.
   for (std::size_t i = 0; i < n; ++i) {
-    const Vertex_index v = vs[(i + 1) % n];
-    const Dart corner = dart(face_halfedges[i]); // target v
-    Dart in = corner;
-    for (;;) {
-      const Dart o = opposite(next(in));
-      if (is_border(o)) {
-        in = o;
-        break;
-      }
-      in = o;
-      if (in == corner)
-        break;
+    const Vertex_index v = vs[i];
+    std::vector<Fan>& list = fans[i];
+    const std::size_t ip = (i + n - 1) % n;
+    // Going backward from the new corner crosses `in`, forward crosses `out`.
+    const Edge_index e_in = edge(dart(face_halfedges[ip])), e_out = edge(dart(face_halfedges[i]));
+    Fan merged{new_border_out[i], new_border_in[i]};
+    auto take = [&](Edge_index e, bool before) {
+      const std::size_t k = fan_at(i, e);
+      Fan x = list[k];
+      list.erase(list.begin() + std::ptrdiff_t(k));
+      // A fan before the corner must end at e; one after it must start at e.
+      const bool ends_at_e = edge(x.last_in) == e;
+      if (before != ends_at_e)
+        x = Fan{x.last_in.flipped(), x.first_out.flipped()};
+      return x;
+    };
+    if (existing[ip].is_valid() && existing[i].is_valid() && fan_at(i, e_in) == fan_at(i, e_out)) {
+      list.erase(list.begin() + std::ptrdiff_t(fan_at(i, e_in))); // the fan closes
+      merged = Fan{};
+    } else {
+      if (existing[ip].is_valid())
+        merged.first_out = take(e_in, true).first_out;
+      if (existing[i].is_valid())
+        merged.last_in = take(e_out, false).last_in;
     }
-    if (!is_border(in)) {
-      v_halfedge_[v.idx()] = corner;
-      continue;
-    }
-    Dart out = opposite(corner); // source v
-    while (!is_border(out))
-      out = opposite(prev(out));
-    set_next(in, out);
-    v_halfedge_[v.idx()] = in;
+    if (merged.first_out.is_valid())
+      list.push_back(merged);
+    for (std::size_t k = 0; k < list.size(); ++k)
+      set_next(list[k].last_in, list[(k + 1) % list.size()].first_out);
+    v_halfedge_[v.idx()] = list.empty() ? dart(face_halfedges[ip]) : list.front().last_in;
   }
   return f;
 }
