@@ -56,3 +56,205 @@ TEST(PolygonSoup, CubeIsClosedOrientable)
 }
 
 } // namespace
+
+namespace {
+
+using CGAL_ext::Soup_error;
+using Kind = CGAL_ext::Soup_error::Kind;
+
+// A target mesh that already holds something: failures must leave it as it is.
+Mesh prefilled()
+{
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(pentagon_points, mobius_min_polygons, m);
+  return m;
+}
+
+void expect_untouched(const Mesh& m)
+{
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_vertices(), 5u);
+  EXPECT_EQ(m.number_of_edges(), 10u);
+  EXPECT_EQ(m.number_of_faces(), 5u);
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(0u)), pentagon_points[0]);
+}
+
+template <class Points, class Polygons>
+Soup_error expect_soup_error(const Points& points, const Polygons& polygons, Kind kind)
+{
+  Mesh m = prefilled();
+  try {
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m);
+  } catch (const Soup_error& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    expect_untouched(m);
+    Mesh empty;
+    EXPECT_THROW(CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, empty), Soup_error);
+    EXPECT_EQ(empty.number_of_vertices(), 0u);
+    EXPECT_EQ(empty.number_of_faces(), 0u);
+    return e;
+  }
+  ADD_FAILURE() << "no Soup_error thrown";
+  return Soup_error(kind, "", {}, {});
+}
+
+const std::vector<Point> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}, {2, 2, 2}};
+
+TEST(PolygonSoupErrors, IndexOutOfRange)
+{
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {0, 2, 6}};
+  const Soup_error e = expect_soup_error(square, polygons, Kind::index_out_of_range);
+  EXPECT_EQ(e.polygons(), std::vector<std::size_t>{1});
+  EXPECT_NE(std::string(e.what()).find("point 6"), std::string::npos) << e.what();
+  const std::vector<std::vector<int>> negative = {{0, 1, -1}};
+  expect_soup_error(square, negative, Kind::index_out_of_range);
+}
+
+TEST(PolygonSoupErrors, DegenerateAndRepeated)
+{
+  const std::vector<std::vector<int>> two = {{0, 1, 2}, {2, 3}};
+  EXPECT_EQ(expect_soup_error(square, two, Kind::degenerate_polygon).polygons(), std::vector<std::size_t>{1});
+  const std::vector<std::vector<int>> repeated = {{0, 1, 2, 1}};
+  const Soup_error e = expect_soup_error(square, repeated, Kind::repeated_vertex);
+  EXPECT_EQ(e.polygons(), std::vector<std::size_t>{0});
+  EXPECT_EQ(e.vertices(), std::vector<std::size_t>{1});
+}
+
+TEST(PolygonSoupErrors, EdgeWithThreeFaces)
+{
+  const std::vector<std::vector<int>> fin = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {2, 3, 4}};
+  const Soup_error e = expect_soup_error(square, fin, Kind::non_manifold_edge);
+  EXPECT_EQ(e.polygons(), (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(e.vertices(), (std::vector<std::size_t>{0, 1}));
+}
+
+TEST(PolygonSoupErrors, NonManifoldVertexAndItsSplitting)
+{
+  // Two triangles touching at point 4 only: a bowtie.
+  const std::vector<std::vector<int>> bowtie = {{0, 1, 4}, {2, 3, 4}};
+  const Soup_error e = expect_soup_error(square, bowtie, Kind::non_manifold_vertex);
+  EXPECT_EQ(e.vertices(), std::vector<std::size_t>{4});
+  EXPECT_EQ(e.polygons(), (std::vector<std::size_t>{0, 1}));
+
+  Mesh m;
+  const std::size_t added = CGAL_ext::polygon_soup_to_mobius_mesh(
+    square, bowtie, m, CGAL_ext::parameters::split_non_manifold_vertices(true));
+  EXPECT_EQ(added, 1u);
+  ASSERT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_vertices(), 7u); // 6 points + 1 copy of point 4
+  EXPECT_EQ(CGAL_ext::connected_components(m).count, 3u); // two triangles and the unused point 5
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(6u)), square[4]);
+
+  // A cone of four triangles whose apex is also the tip of a fifth one.
+  const std::vector<std::vector<int>> cone_and_fin = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {4, 5, 2}};
+  EXPECT_THROW(
+    {
+      Mesh n;
+      CGAL_ext::polygon_soup_to_mobius_mesh(square, cone_and_fin, n);
+    },
+    Soup_error);
+}
+
+TEST(PolygonSoupErrors, NonFinitePoint)
+{
+  std::vector<Point> points = square;
+  points[2] = Point(std::nan(""), 0, 0);
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}};
+  EXPECT_EQ(expect_soup_error(points, polygons, Kind::non_finite_point).vertices(), std::vector<std::size_t>{2});
+  points[2] = Point(0, HUGE_VAL, 0);
+  expect_soup_error(points, polygons, Kind::non_finite_point);
+}
+
+TEST(PolygonSoupErrors, BadTolerance)
+{
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}};
+  Mesh m = prefilled();
+  EXPECT_THROW(CGAL_ext::polygon_soup_to_mobius_mesh(square, polygons, m, CGAL_ext::parameters::tolerance(-1.0)),
+               CGAL_ext::Parameter_error);
+  EXPECT_THROW(
+    CGAL_ext::polygon_soup_to_mobius_mesh(square, polygons, m, CGAL_ext::parameters::tolerance(std::nan(""))),
+    CGAL_ext::Parameter_error);
+  expect_untouched(m);
+}
+
+// Two triangles of a square given with their own copies of the diagonal's points.
+template <class K>
+void check_tolerance_is_exact()
+{
+  using P = typename K::Point_3;
+  using FT = typename K::FT;
+  const double t = 0.1;
+  const double beyond = std::nextafter(t, 1.0);
+  for (const auto& [offset, merges] : {std::pair<double, bool>{0.0, true}, {t, true}, {beyond, false}}) {
+    SCOPED_TRACE(offset);
+    // The second triangle's copy of the diagonal is shifted by `offset` along x.
+    const std::vector<P> points = {P(0, 0, 0), P(1, 0, 0), P(1, 1, 0),
+                                   P(0 + offset, 0, 0), P(1 + offset, 1, 0), P(0, 1, 0)};
+    const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {3, 4, 5}};
+    CGAL_ext::Mobius_mesh<P> m;
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, CGAL_ext::parameters::tolerance(FT(t)));
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(m.number_of_vertices(), merges ? 4u : 6u);
+    EXPECT_EQ(m.number_of_edges(), merges ? 5u : 6u);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), merges ? 1u : 2u);
+    // The first point of a cluster is kept.
+    EXPECT_EQ(m.point(CGAL_ext::Vertex_index(0u)), P(0, 0, 0));
+  }
+}
+
+TEST(PolygonSoupTolerance, ExactAtTheBoundaryDouble) { check_tolerance_is_exact<test::Kd>(); }
+TEST(PolygonSoupTolerance, ExactAtTheBoundaryEpick) { check_tolerance_is_exact<test::Epick>(); }
+TEST(PolygonSoupTolerance, ExactAtTheBoundaryEpeck) { check_tolerance_is_exact<test::Epeck>(); }
+
+// A distance that is exactly the tolerance with rational coordinates that no
+// double holds: only exact arithmetic decides it right.
+TEST(PolygonSoupTolerance, ExactWhereDoublesRound)
+{
+  using P = test::Epeck::Point_3;
+  using FT = test::Epeck::FT;
+  // |q - p|^2 = 1/9 + 4/9 + 4/9 = 1 exactly.
+  const FT third = FT(1) / FT(3);
+  const std::vector<P> points = {P(0, 0, 0), P(4, 0, 0), P(0, 4, 0), P(third, 2 * third, 2 * third), P(5, 0, 0),
+                                 P(0, 5, 0)};
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {3, 4, 5}};
+  CGAL_ext::Mobius_mesh<P> merged;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, merged, CGAL_ext::parameters::tolerance(FT(1)));
+  EXPECT_EQ(merged.number_of_vertices(), 5u);
+  CGAL_ext::Mobius_mesh<P> apart;
+  const FT just_below = FT(1) - FT(1) / FT(1e30);
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, apart, CGAL_ext::parameters::tolerance(just_below));
+  EXPECT_EQ(apart.number_of_vertices(), 6u);
+}
+
+TEST(PolygonSoup, PointMapAndArrayPolygons)
+{
+  // Points as (point, label) pairs read through a property map; polygons as arrays.
+  std::vector<std::pair<Point, int>> points;
+  for (std::size_t i = 0; i < pentagon_points.size(); ++i)
+    points.emplace_back(pentagon_points[i], int(i));
+  std::vector<std::array<unsigned, 3>> polygons;
+  for (const auto& p : mobius_min_polygons)
+    polygons.push_back({unsigned(p[0]), unsigned(p[1]), unsigned(p[2])});
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m,
+                                        CGAL_ext::parameters::point_map(CGAL::First_of_pair_property_map<
+                                                                        std::pair<Point, int>>()));
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_faces(), 5u);
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(3u)), pentagon_points[3]);
+}
+
+TEST(PolygonSoup, AppendsToANonEmptyMesh)
+{
+  Mesh m = prefilled();
+  auto tag = m.add_property_map<CGAL_ext::Vertex_index, int>("v:tag", -1).first;
+  tag[CGAL_ext::Vertex_index(0u)] = 5;
+  CGAL_ext::polygon_soup_to_mobius_mesh(pentagon_points, mobius_min_polygons, m);
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_faces(), 10u);
+  EXPECT_EQ(CGAL_ext::connected_components(m).count, 2u);
+  EXPECT_EQ(tag[CGAL_ext::Vertex_index(0u)], 5);
+  EXPECT_EQ(tag[CGAL_ext::Vertex_index(7u)], -1);
+}
+
+} // namespace

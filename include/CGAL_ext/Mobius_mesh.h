@@ -442,11 +442,12 @@ public:
 
   // ---------------------------------------------------------------- construction
 
-  /// Adds an isolated vertex.
-  Vertex_index add_vertex(const Point& p = Point())
+  /// Adds an isolated vertex. (`p` is taken by value: it may be a point of
+  /// this mesh, which the insertion can move.)
+  Vertex_index add_vertex(Point p = Point())
   {
     const Vertex_index v = add_vertex_record();
-    points_[v] = p;
+    points_[v] = std::move(p);
     return v;
   }
 
@@ -747,13 +748,13 @@ auto edges_around_face(Dart d, const Mobius_mesh<P>& m)
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Edge_value>(m, d);
 }
 template <class P>
-auto halfedges_around_face(Face_index f, const Mobius_mesh<P>& m) { return halfedges_around_face(m.halfedge(f), m); }
+auto halfedges_around_face(Face_index f, const Mobius_mesh<P>& m) { return CGAL_ext::halfedges_around_face(m.halfedge(f), m); }
 template <class P>
-auto vertices_around_face(Face_index f, const Mobius_mesh<P>& m) { return vertices_around_face(m.halfedge(f), m); }
+auto vertices_around_face(Face_index f, const Mobius_mesh<P>& m) { return CGAL_ext::vertices_around_face(m.halfedge(f), m); }
 template <class P>
-auto faces_around_face(Face_index f, const Mobius_mesh<P>& m) { return faces_around_face(m.halfedge(f), m); }
+auto faces_around_face(Face_index f, const Mobius_mesh<P>& m) { return CGAL_ext::faces_around_face(m.halfedge(f), m); }
 template <class P>
-auto edges_around_face(Face_index f, const Mobius_mesh<P>& m) { return edges_around_face(m.halfedge(f), m); }
+auto edges_around_face(Face_index f, const Mobius_mesh<P>& m) { return CGAL_ext::edges_around_face(m.halfedge(f), m); }
 
 /// Incoming darts of `target(d)`, starting at `d`.
 template <class P>
@@ -791,20 +792,20 @@ auto edges_around_target(Dart d, const Mobius_mesh<P>& m)
 }
 
 template <class P>
-auto halfedges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return halfedges_around_target(m.halfedge(v), m); }
+auto halfedges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::halfedges_around_target(m.halfedge(v), m); }
 template <class P>
 auto halfedges_around_target_reverse(Vertex_index v, const Mobius_mesh<P>& m)
 {
-  return halfedges_around_target_reverse(m.halfedge(v), m);
+  return CGAL_ext::halfedges_around_target_reverse(m.halfedge(v), m);
 }
 template <class P>
-auto halfedges_around_source(Vertex_index v, const Mobius_mesh<P>& m) { return halfedges_around_source(m.halfedge(v), m); }
+auto halfedges_around_source(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::halfedges_around_source(m.halfedge(v), m); }
 template <class P>
-auto faces_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return faces_around_target(m.halfedge(v), m); }
+auto faces_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::faces_around_target(m.halfedge(v), m); }
 template <class P>
-auto vertices_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return vertices_around_target(m.halfedge(v), m); }
+auto vertices_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::vertices_around_target(m.halfedge(v), m); }
 template <class P>
-auto edges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return edges_around_target(m.halfedge(v), m); }
+auto edges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::edges_around_target(m.halfedge(v), m); }
 
 /// @}
 
@@ -815,7 +816,7 @@ auto edges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return edges
 template <class P>
 bool Mobius_mesh<P>::is_on_mobius_connection(Vertex_index v) const
 {
-  for (Edge_index e : edges_around_target(v, *this))
+  for (Edge_index e : CGAL_ext::edges_around_target(v, *this))
     if (is_mobius(e))
       return true;
   return false;
@@ -824,13 +825,13 @@ bool Mobius_mesh<P>::is_on_mobius_connection(Vertex_index v) const
 template <class P>
 typename Mobius_mesh<P>::size_type Mobius_mesh<P>::degree(Vertex_index v) const
 {
-  return size_type(halfedges_around_target(halfedge(v), *this).size());
+  return size_type(CGAL_ext::halfedges_around_target(halfedge(v), *this).size());
 }
 
 template <class P>
 typename Mobius_mesh<P>::size_type Mobius_mesh<P>::degree(Face_index f) const
 {
-  return size_type(halfedges_around_face(halfedge(f), *this).size());
+  return size_type(CGAL_ext::halfedges_around_face(halfedge(f), *this).size());
 }
 
 template <class P>
@@ -839,7 +840,7 @@ void Mobius_mesh<P>::adjust_border_halfedge(Vertex_index v)
   const Dart start = v_halfedge_[v.idx()];
   if (!start.is_valid())
     return;
-  for (Dart d : halfedges_around_target(start, *this)) {
+  for (Dart d : CGAL_ext::halfedges_around_target(start, *this)) {
     if (is_border(d)) {
       v_halfedge_[v.idx()] = d;
       return;
@@ -882,7 +883,7 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
     if (!is_border(v))
       return refuse("vertex " + name(v) + " is interior; another face would make it non-manifold");
     std::vector<Dart> border_in;
-    for (Dart d : halfedges_around_target(halfedge(v), *this))
+    for (Dart d : CGAL_ext::halfedges_around_target(halfedge(v), *this))
       if (is_border(d))
         border_in.push_back(d);
     for (std::size_t k = 0; k < border_in.size(); ++k)
@@ -895,7 +896,7 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
     const Vertex_index a = vs[i], b = vs[(i + 1) % n];
     if (is_isolated(b))
       continue;
-    for (Dart d : halfedges_around_target(halfedge(b), *this)) {
+    for (Dart d : CGAL_ext::halfedges_around_target(halfedge(b), *this)) {
       if (source(d) != a)
         continue;
       if (!is_border(edge(d)))
@@ -1031,7 +1032,7 @@ void Mobius_mesh<P>::reverse_face_orientation(Face_index f)
 {
   std::vector<Halfedge_index> hs;
   std::vector<Vertex_index> sources;
-  for (Dart d : halfedges_around_face(halfedge(f), *this)) {
+  for (Dart d : CGAL_ext::halfedges_around_face(halfedge(f), *this)) {
     hs.push_back(d.halfedge());
     sources.push_back(source(d));
   }
@@ -1120,7 +1121,7 @@ std::string Mobius_mesh<P>::validity_report() const
     if (!is_valid(h) || face(h) != Face_index(f))
       return (out << Face_index(f) << " has a halfedge of another face", out.str());
     size_type k = 0;
-    for (Dart d : halfedges_around_face(dart(h), *this)) {
+    for (Dart d : CGAL_ext::halfedges_around_face(dart(h), *this)) {
       (void)d;
       if (++k > face_size[f])
         break;
@@ -1149,7 +1150,7 @@ std::string Mobius_mesh<P>::validity_report() const
     if (!is_valid(d) || target(d) != v)
       return (out << "halfedge(" << v << ") does not end at it", out.str());
     size_type k = 0, border = 0;
-    for (Dart c : halfedges_around_target(d, *this)) {
+    for (Dart c : CGAL_ext::halfedges_around_target(d, *this)) {
       if (is_border(c))
         ++border;
       if (++k > incident[i])

@@ -65,9 +65,9 @@ std::vector<std::size_t> merge_close_points(const PointRange& points, PointMap p
   std::size_t i = 0;
   for (auto it = std::begin(points); it != std::end(points); ++it, ++i) {
     const CGAL::Bbox_3 b = get(point_map, *it).bbox();
-    const double lo[3] = {std::nextafter(b.xmin() - pad, -HUGE_VAL), std::nextafter(b.ymin() - pad, -HUGE_VAL),
+    double lo[3] = {std::nextafter(b.xmin() - pad, -HUGE_VAL), std::nextafter(b.ymin() - pad, -HUGE_VAL),
                           std::nextafter(b.zmin() - pad, -HUGE_VAL)};
-    const double hi[3] = {std::nextafter(b.xmax() + pad, HUGE_VAL), std::nextafter(b.ymax() + pad, HUGE_VAL),
+    double hi[3] = {std::nextafter(b.xmax() + pad, HUGE_VAL), std::nextafter(b.ymax() + pad, HUGE_VAL),
                           std::nextafter(b.zmax() + pad, HUGE_VAL)};
     boxes.emplace_back(lo, hi, i);
   }
@@ -437,6 +437,7 @@ std::size_t polygon_soup_to_mobius_mesh(const PointRange& points, const PolygonR
         (face_stamp[p] == vi ? first_fan : others).push_back(p);
       std::vector<std::size_t> all = first_fan;
       all.insert(all.end(), others.begin(), others.end());
+      std::sort(all.begin(), all.end());
       throw Soup_error(Kind::non_manifold_vertex,
                        "vertex " + std::to_string(vi) + " is non-manifold: its polygons form separate fans (" +
                          internal::join_ids(first_fan) + " | " + internal::join_ids(others) + ")",
@@ -447,14 +448,14 @@ std::size_t polygon_soup_to_mobius_mesh(const PointRange& points, const PolygonR
       if (face_stamp[p] == vi)
         continue;
       Dart start;
-      for (Dart d : halfedges_around_face(result.halfedge(Face_index(p)), result))
+      for (Dart d : CGAL_ext::halfedges_around_face(result.halfedge(Face_index(p)), result))
         if (result.target(d) == v)
           start = d;
       const Vertex_index copy = result.add_vertex(result.point(v));
       std::vector<Halfedge_index> touched;
       walk_fan(copy, start, &touched);
       // walk_fan stamped with the copy's index; mark these faces as done for v.
-      for (Face_index f : faces_around_target(start, result))
+      for (Face_index f : CGAL_ext::faces_around_target(start, result))
         if (f.is_valid())
           face_stamp[f.idx()] = vi;
       for (Halfedge_index h : touched)

@@ -24,7 +24,7 @@ bool can_flip_edge(Dart d, const Mobius_mesh<P>& mesh)
   const Vertex_index c = mesh.target(mesh.next(d)), e = mesh.target(mesh.next(o));
   if (c == e)
     return false;
-  for (Vertex_index w : vertices_around_target(mesh.halfedge(c), mesh))
+  for (Vertex_index w : CGAL_ext::vertices_around_target(mesh.halfedge(c), mesh))
     if (w == e)
       return false;
   return true;

@@ -27,7 +27,7 @@ std::vector<Dart> border_cycles(const Mobius_mesh<P>& mesh)
     if (!mesh.is_border(h) || seen[h.idx()])
       continue;
     cycles.push_back(Dart(h, false));
-    for (Dart d : halfedges_around_face(Dart(h, false), mesh))
+    for (Dart d : CGAL_ext::halfedges_around_face(Dart(h, false), mesh))
       seen[d.halfedge().idx()] = true;
   }
   return cycles;
@@ -36,7 +36,7 @@ std::vector<Dart> border_cycles(const Mobius_mesh<P>& mesh)
 template <class P>
 std::size_t number_of_border_cycles(const Mobius_mesh<P>& mesh)
 {
-  return border_cycles(mesh).size();
+  return CGAL_ext::border_cycles(mesh).size();
 }
 
 /// True if the mesh has no border halfedge.
@@ -134,7 +134,7 @@ void orientation_parities(const Mobius_mesh<P>& mesh, std::vector<std::uint8_t>&
     queue.push_back(root);
     for (std::size_t q = 0; q < queue.size(); ++q) {
       const Face_index f = queue[q];
-      for (Dart d : halfedges_around_face(mesh.halfedge(f), mesh)) {
+      for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
         const Face_index g = mesh.face(mesh.opposite(d));
         if (!g.is_valid() || g == f)
           continue;
@@ -169,7 +169,7 @@ std::vector<bool> orientable_components(const Mobius_mesh<P>& mesh)
 template <class P>
 bool is_orientable(const Mobius_mesh<P>& mesh)
 {
-  for (bool o : orientable_components(mesh))
+  for (bool o : CGAL_ext::orientable_components(mesh))
     if (!o)
       return false;
   return true;
@@ -201,7 +201,7 @@ void improve_orientation_locally(const Mobius_mesh<P>& mesh, std::vector<std::ui
     improved = false;
     for (Face_index f : mesh.faces()) {
       long gain = 0;
-      for (Dart d : halfedges_around_face(mesh.halfedge(f), mesh)) {
+      for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
         const Face_index g = mesh.face(mesh.opposite(d));
         if (g.is_valid() && g != f)
           gain += ((mesh.is_mobius(mesh.edge(d)) ? 1 : 0) ^ flip[f.idx()] ^ flip[g.idx()]) ? 1 : -1;
@@ -281,7 +281,7 @@ std::size_t orient(Mobius_mesh<P>& mesh, unsigned number_of_starts = 8)
   for (Face_index f : mesh.faces())
     if (best[f.idx()])
       mesh.reverse_face_orientation(f);
-  return number_of_mobius_edges(mesh);
+  return CGAL_ext::number_of_mobius_edges(mesh);
 }
 
 } // namespace CGAL_ext
