@@ -187,9 +187,10 @@ void check_tolerance_is_exact()
   const double beyond = std::nextafter(t, 1.0);
   for (const auto& [offset, merges] : {std::pair<double, bool>{0.0, true}, {t, true}, {beyond, false}}) {
     SCOPED_TRACE(offset);
-    // The second triangle's copy of the diagonal is shifted by `offset` along x.
-    const std::vector<P> points = {P(0, 0, 0), P(1, 0, 0), P(1, 1, 0),
-                                   P(0 + offset, 0, 0), P(1 + offset, 1, 0), P(0, 1, 0)};
+    // The second triangle's copy of the shared side (on the y axis) is
+    // shifted by `offset` along x, so both copies are exactly `offset` away.
+    const std::vector<P> points = {P(0, 0, 0),      P(0, 1, 0),   P(-1, 0.5, 0),
+                                   P(offset, 0, 0), P(1, 0.5, 0), P(offset, 1, 0)};
     const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {3, 4, 5}};
     CGAL_ext::Mobius_mesh<P> m;
     CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, CGAL_ext::parameters::tolerance(FT(t)));

@@ -394,8 +394,11 @@ std::size_t polygon_soup_to_mobius_mesh(const PointRange& points, const PolygonR
       if (o == start)
         break;
       in = o;
-      if (result.is_border(in))
+      if (result.is_border(in)) {
+        if (touched)
+          touched->push_back(in.halfedge());
         break;
+      }
       visit(in);
     }
     if (result.is_border(in)) {
