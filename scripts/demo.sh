@@ -15,5 +15,10 @@ input=examples/data/mobius_20x4_quads.obj
 mkdir -p out
 echo "== mesh_info $input"
 "$build/examples/mesh_info" "$input"
+echo "== subdivide $input: Catmull-Clark, 3 levels, across the Möbius seam"
+"$build/examples/subdivide" "$input" out/mobius_catmull_clark_3.obj --levels 3
+echo "== mesh_info out/mobius_catmull_clark_3.obj (still one non-orientable strip with one border loop)"
+"$build/examples/mesh_info" out/mobius_catmull_clark_3.obj
 echo "== mobius_walk"
 "$build/examples/mobius_walk"
+echo "Wrote out/mobius_catmull_clark_3.obj"

@@ -213,14 +213,17 @@ TEST(PolygonSoupTolerance, ExactWhereDoublesRound)
 {
   using P = test::Epeck::Point_3;
   using FT = test::Epeck::FT;
-  // |q - p|^2 = 1/9 + 4/9 + 4/9 = 1 exactly.
+  // The second triangle's copy of the shared side is moved by (1/3, 2/3, 2/3),
+  // at squared distance 1/9 + 4/9 + 4/9 = 1 exactly; all other points are far apart.
   const FT third = FT(1) / FT(3);
-  const std::vector<P> points = {P(0, 0, 0), P(4, 0, 0), P(0, 4, 0), P(third, 2 * third, 2 * third), P(5, 0, 0),
-                                 P(0, 5, 0)};
-  const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {3, 4, 5}};
+  const P p0(0, 0, 0), p1(10, 0, 0);
+  const test::Epeck::Vector_3 shift(third, 2 * third, 2 * third);
+  const std::vector<P> points = {p0, p1, P(5, -10, 0), p0 + shift, p1 + shift, P(5, 10, 0)};
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {4, 3, 5}};
   CGAL_ext::Mobius_mesh<P> merged;
   CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, merged, CGAL_ext::parameters::tolerance(FT(1)));
-  EXPECT_EQ(merged.number_of_vertices(), 5u);
+  EXPECT_EQ(merged.number_of_vertices(), 4u);
+  EXPECT_EQ(merged.number_of_edges(), 5u);
   CGAL_ext::Mobius_mesh<P> apart;
   const FT just_below = FT(1) - FT(1) / FT(1e30);
   CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, apart, CGAL_ext::parameters::tolerance(just_below));

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <iostream>
 #include <iterator>
@@ -19,6 +20,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -522,6 +524,42 @@ public:
     f_halfedge_.resize(nf);
     fprops_.resize(nf);
   }
+  /// Replaces the connectivity by whole arrays, for algorithms that compute
+  /// it by index arithmetic (subdivision): per halfedge the target, the
+  /// `Dart::bits()` of `next` and `prev` and the face (`Face_index::null_value`
+  /// on the border); per edge the Möbius bit; per vertex the bits of
+  /// `halfedge(v)`; per face its halfedge. Property maps are resized, their
+  /// values reset to the defaults. The caller vouches for consistency
+  /// (`is_valid()` checks it).
+  void assign_connectivity(size_type nv, size_type ne, size_type nf, const std::uint32_t* target,
+                           const std::uint32_t* next_bits, const std::uint32_t* prev_bits,
+                           const std::uint32_t* face, const std::uint8_t* mobius, const std::uint32_t* vertex_dart_bits,
+                           const std::uint32_t* face_halfedge)
+  {
+    static_assert(sizeof(Dart) == 4 && sizeof(Vertex_index) == 4 && sizeof(Face_index) == 4 &&
+                    sizeof(Halfedge_index) == 4 && std::is_trivially_copyable_v<Dart>,
+                  "handles are plain 32-bit values");
+    const std::size_t nh = 2 * std::size_t(ne);
+    auto fill = [](auto& array, std::size_t n, const void* source, std::size_t element_size) {
+      array.resize(n);
+      if (n)
+        std::memcpy(static_cast<void*>(array.data()), source, n * element_size);
+    };
+    fill(h_target_, nh, target, 4);
+    fill(h_next_, nh, next_bits, 4);
+    fill(h_prev_, nh, prev_bits, 4);
+    fill(h_face_, nh, face, 4);
+    fill(e_mobius_, ne, mobius, 1);
+    fill(v_halfedge_, nv, vertex_dart_bits, 4);
+    fill(f_halfedge_, nf, face_halfedge, 4);
+    for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
+      props->resize(0);
+    vprops_.resize(nv);
+    hprops_.resize(nh);
+    eprops_.resize(ne);
+    fprops_.resize(nf);
+  }
+
   /// Links `a` to `b`: afterwards `next(a) == b` and `prev(b) == a`.
   void set_next(Dart a, Dart b)
   {

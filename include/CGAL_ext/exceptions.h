@@ -9,6 +9,7 @@
 #define CGAL_EXT_EXCEPTIONS_H
 
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -61,19 +62,56 @@ private:
 };
 
 /// A file that cannot be read or written, or whose content is malformed.
-/// `line()` is 0 where no line can be named.
+/// `line()` is 0 where no line can be named. Where the file was read but its
+/// polygons do not form a 2-manifold, `soup_kind()` tells which `Soup_error` it was.
 class IO_error : public Error
 {
 public:
-  IO_error(const std::string& file, std::size_t line, const std::string& what)
-    : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": " + what), file_(file), line_(line)
+  IO_error(const std::string& file, std::size_t line, const std::string& what,
+           std::optional<Soup_error::Kind> soup_kind = std::nullopt)
+    : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": " + what), file_(file), line_(line),
+      soup_kind_(soup_kind)
   {}
   const std::string& file() const { return file_; }
   std::size_t line() const { return line_; }
+  std::optional<Soup_error::Kind> soup_kind() const { return soup_kind_; }
 
 private:
   std::string file_;
   std::size_t line_;
+  std::optional<Soup_error::Kind> soup_kind_;
+};
+
+/// A merge of mesh borders that cannot be done; `vertices()` names the
+/// offending vertices of the input (two-mesh merges number the second mesh's
+/// vertices after the first's).
+class Merge_error : public Error
+{
+public:
+  enum class Kind {
+    non_manifold_edge,   ///< three or more border edges would be glued into one edge
+    non_manifold_vertex, ///< the glue would give a vertex several fans
+    collapsed_face,      ///< the glue would identify two vertices of one face
+    mismatched_chains,   ///< the two chosen borders do not correspond (length, vertex pairs)
+    not_a_border         ///< a dart given as a border is not one
+  };
+  Merge_error(Kind kind, std::string message, std::vector<std::size_t> vertices)
+    : Error(std::move(message)), kind_(kind), vertices_(std::move(vertices))
+  {}
+  Kind kind() const { return kind_; }
+  const std::vector<std::size_t>& vertices() const { return vertices_; }
+
+private:
+  Kind kind_;
+  std::vector<std::size_t> vertices_;
+};
+
+/// A seam map (which border halfedges of a cut mesh are glued, and how) that
+/// is inconsistent or whose gluing is not a 2-manifold.
+class Seam_error : public Error
+{
+public:
+  using Error::Error;
 };
 
 } // namespace CGAL_ext

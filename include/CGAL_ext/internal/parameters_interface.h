@@ -11,3 +11,8 @@ CGAL_EXT_add_named_parameter(split_non_manifold_vertices_t, split_non_manifold_v
 // sharp features, read and written by the OBJ tag reader and used by subdivision
 CGAL_EXT_add_named_parameter(edge_sharpness_t, edge_sharpness, edge_sharpness_map)
 CGAL_EXT_add_named_parameter(vertex_sharpness_t, vertex_sharpness, vertex_sharpness_map)
+// subdivision
+CGAL_EXT_add_named_parameter(boundary_interpolation_t, boundary_interpolation, boundary_interpolation)
+CGAL_EXT_add_named_parameter(crease_method_t, crease_method, crease_method)
+CGAL_EXT_add_named_parameter(vertex_rule_t, vertex_rule, vertex_rule)
+CGAL_EXT_add_named_parameter(triangle_subdivision_t, triangle_subdivision, triangle_subdivision)

@@ -1,0 +1,83 @@
+// convert IN OUT [--cut]
+//
+// Reads a polygon mesh (OBJ, OFF or PLY) into a Mobius_mesh and converts it
+// to a CGAL::Surface_mesh: orientable meshes as they are, non-orientable ones
+// cut along their Möbius edges with the cut recorded in a seam map. By
+// default the Surface_mesh is converted back (gluing the seam) and OUT is the
+// round trip, which has the input's topology; with --cut, OUT is the
+// Surface_mesh's oriented cut mesh. Prints the counts of what is written as
+// one line of JSON:
+//   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"mobius_edges":M,
+//    "orientable":true|false,"closed":true|false,"components":C,
+//    "euler_characteristic":X,"valid":true|false}
+// On bad input or usage it prints one line "convert: <what>" on stderr and
+// exits with status 2.
+
+#include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/Surface_mesh_conversion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <string>
+
+namespace {
+
+int fail(std::string what)
+{
+  std::replace(what.begin(), what.end(), '\n', ' ');
+  std::cerr << "convert: " << what << std::endl;
+  return 2;
+}
+
+template <class Mesh>
+void print_counts(const Mesh& mesh)
+{
+  const char* const boolean[] = {"false", "true"};
+  std::cout << "{\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
+            << ",\"faces\":" << mesh.number_of_faces()
+            << ",\"border_loops\":" << CGAL_ext::number_of_border_cycles(mesh)
+            << ",\"mobius_edges\":" << CGAL_ext::number_of_mobius_edges(mesh)
+            << ",\"orientable\":" << boolean[CGAL_ext::is_orientable(mesh)]
+            << ",\"closed\":" << boolean[CGAL_ext::is_closed(mesh)]
+            << ",\"components\":" << CGAL_ext::connected_components(mesh).count
+            << ",\"euler_characteristic\":" << CGAL_ext::euler_characteristic(mesh)
+            << ",\"valid\":" << boolean[mesh.is_valid()] << "}" << std::endl;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
+  const bool cut = argc == 4 && std::string(argv[3]) == "--cut";
+  if (argc != 3 && !cut)
+    return fail("usage: convert IN OUT [--cut] (.obj, .off or .ply polygon meshes)");
+  try {
+    Mesh mesh;
+    CGAL_ext::IO::read_polygon_mesh(argv[1], mesh);
+    CGAL::Surface_mesh<Kernel::Point_3> sm;
+    CGAL_ext::to_surface_mesh(mesh, sm);
+    if (cut) {
+      // The cut mesh as it is: drop the records, so nothing is glued back.
+      if (auto seam = sm.property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name);
+          seam.second)
+        sm.remove_property_map(seam.first);
+      if (auto flag = sm.property_map<CGAL::SM_Face_index, bool>(CGAL_ext::reversed_faces_map_name); flag.second)
+        sm.remove_property_map(flag.first);
+    }
+    Mesh out;
+    CGAL_ext::from_surface_mesh(sm, out);
+    CGAL_ext::IO::write_polygon_mesh(argv[2], out);
+    print_counts(out);
+  } catch (const std::exception& e) {
+    return fail(e.what());
+  }
+  return 0;
+}

@@ -1,0 +1,72 @@
+# CTest tests of the convert, merge and pmp_on_mobius tools (included from
+# examples/CMakeLists.txt). Expected counts come from the first line of each
+# test file (V, E, F, chi, orientability, border loops) or from topology:
+# two Möbius strips glued along their borders make a Klein bottle.
+if(NOT CGAL_EXT_BUILD_TESTS)
+  return()
+endif()
+
+set(_data ${PROJECT_SOURCE_DIR}/test/data/nonorientable)
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/tool_output)
+file(MAKE_DIRECTORY ${_out})
+set(_fails "^[a-z_]+: [^\n]+\n$")
+
+# convert: the round trip through Surface_mesh keeps every count of the input.
+file(GLOB _files ${_data}/*.obj)
+foreach(_file ${_files})
+  get_filename_component(_name ${_file} NAME_WE)
+  file(STRINGS ${_file} _header LIMIT_COUNT 1)
+  string(REGEX MATCH "V=([0-9]+) E=([0-9]+) F=([0-9]+) chi=(-?[0-9]+) orientable=(True|False) boundary_loops=([0-9]+)"
+         _match "${_header}")
+  string(TOLOWER ${CMAKE_MATCH_5} _orientable)
+  if(CMAKE_MATCH_6 EQUAL 0)
+    set(_closed true)
+  else()
+    set(_closed false)
+  endif()
+  add_test(NAME convert.${_name} COMMAND convert ${_file} ${_out}/convert_${_name}.obj)
+  set_tests_properties(convert.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+    "^{\"vertices\":${CMAKE_MATCH_1},\"edges\":${CMAKE_MATCH_2},\"faces\":${CMAKE_MATCH_3},\"border_loops\":${CMAKE_MATCH_6},\"mobius_edges\":[0-9]+,\"orientable\":${_orientable},\"closed\":${_closed},\"components\":1,\"euler_characteristic\":${CMAKE_MATCH_4},\"valid\":true}\n$")
+  # --cut: an oriented cut mesh with the same faces.
+  add_test(NAME convert.cut.${_name} COMMAND convert ${_file} ${_out}/cut_${_name}.obj --cut)
+  set_tests_properties(convert.cut.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+    "^{\"vertices\":[0-9]+,\"edges\":[0-9]+,\"faces\":${CMAKE_MATCH_3},\"border_loops\":[0-9]+,\"mobius_edges\":0,\"orientable\":true,.*\"valid\":true}\n$")
+endforeach()
+# A Möbius strip cut along a transversal arc is a disc (chi 1, one border loop).
+add_test(NAME convert.cut.mobius_is_a_disc COMMAND convert ${_data}/mobius_20x4_quads.obj ${_out}/cut_disc.obj --cut)
+set_tests_properties(convert.cut.mobius_is_a_disc PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"faces\":80,\"border_loops\":1,\"mobius_edges\":0,\"orientable\":true,\"closed\":false,\"components\":1,\"euler_characteristic\":1,\"valid\":true}")
+add_test(NAME convert.fails.missing_file COMMAND convert ${_data}/no_such_file.obj ${_out}/x.obj)
+set_tests_properties(convert.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION "${_fails}")
+add_test(NAME convert.fails.usage COMMAND convert)
+set_tests_properties(convert.fails.usage PROPERTIES PASS_REGULAR_EXPRESSION "^convert: usage")
+
+# merge: two copies of a Möbius strip (100 V, 180 E, 80 F, a 40-edge border)
+# glued along their borders are a Klein bottle: 160 V, 320 E, 160 F, closed, chi 0.
+set(_klein "^{\"vertices\":160,\"edges\":320,\"faces\":160,\"border_loops\":0,\"mobius_edges\":[0-9]+,\"orientable\":false,\"closed\":true,\"components\":1,\"euler_characteristic\":0,\"valid\":true}\n$")
+foreach(_strategy auto keep-first keep-second average)
+  add_test(NAME merge.klein.${_strategy} COMMAND merge ${_data}/mobius_20x4_quads.obj ${_data}/mobius_20x4_quads.obj
+           ${_out}/klein_${_strategy}.obj --strategy ${_strategy})
+  set_tests_properties(merge.klein.${_strategy} PROPERTIES PASS_REGULAR_EXPRESSION "${_klein}")
+endforeach()
+# Bridging the two borders with 40 quads instead: 200 V, 400 E, 200 F.
+add_test(NAME merge.klein.bridge COMMAND merge ${_data}/mobius_20x4_quads.obj ${_data}/mobius_20x4_quads.obj
+         ${_out}/klein_bridge.obj --strategy bridge)
+set_tests_properties(merge.klein.bridge PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":200,\"edges\":400,\"faces\":200,\"border_loops\":0,\"mobius_edges\":[0-9]+,\"orientable\":false,\"closed\":true,\"components\":1,\"euler_characteristic\":0,\"valid\":true}\n$")
+# Closed meshes have nothing to glue: the disjoint union.
+add_test(NAME merge.closed_union COMMAND merge ${_data}/torus_24x12_quads.obj ${_data}/torus_24x12_quads.obj
+         ${_out}/tori.obj --tolerance 0.5)
+set_tests_properties(merge.closed_union PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":576,\"edges\":1152,\"faces\":576,\"border_loops\":0,\"mobius_edges\":0,\"orientable\":true,\"closed\":true,\"components\":2,\"euler_characteristic\":0,\"valid\":true}\n$")
+add_test(NAME merge.fails.negative_tolerance COMMAND merge ${_data}/mobius_20x4_quads.obj
+         ${_data}/mobius_20x4_quads.obj ${_out}/x.obj --tolerance -1)
+set_tests_properties(merge.fails.negative_tolerance PROPERTIES PASS_REGULAR_EXPRESSION "^merge: [^\n]*tolerance[^\n]*\n$")
+add_test(NAME merge.fails.unequal_loops COMMAND merge ${_data}/mobius_20x4_quads.obj
+         ${_data}/mobius_min_5tris.obj ${_out}/x.obj --strategy average)
+set_tests_properties(merge.fails.unequal_loops PROPERTIES PASS_REGULAR_EXPRESSION "^merge: [^\n]*40 and 5 edges[^\n]*\n$")
+add_test(NAME merge.fails.missing_file COMMAND merge ${_data}/no_such_file.obj ${_data}/mobius_20x4_quads.obj ${_out}/x.obj)
+set_tests_properties(merge.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION "${_fails}")
+
+add_test(NAME example.pmp_on_mobius COMMAND pmp_on_mobius)
+set_tests_properties(example.pmp_on_mobius PROPERTIES PASS_REGULAR_EXPRESSION "non-orientable, [0-9]+ Möbius edges: same topology")

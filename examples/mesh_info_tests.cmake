@@ -1,0 +1,75 @@
+# CTest tests of the mesh_info tool (included from examples/CMakeLists.txt).
+#
+# * Every file in test/data/nonorientable/ states on its first line what a
+#   correct import finds (V, E, F, chi, orientability, border loops); the
+#   test's pass expression is built from that line.
+# * Failures: a missing file, no argument, a non-manifold OpenSubdiv shape, and
+#   every file in test/data/bad/ must make mesh_info exit with status 2 and
+#   one line on stderr; files in test/data/bad/ say on their first line at
+#   which line the error is ("error at line N [or M ...]" or "no line").
+if(NOT CGAL_EXT_BUILD_TESTS)
+  return()
+endif()
+
+set(_mesh_info_data ${PROJECT_SOURCE_DIR}/test/data)
+
+file(GLOB _mesh_info_good ${_mesh_info_data}/nonorientable/*.obj)
+foreach(_file ${_mesh_info_good})
+  get_filename_component(_name ${_file} NAME_WE)
+  file(STRINGS ${_file} _header LIMIT_COUNT 1)
+  if(NOT _header MATCHES
+     "V=([0-9]+) E=([0-9]+) F=([0-9]+) chi=(-?[0-9]+) orientable=(True|False) boundary_loops=([0-9]+)")
+    message(FATAL_ERROR "${_file}: the first line does not state V, E, F, chi, orientable and boundary_loops")
+  endif()
+  set(_v ${CMAKE_MATCH_1})
+  set(_e ${CMAKE_MATCH_2})
+  set(_f ${CMAKE_MATCH_3})
+  set(_chi ${CMAKE_MATCH_4})
+  string(TOLOWER ${CMAKE_MATCH_5} _orientable)
+  set(_b ${CMAKE_MATCH_6})
+  # orient() leaves no Möbius edge on an orientable surface and at least one otherwise.
+  if(_orientable STREQUAL "true")
+    set(_mobius "0")
+  else()
+    set(_mobius "[1-9][0-9]*")
+  endif()
+  if(_b EQUAL 0)
+    set(_closed "true")
+  else()
+    set(_closed "false")
+  endif()
+  add_test(NAME mesh_info.${_name} COMMAND mesh_info ${_file})
+  set_tests_properties(mesh_info.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+    "^{\"vertices\":${_v},\"edges\":${_e},\"faces\":${_f},\"border_loops\":${_b},\"mobius_edges\":${_mobius},\"orientable\":${_orientable},\"closed\":${_closed},\"components\":[1-9][0-9]*,\"euler_characteristic\":${_chi},\"valid\":true}\n$")
+endforeach()
+
+set(_mesh_info_check ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+add_test(NAME mesh_info.fails.no_argument
+  COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:mesh_info> -DEXPECT=usage -P ${_mesh_info_check})
+add_test(NAME mesh_info.fails.missing_file
+  COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:mesh_info> -DFILE=${_mesh_info_data}/no_such_file.obj
+          "-DEXPECT=no_such_file.obj: cannot open" -P ${_mesh_info_check})
+add_test(NAME mesh_info.fails.unknown_extension
+  COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:mesh_info> -DFILE=${_mesh_info_data}/README.md
+          "-DEXPECT=unknown file extension" -P ${_mesh_info_check})
+# An edge with three faces (lines 57, 62, 66 share (9, 10); lines 58, 61, 65 share (8, 9)).
+add_test(NAME mesh_info.fails.catmark_fan
+  COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:mesh_info> -DFILE=${_mesh_info_data}/opensubdiv/catmark_fan.obj
+          "-DEXPECT=catmark_fan.obj:(57|58|61|62|65|66): .*shared by 3 polygons" -P ${_mesh_info_check})
+
+file(GLOB _mesh_info_bad ${_mesh_info_data}/bad/*)
+foreach(_file ${_mesh_info_bad})
+  get_filename_component(_name ${_file} NAME)
+  file(STRINGS ${_file} _header LIMIT_COUNT 1)
+  if(_header MATCHES "error at line ([0-9]+( or [0-9]+)*)")
+    string(REPLACE " or " "|" _lines "${CMAKE_MATCH_1}")
+    set(_expect "${_name}:(${_lines}): ")
+  elseif(_header MATCHES "error with no line")
+    set(_expect "${_name}: ")
+  else()
+    message(FATAL_ERROR "${_file}: the first line does not say where the error is")
+  endif()
+  add_test(NAME mesh_info.fails.${_name}
+    COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:mesh_info> -DFILE=${_file} "-DEXPECT=${_expect}"
+            -P ${_mesh_info_check})
+endforeach()

@@ -1,0 +1,24 @@
+# CTest runs of the subdivide tool: counts of the result follow from the
+# split (cube, Catmull-Clark, 2 steps: 98 vertices, 192 edges, 96 faces;
+# Möbius strip of 160 triangles, Loop, 2 steps: 2560 faces), and bad
+# options or input exit with status 2.
+if(CGAL_EXT_BUILD_TESTS)
+  set(_data ${PROJECT_SOURCE_DIR}/test/data)
+  add_test(NAME example.subdivide.cube
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube2.obj --levels 2)
+  set_tests_properties(example.subdivide.cube PROPERTIES
+    PASS_REGULAR_EXPRESSION "\"vertices\":98,\"edges\":192,\"faces\":96,\"seconds\":")
+  add_test(NAME example.subdivide.mobius_loop_epeck
+           COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius2.off
+                   --scheme loop --levels 2 --kernel epeck)
+  set_tests_properties(example.subdivide.mobius_loop_epeck PROPERTIES
+    PASS_REGULAR_EXPRESSION "\"faces\":2560")
+  add_test(NAME example.subdivide.not_implemented
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme sqrt3)
+  add_test(NAME example.subdivide.bad_option
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --levels x)
+  add_test(NAME example.subdivide.loop_on_quads
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme loop)
+  set_tests_properties(example.subdivide.not_implemented example.subdivide.bad_option
+                       example.subdivide.loop_on_quads PROPERTIES WILL_FAIL TRUE)
+endif()

@@ -1,0 +1,841 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Reading and writing a Mobius_mesh as OBJ, OFF or PLY, with OpenSubdiv's
+// OBJ tags for creases, corners and the mesh-level subdivision options.
+
+#ifndef CGAL_EXT_IO_POLYGON_MESH_IO_H
+#define CGAL_EXT_IO_POLYGON_MESH_IO_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL_ext {
+namespace IO {
+namespace internal {
+
+enum class Mesh_format { obj, off, ply };
+
+inline std::string lower_extension(const std::string& filename)
+{
+  const std::string name = std::filesystem::path(filename).filename().string();
+  const std::string::size_type dot = name.rfind('.');
+  if (dot == std::string::npos)
+    return std::string();
+  std::string ext = name.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+inline Mesh_format format_of(const std::string& filename)
+{
+  const std::string ext = lower_extension(filename);
+  if (ext == "obj")
+    return Mesh_format::obj;
+  if (ext == "off")
+    return Mesh_format::off;
+  if (ext == "ply")
+    return Mesh_format::ply;
+  throw IO_error(filename, 0,
+                 (ext.empty() ? std::string("the file name has no extension")
+                              : "unknown file extension '." + ext + "'") +
+                   "; expected .obj, .off or .ply");
+}
+
+inline std::string system_reason()
+{
+  return errno != 0 ? std::string(": ") + std::strerror(errno) : std::string();
+}
+
+inline std::string read_whole_file(const std::string& filename)
+{
+  std::error_code ec;
+  if (std::filesystem::is_directory(filename, ec))
+    throw IO_error(filename, 0, "is a directory, not a file");
+  errno = 0;
+  std::ifstream in(filename, std::ios::binary);
+  if (!in)
+    throw IO_error(filename, 0, "cannot open the file for reading" + system_reason());
+  // One bulk read of the whole file, far faster than stream iteration.
+  std::string text;
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size > 0) {
+    text.resize(std::size_t(size));
+    in.read(&text[0], size);
+  } else if (size < 0) { // not seekable (a pipe): copy it through
+    in.clear();
+    std::ostringstream buffer;
+    if (in.peek() != std::ifstream::traits_type::eof())
+      buffer << in.rdbuf();
+    text = std::move(buffer).str();
+  }
+  if (in.bad())
+    throw IO_error(filename, 0, "cannot read the file" + system_reason());
+  return text;
+}
+
+// Splits the text into lines (without their end-of-line characters) and each
+// line into whitespace-separated tokens; '\r' counts as whitespace so that
+// files with Windows line ends read the same.
+class Line_reader
+{
+public:
+  explicit Line_reader(const std::string& text) : text_(text) {}
+
+  // Moves to the next line; false at the end of the text.
+  bool next()
+  {
+    if (pos_ > text_.size() || (pos_ == text_.size() && (pos_ == 0 || text_[pos_ - 1] == '\n')))
+      return false;
+    const std::string::size_type end = text_.find('\n', pos_);
+    const std::string::size_type stop = end == std::string::npos ? text_.size() : end;
+    line_.assign(text_, pos_, stop - pos_);
+    pos_ = stop + 1;
+    ++number_;
+    tokens_.clear();
+    std::string::size_type i = 0;
+    while (i < line_.size()) {
+      while (i < line_.size() && is_space(line_[i]))
+        ++i;
+      std::string::size_type j = i;
+      while (j < line_.size() && !is_space(line_[j]))
+        ++j;
+      if (j > i)
+        tokens_.push_back(line_.substr(i, j - i));
+      i = j;
+    }
+    return true;
+  }
+  const std::string& line() const { return line_; }
+  std::size_t number() const { return number_; }
+  const std::vector<std::string>& tokens() const { return tokens_; }
+
+private:
+  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+  const std::string& text_;
+  std::string::size_type pos_ = 0;
+  std::size_t number_ = 0;
+  std::string line_;
+  std::vector<std::string> tokens_;
+};
+
+// A decimal number as `operator>>(double&)` reads it (the way CGAL's readers
+// read coordinates): no "nan", "inf" or hexadecimal forms, and finite.
+inline bool parse_real(const std::string& token, double& value)
+{
+  if (token.empty())
+    return false;
+  for (char c : token)
+    if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E'))
+      return false;
+  errno = 0;
+  char* end = nullptr;
+  value = std::strtod(token.c_str(), &end);
+  return end == token.c_str() + token.size() && std::isfinite(value);
+}
+
+// A float rounded from its decimal text, as OpenSubdiv's `sscanf("%f")` does.
+inline bool parse_float(const std::string& token, float& value)
+{
+  double check = 0;
+  if (!parse_real(token, check))
+    return false;
+  char* end = nullptr;
+  value = std::strtof(token.c_str(), &end);
+  return std::isfinite(value);
+}
+
+inline bool parse_integer(const std::string& token, long long& value)
+{
+  if (token.empty())
+    return false;
+  errno = 0;
+  char* end = nullptr;
+  value = std::strtoll(token.c_str(), &end, 10);
+  return end == token.c_str() + token.size() && errno == 0 && !std::isspace(static_cast<unsigned char>(token[0]));
+}
+
+// Where each soup point and polygon came from in the file (1-based lines);
+// empty where the format has no lines (PLY, binary OFF).
+struct Soup_lines
+{
+  std::vector<std::size_t> point_lines;
+  std::vector<std::size_t> polygon_lines;
+};
+
+struct Crease_tag
+{
+  std::size_t line;
+  long long v0, v1;
+  float sharpness;
+};
+
+struct Corner_tag
+{
+  std::size_t line;
+  long long v;
+  float sharpness;
+};
+
+struct Obj_scan
+{
+  Soup_lines lines;
+  std::vector<Crease_tag> creases;
+  std::vector<Corner_tag> corners;
+  Sharp_feature_options options;
+  std::string geometry; // the text with the tag lines blanked, for CGAL's reader
+};
+
+inline bool is_statement_cgal_skips(const std::string& s)
+{
+  // The statements CGAL's OBJ reader accepts and ignores (CGAL/IO/OBJ.h).
+  static const char* const names[] = {"vt",  "vn",      "vp",       "bevel",   "lod",     "ctech",   "c_interp",
+                                      "usemap", "usemtl", "stech",   "d_interp", "mtllib", "shadow_obj",
+                                      "trace_obj", "o",    "g",        "s",       "p",       "cstype",  "deg",
+                                      "step",  "bmat",     "con",      "curv",    "curv2",   "surf",    "parm",
+                                      "trim",  "hole",     "scrv",     "sp",      "end",     "surf_1",  "q0_1",
+                                      "q1_1",  "curv2d_1", "surf_2",   "q0_2",    "q1_2",    "curv2d_2", "bsp",
+                                      "bzp",   "cdc",      "cdp",      "res"};
+  for (const char* n : names)
+    if (s == n)
+      return true;
+  return false;
+}
+
+// Reads one OpenSubdiv tag line: `t name nint/nfloat/nstring ints floats strings`.
+inline void scan_obj_tag(const std::string& filename, const Line_reader& reader, Obj_scan& scan)
+{
+  const std::vector<std::string>& tok = reader.tokens();
+  const std::size_t line = reader.number();
+  auto fail = [&](const std::string& what) { throw IO_error(filename, line, what); };
+  if (tok.size() < 2)
+    fail("a tag line needs a name: 't name nint/nfloat/nstring arguments'");
+  const std::string& name = tok[1];
+  const bool known = name == "crease" || name == "corner" || name == "interpolateboundary" ||
+                     name == "creasemethod" || name == "smoothtriangles";
+  if (!known)
+    return; // other tags (holes, face-varying options, ...) do not concern the mesh
+  if (tok.size() < 3)
+    fail("tag '" + name + "' lacks its argument counts 'nint/nfloat/nstring'");
+  long long counts[3] = {0, 0, 0};
+  {
+    std::string c = tok[2];
+    std::size_t k = 0, start = 0;
+    for (; k < 3; ++k) {
+      const std::size_t slash = k < 2 ? c.find('/', start) : std::string::npos;
+      if (k < 2 && slash == std::string::npos)
+        break;
+      const std::string part = c.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+      if (!parse_integer(part, counts[k]) || counts[k] < 0 || counts[k] > 1000000)
+        break;
+      start = slash + 1;
+    }
+    if (k != 3)
+      fail("tag '" + name + "': '" + c + "' is not an argument count 'nint/nfloat/nstring'");
+  }
+  const std::size_t n_int = std::size_t(counts[0]), n_float = std::size_t(counts[1]),
+                    n_string = std::size_t(counts[2]);
+  if (tok.size() != 3 + n_int + n_float + n_string)
+    fail("tag '" + name + "' announces " + std::to_string(n_int) + " integer(s), " + std::to_string(n_float) +
+         " float(s) and " + std::to_string(n_string) + " string(s), but has " + std::to_string(tok.size() - 3) +
+         " argument(s)");
+  std::vector<long long> ints(n_int);
+  for (std::size_t i = 0; i < n_int; ++i)
+    if (!parse_integer(tok[3 + i], ints[i]))
+      fail("tag '" + name + "': '" + tok[3 + i] + "' is not an integer");
+  std::vector<float> floats(n_float);
+  for (std::size_t i = 0; i < n_float; ++i) {
+    if (!parse_float(tok[3 + n_int + i], floats[i]))
+      fail("tag '" + name + "': '" + tok[3 + n_int + i] + "' is not a finite number");
+    if (floats[i] < 0)
+      fail("tag '" + name + "': sharpness " + tok[3 + n_int + i] + " is negative");
+  }
+  const std::string* strings = n_string ? &tok[3 + n_int + n_float] : nullptr;
+
+  if (name == "crease") {
+    // Indices are read as pairs (v0 v1, v2 v3, ...), with one sharpness for
+    // all pairs or one per pair.
+    if (n_int < 2 || n_int % 2 != 0)
+      fail("tag 'crease' needs an even number (at least 2) of vertex indices, read as pairs");
+    if (n_float != 1 && n_float != n_int / 2)
+      fail("tag 'crease' needs one sharpness, or one per vertex pair (" + std::to_string(n_int / 2) + ")");
+    for (std::size_t i = 0; i < n_int; i += 2)
+      scan.creases.push_back({line, ints[i], ints[i + 1], floats[n_float == 1 ? 0 : i / 2]});
+  } else if (name == "corner") {
+    if (n_int < 1)
+      fail("tag 'corner' needs at least one vertex index");
+    if (n_float != 1 && n_float != n_int)
+      fail("tag 'corner' needs one sharpness, or one per vertex (" + std::to_string(n_int) + ")");
+    for (std::size_t i = 0; i < n_int; ++i)
+      scan.corners.push_back({line, ints[i], floats[n_float == 1 ? 0 : i]});
+  } else if (name == "interpolateboundary") {
+    if (n_int != 1 || ints[0] < 0 || ints[0] > 2)
+      fail("tag 'interpolateboundary' needs one integer: 0 (none), 1 (edge and corner) or 2 (edge only)");
+    static const Boundary_interpolation modes[] = {Boundary_interpolation::none,
+                                                   Boundary_interpolation::edge_and_corner,
+                                                   Boundary_interpolation::edge_only};
+    scan.options.boundary_interpolation = modes[ints[0]];
+  } else if (name == "creasemethod") {
+    // OpenSubdiv's regression shapes call the uniform method "normal".
+    if (n_string >= 1 && strings[0] == "chaikin")
+      scan.options.crease_method = Crease_method::chaikin;
+    else if (n_string >= 1 && (strings[0] == "uniform" || strings[0] == "normal"))
+      scan.options.crease_method = Crease_method::uniform;
+    else
+      fail("tag 'creasemethod' needs one string: 'chaikin' or 'uniform'");
+  } else { // smoothtriangles
+    if (n_string >= 1 && strings[0] == "smooth")
+      scan.options.triangle_subdivision = Triangle_subdivision::smooth;
+    else if (n_string >= 1 && strings[0] == "catmark")
+      scan.options.triangle_subdivision = Triangle_subdivision::catmark;
+    else
+      fail("tag 'smoothtriangles' needs one string: 'smooth' or 'catmark'");
+  }
+}
+
+// A light line scan of an OBJ file: checks the syntax of `v`, `f` and `t`
+// lines (CGAL's reader stops silently on bad input), remembers the line of
+// each vertex and face, and reads the tags.
+inline Obj_scan scan_obj(const std::string& filename, const std::string& text)
+{
+  Obj_scan scan;
+  scan.geometry.reserve(text.size());
+  Line_reader reader(text);
+  std::size_t first_forward_line = 0; // first face naming a vertex defined later
+  while (reader.next()) {
+    const std::vector<std::string>& tok = reader.tokens();
+    const std::size_t line = reader.number();
+    auto fail = [&](const std::string& what) { throw IO_error(filename, line, what); };
+    if (tok.empty() || tok[0][0] == '#') {
+      scan.geometry += '\n';
+      continue;
+    }
+    const std::string& s = tok[0];
+    if (s == "t") {
+      scan_obj_tag(filename, reader, scan);
+      scan.geometry += '\n'; // CGAL's reader refuses tag lines
+      continue;
+    }
+    if (s == "v") {
+      double x;
+      if (tok.size() < 4)
+        fail("a vertex needs three coordinates: 'v x y z'");
+      for (std::size_t i = 1; i < 4; ++i)
+        if (!parse_real(tok[i], x))
+          fail("vertex coordinate '" + tok[i] + "' is not a finite number");
+      scan.lines.point_lines.push_back(line);
+    } else if (s == "f") {
+      const long long n_points = static_cast<long long>(scan.lines.point_lines.size());
+      for (std::size_t i = 1; i < tok.size(); ++i) {
+        // v, v/vt, v//vn or v/vt/vn: only the vertex index matters here.
+        const std::string& t = tok[i];
+        const std::size_t slash = t.find('/');
+        long long index = 0, other = 0;
+        bool ok = parse_integer(t.substr(0, slash), index);
+        if (ok && slash != std::string::npos) {
+          const std::string rest = t.substr(slash + 1);
+          const std::size_t slash2 = rest.find('/');
+          const std::string a = rest.substr(0, slash2);
+          const std::string b = slash2 == std::string::npos ? std::string() : rest.substr(slash2 + 1);
+          ok = (a.empty() || parse_integer(a, other)) && (slash2 == std::string::npos || parse_integer(b, other)) &&
+               (!a.empty() || slash2 != std::string::npos);
+        }
+        if (!ok)
+          fail("face corner '" + t + "' is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
+        if (index == 0)
+          fail("face corner '" + t + "': OBJ vertex indices start at 1");
+        if (index < 0 && n_points + index < 0)
+          fail("face corner '" + t + "' refers " + std::to_string(-index) + " vertices back, but only " +
+               std::to_string(n_points) + " vertices precede it");
+        if (index > n_points && first_forward_line == 0)
+          first_forward_line = line;
+      }
+      scan.lines.polygon_lines.push_back(line);
+    } else if (!is_statement_cgal_skips(s)) {
+      fail("unknown OBJ statement '" + s + "'");
+    }
+    // CGAL's reader skips from one face corner to the next at a space, not a tab.
+    std::string copy = reader.line();
+    std::replace(copy.begin(), copy.end(), '\t', ' ');
+    scan.geometry += copy;
+    scan.geometry += '\n';
+  }
+  const long long n_points = static_cast<long long>(scan.lines.point_lines.size());
+  if (first_forward_line != 0) {
+    // Faces may name vertices defined further down; check them at the end.
+    Line_reader again(text);
+    while (again.next()) {
+      if (again.number() < first_forward_line || again.tokens().empty() || again.tokens()[0] != "f")
+        continue;
+      for (std::size_t i = 1; i < again.tokens().size(); ++i) {
+        long long index = 0;
+        parse_integer(again.tokens()[i].substr(0, again.tokens()[i].find('/')), index);
+        if (index > n_points)
+          throw IO_error(filename, again.number(),
+                         "face names vertex " + std::to_string(index) + ", but the file has only " +
+                           std::to_string(n_points) + " vertices");
+      }
+    }
+  }
+  for (const Crease_tag& c : scan.creases)
+    for (long long v : {c.v0, c.v1})
+      if (v < 0 || v >= n_points)
+        throw IO_error(filename, c.line,
+                       "crease names vertex " + std::to_string(v) + ", but tag indices run from 0 to " +
+                         std::to_string(n_points - 1));
+  for (const Corner_tag& c : scan.corners)
+    if (c.v < 0 || c.v >= n_points)
+      throw IO_error(filename, c.line,
+                     "corner names vertex " + std::to_string(c.v) + ", but tag indices run from 0 to " +
+                       std::to_string(n_points - 1));
+  return scan;
+}
+
+// A light line scan of an ASCII OFF file: checks the header, the vertex
+// lines and the face lines, and remembers the line of each vertex and face.
+// Binary OFF is left to CGAL's reader alone.
+inline Soup_lines scan_off(const std::string& filename, const std::string& text)
+{
+  Soup_lines lines;
+  Line_reader reader(text);
+  // Records are the lines with something left once comments are cut.
+  auto next_record = [&](std::vector<std::string>& tok) {
+    while (reader.next()) {
+      tok.clear();
+      for (const std::string& t : reader.tokens()) {
+        const std::size_t hash = t.find('#');
+        if (hash != 0)
+          tok.push_back(t.substr(0, hash));
+        if (hash != std::string::npos)
+          break;
+      }
+      if (!tok.empty())
+        return true;
+    }
+    return false;
+  };
+  std::vector<std::string> tok;
+  if (!next_record(tok))
+    throw IO_error(filename, reader.number(), "the file is empty: no OFF header");
+  const std::string& keyword = tok[0];
+  const std::size_t k = keyword.size();
+  std::size_t j = 0;
+  if (keyword.compare(0, 2, "ST") == 0)
+    j += 2;
+  if (j < k && keyword[j] == 'C')
+    ++j;
+  if (j < k && keyword[j] == 'N')
+    ++j;
+  const bool homogeneous = j < k && keyword[j] == '4';
+  if (homogeneous)
+    ++j;
+  if (keyword.compare(j, std::string::npos, "OFF") != 0)
+    throw IO_error(filename, reader.number(), "missing OFF header: the file starts with '" + keyword + "'");
+  std::size_t first = 1;
+  if (tok.size() > 1 && tok[1] == "BINARY")
+    return lines;
+  if (tok.size() == 1) {
+    if (!next_record(tok))
+      throw IO_error(filename, reader.number(), "the file ends before the vertex and face counts");
+    first = 0;
+  }
+  long long n_vertices = -1, n_faces = -1;
+  if (tok.size() < first + 2 || !parse_integer(tok[first], n_vertices) || !parse_integer(tok[first + 1], n_faces) ||
+      n_vertices < 0 || n_faces < 0)
+    throw IO_error(filename, reader.number(), "expected the counts 'vertices faces edges'");
+  const std::size_t dimension = homogeneous ? 4 : 3;
+  for (long long i = 0; i < n_vertices; ++i) {
+    if (!next_record(tok))
+      throw IO_error(filename, reader.number(),
+                     "the file ends after " + std::to_string(i) + " of " + std::to_string(n_vertices) + " vertices");
+    double x;
+    if (tok.size() < dimension)
+      throw IO_error(filename, reader.number(),
+                     "a vertex needs " + std::to_string(dimension) + " coordinates, this line has " +
+                       std::to_string(tok.size()));
+    for (std::size_t c = 0; c < dimension; ++c)
+      if (!parse_real(tok[c], x))
+        throw IO_error(filename, reader.number(), "vertex coordinate '" + tok[c] + "' is not a finite number");
+    lines.point_lines.push_back(reader.number());
+  }
+  for (long long i = 0; i < n_faces; ++i) {
+    if (!next_record(tok))
+      throw IO_error(filename, reader.number(),
+                     "the file ends after " + std::to_string(i) + " of " + std::to_string(n_faces) + " faces");
+    long long size = 0;
+    if (!parse_integer(tok[0], size) || size < 0)
+      throw IO_error(filename, reader.number(), "a face starts with its number of vertices, not '" + tok[0] + "'");
+    if (tok.size() < std::size_t(size) + 1)
+      throw IO_error(filename, reader.number(),
+                     "the face announces " + std::to_string(size) + " vertices but lists " +
+                       std::to_string(tok.size() - 1));
+    for (long long c = 1; c <= size; ++c) {
+      long long index = 0;
+      if (!parse_integer(tok[std::size_t(c)], index))
+        throw IO_error(filename, reader.number(), "face vertex '" + tok[std::size_t(c)] + "' is not an index");
+      if (index < 0 || index >= n_vertices)
+        throw IO_error(filename, reader.number(),
+                       "face names vertex " + std::to_string(index) + ", but vertex indices run from 0 to " +
+                         std::to_string(n_vertices - 1));
+    }
+    lines.polygon_lines.push_back(reader.number());
+  }
+  return lines;
+}
+
+[[noreturn]] inline void throw_soup_error_in_file(const Soup_error& e, const std::string& filename,
+                                                  const Soup_lines& lines)
+{
+  std::size_t line = 0;
+  if (!e.polygons().empty() && e.polygons().front() < lines.polygon_lines.size())
+    line = lines.polygon_lines[e.polygons().front()];
+  else if (!e.vertices().empty() && e.vertices().front() < lines.point_lines.size())
+    line = lines.point_lines[e.vertices().front()];
+  throw IO_error(filename, line, std::string(e.what()) + " (polygons and points numbered from 0)", e.kind());
+}
+
+// The shortest decimal text that reads back as the same float, without an
+// exponent for everyday magnitudes (10, not 1e+01).
+inline std::string float_text(float s)
+{
+  const bool plain = s == 0 || (std::abs(s) >= 1e-4f && std::abs(s) < 1e6f);
+  char buffer[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, double(s));
+    if (std::strtof(buffer, nullptr) == s && (!plain || std::strchr(buffer, 'e') == nullptr))
+      break;
+  }
+  return buffer;
+}
+
+// Sets the sharpness the tags give, on the vertices the soup points became.
+template <class P, class NP>
+void apply_obj_tags(const Obj_scan& scan, const std::string& filename,
+                    const std::vector<std::vector<std::size_t>>& polygons, std::size_t n_points,
+                    Mobius_mesh<P>& mesh, const NP& np)
+{
+  if (scan.creases.empty() && scan.corners.empty())
+    return;
+  // Soup point -> mesh vertices. Without merging the import keeps the point
+  // indices and only appends the vertices that splitting creates; those (and
+  // every vertex under merging) are found through the faces, which keep the
+  // polygons' order and start: the halfedge of face p ends at corner 1 of p.
+  std::vector<std::vector<Vertex_index>> images(n_points);
+  using Tolerance = std::decay_t<decltype(parameters::get_parameter(np, CGAL_ext::internal_np::tolerance))>;
+  constexpr bool merged = !std::is_same_v<Tolerance, CGAL::internal_np::Param_not_found>;
+  if constexpr (!merged) {
+    for (std::size_t s = 0; s < n_points && s < mesh.number_of_vertices(); ++s)
+      images[s].push_back(Vertex_index(s));
+  }
+  if (merged || mesh.number_of_vertices() != n_points) {
+    for (std::size_t p = 0; p < polygons.size(); ++p) {
+      const std::vector<std::size_t>& polygon = polygons[p];
+      std::size_t c = 1;
+      for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(Face_index(p)), mesh)) {
+        std::vector<Vertex_index>& image = images[polygon[c % polygon.size()]];
+        const Vertex_index v = mesh.target(d);
+        if (std::find(image.begin(), image.end(), v) == image.end())
+          image.push_back(v);
+        ++c;
+      }
+    }
+  }
+  if (!scan.creases.empty()) {
+    auto sharpness = edge_sharpness_map(mesh);
+    for (const Crease_tag& c : scan.creases) {
+      Edge_index edge;
+      for (Vertex_index a : images[std::size_t(c.v0)]) {
+        if (mesh.is_isolated(a))
+          continue;
+        for (Dart d : CGAL_ext::halfedges_around_target(a, mesh)) {
+          const std::vector<Vertex_index>& b = images[std::size_t(c.v1)];
+          if (std::find(b.begin(), b.end(), mesh.source(d)) != b.end())
+            edge = mesh.edge(d);
+        }
+      }
+      if (!edge.is_valid())
+        throw IO_error(filename, c.line,
+                       "crease names vertices " + std::to_string(c.v0) + " and " + std::to_string(c.v1) +
+                         " (numbered from 0), which are not joined by an edge");
+      sharpness[edge] = c.sharpness;
+    }
+  }
+  if (!scan.corners.empty()) {
+    auto sharpness = vertex_sharpness_map(mesh);
+    // A corner on a point that merging folded away and no face uses names no vertex.
+    for (const Corner_tag& c : scan.corners)
+      for (Vertex_index v : images[std::size_t(c.v)])
+        sharpness[v] = c.sharpness;
+  }
+}
+
+template <class P, class Map>
+void write_crease_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Map& sharpness)
+{
+  for (Edge_index e : mesh.edges()) {
+    const float s = float(get(sharpness, e));
+    if (s != 0)
+      out << "t crease 2/1/0 " << mesh.vertex(e, 0).idx() << ' ' << mesh.vertex(e, 1).idx() << ' ' << float_text(s)
+          << '\n';
+  }
+}
+// The mesh's own map may be missing; a map given as a parameter is not optional.
+template <class P, class Map>
+void write_crease_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const std::optional<Map>& sharpness)
+{
+  if (sharpness)
+    write_crease_tags(out, mesh, *sharpness);
+}
+
+template <class P, class Map>
+void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Map& sharpness)
+{
+  for (Vertex_index v : mesh.vertices()) {
+    const float s = float(get(sharpness, v));
+    if (s != 0)
+      out << "t corner 1/1/0 " << v.idx() << ' ' << float_text(s) << '\n';
+  }
+}
+template <class P, class Map>
+void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const std::optional<Map>& sharpness)
+{
+  if (sharpness)
+    write_corner_tags(out, mesh, *sharpness);
+}
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMeshIO
+///
+/// Reads a polygon mesh from an OBJ, OFF or PLY file (chosen by the file
+/// name's extension, in any letter case) into `mesh`, replacing its content.
+/// The polygons go through CGAL's polygon soup readers and then
+/// `polygon_soup_to_mobius_mesh()`, so non-orientable surfaces are read with
+/// their Möbius connections; faces keep the file's orientation.
+///
+/// From OBJ files, OpenSubdiv's tag lines are read as well (vertex indices in
+/// tags count from 0):
+/// `t crease n/m/0 v0 v1 ... s...` sets the sharpness of the edges (v0, v1),
+/// (v2, v3), ... (one sharpness for all pairs, or one per pair) in the edge
+/// property map `edge_sharpness_name`; `t corner n/m/0 v... s...` sets vertex
+/// sharpness in the map `vertex_sharpness_name`; each map is created only if
+/// the file has such tags. `t interpolateboundary 1/0/0 k` (0 none,
+/// 1 edge and corner, 2 edge only), `t creasemethod 0/0/1 chaikin|uniform` and
+/// `t smoothtriangles 0/0/1 smooth|catmark` are returned. Other tags are
+/// ignored.
+///
+/// \param filename the file to read
+/// \param mesh the mesh that receives the file's content; unchanged if reading fails
+/// \param np optional named parameters, passed on to `polygon_soup_to_mobius_mesh()`:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{tolerance}
+///     \cgalParamDescription{points closer than this are merged before the mesh is built}
+///     \cgalParamType{the kernel's `FT`}
+///     \cgalParamDefault{no merging}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{split_non_manifold_vertices}
+///     \cgalParamDescription{if `true`, a vertex whose polygons form several fans is split}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the mesh-level options the file's tags set (unset where it has none).
+/// \throws IO_error, naming the file and (where there is one) the line, if the
+///   file cannot be read, has an unknown extension, has a malformed line or tag,
+///   a tag names a vertex that does not exist or a crease names two vertices
+///   that share no edge, or if its polygons do not form a 2-manifold (then
+///   `IO_error::soup_kind()` tells which `Soup_error` it was, and the line is
+///   that of the offending polygon in OBJ and ASCII OFF files).
+/// \throws Parameter_error for a negative or NaN tolerance.
+template <class P, class NP = parameters::Default_named_parameters>
+Sharp_feature_options read_polygon_mesh(const std::string& filename, Mobius_mesh<P>& mesh,
+                                        const NP& np = parameters::default_values())
+{
+  const internal::Mesh_format format = internal::format_of(filename);
+  std::vector<P> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  internal::Obj_scan obj;
+  internal::Soup_lines off_lines;
+  const internal::Soup_lines* lines = &off_lines;
+  bool read = false;
+  if (format == internal::Mesh_format::ply) {
+    {
+      std::error_code ec;
+      if (std::filesystem::is_directory(filename, ec))
+        throw IO_error(filename, 0, "is a directory, not a file");
+      errno = 0;
+      std::ifstream probe(filename, std::ios::binary);
+      if (!probe)
+        throw IO_error(filename, 0, "cannot open the file for reading" + internal::system_reason());
+    }
+    read = CGAL::IO::read_PLY(filename, points, polygons, CGAL::parameters::verbose(false));
+  } else {
+    const std::string text = internal::read_whole_file(filename);
+    if (format == internal::Mesh_format::obj) {
+      obj = internal::scan_obj(filename, text);
+      lines = &obj.lines;
+      std::istringstream in(obj.geometry);
+      read = CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+    } else {
+      off_lines = internal::scan_off(filename, text);
+      std::istringstream in(text, std::ios::in | std::ios::binary);
+      read = CGAL::IO::read_OFF(in, points, polygons, CGAL::parameters::verbose(false));
+    }
+  }
+  if (polygons.empty() && (read || format != internal::Mesh_format::ply))
+    throw IO_error(filename, 0, "the file has no faces");
+  if (!read)
+    throw IO_error(filename, 0, "CGAL's reader could not read the file's polygons");
+
+  Mobius_mesh<P> result;
+  try {
+    polygon_soup_to_mobius_mesh(points, polygons, result, np);
+  } catch (const Soup_error& e) {
+    internal::throw_soup_error_in_file(e, filename, *lines);
+  }
+  if (format == internal::Mesh_format::obj)
+    internal::apply_obj_tags(obj, filename, polygons, points.size(), result, np);
+  mesh = std::move(result);
+  return obj.options;
+}
+
+/// \ingroup PkgMobiusMeshIO
+///
+/// Writes `mesh` to an OBJ, OFF or PLY file, chosen by the file name's
+/// extension (in any letter case), through CGAL's polygon soup writers.
+/// Each face is written in its own orientation, so reading the file back
+/// gives the same Möbius edges. Coordinates are written as doubles with 17
+/// significant digits, which read back exactly; exact kernels write
+/// `CGAL::to_double()` of each coordinate (which may be one unit in the last
+/// place away from the nearest double). PLY is written in binary unless
+/// `use_binary_mode(false)`.
+///
+/// To OBJ files, OpenSubdiv's tags are written too: `t crease 2/1/0 v0 v1 s`
+/// for each edge and `t corner 1/1/0 v s` for each vertex whose sharpness is
+/// not 0, and the options that are set in `options`.
+///
+/// \param filename the file to write
+/// \param mesh the mesh
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{edge_sharpness_map}
+///     \cgalParamDescription{the sharpness of each edge}
+///     \cgalParamType{a readable property map with key `Edge_index` and a value convertible to `float`}
+///     \cgalParamDefault{the edge property map `edge_sharpness_name` if `mesh` has one, else none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_sharpness_map}
+///     \cgalParamDescription{the sharpness of each vertex}
+///     \cgalParamType{a readable property map with key `Vertex_index` and a value convertible to `float`}
+///     \cgalParamDefault{the vertex property map `vertex_sharpness_name` if `mesh` has one, else none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{stream_precision}
+///     \cgalParamDescription{significant digits of the coordinates in text formats}
+///     \cgalParamType{int}
+///     \cgalParamDefault{17}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{use_binary_mode}
+///     \cgalParamDescription{whether PLY files are written in binary}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \param options mesh-level subdivision options, written as OBJ tags
+///
+/// \throws IO_error if the extension is unknown or the file cannot be written.
+template <class P, class NP = parameters::Default_named_parameters>
+void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
+                        const NP& np = parameters::default_values(), const Sharp_feature_options& options = {})
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Double_point = CGAL::Simple_cartesian<double>::Point_3;
+  const internal::Mesh_format format = internal::format_of(filename);
+
+  std::vector<Double_point> points;
+  points.reserve(mesh.number_of_vertices());
+  for (Vertex_index v : mesh.vertices()) {
+    const P& p = mesh.point(v);
+    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  std::vector<std::vector<std::size_t>> polygons;
+  polygons.reserve(mesh.number_of_faces());
+  for (Face_index f : mesh.faces()) {
+    polygons.emplace_back();
+    for (Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh))
+      polygons.back().push_back(v.idx());
+  }
+
+  const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
+  const bool binary =
+    format == internal::Mesh_format::ply && choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), true);
+  errno = 0;
+  std::ofstream out(filename, binary ? std::ios::out | std::ios::binary : std::ios::out);
+  if (!out)
+    throw IO_error(filename, 0, "cannot open the file for writing" + internal::system_reason());
+  const auto cgal_np = CGAL::parameters::stream_precision(precision);
+  bool written = false;
+  if (format == internal::Mesh_format::obj) {
+    written = CGAL::IO::write_OBJ(out, points, polygons, cgal_np);
+    // OpenSubdiv's tags; vertex indices in tags count from 0.
+    internal::write_crease_tags(out, mesh,
+                                choose_parameter(get_parameter(np, CGAL_ext::internal_np::edge_sharpness),
+                                                 mesh.template property_map<Edge_index, float>(edge_sharpness_name)));
+    internal::write_corner_tags(
+      out, mesh,
+      choose_parameter(get_parameter(np, CGAL_ext::internal_np::vertex_sharpness),
+                       mesh.template property_map<Vertex_index, float>(vertex_sharpness_name)));
+    if (options.boundary_interpolation) {
+      const int k = *options.boundary_interpolation == Boundary_interpolation::none              ? 0
+                    : *options.boundary_interpolation == Boundary_interpolation::edge_and_corner ? 1
+                                                                                                  : 2;
+      out << "t interpolateboundary 1/0/0 " << k << '\n';
+    }
+    if (options.crease_method)
+      out << "t creasemethod 0/0/1 " << (*options.crease_method == Crease_method::chaikin ? "chaikin" : "uniform")
+          << '\n';
+    if (options.triangle_subdivision)
+      out << "t smoothtriangles 0/0/1 "
+          << (*options.triangle_subdivision == Triangle_subdivision::smooth ? "smooth" : "catmark") << '\n';
+  } else if (format == internal::Mesh_format::off) {
+    written = CGAL::IO::write_OFF(out, points, polygons, cgal_np);
+  } else {
+    CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+    written = CGAL::IO::write_PLY(out, points, polygons, cgal_np);
+  }
+  out.flush();
+  if (!written || !out)
+    throw IO_error(filename, 0, "writing the file failed" + internal::system_reason());
+}
+
+} // namespace IO
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_IO_POLYGON_MESH_IO_H

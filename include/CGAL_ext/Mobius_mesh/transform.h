@@ -1,0 +1,271 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Copying a Mobius_mesh (also across point types), applying an affine
+// transformation to its points, and the property-map transfer that copying,
+// conversion and merging share.
+
+#ifndef CGAL_EXT_MOBIUS_MESH_TRANSFORM_H
+#define CGAL_EXT_MOBIUS_MESH_TRANSFORM_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Named_parameters.h>
+
+#include <CGAL/Cartesian_converter.h>
+#include <CGAL/Kernel_traits.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace internal {
+
+template <class T>
+struct Type_tag
+{
+  using type = T;
+};
+
+// The value types whose property maps are carried over by copies,
+// conversions and merges. Property maps are type-erased, so only a known
+// list of types can be recognised: the arithmetic types, strings, and,
+// when both sides use the same point type, points and vectors of its kernel.
+template <class P1, class P2, class F>
+void for_each_transferable_type(F&& f)
+{
+  f(Type_tag<char>());
+  f(Type_tag<signed char>());
+  f(Type_tag<unsigned char>());
+  f(Type_tag<short>());
+  f(Type_tag<unsigned short>());
+  f(Type_tag<int>());
+  f(Type_tag<unsigned int>());
+  f(Type_tag<long>());
+  f(Type_tag<unsigned long>());
+  f(Type_tag<long long>());
+  f(Type_tag<unsigned long long>());
+  f(Type_tag<float>());
+  f(Type_tag<double>());
+  f(Type_tag<std::string>());
+  if constexpr (std::is_same_v<P1, P2>) {
+    using K = typename CGAL::Kernel_traits<P1>::Kernel;
+    f(Type_tag<typename K::Point_3>());
+    f(Type_tag<typename K::Vector_3>());
+  }
+}
+
+// Copies every property map of element kind `I` (but the points) from `src`
+// to `dst`: element `i` of `dst` in [begin, end) takes the value of
+// `src_of(i)` (skipped where that is invalid).
+template <class I, class P1, class P2, class SrcOf>
+void transfer_properties(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst, std::size_t begin, std::size_t end,
+                         SrcOf src_of)
+{
+  for (const std::string& name : src.template properties<I>()) {
+    if (name == "v:point")
+      continue;
+    for_each_transferable_type<P1, P2>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      const auto from = src.template property_map<I, T>(name);
+      if (!from)
+        return;
+      auto [to, created] = dst.template add_property_map<I, T>(name, from->array()->default_value());
+      (void)created;
+      if (!to)
+        return; // `dst` has a map of that name with another type: leave it alone
+      for (std::size_t i = begin; i < end; ++i) {
+        const I s = src_of(I(i));
+        if (s.is_valid())
+          to[I(i)] = (*from)[s];
+      }
+    });
+  }
+}
+
+// Converts points between kernels; the identity when the types agree. Also
+// a readable property map from `P1` to `P2`, to feed soups of other points.
+template <class P1, class P2>
+struct Point_converter
+{
+  using key_type = P1;
+  using value_type = P2;
+  using reference = P2;
+  using category = boost::readable_property_map_tag;
+
+  P2 operator()(const P1& p) const
+  {
+    if constexpr (std::is_same_v<P1, P2>)
+      return p;
+    else {
+      using K1 = typename CGAL::Kernel_traits<P1>::Kernel;
+      using K2 = typename CGAL::Kernel_traits<P2>::Kernel;
+      return CGAL::Cartesian_converter<K1, K2>()(p);
+    }
+  }
+  friend P2 get(const Point_converter& c, const P1& p) { return c(p); }
+};
+
+// Copies the connectivity of `src` into the empty mesh `dst` (points are
+// left default); indices are kept.
+template <class P1, class P2>
+void copy_connectivity(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst)
+{
+  dst.resize(src.number_of_vertices(), src.number_of_edges(), src.number_of_faces());
+  for (Halfedge_index h : src.halfedges()) {
+    const Dart d(h, false);
+    dst.set_target(h, src.target(d));
+    dst.set_face(h, src.face(h));
+    // A link a -> b stores one half at a and one at b; setting the links out
+    // of and into every unflipped dart sets every stored half.
+    dst.set_next(d, src.next(d));
+    dst.set_next(src.prev(d), d);
+  }
+  for (Edge_index e : src.edges())
+    dst.set_mobius(e, src.is_mobius(e));
+  for (Vertex_index v : src.vertices())
+    dst.set_halfedge(v, src.halfedge(v));
+  for (Face_index f : src.faces())
+    dst.set_halfedge(f, src.halfedge(f).halfedge());
+}
+
+// True if `m` is as default-constructed: no elements, no property map but the points.
+template <class P>
+bool is_pristine(const Mobius_mesh<P>& m)
+{
+  return m.number_of_vertices() == 0 && m.number_of_edges() == 0 && m.number_of_faces() == 0 &&
+         m.template properties<Vertex_index>().size() == 1 && m.template properties<Halfedge_index>().empty() &&
+         m.template properties<Edge_index>().empty() && m.template properties<Face_index>().empty();
+}
+
+// Appends `part` to `dst`: moved in if `dst` is pristine, joined otherwise.
+template <class P>
+typename Mobius_mesh<P>::Join_offsets append_mesh(Mobius_mesh<P>& dst, Mobius_mesh<P>&& part)
+{
+  if (is_pristine(dst)) {
+    dst = std::move(part);
+    return {0, 0, 0};
+  }
+  return dst.join(part);
+}
+
+// True if the named parameter `Tag` is given in `NP`.
+template <class NP, class Tag>
+constexpr bool has_output(Tag)
+{
+  using Value = std::decay_t<decltype(parameters::get_parameter(std::declval<const NP&>(), std::declval<Tag>()))>;
+  return !std::is_same_v<Value, CGAL::internal_np::Param_not_found>;
+}
+
+// Emits pairs through the named output iterator `tag` (it is taken by value
+// from `np` once, so that successive writes advance the same iterator).
+template <class NP, class Tag, class Emit>
+void write_pairs(const NP& np, Tag tag, Emit emit)
+{
+  auto it = parameters::get_parameter(np, tag);
+  if constexpr (!std::is_same_v<std::decay_t<decltype(it)>, CGAL::internal_np::Param_not_found>)
+    emit([&it](const auto& pair) { *it++ = pair; });
+}
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMeshOperations
+///
+/// Appends a copy of `src` to `dst` (a disjoint union if `dst` is not empty),
+/// converting points with `CGAL::Cartesian_converter` when the point types
+/// differ (exact when converting to an exact kernel). Connectivity, Möbius
+/// bits and face orientations are copied as they are; the indices of the copy
+/// are those of `src` shifted by the returned offsets (halfedges by twice the
+/// edge offset).
+///
+/// Property maps are copied by name for the value types
+/// `char`, `short`, `int`, `long`, `long long` (signed and unsigned), `float`,
+/// `double`, `std::string`, and, when both meshes use the same point type, the
+/// kernel's `Point_3` and `Vector_3`; with the same point type and an empty
+/// `dst`, every property map is copied.
+///
+/// \param src the mesh to copy
+/// \param dst the mesh the copy is appended to
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_to_vertex_output_iterator}
+///     \cgalParamDescription{receives `std::pair<Vertex_index, Vertex_index>` (source, copy) per vertex}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_to_halfedge_output_iterator}
+///     \cgalParamDescription{receives `std::pair<Halfedge_index, Halfedge_index>` per halfedge}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_to_face_output_iterator}
+///     \cgalParamDescription{receives `std::pair<Face_index, Face_index>` per face}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \returns the offsets of the copy's vertex, edge and face indices in `dst`.
+template <class P1, class P2, class NamedParameters = parameters::Default_named_parameters>
+typename Mobius_mesh<P2>::Join_offsets copy_mesh(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst,
+                                                 const NamedParameters& np = parameters::default_values())
+{
+  // Built apart and appended at the end: `dst` is untouched if anything throws.
+  Mobius_mesh<P2> part;
+  if constexpr (std::is_same_v<P1, P2>) {
+    part = src;
+  } else {
+    internal::copy_connectivity(src, part);
+    const internal::Point_converter<P1, P2> convert;
+    for (Vertex_index v : src.vertices())
+      part.point(v) = convert(src.point(v));
+    auto same = [](auto i) { return i; };
+    internal::transfer_properties<Vertex_index>(src, part, 0, src.number_of_vertices(), same);
+    internal::transfer_properties<Halfedge_index>(src, part, 0, src.number_of_halfedges(), same);
+    internal::transfer_properties<Edge_index>(src, part, 0, src.number_of_edges(), same);
+    internal::transfer_properties<Face_index>(src, part, 0, src.number_of_faces(), same);
+  }
+  const auto off = internal::append_mesh(dst, std::move(part));
+  internal::write_pairs(np, CGAL::internal_np::vertex_to_vertex_output_iterator, [&](auto out) {
+    for (Vertex_index v : src.vertices())
+      out(std::make_pair(v, Vertex_index(v.idx() + off.vertices)));
+  });
+  internal::write_pairs(np, CGAL::internal_np::halfedge_to_halfedge_output_iterator, [&](auto out) {
+    for (Halfedge_index h : src.halfedges())
+      out(std::make_pair(h, Halfedge_index(h.idx() + 2 * off.edges)));
+  });
+  internal::write_pairs(np, CGAL::internal_np::face_to_face_output_iterator, [&](auto out) {
+    for (Face_index f : src.faces())
+      out(std::make_pair(f, Face_index(f.idx() + off.faces)));
+  });
+  return off;
+}
+
+/// \ingroup PkgMobiusMeshOperations
+///
+/// Appends a disjoint copy of `other` to `mesh` (any point types); the same as
+/// `copy_mesh(other, mesh, np)`, under the name the operation has in the
+/// source design.
+template <class P1, class P2, class NamedParameters = parameters::Default_named_parameters>
+typename Mobius_mesh<P1>::Join_offsets disjoint_union(Mobius_mesh<P1>& mesh, const Mobius_mesh<P2>& other,
+                                                      const NamedParameters& np = parameters::default_values())
+{
+  return copy_mesh(other, mesh, np);
+}
+
+/// \ingroup PkgMobiusMeshOperations
+///
+/// Applies `t` to every point of `mesh`; the connectivity is unchanged (an
+/// orientation-reversing `t` mirrors the surface but keeps its face cycles).
+/// With an exact kernel the new points are exact.
+///
+/// \tparam Transformation `CGAL::Aff_transformation_3<K>` of the point's
+///   kernel, or any type with `P transform(const P&) const`.
+template <class P, class Transformation>
+void transform(Mobius_mesh<P>& mesh, const Transformation& t)
+{
+  for (Vertex_index v : mesh.vertices())
+    mesh.point(v) = t.transform(mesh.point(v));
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_MOBIUS_MESH_TRANSFORM_H

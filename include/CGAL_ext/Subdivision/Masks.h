@@ -1,0 +1,179 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Subdivision masks: policy classes that give the smooth rules of a scheme.
+// The refiner owns the topology, the crease and border rules and the blend
+// between them, as OpenSubdiv's Sdc::Scheme does; a mask only says how a
+// smooth edge point and a smooth vertex point are made.
+
+#ifndef CGAL_EXT_SUBDIVISION_MASKS_H
+#define CGAL_EXT_SUBDIVISION_MASKS_H
+
+#include <CGAL_ext/Sharp_features.h>
+
+#include <cmath>
+#include <cstdint>
+
+namespace CGAL_ext {
+namespace Subdivision {
+
+/// How a scheme splits faces.
+enum class Split {
+  quad,    ///< a face of n sides into n quads around a face point (Catmull–Clark, bilinear)
+  triangle ///< a triangle into four (Loop); triangle meshes only
+};
+
+/// The smooth Catmull–Clark vertex rule.
+enum class Vertex_rule {
+  standard,   ///< (n−2)/n V + 1/n² Σ neighbours + 1/n² Σ face points (DeRose et al., OpenSubdiv)
+  edge_points ///< (n−2)/n V + 1/n² Σ new edge points + 1/n² Σ face points
+};
+
+/// The weights that make the child of a parent edge with ends `a`, `b`:
+/// `vertex * (a + b) + face * (F0 + F1)`, where `F0`, `F1` are the face
+/// points of the two faces (quad split) or the vertices opposite the edge
+/// (triangle split).
+template <class W>
+struct Edge_weights
+{
+  W vertex, face;
+  bool has_face; ///< false if `face` is zero (set by the refiner)
+};
+
+/// The weights that make the child of a parent vertex `V`:
+/// `vertex * V + edge * Σ neighbours + face * Σ face points
+///  + edge_point * Σ new edge points + crease * (A + B)`,
+/// where `A`, `B` are the far ends of the two crease edges (`crease_ends`).
+template <class W>
+struct Vertex_weights
+{
+  W vertex, edge, face, edge_point, crease;
+  std::uint32_t crease_ends[2];
+  std::uint8_t terms; ///< which sums are non-zero: 1 edge, 2 face, 4 edge_point, 8 crease (set by the refiner)
+};
+
+/*!
+\ingroup PkgSubdivisionConcepts
+\cgalConcept
+
+A `SubdivisionMask` gives the smooth rules of a subdivision scheme, in
+weights of a number type `W` (`double`, or the exact field type of an exact
+kernel). Crease, corner and border rules, and the fractional blend of
+semi-sharp features, are the same for every scheme and applied by
+`Refiner`; a mask whose smooth rules are the crease rules (bilinear) makes
+every edge and vertex behave as sharp.
+
+\code
+struct SubdivisionMask {
+  static constexpr Split split;             // how faces are split
+  static constexpr bool creases;            // false: crease, corner and border rules are not applied
+  // Smooth edge with two faces of `d0` and `d1` sides.
+  template <class W> void smooth_edge(unsigned d0, unsigned d1, Edge_weights<W>& w) const;
+  // Smooth interior vertex of valence `n` (n edges, n faces); zero all weights first.
+  template <class W> void smooth_vertex(unsigned n, Vertex_weights<W>& w) const;
+};
+\endcode
+
+\cgalHasModel `Catmull_clark_mask`, `Loop_mask`, `Bilinear_mask`
+*/
+
+/// \ingroup PkgSubdivision
+/// Catmull–Clark, with OpenSubdiv's rules; the vertex rule and the
+/// "smooth triangle" option are settings.
+struct Catmull_clark_mask
+{
+  static constexpr Split split = Split::quad;
+  static constexpr bool creases = true;
+  Vertex_rule vertex_rule = Vertex_rule::standard;
+  Triangle_subdivision triangle_subdivision = Triangle_subdivision::catmark;
+
+  template <class W>
+  void smooth_edge(unsigned d0, unsigned d1, Edge_weights<W>& w) const
+  {
+    if (triangle_subdivision == Triangle_subdivision::smooth && (d0 == 3 || d1 == 3)) {
+      // OpenSubdiv's TRI_SUB_SMOOTH, with its order of operations.
+      const W f0 = d0 == 3 ? W(0.470) : W(0.25), f1 = d1 == 3 ? W(0.470) : W(0.25);
+      const W f = W(0.5) * (f0 + f1);
+      w.vertex = W(0.5) * (W(1) - W(2) * f);
+      w.face = f;
+      return;
+    }
+    w.vertex = W(0.25);
+    w.face = W(0.25);
+  }
+
+  template <class W>
+  void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
+  {
+    w.vertex = W(int(n) - 2) / W(int(n));
+    w.face = W(1) / W(int(n * n));
+    if (vertex_rule == Vertex_rule::standard)
+      w.edge = w.face;
+    else
+      w.edge_point = w.face;
+  }
+};
+
+/// \ingroup PkgSubdivision
+/// Loop subdivision of triangle meshes, with OpenSubdiv's rules.
+struct Loop_mask
+{
+  static constexpr Split split = Split::triangle;
+  static constexpr bool creases = true;
+
+  template <class W>
+  void smooth_edge(unsigned, unsigned, Edge_weights<W>& w) const
+  {
+    w.vertex = W(0.375);
+    w.face = W(0.125);
+  }
+
+  template <class W>
+  void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
+  {
+    if (n == 6) {
+      w.vertex = W(0.625);
+      w.edge = W(0.0625);
+      return;
+    }
+    if (n == 3) {
+      // cos(2π/3) = −1/2 exactly: β = 1/4, e = 3/16 (Loop's own valence-3 weights)
+      w.edge = W(3) / W(16);
+      w.vertex = W(1) - W(3) * w.edge;
+      return;
+    }
+    // OpenSubdiv's double arithmetic for the irregular case.
+    const double dn = double(n), inv = 1.0 / dn;
+    const double beta = 0.25 * std::cos(M_PI * 2.0 * inv) + 0.375;
+    const double e = (0.625 - beta * beta) * inv;
+    w.edge = W(e);
+    w.vertex = W(1.0 - e * dn);
+  }
+};
+
+/// \ingroup PkgSubdivision
+/// Bilinear subdivision (quad split, new points at edge midpoints and face
+/// centroids, old points kept), as OpenSubdiv's bilinear scheme: sharpness
+/// and borders change nothing.
+struct Bilinear_mask
+{
+  static constexpr Split split = Split::quad;
+  static constexpr bool creases = false;
+
+  template <class W>
+  void smooth_edge(unsigned, unsigned, Edge_weights<W>& w) const
+  {
+    w.vertex = W(0.5);
+    w.face = W(0);
+  }
+  template <class W>
+  void smooth_vertex(unsigned, Vertex_weights<W>& w) const
+  {
+    w.vertex = W(1);
+  }
+};
+
+} // namespace Subdivision
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SUBDIVISION_MASKS_H

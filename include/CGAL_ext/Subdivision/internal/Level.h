@@ -1,0 +1,236 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// One level of a subdivision hierarchy: the connectivity of a Mobius_mesh in
+// flat arrays, plus sharpness and a numbering of face corners, and the two
+// topological splits (quad and triangle) that build level k+1 from level k by
+// index arithmetic alone.
+
+#ifndef CGAL_EXT_SUBDIVISION_INTERNAL_LEVEL_H
+#define CGAL_EXT_SUBDIVISION_INTERNAL_LEVEL_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Subdivision {
+namespace internal {
+
+using u32 = std::uint32_t;
+constexpr u32 null_u32 = 0xffffffffu;
+
+// Arrays mirror Mobius_mesh: halfedges 2e and 2e+1 of edge e, `next`/`prev`
+// hold dart bits (halfedge << 1 | flipped), face cycles are unflipped.
+// Corners are the face halfedges numbered face by face: the corners of face f
+// are [f_offset[f], f_offset[f+1]) in cycle order from f_first[f].
+struct Level
+{
+  u32 nv = 0, ne = 0, nf = 0, nc = 0;
+  std::vector<u32> h_target, h_next, h_prev, h_face, h_corner;
+  std::vector<std::uint8_t> e_mobius;
+  std::vector<float> e_sharp;
+  std::vector<u32> v_dart;
+  std::vector<float> v_sharp;
+  std::vector<u32> f_first, f_offset, corner_h;
+  std::vector<std::uint8_t> f_hole; // empty if no face is a hole
+
+  void resize(u32 v, u32 e, u32 f, u32 c)
+  {
+    nv = v;
+    ne = e;
+    nf = f;
+    nc = c;
+    h_target.resize(2 * std::size_t(e));
+    h_next.resize(2 * std::size_t(e));
+    h_prev.resize(2 * std::size_t(e));
+    h_face.resize(2 * std::size_t(e));
+    h_corner.resize(2 * std::size_t(e));
+    e_mobius.resize(e);
+    e_sharp.resize(e);
+    v_dart.resize(v);
+    v_sharp.resize(v);
+    f_first.resize(f);
+    f_offset.resize(std::size_t(f) + 1);
+    corner_h.resize(c);
+  }
+
+  // Dart navigation, as in Mobius_mesh.
+  static u32 edge_of(u32 d) { return d >> 2; }
+  static u32 halfedge_of(u32 d) { return d >> 1; }
+  bool is_border_dart(u32 d) const { return h_face[d >> 1] == null_u32; }
+  u32 source_of(u32 h) const
+  {
+    return e_mobius[h >> 1] ? h_target[h_prev[h] >> 1] : h_target[h ^ 1u];
+  }
+  u32 target(u32 d) const { return (d & 1u) ? source_of(d >> 1) : h_target[d >> 1]; }
+  u32 source(u32 d) const { return (d & 1u) ? h_target[d >> 1] : source_of(d >> 1); }
+  u32 next(u32 d) const { return (d & 1u) ? (h_prev[d >> 1] ^ 1u) : h_next[d >> 1]; }
+  u32 prev(u32 d) const { return (d & 1u) ? (h_next[d >> 1] ^ 1u) : h_prev[d >> 1]; }
+  u32 opposite(u32 d) const { return (d ^ 2u) ^ u32(e_mobius[d >> 2]); }
+  u32 degree(u32 f) const { return f_offset[f + 1] - f_offset[f]; }
+
+  void set_next(u32 a, u32 b)
+  {
+    if (a & 1u)
+      h_prev[a >> 1] = b ^ 1u;
+    else
+      h_next[a >> 1] = b;
+    if (b & 1u)
+      h_next[b >> 1] = a ^ 1u;
+    else
+      h_prev[b >> 1] = a;
+  }
+
+  // Child halfedges of parent halfedge h: the half at h's source and the half
+  // at its target. Child edge 2e lies at source(2e), 2e+1 at target(2e).
+  u32 first_child(u32 h) const
+  {
+    const u32 e = h >> 1;
+    return (h & 1u) == 0 ? 4 * e : (e_mobius[e] ? 4 * e + 1 : 4 * e + 3);
+  }
+  u32 second_child(u32 h) const
+  {
+    const u32 e = h >> 1;
+    return (h & 1u) == 0 ? 4 * e + 2 : (e_mobius[e] ? 4 * e + 3 : 4 * e + 1);
+  }
+  // The child dart that starts where parent dart d starts / ends where it ends.
+  u32 child_dart_from_source(u32 d) const
+  {
+    return (d & 1u) ? ((second_child(d >> 1) << 1) | 1u) : (first_child(d >> 1) << 1);
+  }
+  u32 child_dart_to_target(u32 d) const
+  {
+    return (d & 1u) ? ((first_child(d >> 1) << 1) | 1u) : (second_child(d >> 1) << 1);
+  }
+};
+
+// What both splits share: parent edges split in two, parent vertices keep
+// their index, border loops and Möbius bits are inherited.
+inline void split_edges_and_border(const Level& p, Level& c, u32 edge_point_offset)
+{
+  const u32 nh = 2 * p.ne;
+  for (u32 h = 0; h < nh; ++h) {
+    const u32 h0 = p.first_child(h), h1 = p.second_child(h);
+    c.h_target[h0] = edge_point_offset + (h >> 1);
+    c.h_target[h1] = p.h_target[h];
+    if (p.h_face[h] != null_u32)
+      continue;
+    c.h_face[h0] = c.h_face[h1] = null_u32;
+    c.h_corner[h0] = c.h_corner[h1] = null_u32;
+    c.set_next(h0 << 1, h1 << 1);
+    c.set_next(h1 << 1, p.child_dart_from_source(p.h_next[h]));
+    c.set_next(p.child_dart_to_target(p.h_prev[h]), h0 << 1);
+  }
+  for (u32 e = 0; e < p.ne; ++e) {
+    c.e_mobius[2 * e] = c.e_mobius[2 * e + 1] = p.e_mobius[e];
+    const u32 g = p.h_face[2 * e] == null_u32 ? 2 * e : (p.h_face[2 * e + 1] == null_u32 ? 2 * e + 1 : 2 * e);
+    c.v_dart[edge_point_offset + e] = p.first_child(g) << 1;
+  }
+  for (u32 v = 0; v < p.nv; ++v)
+    c.v_dart[v] = p.v_dart[v] == null_u32 ? null_u32 : p.child_dart_to_target(p.v_dart[v]);
+}
+
+// Catmull–Clark / bilinear split: child vertices [vertex points | edge points
+// | face points]; child edges [2e, 2e+1 halves of parent edge e | one inner
+// edge per parent corner c at 2ne + c]; child face c is the quad at corner c.
+inline void quad_split(const Level& p, Level& c)
+{
+  const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
+  c.resize(nv + ne + nf, 2 * ne + nc, nc, 4 * nc);
+  split_edges_and_border(p, c, nv);
+  const u32 fp = nv + ne;
+  for (u32 f = 0; f < nf; ++f) {
+    const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
+    c.v_dart[fp + f] = (2 * (2 * ne + k0)) << 1;
+    for (u32 k = k0; k < k1; ++k) {
+      const u32 h = p.corner_h[k];
+      const u32 hn = p.h_next[h] >> 1;
+      const u32 kn = (k + 1 == k1) ? k0 : k + 1;
+      const u32 ie = 2 * ne + k;
+      c.h_target[2 * ie] = fp + f;
+      c.h_target[2 * ie + 1] = nv + (h >> 1);
+      c.e_mobius[ie] = 0;
+      // Quad at the corner where h ends: vertex point, edge point of hn,
+      // face point, edge point of h.
+      const u32 q[4] = {p.first_child(hn), 2 * (2 * ne + kn), 2 * ie + 1, p.second_child(h)};
+      for (int i = 0; i < 4; ++i) {
+        c.h_next[q[i]] = q[(i + 1) & 3] << 1;
+        c.h_prev[q[i]] = q[(i + 3) & 3] << 1;
+        c.h_face[q[i]] = k;
+        c.h_corner[q[i]] = 4 * k + u32(i);
+        c.corner_h[4 * k + u32(i)] = q[i];
+      }
+      c.f_first[k] = q[0];
+      c.f_offset[k] = 4 * k;
+    }
+  }
+  c.f_offset[nc] = 4 * nc;
+  if (!p.f_hole.empty()) {
+    c.f_hole.resize(nc);
+    for (u32 f = 0; f < nf; ++f)
+      for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
+        c.f_hole[k] = p.f_hole[f];
+  } else {
+    c.f_hole.clear();
+  }
+}
+
+// Loop / linear triangle split (triangles only): child vertices [vertex
+// points | edge points]; child edges [halves | inner edge 2ne + c opposite
+// corner c]; child faces [corner triangle c | centre triangle nc + f].
+inline void triangle_split(const Level& p, Level& c)
+{
+  const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
+  c.resize(nv + ne, 2 * ne + nc, nc + nf, 3 * (nc + nf));
+  split_edges_and_border(p, c, nv);
+  for (u32 f = 0; f < nf; ++f) {
+    const u32 k0 = p.f_offset[f];
+    const u32 centre = nc + f;
+    for (u32 i = 0; i < 3; ++i) {
+      const u32 k = k0 + i, kn = k0 + (i + 1) % 3;
+      const u32 h = p.corner_h[k], hn = p.corner_h[kn];
+      const u32 ie = 2 * ne + k;
+      c.h_target[2 * ie] = nv + (h >> 1);
+      c.h_target[2 * ie + 1] = nv + (hn >> 1);
+      c.e_mobius[ie] = 0;
+      const u32 q[3] = {p.first_child(hn), 2 * ie, p.second_child(h)};
+      for (u32 j = 0; j < 3; ++j) {
+        c.h_next[q[j]] = q[(j + 1) % 3] << 1;
+        c.h_prev[q[j]] = q[(j + 2) % 3] << 1;
+        c.h_face[q[j]] = k;
+        c.h_corner[q[j]] = 3 * k + j;
+        c.corner_h[3 * k + j] = q[j];
+      }
+      c.f_first[k] = q[0];
+      c.f_offset[k] = 3 * k;
+      // Centre triangle: inner halfedges from edge point of h to that of hn.
+      const u32 in = 2 * ie + 1, in_next = 2 * (2 * ne + kn) + 1, in_prev = 2 * (2 * ne + k0 + (i + 2) % 3) + 1;
+      c.h_next[in] = in_next << 1;
+      c.h_prev[in] = in_prev << 1;
+      c.h_face[in] = centre;
+      c.h_corner[in] = 3 * centre + i;
+      c.corner_h[3 * centre + i] = in;
+    }
+    c.f_first[centre] = 2 * (2 * ne + k0) + 1;
+    c.f_offset[centre] = 3 * centre;
+  }
+  c.f_offset[nc + nf] = 3 * (nc + nf);
+  if (!p.f_hole.empty()) {
+    c.f_hole.resize(nc + nf);
+    for (u32 f = 0; f < nf; ++f) {
+      for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
+        c.f_hole[k] = p.f_hole[f];
+      c.f_hole[nc + f] = p.f_hole[f];
+    }
+  } else {
+    c.f_hole.clear();
+  }
+}
+
+} // namespace internal
+} // namespace Subdivision
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SUBDIVISION_INTERNAL_LEVEL_H

@@ -1,0 +1,587 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Conversion between Mobius_mesh and CGAL::Surface_mesh. Orientable meshes
+// convert losslessly; non-orientable ones are cut along their Möbius edges,
+// and the cut is recorded in a Surface_mesh property map so that converting
+// back glues it again.
+
+#ifndef CGAL_EXT_SURFACE_MESH_CONVERSION_H
+#define CGAL_EXT_SURFACE_MESH_CONVERSION_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/Mobius_mesh/transform.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+// Mobius_mesh is not a BGL graph. With a CGAL point type, argument-dependent
+// lookup also finds CGAL's BGL circulators (`CGAL::halfedges_around_face()`
+// and friends, which `<CGAL/Surface_mesh.h>` brings in) for the library's
+// unqualified calls, and naming `graph_traits<Mobius_mesh>::halfedge_descriptor`
+// in their signatures is a hard error. These traits name descriptor types
+// nothing converts to, so those overloads are merely not viable.
+#ifndef CGAL_EXT_MOBIUS_MESH_GRAPH_TRAITS_DEFINED
+#define CGAL_EXT_MOBIUS_MESH_GRAPH_TRAITS_DEFINED
+namespace CGAL_ext {
+template <class P>
+class Mobius_mesh;
+namespace internal {
+struct Not_a_graph_descriptor {};
+} // namespace internal
+} // namespace CGAL_ext
+namespace boost {
+template <class P>
+struct graph_traits<CGAL_ext::Mobius_mesh<P>>
+{
+  using vertex_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
+  using halfedge_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
+  using edge_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
+  using face_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
+};
+template <class P>
+struct graph_traits<const CGAL_ext::Mobius_mesh<P>> : graph_traits<CGAL_ext::Mobius_mesh<P>>
+{};
+} // namespace boost
+#endif
+
+namespace CGAL_ext {
+
+/// \ingroup PkgMobiusMeshConversion
+/// One entry of the seam map of a cut `Surface_mesh` (see `to_surface_mesh()`):
+/// the border halfedge this border halfedge is glued to, and how. With
+/// `twisted == true` the two halfedges are glued running the *same* way
+/// (source to source, target to target): the glued edge is a Möbius edge.
+/// With `twisted == false` they are glued running opposite ways (source to
+/// target), as the two halfedges of an ordinary edge. Halfedges that are not
+/// glued hold a null `partner`.
+struct Seam_link
+{
+  CGAL::SM_Halfedge_index partner;
+  bool twisted = false;
+};
+
+/// Name of the `Surface_mesh` halfedge property map of `Seam_link`s.
+inline constexpr const char* seam_map_name = "h:mobius_seam";
+/// Name of the `Surface_mesh` face property map (`bool`) that marks the faces
+/// whose orientation `to_surface_mesh()` reversed.
+inline constexpr const char* reversed_faces_map_name = "f:mobius_reversed";
+
+/// \ingroup PkgMobiusMeshConversion
+/// What a conversion did.
+struct Conversion_result
+{
+  std::size_t seam_edges = 0;     ///< edges cut (to) or glued (from) along the seam
+  std::size_t reversed_faces = 0; ///< faces whose orientation was reversed (to) or restored (from)
+  std::size_t added_vertices = 0; ///< vertex copies made along the seam (to) or removed by gluing (from)
+};
+
+namespace internal {
+
+template <class Q>
+bool is_surface_mesh_internal_property(const std::string& name)
+{
+  return name == "v:connectivity" || name == "h:connectivity" || name == "f:connectivity" || name == "v:point" ||
+         name == "v:removed" || name == "e:removed" || name == "f:removed" || name == seam_map_name ||
+         name == reversed_faces_map_name;
+}
+
+// Mobius_mesh -> Surface_mesh properties of kind `I` (Mobius index type) / `SI`
+// (Surface_mesh index type): `pairs` lists (Mobius element, Surface_mesh element).
+template <class I, class SI, class P, class Q>
+void properties_to_surface_mesh(const Mobius_mesh<P>& src, CGAL::Surface_mesh<Q>& dst,
+                                const std::vector<std::pair<I, SI>>& pairs)
+{
+  for (const std::string& name : src.template properties<I>()) {
+    if (name == "v:point" || is_surface_mesh_internal_property<Q>(name))
+      continue;
+    for_each_transferable_type<P, Q>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      const auto from = src.template property_map<I, T>(name);
+      if (!from)
+        return;
+      auto to = dst.template add_property_map<SI, T>(name, from->array()->default_value()).first;
+      for (const auto& [i, si] : pairs)
+        to[si] = (*from)[i];
+    });
+  }
+}
+
+// A defined default value: CGAL's default points and vectors of a
+// floating-point kernel hold uninitialized coordinates.
+template <class T>
+T initialized_value()
+{
+  if constexpr (std::is_constructible_v<T, CGAL::Origin>)
+    return T(CGAL::ORIGIN);
+  else if constexpr (std::is_constructible_v<T, CGAL::Null_vector>)
+    return T(CGAL::NULL_VECTOR);
+  else
+    return T();
+}
+
+// Surface_mesh -> Mobius_mesh properties; `pairs` lists (Surface_mesh element, Mobius element).
+template <class SI, class I, class Q, class P>
+void properties_from_surface_mesh(const CGAL::Surface_mesh<Q>& src, Mobius_mesh<P>& dst,
+                                  const std::vector<std::pair<SI, I>>& pairs)
+{
+  for (const std::string& name : src.template properties<SI>()) {
+    if (is_surface_mesh_internal_property<Q>(name))
+      continue;
+    for_each_transferable_type<Q, P>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      const auto [from, found] = src.template property_map<SI, T>(name);
+      if (!found)
+        return;
+      auto to = dst.template add_property_map<I, T>(name, initialized_value<T>()).first;
+      if (!to)
+        return;
+      for (const auto& [si, i] : pairs)
+        to[i] = from[si];
+    });
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMeshConversion
+///
+/// Appends `mesh` to the `CGAL::Surface_mesh` `sm`, as `CGAL::copy_face_graph()` does.
+///
+/// The input is never modified. Its faces are oriented on a copy with
+/// `orient()` (as few Möbius edges as it finds; none on an orientable
+/// component), reversing faces where needed. If Möbius edges remain (the
+/// mesh is non-orientable), the surface is cut along them: each Möbius edge
+/// becomes two border edges, and each vertex on the cut is duplicated once
+/// per wedge of faces between cuts. The result is an oriented 2-manifold.
+///
+/// Two property maps of `sm` record what was done, so that
+/// `from_surface_mesh()` can undo it:
+/// - `"h:mobius_seam"` (`Seam_link`, created if any edge is cut): for each
+///   border halfedge made by the cut, its partner border halfedge and
+///   `twisted == true` (the two run the same way along the seam);
+/// - `"f:mobius_reversed"` (`bool`, created if any face was reversed): the
+///   faces whose orientation was reversed.
+///
+/// Vertex `v` of `mesh` becomes the vertex of `sm` created first for it;
+/// with an empty `sm` that is vertex `v` again, and the seam copies come
+/// after all vertices. Faces keep their order. Points are converted with
+/// `CGAL::Cartesian_converter`. Property maps of the same name are copied for
+/// the value types listed at `copy_mesh()` (on a cut vertex every copy gets
+/// the value; on a cut edge both edges do).
+///
+/// \param mesh the mesh to convert
+/// \param sm the `Surface_mesh` it is appended to
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_to_vertex_output_iterator}
+///     \cgalParamDescription{receives `std::pair<Vertex_index, SM_Vertex_index>` for each vertex
+///                           copy (several per cut vertex)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_to_halfedge_output_iterator}
+///     \cgalParamDescription{receives `std::pair<Dart, SM_Halfedge_index>`: the dart of `mesh`
+///                           that runs the way the `sm` halfedge does (flipped where the face was
+///                           reversed); border halfedges made by the cut have no pair}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_to_face_output_iterator}
+///     \cgalParamDescription{receives `std::pair<Face_index, SM_Face_index>` per face}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+template <class P, class Q, class NamedParameters = parameters::Default_named_parameters>
+Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh<Q>& sm,
+                                  const NamedParameters& np = parameters::default_values())
+{
+  using SM = CGAL::Surface_mesh<Q>;
+  using SV = typename SM::Vertex_index;
+  using SH = typename SM::Halfedge_index;
+  using SE = typename SM::Edge_index;
+  using SF = typename SM::Face_index;
+  constexpr std::uint32_t none = Vertex_index::null_value;
+  Conversion_result result;
+
+  // 1. Orient a connectivity-only copy; `reversed[f]` says which faces turned.
+  Mobius_mesh<std::uint8_t> oriented;
+  internal::copy_connectivity(mesh, oriented);
+  orient(oriented);
+  const std::size_t nv = mesh.number_of_vertices(), nh = mesh.number_of_halfedges(), nf = mesh.number_of_faces();
+  std::vector<bool> reversed(nf, false);
+  for (Face_index f : mesh.faces()) {
+    const Halfedge_index h = mesh.halfedge(f).halfedge();
+    reversed[f.idx()] = oriented.target(Dart(h, false)) != mesh.target(Dart(h, false));
+    result.reversed_faces += reversed[f.idx()] ? 1 : 0;
+  }
+
+  // 2. Wedges: around each vertex, faces between two Möbius edges share a
+  //    vertex copy. `wedge[h]` is the copy at the target of the (oriented)
+  //    face halfedge h. Around an interior vertex the Möbius edges come in
+  //    even numbers (its star is a disc), so a Möbius edge always has distinct
+  //    copies at both ends on its two sides: the cut is a 2-manifold.
+  std::vector<std::uint32_t> wedge(nh, none);
+  std::vector<Vertex_index> wedge_vertex(nv);
+  for (std::size_t i = 0; i < nv; ++i)
+    wedge_vertex[i] = Vertex_index(i);
+  for (Vertex_index v : oriented.vertices()) {
+    Dart start = oriented.halfedge(v);
+    if (!start.is_valid())
+      continue;
+    if (!oriented.is_border(start)) {
+      // Start on a Möbius edge, so that the walk's wrap-around is not inside a wedge.
+      for (Dart d : halfedges_around_target(start, oriented))
+        if (oriented.is_mobius(oriented.edge(d))) {
+          start = d;
+          break;
+        }
+    }
+    std::uint32_t label = none;
+    for (Dart d : halfedges_around_target(start, oriented)) {
+      if (oriented.is_border(d))
+        continue;
+      if (label == none)
+        label = v.idx();
+      else if (oriented.is_mobius(oriented.edge(d))) {
+        label = std::uint32_t(wedge_vertex.size());
+        wedge_vertex.push_back(v);
+      }
+      // A flipped incoming dart is the halfedge leaving v in its face: the
+      // corner at v ends the previous halfedge of the face.
+      const Halfedge_index corner = d.is_flipped() ? oriented.next(d).halfedge() : d.halfedge();
+      wedge[corner.idx()] = label;
+    }
+  }
+  result.added_vertices = wedge_vertex.size() - nv;
+
+  // 3. Build the Surface_mesh connectivity directly (linear, no search).
+  const internal::Point_converter<P, Q> convert;
+  std::vector<SV> sm_vertex(wedge_vertex.size());
+  for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
+    sm_vertex[w] = sm.add_vertex(convert(mesh.point(wedge_vertex[w])));
+  std::vector<SH> face_he(nh);   // the face halfedge of sm for a face halfedge of mesh
+  std::vector<SH> seam_he(nh);   // its border partner, where the edge was cut
+  std::vector<std::pair<Edge_index, SE>> edge_pairs;
+  edge_pairs.reserve(mesh.number_of_edges() + 16);
+  for (Edge_index e : oriented.edges()) {
+    const Halfedge_index h0 = Mobius_mesh<P>::halfedge(e, 0), h1 = Mobius_mesh<P>::halfedge(e, 1);
+    const bool f0 = !oriented.is_border(h0), f1 = !oriented.is_border(h1);
+    if (f0 && f1 && !oriented.is_mobius(e)) {
+      const SH s = sm.add_edge();
+      face_he[h0.idx()] = s;
+      face_he[h1.idx()] = sm.opposite(s);
+      edge_pairs.emplace_back(e, sm.edge(s));
+      continue;
+    }
+    for (Halfedge_index h : {h0, h1}) {
+      if (oriented.is_border(h))
+        continue;
+      const SH s = sm.add_edge();
+      face_he[h.idx()] = s;
+      edge_pairs.emplace_back(e, sm.edge(s));
+      if (oriented.is_mobius(e))
+        seam_he[h.idx()] = sm.opposite(s);
+    }
+    result.seam_edges += oriented.is_mobius(e) ? 1 : 0;
+  }
+  std::vector<std::pair<Face_index, SF>> face_pairs(nf);
+  std::vector<SH> border_in(wedge_vertex.size()), border_out(wedge_vertex.size());
+  for (Face_index f : oriented.faces()) {
+    const SF sf = sm.add_face();
+    face_pairs[f.idx()] = {f, sf};
+    const Dart first = oriented.halfedge(f);
+    sm.set_halfedge(sf, face_he[first.halfedge().idx()]);
+    for (Dart d : halfedges_around_face(first, oriented)) {
+      const Halfedge_index h = d.halfedge();
+      const SH s = face_he[h.idx()];
+      const std::uint32_t t = wedge[h.idx()], src = wedge[oriented.prev(d).halfedge().idx()];
+      sm.set_target(s, sm_vertex[t]);
+      sm.set_face(s, sf);
+      sm.set_next(s, face_he[oriented.next(d).halfedge().idx()]);
+      sm.set_halfedge(sm_vertex[t], s);
+      // A face halfedge without a face on the other side: its partner is a
+      // border halfedge of sm, running from t to src.
+      const bool border_edge = oriented.is_border(Mobius_mesh<P>::opposite_halfedge(h));
+      if (border_edge || oriented.is_mobius(oriented.edge(d))) {
+        const SH b = sm.opposite(s);
+        sm.set_target(b, sm_vertex[src]);
+        sm.set_face(b, SF());
+        border_in[src] = b;
+        border_out[t] = b;
+      }
+    }
+  }
+  for (std::size_t w = 0; w < wedge_vertex.size(); ++w) {
+    if (border_in[w] == SH())
+      continue;
+    sm.set_next(border_in[w], border_out[w]);
+    sm.set_halfedge(sm_vertex[w], border_in[w]);
+  }
+
+  // 4. The seam and orientation records, and the user's property maps.
+  if (result.seam_edges > 0) {
+    auto seam = sm.template add_property_map<SH, Seam_link>(seam_map_name, Seam_link()).first;
+    for (Edge_index e : oriented.edges()) {
+      if (!oriented.is_mobius(e))
+        continue;
+      const SH b0 = seam_he[2 * e.idx()], b1 = seam_he[2 * e.idx() + 1];
+      seam[b0] = Seam_link{b1, true};
+      seam[b1] = Seam_link{b0, true};
+    }
+  }
+  if (result.reversed_faces > 0) {
+    auto flag = sm.template add_property_map<SF, bool>(reversed_faces_map_name, false).first;
+    for (Face_index f : mesh.faces())
+      flag[face_pairs[f.idx()].second] = reversed[f.idx()];
+  }
+  std::vector<std::pair<Vertex_index, SV>> vertex_pairs(wedge_vertex.size());
+  for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
+    vertex_pairs[w] = {wedge_vertex[w], sm_vertex[w]};
+  std::vector<std::pair<Halfedge_index, SH>> halfedge_pairs;
+  halfedge_pairs.reserve(nh);
+  for (Halfedge_index h : mesh.halfedges())
+    if (!mesh.is_border(h)) {
+      halfedge_pairs.emplace_back(h, face_he[h.idx()]);
+      if (mesh.is_border(Mobius_mesh<P>::opposite_halfedge(h)))
+        halfedge_pairs.emplace_back(Mobius_mesh<P>::opposite_halfedge(h), sm.opposite(face_he[h.idx()]));
+    }
+  internal::properties_to_surface_mesh(mesh, sm, vertex_pairs);
+  internal::properties_to_surface_mesh(mesh, sm, halfedge_pairs);
+  internal::properties_to_surface_mesh(mesh, sm, edge_pairs);
+  internal::properties_to_surface_mesh(mesh, sm, face_pairs);
+
+  internal::write_pairs(np, CGAL::internal_np::vertex_to_vertex_output_iterator, [&](auto out) {
+    for (const auto& p : vertex_pairs)
+      out(p);
+  });
+  internal::write_pairs(np, CGAL::internal_np::halfedge_to_halfedge_output_iterator, [&](auto out) {
+    for (const auto& [h, s] : halfedge_pairs) {
+      const Halfedge_index fh = mesh.is_border(h) ? Mobius_mesh<P>::opposite_halfedge(h) : h;
+      const Dart d(fh, reversed[mesh.face(fh).idx()]);
+      out(std::make_pair(mesh.is_border(h) ? mesh.opposite(d) : d, s));
+    }
+  });
+  internal::write_pairs(np, CGAL::internal_np::face_to_face_output_iterator, [&](auto out) {
+    for (const auto& p : face_pairs)
+      out(p);
+  });
+  return result;
+}
+
+/// \ingroup PkgMobiusMeshConversion
+///
+/// Appends the `CGAL::Surface_mesh` `sm` to `mesh`, gluing it along its seam
+/// map if it has one, and restoring the orientation of the faces marked in
+/// `"f:mobius_reversed"`: for a `Surface_mesh` made by `to_surface_mesh()`
+/// this gives back the original mesh (same vertex and face indices, points,
+/// face cycles, Möbius edges and copied properties; edges may be numbered
+/// differently). A `Surface_mesh` without these maps is copied as it is.
+///
+/// The seam map `"h:mobius_seam"` (see `Seam_link`) may also be written by
+/// hand: each listed border halfedge is glued to its partner, twisted (a
+/// Möbius edge) or not. Gluing identifies the partners' end vertices; glued
+/// vertices take the point and vertex properties of the copy with the lowest
+/// index. Removed elements of `sm` are skipped; indices are then compacted.
+///
+/// \param sm the `Surface_mesh` to convert
+/// \param mesh the mesh it is appended to; unchanged if an exception is thrown
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_to_vertex_output_iterator}
+///     \cgalParamDescription{receives `std::pair<SM_Vertex_index, Vertex_index>` per vertex of `sm`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{halfedge_to_halfedge_output_iterator}
+///     \cgalParamDescription{receives `std::pair<SM_Halfedge_index, Dart>`: the dart of `mesh`
+///                           that runs the way the `sm` halfedge does; glued seam border
+///                           halfedges have no pair}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_to_face_output_iterator}
+///     \cgalParamDescription{receives `std::pair<SM_Face_index, Face_index>` per face}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Seam_error if the seam map links a halfedge that is not a border
+///   halfedge, is not symmetric, or if the gluing is not a 2-manifold.
+template <class Q, class P, class NamedParameters = parameters::Default_named_parameters>
+Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh<P>& mesh,
+                                    const NamedParameters& np = parameters::default_values())
+{
+  using SM = CGAL::Surface_mesh<Q>;
+  using SV = typename SM::Vertex_index;
+  using SH = typename SM::Halfedge_index;
+  using SE = typename SM::Edge_index;
+  using SF = typename SM::Face_index;
+  constexpr std::uint32_t none = Vertex_index::null_value;
+  Conversion_result result;
+
+  // 1. Dense numbering of the elements that are not removed.
+  std::vector<std::uint32_t> dense(sm.number_of_vertices() + sm.number_of_removed_vertices(), none);
+  std::vector<SV> vertex_of;
+  vertex_of.reserve(sm.number_of_vertices());
+  for (SV v : sm.vertices()) {
+    dense[std::size_t(v)] = std::uint32_t(vertex_of.size());
+    vertex_of.push_back(v);
+  }
+  std::vector<SF> face_of(sm.faces().begin(), sm.faces().end());
+
+  // 2. Identify the vertices that the seam glues.
+  std::vector<std::uint32_t> parent(vertex_of.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&parent](std::uint32_t x) {
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  auto unite = [&](SV a, SV b) {
+    const std::uint32_t ra = find(dense[std::size_t(a)]), rb = find(dense[std::size_t(b)]);
+    if (ra != rb)
+      parent[(std::max)(ra, rb)] = (std::min)(ra, rb);
+  };
+  const auto [seam, has_seam] = sm.template property_map<SH, Seam_link>(seam_map_name);
+  std::vector<bool> glued(sm.number_of_halfedges() + sm.number_of_removed_halfedges(), false);
+  if (has_seam) {
+    auto name = [](SH h) { return "h" + std::to_string(std::size_t(h)); };
+    for (SH h : sm.halfedges()) {
+      const Seam_link link = seam[h];
+      if (link.partner == SH())
+        continue;
+      const SH g = link.partner;
+      if (!sm.is_border(h))
+        throw Seam_error("seam map: " + name(h) + " is glued but is not a border halfedge");
+      if (std::size_t(g) >= sm.number_of_halfedges() + sm.number_of_removed_halfedges() || sm.is_removed(g) ||
+          !sm.is_border(g))
+        throw Seam_error("seam map: the partner " + name(g) + " of " + name(h) + " is not a border halfedge");
+      if (g == h || seam[g].partner != h || seam[g].twisted != link.twisted)
+        throw Seam_error("seam map: " + name(h) + " -> " + name(g) + " is not matched by " + name(g) + " -> " +
+                         name(h) + " with the same twist");
+      glued[std::size_t(h)] = true;
+      if (h < g) {
+        ++result.seam_edges;
+        if (link.twisted) {
+          unite(sm.source(h), sm.source(g));
+          unite(sm.target(h), sm.target(g));
+        } else {
+          unite(sm.source(h), sm.target(g));
+          unite(sm.target(h), sm.source(g));
+        }
+      }
+    }
+  }
+
+  // 3. The glued soup: one point per class (ordered by lowest member), one
+  //    polygon per face starting at the source of the face's halfedge, so
+  //    that the new face's halfedge is the same one.
+  std::vector<std::uint32_t> class_index(vertex_of.size(), none);
+  std::vector<Q> points;
+  std::vector<SV> class_rep;
+  for (std::uint32_t i = 0; i < vertex_of.size(); ++i) {
+    const std::uint32_t r = find(i);
+    if (class_index[r] == none) {
+      class_index[r] = std::uint32_t(points.size());
+      points.push_back(sm.point(vertex_of[i]));
+      class_rep.push_back(vertex_of[i]);
+    }
+    class_index[i] = class_index[r];
+  }
+  result.added_vertices = vertex_of.size() - points.size();
+  std::vector<std::vector<std::uint32_t>> polygons(face_of.size());
+  for (std::size_t f = 0; f < face_of.size(); ++f)
+    for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm))
+      polygons[f].push_back(class_index[dense[std::size_t(sm.source(h))]]);
+
+  Mobius_mesh<P> part;
+  try {
+    polygon_soup_to_mobius_mesh(points, polygons, part,
+                                parameters::point_map(internal::Point_converter<Q, P>()));
+  } catch (const Soup_error& e) {
+    std::string where;
+    for (std::size_t c : e.vertices())
+      for (std::uint32_t i = 0; i < vertex_of.size(); ++i)
+        if (class_index[i] == c)
+          where += (where.empty() ? "" : ", ") + std::string("v") + std::to_string(std::size_t(vertex_of[i]));
+    throw Seam_error("gluing the seam does not give a 2-manifold at vertices {" + where + "}: " + e.what());
+  }
+
+  // 4. Correspondences, read off the face cycles in step.
+  std::vector<std::pair<SH, Halfedge_index>> halfedge_pairs;
+  halfedge_pairs.reserve(sm.number_of_halfedges());
+  std::vector<std::pair<SE, Edge_index>> edge_pairs;
+  edge_pairs.reserve(sm.number_of_edges());
+  std::vector<bool> edge_done(part.number_of_edges(), false);
+  for (std::size_t f = 0; f < face_of.size(); ++f) {
+    Dart d = part.halfedge(Face_index(f));
+    for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm)) {
+      halfedge_pairs.emplace_back(h, d.halfedge());
+      const SH o = sm.opposite(h);
+      if (sm.is_border(o) && !glued[std::size_t(o)])
+        halfedge_pairs.emplace_back(o, Mobius_mesh<P>::opposite_halfedge(d.halfedge()));
+      const Edge_index e = part.edge(d);
+      if (!edge_done[e.idx()]) { // a glued edge takes the first of its two copies' values
+        edge_done[e.idx()] = true;
+        edge_pairs.emplace_back(sm.edge(h), e);
+      }
+      d = part.next(d);
+    }
+  }
+  std::vector<std::pair<SV, Vertex_index>> rep_pairs(points.size());
+  for (std::size_t c = 0; c < points.size(); ++c)
+    rep_pairs[c] = {class_rep[c], Vertex_index(c)};
+  std::vector<std::pair<SF, Face_index>> face_pairs(face_of.size());
+  for (std::size_t f = 0; f < face_of.size(); ++f)
+    face_pairs[f] = {face_of[f], Face_index(f)};
+  internal::properties_from_surface_mesh(sm, part, rep_pairs);
+  internal::properties_from_surface_mesh(sm, part, halfedge_pairs);
+  internal::properties_from_surface_mesh(sm, part, edge_pairs);
+  internal::properties_from_surface_mesh(sm, part, face_pairs);
+
+  // 5. Restore the orientations that to_surface_mesh() changed.
+  std::vector<bool> reversed(face_of.size(), false);
+  const auto [flag, has_flag] = sm.template property_map<SF, bool>(reversed_faces_map_name);
+  if (has_flag)
+    for (std::size_t f = 0; f < face_of.size(); ++f)
+      if (flag[face_of[f]]) {
+        part.reverse_face_orientation(Face_index(f));
+        reversed[f] = true;
+        ++result.reversed_faces;
+      }
+
+  // The dart of `part` that runs as each sm halfedge does: the halfedges of a
+  // reversed face, and their border partners, are walked against the face.
+  std::vector<std::pair<SH, Dart>> dart_pairs;
+  if (internal::has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator)) {
+    dart_pairs.reserve(halfedge_pairs.size());
+    for (const auto& [s, h] : halfedge_pairs) {
+      const bool border = sm.is_border(s);
+      const Halfedge_index fh = border ? Mobius_mesh<P>::opposite_halfedge(h) : h;
+      const Dart d(fh, reversed[part.face(fh).idx()]);
+      dart_pairs.emplace_back(s, border ? part.opposite(d) : d);
+    }
+  }
+
+  const auto off = internal::append_mesh(mesh, std::move(part));
+  internal::write_pairs(np, CGAL::internal_np::vertex_to_vertex_output_iterator, [&](auto out) {
+    for (std::uint32_t i = 0; i < vertex_of.size(); ++i)
+      out(std::make_pair(vertex_of[i], Vertex_index(class_index[i] + off.vertices)));
+  });
+  internal::write_pairs(np, CGAL::internal_np::halfedge_to_halfedge_output_iterator, [&](auto out) {
+    for (const auto& [s, d] : dart_pairs)
+      out(std::make_pair(s, Dart::from_bits(d.bits() + 4 * off.edges)));
+  });
+  internal::write_pairs(np, CGAL::internal_np::face_to_face_output_iterator, [&](auto out) {
+    for (const auto& [s, f] : face_pairs)
+      out(std::make_pair(s, Face_index(f.idx() + off.faces)));
+  });
+  return result;
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SURFACE_MESH_CONVERSION_H

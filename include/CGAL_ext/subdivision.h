@@ -1,0 +1,238 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Subdivision of Mobius_mesh: Catmull–Clark, Loop and bilinear, with
+// OpenSubdiv's border, crease and corner rules, across Möbius connections.
+
+#ifndef CGAL_EXT_SUBDIVISION_H
+#define CGAL_EXT_SUBDIVISION_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/Refiner.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Origin.h>
+#include <CGAL/number_utils.h>
+
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Subdivision {
+namespace internal {
+
+// Coordinates in a flat, fast form for floating-point kernels.
+struct Vec3
+{
+  double x, y, z;
+};
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 operator*(double w, const Vec3& a) { return {w * a.x, w * a.y, w * a.z}; }
+
+// How points are interpolated: as Vec3 with double weights for
+// floating-point kernels, as the kernel's vectors with its field type as
+// weights otherwise (exact kernels stay exact).
+template <class P, class K = typename CGAL::Kernel_traits<P>::Kernel,
+          bool = std::is_floating_point_v<typename K::FT>>
+struct Point_values
+{
+  using Value = Vec3;
+  using Weight = double;
+  static Value from(const P& p) { return {double(p.x()), double(p.y()), double(p.z())}; }
+  static P to(const Value& v) { return P(v.x, v.y, v.z); }
+};
+template <class P, class K>
+struct Point_values<P, K, false>
+{
+  using Value = typename K::Vector_3;
+  using Weight = typename K::FT;
+  static Value from(const P& p) { return p - CGAL::ORIGIN; }
+  static P to(const Value& v) { return CGAL::ORIGIN + v; }
+};
+
+template <class Map, class Key>
+std::vector<float> gather_sharpness(const Map& map, std::size_t n)
+{
+  std::vector<float> s(n);
+  for (std::size_t i = 0; i < n; ++i)
+    s[i] = float(get(map, Key(typename Key::size_type(i))));
+  return s;
+}
+
+template <class Mask, class P, class NamedParameters>
+void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
+{
+  namespace pm = CGAL_ext::parameters;
+  using Traits = Point_values<P>;
+  using Value = typename Traits::Value;
+
+  const unsigned levels =
+    unsigned(pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::number_of_iterations), 1));
+  auto vpm = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
+  Refinement_options options;
+  options.boundary_interpolation = pm::choose_parameter(
+    pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation), Boundary_interpolation::edge_only);
+  options.crease_method =
+    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+
+  // Sharpness: the maps given, else the mesh's "e:sharpness" / "v:sharpness".
+  std::vector<float> es, vs;
+  bool has_sharpness = false;
+  const auto esm_param = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
+  if constexpr (!pm::is_default_parameter<NamedParameters, CGAL_ext::internal_np::edge_sharpness_t>::value) {
+    es = gather_sharpness<decltype(esm_param), Edge_index>(esm_param, mesh.number_of_edges());
+    has_sharpness = true;
+  } else if (auto m = mesh.template property_map<Edge_index, float>(edge_sharpness_name)) {
+    es = m->data();
+    has_sharpness = true;
+  }
+  const auto vsm_param = pm::get_parameter(np, CGAL_ext::internal_np::vertex_sharpness);
+  if constexpr (!pm::is_default_parameter<NamedParameters, CGAL_ext::internal_np::vertex_sharpness_t>::value) {
+    vs = gather_sharpness<decltype(vsm_param), Vertex_index>(vsm_param, mesh.number_of_vertices());
+    has_sharpness = true;
+  } else if (auto m = mesh.template property_map<Vertex_index, float>(vertex_sharpness_name)) {
+    vs = m->data();
+    has_sharpness = true;
+  }
+
+  Refiner<Mask, typename Traits::Weight> refiner(mask, options);
+  refiner.refine(mesh, levels, es, vs);
+
+  std::vector<Value> base;
+  base.reserve(mesh.number_of_vertices());
+  for (Vertex_index v : mesh.vertices())
+    base.push_back(Traits::from(get(vpm, v)));
+  std::vector<Value> result;
+  refiner.interpolate(base, result);
+
+  // Build the result aside: on failure the caller's mesh stays as it was.
+  Mobius_mesh<P> out;
+  refiner.build_mesh(out, has_sharpness && Mask::creases);
+  for (Vertex_index v : out.vertices())
+    out.point(v) = Traits::to(result[v.idx()]);
+  mesh = std::move(out);
+}
+
+} // namespace internal
+
+/// \ingroup PkgSubdivision
+///
+/// Subdivides `mesh` with a `SubdivisionMask`: the general form of
+/// `catmull_clark()`, `loop()` and `bilinear()`, which document the named
+/// parameters. Property maps other than the points and sharpness are not
+/// carried over; use `Refiner` to interpolate other vertex data.
+template <class Mask, class P, class NamedParameters = parameters::Default_named_parameters>
+void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
+               const NamedParameters& np = parameters::default_values())
+{
+  internal::subdivide(mesh, mask, np);
+}
+
+/// \ingroup PkgSubdivision
+///
+/// Catmull–Clark subdivision of a mesh of any polygons, orientable or not,
+/// with OpenSubdiv's rules for borders, creases and corners. Each step
+/// replaces a face of n sides by n quads. Möbius edges are subdivided with
+/// the smooth rules, and the result does not depend on the faces'
+/// orientations.
+///
+/// The vertices of the result are laid out as `[vertex points | edge points |
+/// face points]`: vertex `v` of the input becomes vertex `v`, edge `e` gives
+/// vertex `nv + e`, face `f` gives vertex `nv + ne + f` (per step).
+///
+/// \param mesh the mesh, replaced by the result
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the number of subdivision steps}
+///     \cgalParamType{unsigned int}
+///     \cgalParamDefault{1}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map giving the input points; the result's points are in `mesh.points()`}
+///     \cgalParamDefault{`mesh.points()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{boundary_interpolation}
+///     \cgalParamDescription{`Boundary_interpolation::edge_only` (border edges are creases),
+///       `edge_and_corner` (also border vertices with one face are corners), or `none`
+///       (the same points as `edge_only`; faces with a border vertex, and what they
+///       become, are marked in the face property `"f:hole"` of type `std::uint8_t`,
+///       as OpenSubdiv marks them as holes)}
+///     \cgalParamDefault{`Boundary_interpolation::edge_only`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{crease_method}
+///     \cgalParamDescription{how semi-sharp creases decay: `Crease_method::uniform` or `chaikin`}
+///     \cgalParamDefault{`Crease_method::uniform`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_rule}
+///     \cgalParamDescription{`Vertex_rule::standard`, or `edge_points` (the smooth vertex rule
+///       averages the new edge points instead of the old neighbours)}
+///     \cgalParamDefault{`Vertex_rule::standard`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{triangle_subdivision}
+///     \cgalParamDescription{`Triangle_subdivision::catmark`, or `smooth` (OpenSubdiv's smoother
+///       edge rule next to triangles)}
+///     \cgalParamDefault{`Triangle_subdivision::catmark`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_sharpness_map}
+///     \cgalParamDescription{a readable property map from `Edge_index` to `float`:
+///       0 smooth, 10 or more infinitely sharp, in between semi-sharp}
+///     \cgalParamDefault{the map `"e:sharpness"` of `mesh` if it has one, else all 0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_sharpness_map}
+///     \cgalParamDescription{a readable property map from `Vertex_index` to `float` (corners)}
+///     \cgalParamDefault{the map `"v:sharpness"` of `mesh` if it has one, else all 0}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// If sharpness was given, the result has maps `"e:sharpness"` and
+/// `"v:sharpness"` with the decayed sharpness, so that subdividing it again
+/// continues the same surface.
+///
+/// \throws Parameter_error if a sharpness is NaN; `mesh` is then unchanged.
+template <class P, class NamedParameters = parameters::Default_named_parameters>
+void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
+{
+  namespace pm = CGAL_ext::parameters;
+  Catmull_clark_mask mask;
+  mask.vertex_rule =
+    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::vertex_rule), Vertex_rule::standard);
+  mask.triangle_subdivision = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
+                                                   Triangle_subdivision::catmark);
+  internal::subdivide(mesh, mask, np);
+}
+
+/// \ingroup PkgSubdivision
+///
+/// Loop subdivision of a triangle mesh, orientable or not, with OpenSubdiv's
+/// rules. Each step splits a triangle in four. Child vertices are laid out as
+/// `[vertex points | edge points]`. Named parameters as `catmull_clark()`,
+/// without `vertex_rule` and `triangle_subdivision`.
+///
+/// \throws Parameter_error if a face is not a triangle or a sharpness is NaN;
+/// `mesh` is then unchanged.
+template <class P, class NamedParameters = parameters::Default_named_parameters>
+void loop(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
+{
+  internal::subdivide(mesh, Loop_mask(), np);
+}
+
+/// \ingroup PkgSubdivision
+///
+/// Bilinear subdivision: the Catmull–Clark split with new points at edge
+/// midpoints and face centroids and old points kept (OpenSubdiv's bilinear
+/// scheme). Named parameters `number_of_iterations` and `vertex_point_map`.
+template <class P, class NamedParameters = parameters::Default_named_parameters>
+void bilinear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
+{
+  internal::subdivide(mesh, Bilinear_mask(), np);
+}
+
+} // namespace Subdivision
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SUBDIVISION_H

@@ -1,0 +1,482 @@
+// Merging borders: automatic under a tolerance (exact with exact kernels),
+// and manual along two chosen border loops with four strategies.
+#include "test_util.h"
+
+#include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/merge_borders.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Kd = test::Kd;
+using Epick = test::Epick;
+using Epeck = test::Epeck;
+
+template <class P>
+using Mesh = CGAL_ext::Mobius_mesh<P>;
+
+template <class P>
+Mesh<P> from_soup(const std::vector<P>& points, const std::vector<std::vector<std::size_t>>& polygons)
+{
+  Mesh<P> m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m);
+  return m;
+}
+
+// A rectangle grid of `columns` x `rows` quads bent into a ring of radius 3;
+// the cross-section turns by `half_twists` half-turns along the ring. The last
+// column is placed exactly on the first column's points (reversed for an odd
+// number of half-twists), but as separate vertices: the strip is open, and
+// merging its borders closes it.
+template <class P>
+Mesh<P> twisted_strip(int columns, int rows, int half_twists)
+{
+  std::vector<P> points;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i <= columns; ++i) {
+    for (int r = 0; r <= rows; ++r) {
+      if (i == columns) {
+        const int r0 = half_twists % 2 ? rows - r : r;
+        points.push_back(points[std::size_t(r0)]);
+        continue;
+      }
+      const double theta = 2 * pi * i / columns, phi = half_twists * theta / 2;
+      const double v = -1.0 + 2.0 * r / rows;
+      const double radial = 3 + v * std::cos(phi), z = v * std::sin(phi);
+      points.emplace_back(radial * std::cos(theta), radial * std::sin(theta), z);
+    }
+  }
+  std::vector<std::vector<std::size_t>> quads;
+  auto id = [rows](int i, int r) { return std::size_t(i * (rows + 1) + r); };
+  for (int i = 0; i < columns; ++i)
+    for (int r = 0; r < rows; ++r)
+      quads.push_back({id(i, r), id(i + 1, r), id(i + 1, r + 1), id(i, r + 1)});
+  return from_soup(points, quads);
+}
+
+// Half of a box [0,1]² x [z0, z1]: its z = z0 face (`bottom`) or its z = z1
+// face, and the four sides; the other end is open. Faces face outward.
+// `split` divides each side (and the border loop) into that many segments.
+template <class P>
+Mesh<P> box_half(bool lower, double z_closed, double z_open, int split = 1)
+{
+  using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
+  std::vector<P> points;
+  // The loop around the square, counter-clockwise seen from +z.
+  std::vector<std::pair<FT, FT>> loop;
+  const double corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int c = 0; c < 4; ++c)
+    for (int s = 0; s < split; ++s) {
+      const double* a = corners[c];
+      const double* b = corners[(c + 1) % 4];
+      loop.emplace_back(FT(a[0]) + (FT(b[0]) - FT(a[0])) * s / split, FT(a[1]) + (FT(b[1]) - FT(a[1])) * s / split);
+    }
+  const std::size_t n = loop.size();
+  for (const auto& [x, y] : loop)
+    points.emplace_back(x, y, FT(z_closed));
+  for (const auto& [x, y] : loop)
+    points.emplace_back(x, y, FT(z_open));
+  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<std::size_t> cap;
+  for (std::size_t i = 0; i < n; ++i)
+    cap.push_back(lower ? n - 1 - i : i); // bottom faces -z, top faces +z
+  polygons.push_back(cap);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    if (lower)
+      polygons.push_back({i, j, n + j, n + i}); // closed end below the open one
+    else
+      polygons.push_back({j, i, n + i, n + j}); // closed end above
+  }
+  return from_soup(points, polygons);
+}
+
+template <class P>
+void expect_same(const Mesh<P>& a, const Mesh<P>& b)
+{
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+  ASSERT_EQ(a.number_of_edges(), b.number_of_edges());
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces());
+  for (auto v : a.vertices())
+    EXPECT_EQ(a.point(v), b.point(v));
+  for (auto h : a.halfedges())
+    EXPECT_EQ(a.target(h), b.target(h));
+}
+
+// ---------------------------------------------------------------------------- strips
+
+template <class P>
+void strips(double tolerance)
+{
+  const int columns = 12, rows = 3;
+  for (int twists : {0, 1, 3}) {
+    SCOPED_TRACE("half-twists: " + std::to_string(twists));
+    Mesh<P> m = twisted_strip<P>(columns, rows, twists);
+    ASSERT_EQ(CGAL_ext::euler_characteristic(m), 1); // a disc before merging
+    const auto r = CGAL_ext::merge_borders(m, CGAL_ext::parameters::tolerance(tolerance));
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(r.glued_edges, std::size_t(rows));
+    EXPECT_EQ(r.merged_vertices, std::size_t(rows + 1));
+    EXPECT_EQ(r.mobius_edges, twists % 2 ? std::size_t(rows) : 0u);
+    EXPECT_EQ(m.number_of_vertices(), std::size_t(columns * (rows + 1)));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+    EXPECT_EQ(CGAL_ext::is_orientable(m), twists % 2 == 0);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), twists % 2 ? 1u : 2u);
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), twists % 2 ? std::size_t(rows) : 0u);
+    EXPECT_EQ(CGAL_ext::connected_components(m).count, 1u);
+    // Border length: a Möbius strip's single loop runs along both edges of the strip.
+    const auto loops = CGAL_ext::border_cycles(m);
+    std::size_t border_edges = 0;
+    for (auto d : loops)
+      border_edges += CGAL_ext::halfedges_around_face(d, m).size();
+    EXPECT_EQ(border_edges, std::size_t(2 * columns));
+  }
+}
+
+TEST(MergeAuto, StripsWithZeroOneThreeHalfTwistsDouble) { strips<Kd::Point_3>(0.0); }
+TEST(MergeAuto, StripsWithZeroOneThreeHalfTwistsEpick) { strips<Epick::Point_3>(1e-9); }
+TEST(MergeAuto, StripsWithZeroOneThreeHalfTwistsEpeck) { strips<Epeck::Point_3>(0.0); }
+
+TEST(MergeAuto, NearlyClosedStripNeedsTheTolerance)
+{
+  Mesh<Kd::Point_3> m = twisted_strip<Kd::Point_3>(10, 2, 1);
+  // Move the last column off by 1e-7 along z.
+  for (auto v : m.vertices())
+    if (v.idx() >= 10 * 3)
+      m.point(v) = Kd::Point_3(m.point(v).x(), m.point(v).y(), m.point(v).z() + 1e-7);
+  auto copy = m;
+  const auto r0 = CGAL_ext::merge_borders(copy, CGAL_ext::parameters::tolerance(1e-8));
+  EXPECT_EQ(r0.glued_edges, 0u);
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(copy), 1u); // still the open strip
+  const auto r1 = CGAL_ext::merge_borders(m, CGAL_ext::parameters::tolerance(1e-6));
+  EXPECT_EQ(r1.glued_edges, 2u);
+  EXPECT_FALSE(CGAL_ext::is_orientable(m));
+}
+
+// ---------------------------------------------------------------------------- tolerance boundary
+
+// Two unit quads side by side, the second shifted right by `gap`.
+template <class P>
+std::pair<Mesh<P>, Mesh<P>> two_quads(double gap, bool flip_second = false)
+{
+  std::vector<P> a = {P(-1, 0, 0), P(0, 0, 0), P(0, 1, 0), P(-1, 1, 0)};
+  std::vector<P> b = {P(gap, 0, 0), P(1, 0, 0), P(1, 1, 0), P(gap, 1, 0)};
+  std::vector<std::vector<std::size_t>> quad = {{0, 1, 2, 3}};
+  std::vector<std::vector<std::size_t>> flipped = {{3, 2, 1, 0}};
+  return {from_soup(a, quad), from_soup(b, flip_second ? flipped : quad)};
+}
+
+template <class P>
+void tolerance_boundary(double t)
+{
+  SCOPED_TRACE("tolerance " + std::to_string(t));
+  {
+    auto [a, b] = two_quads<P>(t);
+    const auto r = CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(t));
+    EXPECT_EQ(r.glued_edges, 1u) << "a point at exactly the tolerance merges";
+    EXPECT_EQ(a.number_of_vertices(), 6u);
+    EXPECT_EQ(a.number_of_edges(), 7u);
+    EXPECT_EQ(r.mobius_edges, 0u);
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(a), 0u);
+    // Glued vertices keep the first mesh's positions.
+    EXPECT_EQ(a.point(CGAL_ext::Vertex_index(1u)), P(0, 0, 0));
+    EXPECT_EQ(r.vertex_pairs.size(), 2u);
+  }
+  {
+    auto [a, b] = two_quads<P>(std::nextafter(t, 1.0));
+    const auto r = CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(t));
+    EXPECT_EQ(r.glued_edges, 0u) << "one ulp beyond the tolerance does not merge";
+    EXPECT_EQ(a.number_of_vertices(), 8u);
+    EXPECT_EQ(CGAL_ext::connected_components(a).count, 2u);
+  }
+}
+
+TEST(MergeAuto, ToleranceBoundaryIsExactEpeck)
+{
+  tolerance_boundary<Epeck::Point_3>(0.1); // 0.1² is not a double
+  tolerance_boundary<Epeck::Point_3>(0.5);
+  tolerance_boundary<Epeck::Point_3>(0.0); // exact coincidence only
+}
+
+TEST(MergeAuto, ToleranceBoundaryIsExactEpick)
+{
+  tolerance_boundary<Epick::Point_3>(0.1);
+  tolerance_boundary<Epick::Point_3>(0.5);
+  tolerance_boundary<Epick::Point_3>(0.0);
+}
+
+TEST(MergeAuto, ToleranceBoundaryDouble)
+{
+  tolerance_boundary<Kd::Point_3>(0.1);
+  tolerance_boundary<Kd::Point_3>(0.5);
+}
+
+TEST(MergeAuto, ExactFtToleranceEpeck)
+{
+  // Rational gap and tolerance, 1/3: no double could express either.
+  using FT = Epeck::FT;
+  using P = Epeck::Point_3;
+  const FT third = FT(1) / 3;
+  Mesh<P> a = from_soup<P>({P(-1, 0, 0), P(0, 0, 0), P(0, 1, 0), P(-1, 1, 0)}, {{0, 1, 2, 3}});
+  Mesh<P> b = from_soup<P>({P(third, 0, 0), P(1, 0, 0), P(1, 1, 0), P(third, 1, 0)}, {{0, 1, 2, 3}});
+  auto a2 = a;
+  EXPECT_EQ(CGAL_ext::merge_borders(a2, b, CGAL_ext::parameters::tolerance(third)).glued_edges, 1u);
+  auto a3 = a;
+  EXPECT_EQ(CGAL_ext::merge_borders(a3, b, CGAL_ext::parameters::tolerance(third - FT(1) / 1000000000)).glued_edges,
+            0u);
+}
+
+TEST(MergeAuto, SameWayBordersMakeMobiusEdge)
+{
+  // The second quad runs the other way round: its border edge on the glue runs
+  // the same way as the first's, so the glued edge is a Möbius edge, though
+  // the surface (a rectangle) is orientable.
+  auto [a, b] = two_quads<Epeck::Point_3>(0.0, true);
+  const auto r = CGAL_ext::merge_borders(a, b);
+  EXPECT_EQ(r.glued_edges, 1u);
+  EXPECT_EQ(r.mobius_edges, 1u);
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(a), 1u);
+  EXPECT_TRUE(CGAL_ext::is_orientable(a));
+  EXPECT_EQ(CGAL_ext::orient(a), 0u);
+}
+
+// ---------------------------------------------------------------------------- halves
+
+template <class P>
+void cube_halves()
+{
+  Mesh<P> lower = box_half<P>(true, 0, 0.5), upper = box_half<P>(false, 1, 0.5);
+  ASSERT_EQ(CGAL_ext::number_of_border_cycles(lower), 1u);
+  ASSERT_EQ(CGAL_ext::number_of_border_cycles(upper), 1u);
+  const auto r = CGAL_ext::merge_borders(lower, upper);
+  ASSERT_TRUE(lower.is_valid(true));
+  EXPECT_EQ(r.glued_edges, 4u);
+  EXPECT_EQ(r.merged_vertices, 4u);
+  EXPECT_EQ(lower.number_of_vertices(), 12u);
+  EXPECT_EQ(lower.number_of_edges(), 20u);
+  EXPECT_EQ(lower.number_of_faces(), 10u);
+  EXPECT_EQ(CGAL_ext::euler_characteristic(lower), 2);
+  EXPECT_TRUE(CGAL_ext::is_closed(lower));
+  EXPECT_TRUE(CGAL_ext::is_orientable(lower));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(lower), 0u); // both halves face outward
+}
+
+TEST(MergeAuto, CubeHalvesDouble) { cube_halves<Kd::Point_3>(); }
+TEST(MergeAuto, CubeHalvesEpeck) { cube_halves<Epeck::Point_3>(); }
+
+TEST(MergeAuto, KleinBottleHalves)
+{
+  // Read the figure-8 Klein bottle and split its faces into two halves, each
+  // with its own copies of the points.
+  std::ifstream in(test::data("nonorientable/klein_fig8_24x12_quads.obj"));
+  ASSERT_TRUE(in);
+  std::vector<Epeck::Point_3> points;
+  std::vector<std::vector<std::size_t>> faces;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string tag;
+    ls >> tag;
+    if (tag == "v") {
+      double x, y, z;
+      ls >> x >> y >> z;
+      points.emplace_back(x, y, z);
+    } else if (tag == "f") {
+      std::vector<std::size_t> f;
+      std::string c;
+      while (ls >> c)
+        f.push_back(std::stoul(c.substr(0, c.find('/'))) - 1);
+      faces.push_back(f);
+    }
+  }
+  ASSERT_EQ(faces.size(), 288u);
+  std::vector<std::vector<std::size_t>> first(faces.begin(), faces.begin() + 144),
+    second(faces.begin() + 144, faces.end());
+  Mesh<Epeck::Point_3> a = from_soup(points, first), b = from_soup(points, second);
+  // Each half keeps all 288 points; those it does not use are isolated
+  // vertices, which merging leaves alone.
+  const auto r = CGAL_ext::merge_borders(a, b);
+  ASSERT_TRUE(a.is_valid(true));
+  EXPECT_EQ(a.number_of_faces(), 288u);
+  EXPECT_EQ(a.number_of_edges(), 576u);
+  EXPECT_GT(r.glued_edges, 0u);
+  std::size_t used = 0;
+  for (auto v : a.vertices())
+    used += a.is_isolated(v) ? 0 : 1;
+  EXPECT_EQ(used, 288u);
+  EXPECT_TRUE(CGAL_ext::is_closed(a));
+  EXPECT_FALSE(CGAL_ext::is_orientable(a));
+  // V - E + F over the surface (isolated vertices aside): a Klein bottle has chi = 0.
+  EXPECT_EQ(std::int64_t(used) - 576 + 288, 0);
+}
+
+// ---------------------------------------------------------------------------- bad input
+
+TEST(MergeAuto, BadToleranceThrowsAndLeavesInputAlone)
+{
+  auto [a, b] = two_quads<Kd::Point_3>(0.0);
+  const auto a0 = a;
+  EXPECT_THROW(CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(-1e-3)), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(std::nan(""))),
+               CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::merge_borders(a, CGAL_ext::parameters::tolerance(-0.5)), CGAL_ext::Parameter_error);
+  expect_same(a, a0);
+  Mesh<Epeck::Point_3> e = twisted_strip<Epeck::Point_3>(6, 1, 1);
+  EXPECT_THROW(CGAL_ext::merge_borders(e, CGAL_ext::parameters::tolerance(Epeck::FT(-1) / 3)),
+               CGAL_ext::Parameter_error);
+}
+
+TEST(MergeAuto, NonManifoldEdgeIsRefused)
+{
+  // A book of three pages: two quads of the second mesh both end on the
+  // first quad's right edge.
+  using P = Kd::Point_3;
+  Mesh<P> a = from_soup<P>({P(-1, 0, 0), P(0, 0, 0), P(0, 1, 0), P(-1, 1, 0)}, {{0, 1, 2, 3}});
+  Mesh<P> b = from_soup<P>({P(0, 0, 0), P(1, 0, 0), P(1, 1, 0), P(0, 1, 0), P(0, 0, 0), P(0, 0, 1), P(0, 1, 1),
+                            P(0, 1, 0)},
+                           {{0, 1, 2, 3}, {4, 7, 6, 5}});
+  const auto a0 = a, b0 = b;
+  try {
+    CGAL_ext::merge_borders(a, b);
+    FAIL() << "expected a Merge_error";
+  } catch (const CGAL_ext::Merge_error& e) {
+    EXPECT_EQ(e.kind(), CGAL_ext::Merge_error::Kind::non_manifold_edge);
+    // Names the first mesh's edge (v1, v2).
+    EXPECT_NE(std::find(e.vertices().begin(), e.vertices().end(), 1u), e.vertices().end()) << e.what();
+    EXPECT_NE(std::find(e.vertices().begin(), e.vertices().end(), 2u), e.vertices().end()) << e.what();
+  }
+  expect_same(a, a0);
+  expect_same(b, b0);
+}
+
+TEST(MergeAuto, ToleranceLargerThanEdgesIsRefused)
+{
+  // A strip one unit wide, glued under a tolerance of 2.5: its own border
+  // vertices match each other and the glue would collapse faces.
+  using P = Kd::Point_3;
+  Mesh<P> m = twisted_strip<P>(12, 1, 0);
+  const auto m0 = m;
+  EXPECT_THROW(CGAL_ext::merge_borders(m, CGAL_ext::parameters::tolerance(2.5)), CGAL_ext::Merge_error);
+  expect_same(m, m0);
+}
+
+// ---------------------------------------------------------------------------- manual
+
+// The border dart of `m` whose target is at (x, y) in the plane, running as `next_xy` says.
+template <class P>
+CGAL_ext::Dart border_dart_at(const Mesh<P>& m, double x, double y, double nx, double ny)
+{
+  for (auto h : m.halfedges()) {
+    if (!m.is_border(h))
+      continue;
+    for (bool flipped : {false, true}) {
+      const CGAL_ext::Dart d(h, flipped);
+      const auto& p = m.point(m.target(d));
+      const auto& q = m.point(m.target(m.next(d)));
+      if (p.x() == x && p.y() == y && q.x() == nx && q.y() == ny)
+        return d;
+    }
+  }
+  return CGAL_ext::Dart();
+}
+
+TEST(MergeManual, FourStrategiesOnCubeHalvesEpeck)
+{
+  using P = Epeck::Point_3;
+  using FT = Epeck::FT;
+  const Mesh<P> lower0 = box_half<P>(true, 0, 0.5), upper = box_half<P>(false, 1, 0.625);
+  const CGAL_ext::Dart da = border_dart_at(lower0, 0, 0, 1, 0), db = border_dart_at(upper, 0, 0, 1, 0);
+  ASSERT_TRUE(da.is_valid() && db.is_valid());
+  ASSERT_NE(da.is_flipped(), db.is_flipped()); // both halves face outward: the walks differ
+
+  const std::pair<CGAL_ext::Merge_strategy, FT> cases[] = {{CGAL_ext::Merge_strategy::keep_first, FT(1) / 2},
+                                                           {CGAL_ext::Merge_strategy::keep_second, FT(5) / 8},
+                                                           {CGAL_ext::Merge_strategy::average, FT(9) / 16}};
+  for (const auto& [strategy, z] : cases) {
+    SCOPED_TRACE("strategy " + std::to_string(int(strategy)));
+    Mesh<P> m = lower0;
+    const auto r = CGAL_ext::merge_borders(m, da, upper, db, strategy);
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(r.glued_edges, 4u);
+    EXPECT_EQ(r.mobius_edges, 0u);
+    EXPECT_EQ(m.number_of_vertices(), 12u);
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), 2);
+    EXPECT_TRUE(CGAL_ext::is_closed(m));
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 0u);
+    std::size_t at_z = 0;
+    for (auto v : m.vertices())
+      at_z += m.point(v).z() == z ? 1 : 0;
+    EXPECT_EQ(at_z, 4u); // the glued ring, exactly at the chosen height
+  }
+
+  // Walking both loops the same way glues a Möbius band of edges: still a
+  // sphere once oriented (the two halves were glued with one reversed).
+  Mesh<P> m = lower0;
+  const auto r = CGAL_ext::merge_borders(m, da, upper, db.flipped(), CGAL_ext::Merge_strategy::keep_first);
+  EXPECT_EQ(r.mobius_edges, 4u);
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 4u);
+  EXPECT_TRUE(CGAL_ext::is_orientable(m));
+  EXPECT_TRUE(m.is_valid(true));
+}
+
+TEST(MergeManual, BridgeEqualAndUnequalLoops)
+{
+  using P = Kd::Point_3;
+  const Mesh<P> lower = box_half<P>(true, 0, 0.5);
+  for (int split : {1, 2, 3}) {
+    SCOPED_TRACE("upper loop of " + std::to_string(4 * split) + " edges");
+    const Mesh<P> upper = box_half<P>(false, 1, 0.75, split);
+    const double step = 1.0 / split;
+    const CGAL_ext::Dart da = border_dart_at(lower, 0, 0, 1, 0), db = border_dart_at(upper, 0, 0, step, 0);
+    ASSERT_TRUE(da.is_valid() && db.is_valid());
+    Mesh<P> m = lower;
+    const auto r = CGAL_ext::merge_borders(m, da, upper, db, CGAL_ext::Merge_strategy::bridge);
+    ASSERT_TRUE(m.is_valid(true));
+    // 4 and 4s edges: 4 quads where both advance together, 4(s-1) triangles.
+    EXPECT_EQ(r.new_faces, std::size_t(4 + 4 * (split - 1)));
+    EXPECT_EQ(m.number_of_vertices(), std::size_t(8 + 8 * split));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), 2);
+    EXPECT_TRUE(CGAL_ext::is_closed(m));
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 0u);
+    // Nothing moved.
+    for (auto v : lower.vertices())
+      EXPECT_EQ(m.point(v), lower.point(v));
+  }
+}
+
+TEST(MergeManual, MismatchedChainsAndBadDartsAreRefused)
+{
+  using P = Epeck::Point_3;
+  Mesh<P> lower = box_half<P>(true, 0, 0.5);
+  const Mesh<P> upper = box_half<P>(false, 1, 0.75, 2);
+  const auto lower0 = lower;
+  const CGAL_ext::Dart da = border_dart_at(lower, 0, 0, 1, 0), db = border_dart_at(upper, 0, 0, 0.5, 0);
+  for (auto s : {CGAL_ext::Merge_strategy::keep_first, CGAL_ext::Merge_strategy::keep_second,
+                 CGAL_ext::Merge_strategy::average}) {
+    try {
+      CGAL_ext::merge_borders(lower, da, upper, db, s);
+      FAIL() << "expected a Merge_error";
+    } catch (const CGAL_ext::Merge_error& e) {
+      EXPECT_EQ(e.kind(), CGAL_ext::Merge_error::Kind::mismatched_chains);
+    }
+  }
+  const CGAL_ext::Dart face_dart = lower.halfedge(CGAL_ext::Face_index(0u));
+  try {
+    CGAL_ext::merge_borders(lower, face_dart, upper, db, CGAL_ext::Merge_strategy::bridge);
+    FAIL() << "expected a Merge_error";
+  } catch (const CGAL_ext::Merge_error& e) {
+    EXPECT_EQ(e.kind(), CGAL_ext::Merge_error::Kind::not_a_border);
+  }
+  expect_same(lower, lower0);
+}
+
+} // namespace

@@ -1,0 +1,839 @@
+// Subdivision: against OpenSubdiv 3.5 on its own regression shapes (levels
+// 1-4, 1e-12), against OpenSubdiv on the orientation double cover for
+// non-orientable meshes, against hand-computed rationals with an exact
+// kernel, and topological invariants (Euler characteristic, border loops).
+#include "test_util.h"
+
+#include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/subdivision.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#endif
+
+namespace {
+
+namespace S = CGAL_ext::Subdivision;
+using CGAL_ext::Boundary_interpolation;
+using CGAL_ext::Crease_method;
+using CGAL_ext::Triangle_subdivision;
+using Point = test::Kd::Point_3;
+using Mesh = CGAL_ext::Mobius_mesh<Point>;
+using V3 = S::internal::Vec3;
+using Level = S::internal::Level;
+
+// ----------------------------------------------------------------- shapes
+
+// An OBJ file with OpenSubdiv's tags, read by a small local parser.
+struct Shape
+{
+  std::vector<Point> points;
+  std::vector<std::vector<int>> faces;
+  std::vector<std::array<int, 2>> crease_pairs;
+  std::vector<float> crease_values;
+  std::vector<int> corners;
+  std::vector<float> corner_values;
+  Boundary_interpolation boundary = Boundary_interpolation::edge_only;
+  Crease_method crease_method = Crease_method::uniform;
+  Triangle_subdivision triangles = Triangle_subdivision::catmark;
+};
+
+Shape read_shape(const std::string& file)
+{
+  Shape s;
+  std::ifstream in(file);
+  EXPECT_TRUE(in.good()) << file;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string tag;
+    ls >> tag;
+    if (tag == "v") {
+      double x, y, z;
+      ls >> x >> y >> z;
+      s.points.emplace_back(x, y, z);
+    } else if (tag == "f") {
+      std::vector<int> f;
+      std::string w;
+      while (ls >> w)
+        f.push_back(std::stoi(w.substr(0, w.find('/'))) - 1);
+      s.faces.push_back(f);
+    } else if (tag == "t") {
+      std::string name, counts;
+      ls >> name >> counts;
+      int ni = 0, nf = 0, ns = 0;
+      char sep;
+      std::istringstream cs(counts);
+      cs >> ni >> sep >> nf >> sep >> ns;
+      std::vector<int> ints(ni);
+      std::vector<float> floats(nf);
+      std::vector<std::string> strings(ns);
+      for (int& i : ints)
+        ls >> i;
+      for (float& f : floats)
+        ls >> f;
+      for (std::string& t : strings)
+        ls >> t;
+      if (name == "crease") {
+        for (int i = 0; i + 1 < ni; i += 2) {
+          s.crease_pairs.push_back({ints[i], ints[i + 1]});
+          s.crease_values.push_back(nf == 1 ? floats[0] : floats[i / 2]);
+        }
+      } else if (name == "corner") {
+        for (int i = 0; i < ni; ++i) {
+          s.corners.push_back(ints[i]);
+          s.corner_values.push_back(nf == 1 ? floats[0] : floats[i]);
+        }
+      } else if (name == "interpolateboundary") {
+        s.boundary = ints[0] == 0 ? Boundary_interpolation::none
+                                  : (ints[0] == 1 ? Boundary_interpolation::edge_and_corner
+                                                  : Boundary_interpolation::edge_only);
+      } else if (name == "creasemethod") {
+        s.crease_method = strings[0] == "chaikin" ? Crease_method::chaikin : Crease_method::uniform;
+      } else if (name == "smoothtriangles") {
+        s.triangles = strings[0] == "smooth" ? Triangle_subdivision::smooth : Triangle_subdivision::catmark;
+      }
+    }
+  }
+  return s;
+}
+
+CGAL_ext::Edge_index find_edge(const Mesh& m, int a, int b)
+{
+  for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(CGAL_ext::Vertex_index(b), m))
+    if (m.source(d) == CGAL_ext::Vertex_index(a))
+      return m.edge(d);
+  ADD_FAILURE() << "no edge " << a << "-" << b;
+  return CGAL_ext::Edge_index();
+}
+
+struct Built
+{
+  Mesh mesh;
+  std::vector<float> edge_sharpness, vertex_sharpness;
+};
+
+Built build(const Shape& s)
+{
+  Built b;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, b.mesh);
+  EXPECT_TRUE(b.mesh.is_valid(true));
+  EXPECT_EQ(b.mesh.number_of_vertices(), s.points.size());
+  for (std::size_t i = 0; i < s.points.size(); ++i) // import keeps the soup's vertex order
+    EXPECT_EQ(b.mesh.point(CGAL_ext::Vertex_index(i)), s.points[i]);
+  b.edge_sharpness.assign(b.mesh.number_of_edges(), 0.0f);
+  b.vertex_sharpness.assign(b.mesh.number_of_vertices(), 0.0f);
+  for (std::size_t i = 0; i < s.crease_pairs.size(); ++i)
+    b.edge_sharpness[find_edge(b.mesh, s.crease_pairs[i][0], s.crease_pairs[i][1]).idx()] = s.crease_values[i];
+  for (std::size_t i = 0; i < s.corners.size(); ++i)
+    b.vertex_sharpness[s.corners[i]] = s.corner_values[i];
+  return b;
+}
+
+// Our levels 0..n, by the refiner, level by level.
+template <class Mask>
+std::vector<std::vector<V3>> our_levels(S::Refiner<Mask>& r, const Built& b, unsigned n)
+{
+  r.refine(b.mesh, n, b.edge_sharpness, b.vertex_sharpness);
+  std::vector<std::vector<V3>> levels(n + 1);
+  for (const Point& p : b.mesh.points().data())
+    levels[0].push_back({p.x(), p.y(), p.z()});
+  for (unsigned k = 0; k < n; ++k) {
+    levels[k + 1].resize(r.level(k + 1).nv);
+    r.interpolate_level(k, levels[k].data(), levels[k + 1].data());
+  }
+  return levels;
+}
+
+// The orientation double cover: two copies of each face, one per
+// orientation, glued so that the cover is orientable. Vertex v has the twins
+// 2v and 2v+1; the sheet of a face at v is whether the face runs against the
+// walk around v.
+Shape double_cover(const Mesh& m, const Built& b, Shape* tags = nullptr)
+{
+  Shape c;
+  for (const Point& p : m.points().data()) {
+    c.points.push_back(p);
+    c.points.push_back(p);
+  }
+  std::vector<std::vector<std::pair<int, int>>> sheet(m.number_of_faces()); // (vertex, sheet)
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(v, m))
+      if (!m.is_border(d))
+        sheet[m.face(d).idx()].push_back({int(v.idx()), d.is_flipped() ? 1 : 0});
+  auto sheet_of = [&](CGAL_ext::Face_index f, int v) {
+    for (auto [w, s] : sheet[f.idx()])
+      if (w == v)
+        return s;
+    ADD_FAILURE();
+    return 0;
+  };
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::vector<int> vs;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, m))
+      vs.push_back(int(v.idx()));
+    for (int sigma : {0, 1}) {
+      std::vector<int> face;
+      for (int v : vs)
+        face.push_back(2 * v + (sigma ^ sheet_of(f, v)));
+      if (sigma)
+        std::reverse(face.begin(), face.end());
+      c.faces.push_back(face);
+    }
+  }
+  if (tags) { // both twins of a sharp edge or vertex are sharp
+    std::set<std::pair<int, int>> cover_edges;
+    for (const auto& f : c.faces)
+      for (std::size_t i = 0; i < f.size(); ++i)
+        cover_edges.insert(std::minmax(f[i], f[(i + 1) % f.size()]));
+    for (CGAL_ext::Edge_index e : m.edges()) {
+      if (b.edge_sharpness[e.idx()] <= 0.0f)
+        continue;
+      const int a = int(m.vertex(e, 0).idx()), bb = int(m.vertex(e, 1).idx());
+      int twins = 0;
+      for (int i : {0, 1})
+        for (int j : {0, 1})
+          if (cover_edges.count(std::minmax(2 * a + i, 2 * bb + j))) {
+            tags->crease_pairs.push_back({2 * a + i, 2 * bb + j});
+            tags->crease_values.push_back(b.edge_sharpness[e.idx()]);
+            ++twins;
+          }
+      EXPECT_EQ(twins, 2);
+    }
+    for (CGAL_ext::Vertex_index v : m.vertices())
+      if (b.vertex_sharpness[v.idx()] > 0.0f)
+        for (int i : {0, 1}) {
+          tags->corners.push_back(2 * int(v.idx()) + i);
+          tags->corner_values.push_back(b.vertex_sharpness[v.idx()]);
+        }
+  }
+  return c;
+}
+
+// ----------------------------------------------------------------- OpenSubdiv
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+namespace Far = OpenSubdiv::Far;
+namespace Sdc = OpenSubdiv::Sdc;
+
+struct Osd_vertex
+{
+  double p[3];
+  void Clear(void* = nullptr) { p[0] = p[1] = p[2] = 0.0; }
+  void AddWithWeight(const Osd_vertex& s, double w)
+  {
+    for (int i = 0; i < 3; ++i)
+      p[i] += w * s.p[i];
+  }
+};
+
+struct Osd_run
+{
+  std::unique_ptr<Far::TopologyRefiner> refiner;
+  std::vector<std::vector<Osd_vertex>> levels;
+};
+
+// `tags` gives the options; creases and corners come from `tags` too, unless
+// it has none and `sharp` does.
+Osd_run run_opensubdiv(const Shape& s, const Shape& tags, Sdc::SchemeType type, int n)
+{
+  std::vector<int> sizes, indices;
+  for (const auto& f : s.faces) {
+    sizes.push_back(int(f.size()));
+    indices.insert(indices.end(), f.begin(), f.end());
+  }
+  std::vector<int> crease_indices;
+  for (const auto& p : tags.crease_pairs) {
+    crease_indices.push_back(p[0]);
+    crease_indices.push_back(p[1]);
+  }
+  Far::TopologyDescriptor desc;
+  desc.numVertices = int(s.points.size());
+  desc.numFaces = int(s.faces.size());
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  desc.numCreases = int(tags.crease_pairs.size());
+  desc.creaseVertexIndexPairs = crease_indices.data();
+  desc.creaseWeights = tags.crease_values.data();
+  desc.numCorners = int(tags.corners.size());
+  desc.cornerVertexIndices = tags.corners.data();
+  desc.cornerWeights = tags.corner_values.data();
+
+  Sdc::Options options;
+  options.SetVtxBoundaryInterpolation(
+    tags.boundary == Boundary_interpolation::none
+      ? Sdc::Options::VTX_BOUNDARY_NONE
+      : (tags.boundary == Boundary_interpolation::edge_only ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
+                                                            : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER));
+  options.SetCreasingMethod(tags.crease_method == Crease_method::chaikin ? Sdc::Options::CREASE_CHAIKIN
+                                                                          : Sdc::Options::CREASE_UNIFORM);
+  options.SetTriangleSubdivision(tags.triangles == Triangle_subdivision::smooth ? Sdc::Options::TRI_SUB_SMOOTH
+                                                                                : Sdc::Options::TRI_SUB_CATMARK);
+  Osd_run run;
+  run.refiner.reset(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
+    desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(type, options)));
+  run.refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(n));
+  run.levels.resize(n + 1);
+  for (const Point& p : s.points)
+    run.levels[0].push_back({{p.x(), p.y(), p.z()}});
+  Far::PrimvarRefinerReal<double> primvar(*run.refiner);
+  for (int k = 1; k <= n; ++k) {
+    run.levels[k].resize(run.refiner->GetLevel(k).GetNumVertices());
+    Osd_vertex* src = run.levels[k - 1].data();
+    Osd_vertex* dst = run.levels[k].data();
+    primvar.Interpolate(k, src, dst);
+  }
+  return run;
+}
+
+using Vertex_map = std::vector<std::vector<int>>; // our vertex -> OpenSubdiv vertices
+
+// Our child layout [vertex points | edge points | face points] mapped to
+// OpenSubdiv's children through its parent-to-child queries.
+Vertex_map child_map(const Level& p, const Vertex_map& m, const Far::TopologyLevel& o, bool quad)
+{
+  std::vector<int> back(o.GetNumVertices(), -1);
+  for (std::size_t v = 0; v < m.size(); ++v)
+    for (int x : m[v])
+      back[x] = int(v);
+  Vertex_map c(p.nv + p.ne + (quad ? p.nf : 0));
+  for (std::uint32_t v = 0; v < p.nv; ++v)
+    for (int x : m[v])
+      c[v].push_back(o.GetVertexChildVertex(x));
+  for (std::uint32_t e = 0; e < p.ne; ++e) {
+    const std::uint32_t a = p.source(4 * e), b = p.h_target[2 * e];
+    for (int x : m[a])
+      for (int y : m[b]) {
+        const int oe = o.FindEdge(x, y);
+        if (oe >= 0)
+          c[p.nv + e].push_back(o.GetEdgeChildVertex(oe));
+      }
+  }
+  if (quad) {
+    for (std::uint32_t f = 0; f < p.nf; ++f) {
+      std::vector<int> ours;
+      for (std::uint32_t k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
+        ours.push_back(int(p.h_target[p.corner_h[k]]));
+      std::sort(ours.begin(), ours.end());
+      for (int x : m[ours[0]]) {
+        const auto faces = o.GetVertexFaces(x);
+        for (int i = 0; i < faces.size(); ++i) {
+          const auto fv = o.GetFaceVertices(faces[i]);
+          std::vector<int> theirs;
+          for (int j = 0; j < fv.size(); ++j)
+            theirs.push_back(back[fv[j]]);
+          std::sort(theirs.begin(), theirs.end());
+          if (theirs == ours)
+            c[p.nv + p.ne + f].push_back(o.GetFaceChildVertex(faces[i]));
+        }
+      }
+    }
+  }
+  return c;
+}
+
+// Compares our levels with OpenSubdiv's; `twins` is 1, or 2 for a double cover.
+template <class Mask>
+void compare(const S::Refiner<Mask>& r, const std::vector<std::vector<V3>>& ours, const Osd_run& osd,
+             Vertex_map map, std::size_t twins, double tolerance = 1e-12)
+{
+  const bool quad = Mask::split == S::Split::quad;
+  for (std::size_t k = 0; k < ours.size(); ++k) {
+    if (k > 0)
+      map = child_map(r.level(unsigned(k - 1)), map, osd.refiner->GetLevel(int(k - 1)), quad);
+    ASSERT_EQ(osd.levels[k].size(), twins * ours[k].size()) << "level " << k;
+    ASSERT_EQ(osd.refiner->GetLevel(int(k)).GetNumFaces(), int(twins * r.level(unsigned(k)).nf));
+    double worst = 0.0;
+    std::size_t mapped = 0;
+    for (std::size_t v = 0; v < ours[k].size(); ++v) {
+      ASSERT_EQ(map[v].size(), twins) << "level " << k << " vertex " << v;
+      for (int x : map[v]) {
+        const double* q = osd.levels[k][x].p;
+        const V3& p = ours[k][v];
+        const double scale = std::max({1.0, std::abs(q[0]), std::abs(q[1]), std::abs(q[2])});
+        worst = std::max({worst, std::abs(p.x - q[0]) / scale, std::abs(p.y - q[1]) / scale,
+                          std::abs(p.z - q[2]) / scale});
+        ++mapped;
+      }
+    }
+    EXPECT_EQ(mapped, osd.levels[k].size());
+    EXPECT_LE(worst, tolerance) << "level " << k;
+  }
+}
+
+Vertex_map identity_map(std::size_t n)
+{
+  Vertex_map m(n);
+  for (std::size_t i = 0; i < n; ++i)
+    m[i] = {int(i)};
+  return m;
+}
+
+// One OpenSubdiv shape: ours against OpenSubdiv at levels 1-4 with the
+// shape's own tags, possibly overridden.
+template <class Mask>
+void check_shape(const std::string& name, Mask mask, Sdc::SchemeType type, const Shape* override_tags = nullptr,
+                 int levels = 4)
+{
+  SCOPED_TRACE(name);
+  Shape s = read_shape(test::data("opensubdiv/" + name));
+  if (override_tags) {
+    s.boundary = override_tags->boundary;
+    s.crease_method = override_tags->crease_method;
+    s.triangles = override_tags->triangles;
+  }
+  const Built b = build(s);
+  S::Refinement_options options;
+  options.boundary_interpolation = s.boundary;
+  options.crease_method = s.crease_method;
+  if constexpr (std::is_same_v<Mask, S::Catmull_clark_mask>)
+    mask.triangle_subdivision = s.triangles;
+  S::Refiner<Mask> r(mask, options);
+  const auto ours = our_levels(r, b, unsigned(levels));
+  const Osd_run osd = run_opensubdiv(s, s, type, levels);
+  compare(r, ours, osd, identity_map(s.points.size()), 1);
+  if (s.boundary == Boundary_interpolation::none) {
+    for (int k = 0; k <= levels; ++k) {
+      const Level& L = r.level(unsigned(k));
+      int holes_ours = 0, holes_osd = 0;
+      for (auto h : L.f_hole)
+        holes_ours += h;
+      for (int f = 0; f < osd.refiner->GetLevel(k).GetNumFaces(); ++f)
+        holes_osd += osd.refiner->GetLevel(k).IsFaceHole(f) ? 1 : 0;
+      EXPECT_EQ(holes_ours, holes_osd) << "level " << k;
+    }
+  }
+}
+#endif
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+#define REQUIRE_OPENSUBDIV()
+#else
+#define REQUIRE_OPENSUBDIV() GTEST_SKIP() << "OpenSubdiv not found"
+#endif
+
+// ----------------------------------------------------------------- OpenSubdiv shapes
+
+TEST(SubdivisionOpenSubdiv, CatmullClarkShapes)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"catmark_cube.obj", "catmark_cube_corner4.obj", "catmark_cube_creases1.obj",
+                           "catmark_chaikin1.obj", "catmark_edgecorner.obj", "catmark_nonquads.obj",
+                           "catmark_pole64.obj", "catmark_smoothtris1.obj", "catmark_torus_creases1.obj"})
+    check_shape(name, S::Catmull_clark_mask(), Sdc::SCHEME_CATMARK);
+#endif
+}
+
+TEST(SubdivisionOpenSubdiv, CatmullClarkOptionsOverridden)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (auto boundary :
+       {Boundary_interpolation::none, Boundary_interpolation::edge_only, Boundary_interpolation::edge_and_corner})
+    for (auto crease : {Crease_method::uniform, Crease_method::chaikin})
+      for (const char* name : {"catmark_edgecorner.obj", "catmark_nonquads.obj", "catmark_torus_creases1.obj",
+                               "catmark_chaikin1.obj", "catmark_cube_creases1.obj"}) {
+        Shape o;
+        o.boundary = boundary;
+        o.crease_method = crease;
+        o.triangles = Triangle_subdivision::smooth;
+        check_shape(name, S::Catmull_clark_mask(), Sdc::SCHEME_CATMARK, &o, 3);
+      }
+#endif
+}
+
+TEST(SubdivisionOpenSubdiv, LoopShapes)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"loop_tetrahedron.obj", "loop_icos_semisharp.obj", "loop_triangle_edgeonly.obj"})
+    check_shape(name, S::Loop_mask(), Sdc::SCHEME_LOOP);
+  Shape o;
+  o.boundary = Boundary_interpolation::edge_and_corner;
+  o.crease_method = Crease_method::chaikin;
+  for (const char* name : {"loop_icos_semisharp.obj", "loop_triangle_edgeonly.obj"})
+    check_shape(name, S::Loop_mask(), Sdc::SCHEME_LOOP, &o);
+#endif
+}
+
+TEST(SubdivisionOpenSubdiv, BilinearShapes)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"catmark_nonquads.obj", "catmark_cube_creases1.obj", "catmark_edgecorner.obj"})
+    check_shape(name, S::Bilinear_mask(), Sdc::SCHEME_BILINEAR, nullptr, 3);
+#endif
+}
+
+// ----------------------------------------------------------------- non-orientable
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+template <class Mask>
+void check_cover(const std::string& file, Mask mask, Sdc::SchemeType type, bool with_creases, int levels = 3)
+{
+  SCOPED_TRACE(file);
+  const Shape s = read_shape(test::data(file));
+  Built b = build(s);
+  ASSERT_FALSE(CGAL_ext::is_orientable(b.mesh));
+  if (with_creases) { // a semi-sharp and an infinitely sharp interior edge, one of them Möbius if any
+    int placed = 0;
+    for (CGAL_ext::Edge_index e : b.mesh.edges()) {
+      if (b.mesh.is_border(e) || placed == 2)
+        continue;
+      if (placed == 0 && CGAL_ext::number_of_mobius_edges(b.mesh) > 0 && !b.mesh.is_mobius(e))
+        continue;
+      b.edge_sharpness[e.idx()] = placed == 0 ? 1.5f : 10.0f;
+      ++placed;
+    }
+    b.vertex_sharpness[3] = 2.25f;
+  }
+  Shape tags;
+  const Shape cover = double_cover(b.mesh, b, &tags);
+  {
+    Mesh cm;
+    CGAL_ext::polygon_soup_to_mobius_mesh(cover.points, cover.faces, cm);
+    EXPECT_TRUE(CGAL_ext::is_orientable(cm));
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(cm), 0u);
+    EXPECT_EQ(CGAL_ext::connected_components(cm).count, CGAL_ext::connected_components(b.mesh).count);
+    EXPECT_EQ(CGAL_ext::euler_characteristic(cm), 2 * CGAL_ext::euler_characteristic(b.mesh));
+  }
+  S::Refiner<Mask> r(mask);
+  const auto ours = our_levels(r, b, unsigned(levels));
+  const Osd_run osd = run_opensubdiv(cover, tags, type, levels);
+  Vertex_map twins(s.points.size());
+  for (std::size_t v = 0; v < twins.size(); ++v)
+    twins[v] = {int(2 * v), int(2 * v + 1)};
+  compare(r, ours, osd, twins, 2);
+}
+#endif
+
+TEST(SubdivisionMobius, CatmullClarkMatchesOpenSubdivOnDoubleCover)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* f : {"nonorientable/mobius_20x4_quads.obj", "nonorientable/klein_fig8_24x12_quads.obj",
+                        "nonorientable/boys_surface_quads.obj"}) {
+    check_cover(f, S::Catmull_clark_mask(), Sdc::SCHEME_CATMARK, false);
+    check_cover(f, S::Catmull_clark_mask(), Sdc::SCHEME_CATMARK, true);
+  }
+#endif
+}
+
+TEST(SubdivisionMobius, LoopMatchesOpenSubdivOnDoubleCover)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* f : {"nonorientable/mobius_20x4_tris.obj", "nonorientable/mobius_min_5tris.obj",
+                        "nonorientable/rp2_hemi_icosahedron.obj"}) {
+    check_cover(f, S::Loop_mask(), Sdc::SCHEME_LOOP, false);
+    check_cover(f, S::Loop_mask(), Sdc::SCHEME_LOOP, true);
+  }
+#endif
+}
+
+Mesh load(const std::string& file)
+{
+  const Shape s = read_shape(test::data(file));
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
+  return m;
+}
+
+TEST(SubdivisionMobius, TopologyIsKept)
+{
+  struct Case
+  {
+    const char* file;
+    bool loop;
+    long long chi;
+    std::size_t borders;
+  };
+  for (const Case& c : {Case{"nonorientable/mobius_20x4_quads.obj", false, 0, 1},
+                        Case{"nonorientable/mobius_min_5tris.obj", true, 0, 1},
+                        Case{"nonorientable/mobius_min_5tris.obj", false, 0, 1},
+                        Case{"nonorientable/klein_fig8_24x12_quads.obj", false, 0, 0},
+                        Case{"nonorientable/rp2_hemi_icosahedron.obj", true, 1, 0}}) {
+    SCOPED_TRACE(c.file);
+    Mesh m = load(c.file);
+    const std::size_t v0 = m.number_of_vertices(), e0 = m.number_of_edges(), f0 = m.number_of_faces();
+    std::size_t corners = 0;
+    for (CGAL_ext::Face_index f : m.faces())
+      corners += m.degree(f);
+    if (c.loop)
+      S::loop(m, CGAL_ext::parameters::number_of_iterations(2));
+    else
+      S::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(2));
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), c.chi);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), c.borders);
+    EXPECT_EQ(CGAL_ext::is_closed(m), c.borders == 0);
+    EXPECT_FALSE(CGAL_ext::is_orientable(m));
+    EXPECT_EQ(CGAL_ext::connected_components(m).count, 1u);
+    // Counts after one step, from the split alone: Loop V+E, 2E+3F, 4F;
+    // Catmull-Clark V+E+F, 2E+C, C (C = sum of face degrees).
+    const std::size_t v1 = c.loop ? v0 + e0 : v0 + e0 + f0, e1 = c.loop ? 2 * e0 + 3 * f0 : 2 * e0 + corners,
+                      f1 = c.loop ? 4 * f0 : corners;
+    const std::size_t v2 = c.loop ? v1 + e1 : v1 + e1 + f1, e2 = c.loop ? 2 * e1 + 3 * f1 : 2 * e1 + 4 * f1,
+                      f2 = c.loop ? 4 * f1 : 4 * f1;
+    EXPECT_EQ(m.number_of_vertices(), v2);
+    EXPECT_EQ(m.number_of_edges(), e2);
+    EXPECT_EQ(m.number_of_faces(), f2);
+  }
+}
+
+// Reversing faces moves the Möbius seam but not the surface: same points.
+TEST(SubdivisionMobius, IndependentOfFaceOrientations)
+{
+  for (bool loop : {false, true}) {
+    Mesh a = load(loop ? "nonorientable/mobius_20x4_tris.obj" : "nonorientable/klein_fig8_24x12_quads.obj");
+    auto es = CGAL_ext::edge_sharpness_map(a);
+    es[CGAL_ext::Edge_index(7)] = 1.3f;
+    es[CGAL_ext::Edge_index(40)] = 10.0f;
+    Mesh b = a;
+    std::mt19937 rng(7);
+    std::size_t reversed = 0;
+    for (CGAL_ext::Face_index f : b.faces())
+      if (rng() % 3 == 0) {
+        b.reverse_face_orientation(f);
+        ++reversed;
+      }
+    ASSERT_GT(reversed, 10u);
+    ASSERT_TRUE(b.is_valid(true));
+    ASSERT_NE(CGAL_ext::number_of_mobius_edges(a), CGAL_ext::number_of_mobius_edges(b));
+    const auto np = CGAL_ext::parameters::number_of_iterations(3);
+    if (loop) {
+      S::loop(a, np);
+      S::loop(b, np);
+    } else {
+      S::catmull_clark(a, np);
+      S::catmull_clark(b, np);
+    }
+    // Orientation changes the numbering of the children of edges and corners
+    // from the second level on, so compare the point sets.
+    ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
+    std::vector<Point> pb(b.points().data().begin(), b.points().data().end());
+    std::sort(pb.begin(), pb.end(), [](const Point& p, const Point& q) { return p.x() < q.x(); });
+    std::size_t unmatched = 0;
+    for (const Point& p : a.points().data()) {
+      auto it = std::lower_bound(pb.begin(), pb.end(), p.x() - 1e-12,
+                                 [](const Point& q, double x) { return q.x() < x; });
+      bool found = false;
+      for (; it != pb.end() && it->x() <= p.x() + 1e-12 && !found; ++it)
+        found = CGAL::squared_distance(p, *it) < 1e-24;
+      unmatched += found ? 0 : 1;
+    }
+    EXPECT_EQ(unmatched, 0u);
+  }
+}
+
+// ----------------------------------------------------------------- exact kernels
+
+const std::vector<std::array<int, 3>> cube_points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+const std::vector<std::array<std::size_t, 4>> cube_quads = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                                            {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+
+template <class K>
+CGAL_ext::Mobius_mesh<typename K::Point_3> unit_cube()
+{
+  std::vector<typename K::Point_3> pts;
+  for (const auto& p : cube_points)
+    pts.emplace_back(p[0], p[1], p[2]);
+  CGAL_ext::Mobius_mesh<typename K::Point_3> m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(pts, cube_quads, m);
+  return m;
+}
+
+TEST(SubdivisionExact, CubeOneLevelByHand)
+{
+  using K = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  using Q = CGAL::Gmpq;
+  auto m = unit_cube<K>();
+  const std::size_t nv = m.number_of_vertices(), ne = m.number_of_edges();
+  // Edge (v0, v1) and face z = 0, found before subdividing.
+  const auto e01 = [&] {
+    for (auto e : m.edges())
+      if ((m.vertex(e, 0).idx() == 0 && m.vertex(e, 1).idx() == 1) ||
+          (m.vertex(e, 0).idx() == 1 && m.vertex(e, 1).idx() == 0))
+        return e.idx();
+    return 0u;
+  }();
+  S::catmull_clark(m);
+  // Corner of valence 3: V/3 + (sum of 3 neighbours)/9 + (sum of 3 face centres)/9.
+  // At (0,0,0): neighbours sum to (1,1,1), face centres to (1,1,1): 2/9 each.
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(0)), K::Point_3(Q(2, 9), Q(2, 9), Q(2, 9)));
+  // At (1,1,1): 1/3 + (2,2,2)/9 + (2,2,2)/9 = 7/9.
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(6)), K::Point_3(Q(7, 9), Q(7, 9), Q(7, 9)));
+  // Edge (0,0,0)-(1,0,0): (v0+v1)/4 + (faces z=0 and y=0 centres)/4 = (1/2, 1/8, 1/8).
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(nv + e01)), K::Point_3(Q(1, 2), Q(1, 8), Q(1, 8)));
+  // Face z = 0 (face 0): its centroid.
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(nv + ne + 0)), K::Point_3(Q(1, 2), Q(1, 2), Q(0)));
+  // Face x = 1 (face 3).
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(nv + ne + 3)), K::Point_3(Q(1), Q(1, 2), Q(1, 2)));
+}
+
+// EPECK's exact numbers (Boost's gmp_rational or gmpxx's mpq_class, as CGAL
+// was configured) and CGAL::Gmpq are all GMP rationals.
+template <class ET>
+auto mpq_of(const ET& a, int) -> decltype(a.backend().data())
+{
+  return a.backend().data();
+}
+template <class ET>
+auto mpq_of(const ET& a, long) -> decltype(a.get_mpq_t())
+{
+  return a.get_mpq_t();
+}
+template <class ET>
+bool same(const ET& a, const CGAL::Gmpq& b)
+{
+  return mpq_equal(mpq_of(a, 0), b.mpq()) != 0;
+}
+
+TEST(SubdivisionExact, EpeckThreeLevelsEqualsGmpqAndDouble)
+{
+  using Kq = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  auto e = unit_cube<test::Epeck>();
+  auto q = unit_cube<Kq>();
+  auto d = unit_cube<test::Kd>();
+  // A semi-sharp edge and a corner exercise the blends in exact arithmetic.
+  CGAL_ext::edge_sharpness_map(e)[CGAL_ext::Edge_index(0)] = 1.5f;
+  CGAL_ext::edge_sharpness_map(q)[CGAL_ext::Edge_index(0)] = 1.5f;
+  CGAL_ext::edge_sharpness_map(d)[CGAL_ext::Edge_index(0)] = 1.5f;
+  CGAL_ext::vertex_sharpness_map(e)[CGAL_ext::Vertex_index(6)] = 0.5f;
+  CGAL_ext::vertex_sharpness_map(q)[CGAL_ext::Vertex_index(6)] = 0.5f;
+  CGAL_ext::vertex_sharpness_map(d)[CGAL_ext::Vertex_index(6)] = 0.5f;
+  const auto np = CGAL_ext::parameters::number_of_iterations(3);
+  S::catmull_clark(e, np);
+  S::catmull_clark(q, np);
+  S::catmull_clark(d, np);
+  ASSERT_EQ(e.number_of_vertices(), 386u); // 8 -> 26 -> 98 -> 386
+  for (auto v : e.vertices()) {
+    const auto& pe = e.point(v);
+    const auto& pq = q.point(v);
+    EXPECT_TRUE(same(pe.x().exact(), pq.x()) && same(pe.y().exact(), pq.y()) && same(pe.z().exact(), pq.z()));
+    EXPECT_NEAR(CGAL::to_double(pq.x()), d.point(v).x(), 1e-14);
+    EXPECT_NEAR(CGAL::to_double(pq.y()), d.point(v).y(), 1e-14);
+    EXPECT_NEAR(CGAL::to_double(pq.z()), d.point(v).z(), 1e-14);
+  }
+}
+
+// ----------------------------------------------------------------- API
+
+// A read-only sharpness map over a vector, as a user might pass.
+struct Vector_edge_map
+{
+  const std::vector<float>* values;
+  friend float get(const Vector_edge_map& m, CGAL_ext::Edge_index e) { return (*m.values)[e.idx()]; }
+};
+
+TEST(SubdivisionApi, SharpnessMapsFromMeshAndParameters)
+{
+  // The same creases given as the mesh's "e:sharpness" map and as a parameter.
+  Mesh a = load("opensubdiv/catmark_cube_creases1.obj");
+  Mesh b = a;
+  const Shape s = read_shape(test::data("opensubdiv/catmark_cube_creases1.obj"));
+  auto es = CGAL_ext::edge_sharpness_map(a);
+  std::vector<float> values(b.number_of_edges(), 0.0f);
+  for (std::size_t i = 0; i < s.crease_pairs.size(); ++i) {
+    const auto e = find_edge(a, s.crease_pairs[i][0], s.crease_pairs[i][1]);
+    es[e] = s.crease_values[i];
+    values[e.idx()] = s.crease_values[i];
+  }
+  Mesh c = b; // no sharpness at all
+  S::catmull_clark(a, CGAL_ext::parameters::number_of_iterations(2));
+  S::catmull_clark(b, CGAL_ext::parameters::number_of_iterations(2).edge_sharpness_map(Vector_edge_map{&values}));
+  S::catmull_clark(c, CGAL_ext::parameters::number_of_iterations(2));
+  double ab = 0, ac = 0;
+  for (auto v : a.vertices()) {
+    ab = std::max(ab, CGAL::squared_distance(a.point(v), b.point(v)));
+    ac = std::max(ac, CGAL::squared_distance(a.point(v), c.point(v)));
+  }
+  EXPECT_EQ(ab, 0.0);
+  EXPECT_GT(ac, 1e-6);
+  // The result carries the decayed sharpness: 5 -> 3 after two steps.
+  auto out = a.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name);
+  ASSERT_TRUE(out.has_value());
+  int threes = 0, fives = 0;
+  for (auto e : a.edges())
+    threes += (*out)[e] == 3.0f ? 1 : 0;
+  for (float x : s.crease_values)
+    fives += x == 5.0f ? 1 : 0;
+  EXPECT_EQ(fives, 11);
+  EXPECT_EQ(threes, 4 * fives); // each edge of sharpness 5 in four pieces of sharpness 3
+}
+
+TEST(SubdivisionApi, BadInputLeavesMeshUnchanged)
+{
+  Mesh m = load("opensubdiv/catmark_cube.obj");
+  const Mesh before = m;
+  EXPECT_THROW(S::loop(m), CGAL_ext::Parameter_error); // quads
+  auto es = CGAL_ext::edge_sharpness_map(m);
+  es[CGAL_ext::Edge_index(2)] = std::nanf("");
+  EXPECT_THROW(S::catmull_clark(m), CGAL_ext::Parameter_error);
+  EXPECT_EQ(m.number_of_vertices(), before.number_of_vertices());
+  EXPECT_EQ(m.number_of_faces(), before.number_of_faces());
+  for (auto v : m.vertices())
+    EXPECT_EQ(m.point(v), before.point(v));
+}
+
+TEST(SubdivisionApi, EdgePointsVertexRule)
+{
+  // On the cube, the variant rule at a corner of valence 3:
+  // V/3 + (sum of new edge points)/9 + (sum of face points)/9, with the edge
+  // points (1/2,1/8,1/8) and permutations: sum (3/4,3/4,3/4); face centres
+  // sum (1,1,1): (3/4 + 1)/9 = 7/36.
+  using K = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  auto m = unit_cube<K>();
+  S::catmull_clark(m, CGAL_ext::parameters::vertex_rule(S::Vertex_rule::edge_points));
+  const CGAL::Gmpq c(7, 36);
+  EXPECT_EQ(m.point(CGAL_ext::Vertex_index(0)), K::Point_3(c, c, c));
+}
+
+TEST(SubdivisionApi, RefinerReinterpolatesOtherData)
+{
+  // Interpolating the points moved by a translation gives the translated
+  // result: subdivision is affine invariant (weights sum to 1).
+  Mesh m = load("nonorientable/mobius_20x4_quads.obj");
+  S::Refiner<S::Catmull_clark_mask> r;
+  r.refine(m, 3);
+  std::vector<V3> base, moved, out1, out2, scratch;
+  for (auto v : m.vertices()) {
+    const Point& p = m.point(v);
+    base.push_back({p.x(), p.y(), p.z()});
+    moved.push_back({p.x() + 1.0, p.y() - 2.0, p.z() + 0.5});
+  }
+  r.interpolate(base, out1, scratch);
+  r.interpolate(moved, out2, scratch);
+  ASSERT_EQ(out1.size(), out2.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < out1.size(); ++i)
+    worst = std::max({worst, std::abs(out2[i].x - out1[i].x - 1.0), std::abs(out2[i].y - out1[i].y + 2.0),
+                      std::abs(out2[i].z - out1[i].z - 0.5)});
+  EXPECT_LE(worst, 1e-12);
+  // A scalar field: constants stay constant.
+  std::vector<double> ones(m.number_of_vertices(), 1.0), res, tmp;
+  r.interpolate(ones, res, tmp);
+  for (double x : res)
+    EXPECT_NEAR(x, 1.0, 1e-14);
+}
+
+} // namespace
