@@ -13,6 +13,8 @@
 // On bad input or usage it prints one line "convert: <what>" on stderr and
 // exits with status 2.
 
+#include "mesh_summary.h"
+
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -28,27 +30,7 @@
 
 namespace {
 
-int fail(std::string what)
-{
-  std::replace(what.begin(), what.end(), '\n', ' ');
-  std::cerr << "convert: " << what << std::endl;
-  return 2;
-}
-
-template <class Mesh>
-void print_counts(const Mesh& mesh)
-{
-  const char* const boolean[] = {"false", "true"};
-  std::cout << "{\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-            << ",\"faces\":" << mesh.number_of_faces()
-            << ",\"border_loops\":" << CGAL_ext::number_of_border_cycles(mesh)
-            << ",\"mobius_edges\":" << CGAL_ext::number_of_mobius_edges(mesh)
-            << ",\"orientable\":" << boolean[CGAL_ext::is_orientable(mesh)]
-            << ",\"closed\":" << boolean[CGAL_ext::is_closed(mesh)]
-            << ",\"components\":" << CGAL_ext::connected_components(mesh).count
-            << ",\"euler_characteristic\":" << CGAL_ext::euler_characteristic(mesh)
-            << ",\"valid\":" << boolean[mesh.is_valid()] << "}" << std::endl;
-}
+int fail(const std::string& what) { return examples::fail("convert", what); }
 
 } // namespace
 
@@ -75,7 +57,7 @@ int main(int argc, char* argv[])
     Mesh out;
     CGAL_ext::from_surface_mesh(sm, out);
     CGAL_ext::IO::write_polygon_mesh(argv[2], out);
-    print_counts(out);
+    examples::print_mesh_summary(out);
   } catch (const std::exception& e) {
     return fail(e.what());
   }

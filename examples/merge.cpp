@@ -16,6 +16,8 @@
 // On bad input or usage it prints one line "merge: <what>" on stderr and
 // exits with status 2.
 
+#include "mesh_summary.h"
+
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -36,26 +38,7 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 
-int fail(std::string what)
-{
-  std::replace(what.begin(), what.end(), '\n', ' ');
-  std::cerr << "merge: " << what << std::endl;
-  return 2;
-}
-
-void print_counts(const Mesh& mesh)
-{
-  const char* const boolean[] = {"false", "true"};
-  std::cout << "{\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-            << ",\"faces\":" << mesh.number_of_faces()
-            << ",\"border_loops\":" << CGAL_ext::number_of_border_cycles(mesh)
-            << ",\"mobius_edges\":" << CGAL_ext::number_of_mobius_edges(mesh)
-            << ",\"orientable\":" << boolean[CGAL_ext::is_orientable(mesh)]
-            << ",\"closed\":" << boolean[CGAL_ext::is_closed(mesh)]
-            << ",\"components\":" << CGAL_ext::connected_components(mesh).count
-            << ",\"euler_characteristic\":" << CGAL_ext::euler_characteristic(mesh)
-            << ",\"valid\":" << boolean[mesh.is_valid()] << "}" << std::endl;
-}
+int fail(const std::string& what) { return examples::fail("merge", what); }
 
 // The border darts of B's loops that pair with A's first loop: the dart into
 // the B vertex nearest to the loop's first vertex, walking either way round,
@@ -134,7 +117,7 @@ int main(int argc, char* argv[])
       CGAL_ext::merge_borders(a, da, b, db, s);
     }
     CGAL_ext::IO::write_polygon_mesh(argv[3], a);
-    print_counts(a);
+    examples::print_mesh_summary(a);
   } catch (const std::exception& e) {
     return fail(e.what());
   }

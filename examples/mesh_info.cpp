@@ -8,6 +8,8 @@
 // On bad input or usage it prints one line "mesh_info: <what>" on stderr and
 // exits with status 2.
 
+#include "mesh_summary.h"
+
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -21,13 +23,7 @@
 
 namespace {
 
-int fail(std::string what)
-{
-  // One line, whatever the message holds.
-  std::replace(what.begin(), what.end(), '\n', ' ');
-  std::cerr << "mesh_info: " << what << std::endl;
-  return 2;
-}
+int fail(const std::string& what) { return examples::fail("mesh_info", what); }
 
 } // namespace
 
@@ -40,17 +36,8 @@ int main(int argc, char* argv[])
   try {
     Mesh mesh;
     CGAL_ext::IO::read_polygon_mesh(argv[1], mesh);
-    const std::size_t mobius_edges = CGAL_ext::orient(mesh);
-    const char* const boolean[] = {"false", "true"};
-    std::cout << "{\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-              << ",\"faces\":" << mesh.number_of_faces()
-              << ",\"border_loops\":" << CGAL_ext::number_of_border_cycles(mesh)
-              << ",\"mobius_edges\":" << mobius_edges
-              << ",\"orientable\":" << boolean[CGAL_ext::is_orientable(mesh)]
-              << ",\"closed\":" << boolean[CGAL_ext::is_closed(mesh)]
-              << ",\"components\":" << CGAL_ext::connected_components(mesh).count
-              << ",\"euler_characteristic\":" << CGAL_ext::euler_characteristic(mesh)
-              << ",\"valid\":" << boolean[mesh.is_valid()] << "}" << std::endl;
+    CGAL_ext::orient(mesh);
+    examples::print_mesh_summary(mesh);
   } catch (const std::exception& e) {
     return fail(e.what());
   }

@@ -8,6 +8,8 @@
 // with the result's counts and the subdivision time (without I/O). Bad input
 // or options: one line on stderr, exit status 2.
 
+#include "mesh_summary.h"
+
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/subdivision.h>
 
@@ -146,8 +148,7 @@ int main(int argc, char** argv)
     else
       run<CGAL::Simple_cartesian<double>>(s);
   } catch (const std::exception& e) {
-    std::cerr << "subdivide: " << e.what() << std::endl;
-    return 2;
+    return examples::fail("subdivide", e.what());
   }
   return 0;
 }

@@ -9,6 +9,8 @@
 
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
 
+#include <CGAL/Origin.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -446,7 +448,8 @@ public:
 
   /// Adds an isolated vertex. (`p` is taken by value: it may be a point of
   /// this mesh, which the insertion can move.)
-  Vertex_index add_vertex(Point p = Point())
+  Vertex_index add_vertex() { return add_vertex(default_point()); }
+  Vertex_index add_vertex(Point p)
   {
     const Vertex_index v = add_vertex_record();
     points_[v] = std::move(p);
@@ -612,9 +615,19 @@ private:
     return h_target_[h_prev_[i].halfedge().idx()];
   }
 
+  // CGAL's points are not zero-initialized: default to the origin where the
+  // point type has one, so no array is filled with indeterminate values.
+  static Point default_point()
+  {
+    if constexpr (std::is_constructible_v<Point, CGAL::Origin>)
+      return Point(CGAL::ORIGIN);
+    else
+      return Point();
+  }
+
   void init_points()
   {
-    points_ = Property_map<Vertex_index, Point>(vprops_.template add<Point>("v:point", Point()).first);
+    points_ = Property_map<Vertex_index, Point>(vprops_.template add<Point>("v:point", default_point()).first);
   }
 
   void copy_connectivity(const Mobius_mesh& o)
