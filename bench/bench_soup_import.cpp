@@ -22,6 +22,8 @@
 // the Möbius strip 2N x N/2 (default 1000, about 1M faces each).
 
 #include "bench_soup_import.h"
+// The counting operator new / delete: in this translation unit only.
+#include "heap_accounting.h"
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -43,75 +45,6 @@
 #include <new>
 #include <string>
 #include <vector>
-
-// ---------------------------------------------------------------------------
-// Heap accounting. Every allocation of the program goes through these; they
-// count only while `counting` is set, so the timed loops run at the speed of
-// plain malloc/free. A block is counted at malloc_usable_size, the space the
-// heap really gives it. Blocks counted must be freed while counting or not at
-// all, which the measuring code below ensures.
-// ---------------------------------------------------------------------------
-namespace heap {
-bool counting = false;
-std::int64_t live = 0;
-std::int64_t peak = 0;
-
-inline void on_alloc(void* p)
-{
-  if (counting) {
-    live += std::int64_t(malloc_usable_size(p));
-    peak = (std::max)(peak, live);
-  }
-}
-inline void on_free(void* p)
-{
-  if (counting && p)
-    live -= std::int64_t(malloc_usable_size(p));
-}
-inline void* allocate(std::size_t n)
-{
-  void* p = std::malloc(n ? n : 1);
-  if (!p)
-    throw std::bad_alloc();
-  on_alloc(p);
-  return p;
-}
-inline void* allocate_aligned(std::size_t n, std::align_val_t al)
-{
-  const std::size_t a = (std::max)(std::size_t(al), sizeof(void*));
-  void* p = nullptr;
-  if (posix_memalign(&p, a, n ? n : 1) != 0)
-    throw std::bad_alloc();
-  on_alloc(p);
-  return p;
-}
-inline void release(void* p) noexcept
-{
-  on_free(p);
-  std::free(p);
-}
-} // namespace heap
-
-void* operator new(std::size_t n) { return heap::allocate(n); }
-void* operator new[](std::size_t n) { return heap::allocate(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept
-{
-  try { return heap::allocate(n); } catch (...) { return nullptr; }
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept
-{
-  try { return heap::allocate(n); } catch (...) { return nullptr; }
-}
-void* operator new(std::size_t n, std::align_val_t al) { return heap::allocate_aligned(n, al); }
-void* operator new[](std::size_t n, std::align_val_t al) { return heap::allocate_aligned(n, al); }
-void operator delete(void* p) noexcept { heap::release(p); }
-void operator delete[](void* p) noexcept { heap::release(p); }
-void operator delete(void* p, std::size_t) noexcept { heap::release(p); }
-void operator delete[](void* p, std::size_t) noexcept { heap::release(p); }
-void operator delete(void* p, std::align_val_t) noexcept { heap::release(p); }
-void operator delete[](void* p, std::align_val_t) noexcept { heap::release(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { heap::release(p); }
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { heap::release(p); }
 
 namespace {
 

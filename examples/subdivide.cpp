@@ -97,8 +97,6 @@ Settings parse(int argc, char** argv)
     throw Usage_error("usage: subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N] "
                       "[--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner] "
                       "[--crease-method uniform|chaikin] [--kernel double|epick|epeck]");
-  if (s.scheme == "doo-sabin" || s.scheme == "sqrt3")
-    throw Usage_error("scheme " + s.scheme + " is not implemented");
   return s;
 }
 
@@ -122,6 +120,10 @@ void run(const Settings& s)
     S::loop(mesh, np);
   else if (s.scheme == "linear")
     S::bilinear(mesh, np);
+  else if (s.scheme == "doo-sabin")
+    S::doo_sabin(mesh, np);
+  else if (s.scheme == "sqrt3")
+    S::sqrt3(mesh, np);
   else
     S::catmull_clark(mesh, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

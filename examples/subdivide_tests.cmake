@@ -1,7 +1,9 @@
 # CTest runs of the subdivide tool: counts of the result follow from the
 # split (cube, Catmull-Clark, 2 steps: 98 vertices, 192 edges, 96 faces;
-# Möbius strip of 160 triangles, Loop, 2 steps: 2560 faces), and bad
-# options or input exit with status 2.
+# Möbius strip of 160 triangles, Loop, 2 steps: 2560 faces; Doo-Sabin of
+# the cube: a vertex per corner, a face per face, edge and vertex, 24/48/26;
+# sqrt3 of the 160-triangle strip, 1 step: 3 triangles per face, border
+# edges kept), and bad options or input exit with status 2.
 if(CGAL_EXT_BUILD_TESTS)
   set(_data ${PROJECT_SOURCE_DIR}/test/data)
   add_test(NAME example.subdivide.cube
@@ -13,12 +15,21 @@ if(CGAL_EXT_BUILD_TESTS)
                    --scheme loop --levels 2 --kernel epeck)
   set_tests_properties(example.subdivide.mobius_loop_epeck PROPERTIES
     PASS_REGULAR_EXPRESSION "\"faces\":2560")
-  add_test(NAME example.subdivide.not_implemented
+  add_test(NAME example.subdivide.cube_doo_sabin
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube_ds.ply
+                   --scheme doo-sabin --kernel epick)
+  set_tests_properties(example.subdivide.cube_doo_sabin PROPERTIES
+    PASS_REGULAR_EXPRESSION "\"vertices\":24,\"edges\":48,\"faces\":26,\"seconds\":")
+  add_test(NAME example.subdivide.mobius_sqrt3
+           COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius_s3.obj
+                   --scheme sqrt3)
+  set_tests_properties(example.subdivide.mobius_sqrt3 PROPERTIES PASS_REGULAR_EXPRESSION "\"faces\":480,")
+  add_test(NAME example.subdivide.sqrt3_on_quads
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme sqrt3)
   add_test(NAME example.subdivide.bad_option
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --levels x)
   add_test(NAME example.subdivide.loop_on_quads
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme loop)
-  set_tests_properties(example.subdivide.not_implemented example.subdivide.bad_option
+  set_tests_properties(example.subdivide.sqrt3_on_quads example.subdivide.bad_option
                        example.subdivide.loop_on_quads PROPERTIES WILL_FAIL TRUE)
 endif()

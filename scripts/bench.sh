@@ -72,6 +72,10 @@ def ms(b, key):
     scale = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[b.get("time_unit", "ns")]
     return b[key] * scale
 
+def fmt_ms(v):
+    # Three significant digits below 10 ms, so that microsecond cases stay readable.
+    return "%.1f" % v if v >= 10 else "%.3g" % v
+
 for case, impls in rows.items():
     ref_name = next((i for i in impls if i.startswith("CGAL_ext")), None)
     ref = impls.get(ref_name) if ref_name else None
@@ -92,7 +96,7 @@ for case, impls in rows.items():
         if "error" in b:
             table.append([impl, "error: " + b["error"]])
             continue
-        line = [impl, "%.1f" % ms(b, "real_time"), "%.1f" % ms(b, "cpu_time")]
+        line = [impl, fmt_ms(ms(b, "real_time")), fmt_ms(ms(b, "cpu_time"))]
         for key in ("real_time", "cpu_time"):
             line.append("%.2f" % (b[key] / ref[key]) if ref and impl != ref_name else "1" if ref else "-")
         for k in mem_keys:

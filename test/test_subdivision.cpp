@@ -599,11 +599,110 @@ TEST(SubdivisionMobius, TopologyIsKept)
   }
 }
 
+// Doo-Sabin and sqrt3 keep the surface: Euler characteristic, border loops,
+// non-orientability, one component; counts from the split rules.
+TEST(SubdivisionMobius, DooSabinAndSqrt3KeepTopology)
+{
+  struct Case
+  {
+    const char* file;
+    bool sqrt3;
+    long long chi;
+    std::size_t borders;
+  };
+  for (const Case& c : {Case{"nonorientable/mobius_20x4_quads.obj", false, 0, 1},
+                        Case{"nonorientable/klein_fig8_24x12_quads.obj", false, 0, 0},
+                        Case{"nonorientable/boys_surface_quads.obj", false, 1, 0},
+                        Case{"nonorientable/mobius_min_5tris.obj", false, 0, 1},
+                        Case{"nonorientable/mobius_20x4_tris.obj", true, 0, 1},
+                        Case{"nonorientable/mobius_min_5tris.obj", true, 0, 1},
+                        Case{"nonorientable/rp2_hemi_icosahedron.obj", true, 1, 0}}) {
+    SCOPED_TRACE(std::string(c.file) + (c.sqrt3 ? " sqrt3" : " doo-sabin"));
+    Mesh m = load(c.file);
+    const std::size_t v0 = m.number_of_vertices(), e0 = m.number_of_edges(), f0 = m.number_of_faces();
+    std::size_t corners = 0, border_edges = 0, fan_vertices = 0;
+    for (CGAL_ext::Face_index f : m.faces())
+      corners += m.degree(f);
+    for (CGAL_ext::Edge_index e : m.edges())
+      border_edges += m.is_border(e) ? 1 : 0;
+    for (CGAL_ext::Vertex_index v : m.vertices()) {
+      std::size_t faces = 0;
+      for (CGAL_ext::Face_index f : CGAL_ext::faces_around_target(v, m))
+        faces += f.is_valid() ? 1 : 0;
+      fan_vertices += faces >= 3 ? 1 : 0;
+    }
+    if (c.sqrt3) {
+      S::sqrt3(m);
+      // A centroid per triangle, three triangles per triangle.
+      EXPECT_EQ(m.number_of_vertices(), v0 + f0);
+      EXPECT_EQ(m.number_of_faces(), 3 * f0);
+      // The second step trisects each border edge: two points per edge, and
+      // each border triangle becomes one triangle instead of three.
+      const std::size_t v1 = m.number_of_vertices(), f1 = m.number_of_faces();
+      S::sqrt3(m, CGAL_ext::parameters::number_of_iterations(1));
+      EXPECT_EQ(m.number_of_vertices(), v1 + f1);
+      m = load(c.file);
+      S::sqrt3(m, CGAL_ext::parameters::number_of_iterations(2));
+      EXPECT_EQ(m.number_of_vertices(), v1 + (f1 - border_edges) + 2 * border_edges);
+      EXPECT_EQ(m.number_of_faces(), 3 * f1); // a border triangle is cut in three by its two new points
+      EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), c.borders);
+    } else {
+      S::doo_sabin(m);
+      // A point per corner; a face per face, interior edge and vertex of 3+ faces.
+      EXPECT_EQ(m.number_of_vertices(), corners);
+      EXPECT_EQ(m.number_of_faces(), f0 + (e0 - border_edges) + fan_vertices);
+      S::doo_sabin(m);
+    }
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), c.chi);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), c.borders);
+    EXPECT_FALSE(CGAL_ext::is_orientable(m));
+    EXPECT_EQ(CGAL_ext::connected_components(m).count, 1u);
+  }
+}
+
+// On a non-orientable mesh, Doo-Sabin and sqrt3 give the points that the
+// same scheme gives on the orientation double cover, each twice.
+TEST(SubdivisionMobius, DooSabinAndSqrt3MatchDoubleCover)
+{
+  for (bool sqrt3 : {false, true}) {
+    for (const char* file : {"nonorientable/mobius_20x4_quads.obj", "nonorientable/klein_fig8_24x12_quads.obj",
+                             "nonorientable/mobius_20x4_tris.obj", "nonorientable/rp2_hemi_icosahedron.obj"}) {
+      const Shape s = read_shape(test::data(file));
+      if (sqrt3 && s.faces[0].size() != 3)
+        continue;
+      SCOPED_TRACE(std::string(file) + (sqrt3 ? " sqrt3" : " doo-sabin"));
+      Built b = build(s);
+      const Shape cover = double_cover(b.mesh, b);
+      Mesh cm;
+      CGAL_ext::polygon_soup_to_mobius_mesh(cover.points, cover.faces, cm);
+      ASSERT_TRUE(CGAL_ext::is_orientable(cm));
+      const auto np = CGAL_ext::parameters::number_of_iterations(3);
+      if (sqrt3) {
+        S::sqrt3(b.mesh, np);
+        S::sqrt3(cm, np);
+      } else {
+        S::doo_sabin(b.mesh, np);
+        S::doo_sabin(cm, np);
+      }
+      ASSERT_EQ(cm.number_of_vertices(), 2 * b.mesh.number_of_vertices());
+      EXPECT_EQ(cm.number_of_faces(), 2 * b.mesh.number_of_faces());
+      const std::vector<Point> ours(b.mesh.points().data().begin(), b.mesh.points().data().end()),
+        theirs(cm.points().data().begin(), cm.points().data().end());
+      EXPECT_EQ(test::unmatched_points(ours, theirs, 1e-12), 0u);
+      EXPECT_EQ(test::unmatched_points(theirs, ours, 1e-12), 0u);
+    }
+  }
+}
+
 // Reversing faces moves the Möbius seam but not the surface: same points.
 TEST(SubdivisionMobius, IndependentOfFaceOrientations)
 {
-  for (bool loop : {false, true}) {
-    Mesh a = load(loop ? "nonorientable/mobius_20x4_tris.obj" : "nonorientable/klein_fig8_24x12_quads.obj");
+  enum Scheme { catmull_clark, loop, doo_sabin, sqrt3 };
+  for (Scheme scheme : {catmull_clark, loop, doo_sabin, sqrt3}) {
+    SCOPED_TRACE(scheme);
+    const bool triangles = scheme == loop || scheme == sqrt3;
+    Mesh a = load(triangles ? "nonorientable/mobius_20x4_tris.obj" : "nonorientable/klein_fig8_24x12_quads.obj");
     auto es = CGAL_ext::edge_sharpness_map(a);
     es[CGAL_ext::Edge_index(7)] = 1.3f;
     es[CGAL_ext::Edge_index(40)] = 10.0f;
@@ -619,28 +718,22 @@ TEST(SubdivisionMobius, IndependentOfFaceOrientations)
     ASSERT_TRUE(b.is_valid(true));
     ASSERT_NE(CGAL_ext::number_of_mobius_edges(a), CGAL_ext::number_of_mobius_edges(b));
     const auto np = CGAL_ext::parameters::number_of_iterations(3);
-    if (loop) {
-      S::loop(a, np);
-      S::loop(b, np);
-    } else {
-      S::catmull_clark(a, np);
-      S::catmull_clark(b, np);
+    for (Mesh* m : {&a, &b}) {
+      if (scheme == loop)
+        S::loop(*m, np);
+      else if (scheme == catmull_clark)
+        S::catmull_clark(*m, np);
+      else if (scheme == doo_sabin)
+        S::doo_sabin(*m, np);
+      else
+        S::sqrt3(*m, np);
     }
     // Orientation changes the numbering of the children of edges and corners
     // from the second level on, so compare the point sets.
     ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices());
-    std::vector<Point> pb(b.points().data().begin(), b.points().data().end());
-    std::sort(pb.begin(), pb.end(), [](const Point& p, const Point& q) { return p.x() < q.x(); });
-    std::size_t unmatched = 0;
-    for (const Point& p : a.points().data()) {
-      auto it = std::lower_bound(pb.begin(), pb.end(), p.x() - 1e-12,
-                                 [](const Point& q, double x) { return q.x() < x; });
-      bool found = false;
-      for (; it != pb.end() && it->x() <= p.x() + 1e-12 && !found; ++it)
-        found = CGAL::squared_distance(p, *it) < 1e-24;
-      unmatched += found ? 0 : 1;
-    }
-    EXPECT_EQ(unmatched, 0u);
+    const std::vector<Point> pa(a.points().data().begin(), a.points().data().end()),
+      pb(b.points().data().begin(), b.points().data().end());
+    EXPECT_EQ(test::unmatched_points(pa, pb, 1e-12), 0u);
   }
 }
 

@@ -6,7 +6,12 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <CGAL/squared_distance_3.h>
+
+#include <algorithm>
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace test {
 
@@ -15,6 +20,24 @@ using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 
 inline std::string data(const std::string& relative) { return std::string(CGAL_EXT_TEST_DATA_DIR) + "/" + relative; }
+
+// How many points of `a` have no point of `b` within `tolerance`: the two
+// point sets agree, whatever the vertex numbering, when both directions give 0.
+template <class Point>
+std::size_t unmatched_points(const std::vector<Point>& a, std::vector<Point> b, double tolerance)
+{
+  std::sort(b.begin(), b.end(), [](const Point& p, const Point& q) { return p.x() < q.x(); });
+  std::size_t unmatched = 0;
+  for (const Point& p : a) {
+    auto it = std::lower_bound(b.begin(), b.end(), CGAL::to_double(p.x()) - tolerance,
+                               [](const Point& q, double x) { return CGAL::to_double(q.x()) < x; });
+    bool found = false;
+    for (; it != b.end() && CGAL::to_double(it->x()) <= CGAL::to_double(p.x()) + tolerance && !found; ++it)
+      found = CGAL::to_double(CGAL::squared_distance(p, *it)) <= tolerance * tolerance;
+    unmatched += found ? 0 : 1;
+  }
+  return unmatched;
+}
 
 } // namespace test
 

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Subdivision of Mobius_mesh: Catmull–Clark, Loop and bilinear, with
-// OpenSubdiv's border, crease and corner rules, across Möbius connections.
+// OpenSubdiv's border, crease and corner rules, and Doo–Sabin and √3, all
+// across Möbius connections.
 
 #ifndef CGAL_EXT_SUBDIVISION_H
 #define CGAL_EXT_SUBDIVISION_H
@@ -16,10 +17,16 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Origin.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/tags.h>
 
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+/// Defined when the subdivision functions accept `CGAL::Parallel_tag`.
+#define CGAL_EXT_SUBDIVISION_PARALLEL 1
+#endif
 
 namespace CGAL_ext {
 namespace Subdivision {
@@ -63,7 +70,7 @@ std::vector<float> gather_sharpness(const Map& map, std::size_t n)
   return s;
 }
 
-template <class Mask, class P, class NamedParameters>
+template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
 void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
 {
   namespace pm = CGAL_ext::parameters;
@@ -107,7 +114,12 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
   for (Vertex_index v : mesh.vertices())
     base.push_back(Traits::from(get(vpm, v)));
   std::vector<Value> result;
-  refiner.interpolate(base, result);
+  // Exact kernels stay serial: their lazy numbers share construction
+  // history between threads.
+  if constexpr (std::is_same_v<Value, Vec3>)
+    refiner.template interpolate<ConcurrencyTag>(base, result);
+  else
+    refiner.interpolate(base, result);
 
   // Build the result aside: on failure the caller's mesh stays as it was.
   Mobius_mesh<P> out;
@@ -125,11 +137,12 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
 /// `catmull_clark()`, `loop()` and `bilinear()`, which document the named
 /// parameters. Property maps other than the points and sharpness are not
 /// carried over; use `Refiner` to interpolate other vertex data.
-template <class Mask, class P, class NamedParameters = parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Mask, class P,
+          class NamedParameters = parameters::Default_named_parameters>
 void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
                const NamedParameters& np = parameters::default_values())
 {
-  internal::subdivide(mesh, mask, np);
+  internal::subdivide<ConcurrencyTag>(mesh, mask, np);
 }
 
 /// \ingroup PkgSubdivision
@@ -144,6 +157,10 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 /// face points]`: vertex `v` of the input becomes vertex `v`, edge `e` gives
 /// vertex `nv + e`, face `f` gives vertex `nv + ne + f` (per step).
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, or `CGAL::Parallel_tag` to
+///   interpolate the points with TBB (if `CGAL_EXT_SUBDIVISION_PARALLEL` is
+///   defined), bit for bit as the serial result; the same for all schemes.
+///   Topology is refined serially; exact kernels are interpolated serially.
 /// \param mesh the mesh, replaced by the result
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
@@ -194,7 +211,8 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 /// continues the same surface.
 ///
 /// \throws Parameter_error if a sharpness is NaN; `mesh` is then unchanged.
-template <class P, class NamedParameters = parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NamedParameters = parameters::Default_named_parameters>
 void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
   namespace pm = CGAL_ext::parameters;
@@ -203,7 +221,7 @@ void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters:
     pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::vertex_rule), Vertex_rule::standard);
   mask.triangle_subdivision = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
                                                    Triangle_subdivision::catmark);
-  internal::subdivide(mesh, mask, np);
+  internal::subdivide<ConcurrencyTag>(mesh, mask, np);
 }
 
 /// \ingroup PkgSubdivision
@@ -215,10 +233,11 @@ void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters:
 ///
 /// \throws Parameter_error if a face is not a triangle or a sharpness is NaN;
 /// `mesh` is then unchanged.
-template <class P, class NamedParameters = parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NamedParameters = parameters::Default_named_parameters>
 void loop(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
-  internal::subdivide(mesh, Loop_mask(), np);
+  internal::subdivide<ConcurrencyTag>(mesh, Loop_mask(), np);
 }
 
 /// \ingroup PkgSubdivision
@@ -226,10 +245,44 @@ void loop(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_
 /// Bilinear subdivision: the Catmull–Clark split with new points at edge
 /// midpoints and face centroids and old points kept (OpenSubdiv's bilinear
 /// scheme). Named parameters `number_of_iterations` and `vertex_point_map`.
-template <class P, class NamedParameters = parameters::Default_named_parameters>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NamedParameters = parameters::Default_named_parameters>
 void bilinear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
-  internal::subdivide(mesh, Bilinear_mask(), np);
+  internal::subdivide<ConcurrencyTag>(mesh, Bilinear_mask(), np);
+}
+
+/// \ingroup PkgSubdivision
+///
+/// Doo–Sabin subdivision of a mesh of any polygons, orientable or not (see
+/// `Doo_sabin_mask` for the border rules). Each step makes a vertex per face
+/// corner, and a face per face, per interior edge (a quad) and per vertex
+/// with three or more faces; the child vertex of a corner is numbered as the
+/// corner (faces in order, each face's corners from its first halfedge).
+/// Named parameters `number_of_iterations` and `vertex_point_map`; sharpness
+/// and boundary options do not apply.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NamedParameters = parameters::Default_named_parameters>
+void doo_sabin(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
+{
+  internal::subdivide<ConcurrencyTag>(mesh, Doo_sabin_mask(), np);
+}
+
+/// \ingroup PkgSubdivision
+///
+/// Kobbelt's √3 subdivision of a triangle mesh, orientable or not, with his
+/// border rules (see `Sqrt3_mask`): step `i` of a call (from 0) refines
+/// the border when `i` is odd, as CGAL's `Sqrt3_subdivision` does, so border
+/// refinement needs two steps in one call. Child vertices are laid out as
+/// `[vertices | centroids | border points]`. Named parameters
+/// `number_of_iterations` and `vertex_point_map`.
+///
+/// \throws Parameter_error if a face is not a triangle; `mesh` is then unchanged.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NamedParameters = parameters::Default_named_parameters>
+void sqrt3(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
+{
+  internal::subdivide<ConcurrencyTag>(mesh, Sqrt3_mask(), np);
 }
 
 } // namespace Subdivision

@@ -17,11 +17,41 @@
 namespace CGAL_ext {
 namespace Subdivision {
 
-/// How a scheme splits faces.
+/// How a scheme changes the topology.
 enum class Split {
-  quad,    ///< a face of n sides into n quads around a face point (Catmull–Clark, bilinear)
-  triangle ///< a triangle into four (Loop); triangle meshes only
+  quad,     ///< a face of n sides into n quads around a face point (Catmull–Clark, bilinear)
+  triangle, ///< a triangle into four (Loop); triangle meshes only
+  dual,     ///< a new vertex per face corner; a face per face, edge and vertex (Doo–Sabin)
+  sqrt3     ///< a new vertex per triangle, old edges flipped (Kobbelt's √3); triangle meshes only
 };
+
+namespace internal {
+
+// 2 cos(2πk/n) as an integer when it is one (n | 12k and the angle a
+// multiple of π/3 or π/2), so that exact kernels get exact weights for the
+// common valences 3, 4 and 6.
+inline bool integer_two_cos(unsigned k, unsigned n, int& value)
+{
+  if ((12 * k) % n != 0)
+    return false;
+  static const int table[12] = {2, 0, 1, 0, -1, 0, -2, 0, -1, 0, 1, 0};
+  const unsigned m = (12 * k / n) % 12;
+  if (m % 2 == 1 && m != 3 && m != 9)
+    return false; // ±√3
+  value = table[m];
+  return true;
+}
+
+template <class W>
+W two_cos(unsigned k, unsigned n)
+{
+  int v;
+  if (integer_two_cos(k, n, v))
+    return W(v);
+  return W(2.0 * std::cos(2.0 * M_PI * double(k) / double(n)));
+}
+
+} // namespace internal
 
 /// The smooth Catmull–Clark vertex rule.
 enum class Vertex_rule {
@@ -74,7 +104,19 @@ struct SubdivisionMask {
 };
 \endcode
 
-\cgalHasModel `Catmull_clark_mask`, `Loop_mask`, `Bilinear_mask`
+\cgalHasModel `Catmull_clark_mask`, `Loop_mask`, `Bilinear_mask`, `Sqrt3_mask`
+
+A `Sqrt3_mask` (`split == Split::sqrt3`) uses only `smooth_vertex()`, with
+`vertex` and `edge` weights; its face points are centroids and its border
+rules are Kobbelt's.
+
+A mask with `split == Split::dual` (Doo–Sabin) instead provides
+
+\code
+  // Weights of the n vertices of a face, starting at the corner's vertex
+  // and following the face, for the new point of that corner.
+  template <class W> void corner(unsigned n, W* weights) const;
+\endcode
 */
 
 /// \ingroup PkgSubdivision
@@ -170,6 +212,54 @@ struct Bilinear_mask
   void smooth_vertex(unsigned, Vertex_weights<W>& w) const
   {
     w.vertex = W(1);
+  }
+};
+
+/// \ingroup PkgSubdivision
+/// Doo–Sabin subdivision of polygon meshes: a new point per face corner,
+/// with Doo and Sabin's weights (CGAL's `DooSabin_mask_3`). At a border,
+/// a corner on one border edge gets the Chaikin point ¾ v + ¼ w of that
+/// edge and a corner between two border edges keeps its vertex, so that a
+/// border converges to the quadratic B-spline of the border polygon.
+struct Doo_sabin_mask
+{
+  static constexpr Split split = Split::dual;
+  static constexpr bool creases = false;
+
+  template <class W>
+  void corner(unsigned n, W* weights) const
+  {
+    if (n == 4) { // the bilinear tensor product of (3/4, 1/4), exactly
+      weights[0] = W(9) / W(16);
+      weights[1] = weights[3] = W(3) / W(16);
+      weights[2] = W(1) / W(16);
+      return;
+    }
+    const W four_n = W(4 * int(n));
+    weights[0] = W(int(n) + 5) / four_n;
+    for (unsigned k = 1; k < n; ++k)
+      weights[k] = (W(3) + internal::two_cos<W>(k, n)) / four_n;
+  }
+};
+
+/// \ingroup PkgSubdivision
+/// Kobbelt's √3 subdivision of triangle meshes: a centroid per triangle,
+/// old vertices smoothed with α(n) = (4 − 2 cos(2π/n)) / 9, old edges
+/// flipped; two steps triple the resolution. Borders follow Kobbelt (and
+/// CGAL's `Sqrt3_mask_3`): in odd steps border triangles are not flipped and
+/// border vertices stay; in even steps each border edge is trisected with
+/// the 1/27 rules and border vertices smoothed with (4, 19, 4) / 27.
+struct Sqrt3_mask
+{
+  static constexpr Split split = Split::sqrt3;
+  static constexpr bool creases = false;
+
+  template <class W>
+  void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
+  {
+    const W alpha = (W(4) - internal::two_cos<W>(1, n)) / W(9);
+    w.vertex = W(1) - alpha;
+    w.edge = alpha / W(int(n));
   }
 };
 

@@ -12,13 +12,21 @@
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/Subdivision/internal/Level.h>
+#include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/number_utils.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
 
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL_ext {
@@ -79,6 +87,33 @@ template <class V>
 void normalize_value(V&, long)
 {}
 
+// Calls body(i) for i in [0, n): in parallel with TBB for `CGAL::Parallel_tag`.
+template <class ConcurrencyTag, class Body>
+void for_each_index(u32 n, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr (std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>) {
+    tbb::parallel_for(tbb::blocked_range<u32>(0, n, 4096), [&](const tbb::blocked_range<u32>& r) {
+      for (u32 i = r.begin(); i != r.end(); ++i)
+        body(i);
+    });
+    return;
+  }
+#else
+  static_assert(!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>,
+                "CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB)");
+#endif
+  for (u32 i = 0; i < n; ++i)
+    body(i);
+}
+
+// Vertex -> incident edges and faces, each in increasing order: the order in
+// which the serial pass adds their terms, so a gather gives the same bits.
+struct Incidence
+{
+  std::vector<u32> edge_offset, edges, face_offset, faces;
+};
+
 } // namespace internal
 
 /// \ingroup PkgSubdivision
@@ -116,15 +151,28 @@ public:
               const std::vector<float>& vertex_sharpness = {})
   {
     levels_.resize(levels + 1);
-    edge_weights_.resize(levels);
-    vertex_weights_.resize(levels);
     build_base(mesh, edge_sharpness, vertex_sharpness);
-    for (unsigned k = 0; k < levels; ++k) {
-      if constexpr (Mask::split == Split::quad)
-        internal::quad_split(levels_[k], levels_[k + 1]);
-      else
-        internal::triangle_split(levels_[k], levels_[k + 1]);
-      compute_weights(k);
+    if constexpr (uses_stencils) {
+      stencils_.resize(levels);
+      internal::Face_list faces;
+      for (unsigned k = 0; k < levels; ++k) {
+        if constexpr (Mask::split == Split::dual)
+          internal::dual_split(levels_[k], mask_, faces, stencils_[k]);
+        else
+          internal::sqrt3_split(levels_[k], mask_, k % 2 == 1, faces, stencils_[k]);
+        internal::level_from_faces(stencils_[k].size(), faces, levels_[k + 1]);
+      }
+    } else {
+      edge_weights_.resize(levels);
+      vertex_weights_.resize(levels);
+      incidence_.clear();
+      for (unsigned k = 0; k < levels; ++k) {
+        if constexpr (Mask::split == Split::quad)
+          internal::quad_split(levels_[k], levels_[k + 1]);
+        else
+          internal::triangle_split(levels_[k], levels_[k + 1]);
+        compute_weights(k);
+      }
     }
   }
 
@@ -132,8 +180,13 @@ public:
   unsigned number_of_levels() const { return levels_.empty() ? 0u : unsigned(levels_.size() - 1); }
   /// The topology of level `k` (0 is the base mesh).
   const Level& level(unsigned k) const { return levels_[k]; }
+  /// The weights of step `k` (primal schemes: quad and triangle splits).
   const std::vector<Edge_weights<W>>& edge_weights(unsigned k) const { return edge_weights_[k]; }
   const std::vector<Vertex_weights<W>>& vertex_weights(unsigned k) const { return vertex_weights_[k]; }
+  /// The stencils of step `k` (Doo–Sabin and √3): child vertex `i` is the sum
+  /// of `weight[j]` times parent vertex `source[j]` over `j` in
+  /// `[offset[i], offset[i+1])`.
+  const internal::Stencils<W>& stencils(unsigned k) const { return stencils_[k]; }
 
   /// Interpolates one level: `src` holds a value per vertex of level `k`,
   /// `dst` receives one per vertex of level `k+1`. `Value` needs `Value + Value`
@@ -141,11 +194,21 @@ public:
   template <class Value>
   void interpolate_level(unsigned k, const Value* src, Value* dst) const;
 
+  /// As `interpolate_level()`, in parallel with TBB for `CGAL::Parallel_tag`;
+  /// the result is bit for bit the serial one (each value is summed in the
+  /// same order). The first parallel call builds vertex-to-edge and
+  /// vertex-to-face tables, so concurrent calls on one refiner are not allowed.
+  template <class ConcurrencyTag, class Value>
+  void interpolate_level(unsigned k, const Value* src, Value* dst) const;
+
   /// Interpolates `base` (one value per vertex of the base mesh) through all
   /// levels into `result` (resized to the vertices of the last level).
   /// `scratch` holds intermediate levels; pass the same vectors again to
   /// avoid allocating.
-  template <class Value>
+  ///
+  /// With `ConcurrencyTag` = `CGAL::Parallel_tag` (TBB needed), each level is
+  /// interpolated in parallel, bit for bit as the serial result.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Value>
   void interpolate(const std::vector<Value>& base, std::vector<Value>& result, std::vector<Value>& scratch) const
   {
     const unsigned n = number_of_levels();
@@ -159,17 +222,17 @@ public:
     const Value* src = base.data();
     for (unsigned k = 0; k < n; ++k) {
       Value* dst = ((n - 1 - k) % 2 == 0) ? result.data() : scratch.data();
-      interpolate_level(k, src, dst);
-      for (u32 v = 0, nv = levels_[k + 1].nv; v < nv; ++v)
-        internal::normalize_value(dst[v], 0);
+      interpolate_level<ConcurrencyTag>(k, src, dst);
+      internal::for_each_index<ConcurrencyTag>(levels_[k + 1].nv,
+                                               [&](u32 v) { internal::normalize_value(dst[v], 0); });
       src = dst;
     }
   }
-  template <class Value>
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Value>
   void interpolate(const std::vector<Value>& base, std::vector<Value>& result) const
   {
     std::vector<Value> scratch;
-    interpolate(base, result, scratch);
+    interpolate<ConcurrencyTag>(base, result, scratch);
   }
 
   /// Replaces the connectivity of `out` with that of the last level. If
@@ -185,9 +248,13 @@ private:
   void build_base(const Mobius_mesh<P>& mesh, const std::vector<float>& es, const std::vector<float>& vs);
   void compute_weights(unsigned k);
 
+  static constexpr bool uses_stencils = Mask::split == Split::dual || Mask::split == Split::sqrt3;
+
   Mask mask_;
   Refinement_options options_;
   std::vector<Level> levels_;
+  std::vector<internal::Stencils<W>> stencils_;
+  mutable std::vector<internal::Incidence> incidence_; // built by the first parallel interpolation
   std::vector<std::vector<Edge_weights<W>>> edge_weights_;
   std::vector<std::vector<Vertex_weights<W>>> vertex_weights_;
   // per-vertex scratch of compute_weights()
@@ -206,22 +273,9 @@ void Refiner<Mask, W>::build_base(const Mobius_mesh<P>& m, const std::vector<flo
 {
   using internal::null_u32;
   Level& L = levels_[0];
-  const u32 nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
-  u32 nc = 0;
-  for (u32 h = 0; h < 2 * ne; ++h)
-    nc += m.is_border(Halfedge_index(h)) ? 0 : 1;
-  L.resize(nv, ne, nf, nc);
-  for (u32 h = 0; h < 2 * ne; ++h) {
-    const Dart d(Halfedge_index(h), false);
-    L.h_target[h] = m.target(d).idx();
-    L.h_next[h] = m.next(d).bits();
-    L.h_prev[h] = m.prev(d).bits();
-    const Face_index f = m.face(d);
-    L.h_face[h] = f.is_valid() ? f.idx() : null_u32;
-    L.h_corner[h] = null_u32;
-  }
+  internal::fill_level(m, L);
+  const u32 nv = L.nv, ne = L.ne, nf = L.nf;
   for (u32 e = 0; e < ne; ++e) {
-    L.e_mobius[e] = m.is_mobius(Edge_index(e)) ? 1 : 0;
     float s = es.empty() ? 0.0f : es[e];
     if (std::isnan(s))
       throw Parameter_error("subdivision: the sharpness of edge e" + std::to_string(e) + " is NaN");
@@ -230,29 +284,20 @@ void Refiner<Mask, W>::build_base(const Mobius_mesh<P>& m, const std::vector<flo
     L.e_sharp[e] = s;
   }
   for (u32 v = 0; v < nv; ++v) {
-    L.v_dart[v] = m.halfedge(Vertex_index(v)).bits();
     const float s = vs.empty() ? 0.0f : vs[v];
     if (std::isnan(s))
       throw Parameter_error("subdivision: the sharpness of vertex v" + std::to_string(v) + " is NaN");
     L.v_sharp[v] = s;
   }
-  u32 k = 0;
-  for (u32 f = 0; f < nf; ++f) {
-    const u32 first = m.halfedge(Face_index(f)).halfedge().idx();
-    L.f_first[f] = first;
-    L.f_offset[f] = k;
-    u32 h = first;
-    do {
-      L.corner_h[k] = h;
-      L.h_corner[h] = k;
-      ++k;
-      h = L.h_next[h] >> 1;
-    } while (h != first);
-    if (Mask::split == Split::triangle && k - L.f_offset[f] != 3)
-      throw Parameter_error("subdivision: the scheme needs a triangle mesh, but face f" + std::to_string(f) +
-                            " has " + std::to_string(k - L.f_offset[f]) + " sides");
+  if constexpr (Mask::split == Split::triangle || Mask::split == Split::sqrt3) {
+    for (u32 f = 0; f < nf; ++f)
+      if (L.degree(f) != 3)
+        throw Parameter_error("subdivision: the scheme needs a triangle mesh, but face f" + std::to_string(f) +
+                              " has " + std::to_string(L.degree(f)) + " sides");
   }
-  L.f_offset[nf] = k;
+
+  if constexpr (uses_stencils)
+    return; // Doo–Sabin and √3 have border rules of their own
 
   // Border vertices: corners (edge and corner), or their faces become holes (none).
   L.f_hole.clear();
@@ -459,6 +504,18 @@ template <class Value>
 void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* dst) const
 {
   using internal::null_u32;
+  if constexpr (uses_stencils) {
+    const internal::Stencils<W>& st = stencils_[k];
+    for (u32 i = 0, n = st.size(); i < n; ++i) {
+      u32 j = st.offset[i];
+      const u32 j1 = st.offset[i + 1];
+      Value x = st.weight[j] * src[st.source[j]];
+      for (++j; j < j1; ++j)
+        x = x + st.weight[j] * src[st.source[j]];
+      dst[i] = x;
+    }
+    return;
+  }
   const Level& p = levels_[k];
   const auto& ew = edge_weights_[k];
   const auto& vw = vertex_weights_[k];
@@ -515,6 +572,107 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
           dst[v] = dst[v] + vw[v].face * dst[fp + f];
       }
     }
+  }
+}
+
+template <class Mask, class W>
+template <class ConcurrencyTag, class Value>
+void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* dst) const
+{
+  using internal::null_u32;
+  if constexpr (!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>) {
+    interpolate_level(k, src, dst);
+  } else if constexpr (uses_stencils) {
+    const internal::Stencils<W>& st = stencils_[k];
+    internal::for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) {
+      u32 j = st.offset[i];
+      const u32 j1 = st.offset[i + 1];
+      Value x = st.weight[j] * src[st.source[j]];
+      for (++j; j < j1; ++j)
+        x = x + st.weight[j] * src[st.source[j]];
+      dst[i] = x;
+    });
+  } else {
+    const Level& p = levels_[k];
+    const auto& ew = edge_weights_[k];
+    const auto& vw = vertex_weights_[k];
+    const u32 nv = p.nv, ne = p.ne, nf = p.nf;
+    const u32 fp = nv + ne;
+    if (incidence_.size() != edge_weights_.size())
+      incidence_.assign(edge_weights_.size(), internal::Incidence());
+    internal::Incidence& inc = incidence_[k];
+    if (inc.edge_offset.empty()) {
+      inc.edge_offset.assign(nv + 1, 0);
+      for (u32 e = 0; e < ne; ++e) {
+        ++inc.edge_offset[p.source(4 * e) + 1];
+        ++inc.edge_offset[p.h_target[2 * e] + 1];
+      }
+      for (u32 v = 0; v < nv; ++v)
+        inc.edge_offset[v + 1] += inc.edge_offset[v];
+      inc.edges.resize(2 * std::size_t(ne));
+      std::vector<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
+      for (u32 e = 0; e < ne; ++e) {
+        inc.edges[fill[p.source(4 * e)]++] = e;
+        inc.edges[fill[p.h_target[2 * e]]++] = e;
+      }
+      inc.face_offset.assign(nv + 1, 0);
+      for (u32 c = 0; c < p.nc; ++c)
+        ++inc.face_offset[p.h_target[p.corner_h[c]] + 1];
+      for (u32 v = 0; v < nv; ++v)
+        inc.face_offset[v + 1] += inc.face_offset[v];
+      inc.faces.resize(p.nc);
+      fill.assign(inc.face_offset.begin(), inc.face_offset.end() - 1);
+      for (u32 f = 0; f < nf; ++f)
+        for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+          inc.faces[fill[p.h_target[p.corner_h[c]]]++] = f;
+    }
+
+    // The serial pass's three loops as gathers, in the same order of terms.
+    if constexpr (Mask::split == Split::quad) {
+      const W quarter = W(1) / W(4);
+      internal::for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
+        const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
+        Value sum = src[p.h_target[p.corner_h[k0]]];
+        for (u32 i = k0 + 1; i < k1; ++i)
+          sum = sum + src[p.h_target[p.corner_h[i]]];
+        dst[fp + f] = (k1 - k0 == 4 ? quarter : W(1) / W(int(k1 - k0))) * sum;
+      });
+    }
+    internal::for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
+      const u32 a = p.source(4 * e), b = p.h_target[2 * e];
+      const Edge_weights<W>& w = ew[e];
+      Value x = w.vertex * (src[a] + src[b]);
+      if (w.has_face) {
+        for (u32 i = 0; i < 2; ++i) {
+          const u32 h = 2 * e + i, f = p.h_face[h];
+          if (f == null_u32)
+            continue;
+          if constexpr (Mask::split == Split::quad)
+            x = x + w.face * dst[fp + f];
+          else
+            x = x + w.face * src[p.h_target[p.h_next[h] >> 1]];
+        }
+      }
+      dst[nv + e] = x;
+    });
+    internal::for_each_index<ConcurrencyTag>(nv, [&](u32 v) {
+      const Vertex_weights<W>& w = vw[v];
+      Value x = w.vertex * src[v];
+      if (w.terms & 8)
+        x = x + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
+      for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
+        const u32 e = inc.edges[i];
+        const u32 a = p.source(4 * e);
+        if (w.terms & 1)
+          x = x + w.edge * src[a == v ? p.h_target[2 * e] : a];
+        if (w.terms & 4)
+          x = x + w.edge_point * dst[nv + e];
+      }
+      if (w.terms & 2)
+        for (u32 i = inc.face_offset[v]; i < inc.face_offset[v + 1]; ++i)
+          x = x + w.face * dst[fp + inc.faces[i]];
+      dst[v] = x;
+    });
   }
 }
 

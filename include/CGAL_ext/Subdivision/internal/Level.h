@@ -106,6 +106,50 @@ struct Level
   }
 };
 
+// The connectivity of `m` as a level (sharpness 0, no holes). Corners are
+// numbered face by face from each face's first halfedge.
+template <class P>
+void fill_level(const Mobius_mesh<P>& m, Level& L)
+{
+  const u32 nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
+  u32 nc = 0;
+  for (u32 h = 0; h < 2 * ne; ++h)
+    nc += m.is_border(Halfedge_index(h)) ? 0 : 1;
+  L.resize(nv, ne, nf, nc);
+  for (u32 h = 0; h < 2 * ne; ++h) {
+    const Dart d(Halfedge_index(h), false);
+    L.h_target[h] = m.target(d).idx();
+    L.h_next[h] = m.next(d).bits();
+    L.h_prev[h] = m.prev(d).bits();
+    const Face_index f = m.face(d);
+    L.h_face[h] = f.is_valid() ? f.idx() : null_u32;
+    L.h_corner[h] = null_u32;
+  }
+  for (u32 e = 0; e < ne; ++e) {
+    L.e_mobius[e] = m.is_mobius(Edge_index(e)) ? 1 : 0;
+    L.e_sharp[e] = 0.0f;
+  }
+  for (u32 v = 0; v < nv; ++v) {
+    L.v_dart[v] = m.halfedge(Vertex_index(v)).bits();
+    L.v_sharp[v] = 0.0f;
+  }
+  u32 k = 0;
+  for (u32 f = 0; f < nf; ++f) {
+    const u32 first = m.halfedge(Face_index(f)).halfedge().idx();
+    L.f_first[f] = first;
+    L.f_offset[f] = k;
+    u32 h = first;
+    do {
+      L.corner_h[k] = h;
+      L.h_corner[h] = k;
+      ++k;
+      h = L.h_next[h] >> 1;
+    } while (h != first);
+  }
+  L.f_offset[nf] = k;
+  L.f_hole.clear();
+}
+
 // What both splits share: parent edges split in two, parent vertices keep
 // their index, border loops and Möbius bits are inherited.
 inline void split_edges_and_border(const Level& p, Level& c, u32 edge_point_offset)

@@ -1,0 +1,683 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Uniform subdivision, side by side: CGAL_ext::Subdivision::catmull_clark /
+// loop on a Mobius_mesh against CGAL's Subdivision_method_3 on a Surface_mesh,
+// OpenSubdiv's Far refiner and OpenMesh's uniform subdividers, on the same
+// points and faces:
+//   catmull_clark/octahedron   6 vertices, 8 triangles, levels 1-8
+//   catmull_clark/torus100x100 CGAL_ext::make_torus(mesh, 100, 100), 10 000 quads, levels 1-5
+//   loop/icosahedron           12 vertices, 20 triangles, levels 1-8
+//
+// Timed (manual time): the subdivision call alone, from a ready input mesh to
+// a ready output mesh with its points. Every iteration starts from a fresh
+// copy of the input, made (and the previous output destroyed) outside the
+// timing, and outside the CPU time too (PauseTiming). For OpenSubdiv: from
+// building the TopologyRefiner out of the base topology to having the points
+// of every level. Outputs of 1 M faces and more run once per repetition.
+//
+// Implementations: CGAL_ext_Mobius_mesh (serial, the reference), and
+// CGAL_ext_Mobius_mesh_2_threads (CGAL::Parallel_tag, TBB capped at 2
+// threads) when the library has it; CGAL_Surface_mesh; OpenSubdiv_Far (the
+// default UniformOptions: the last level keeps only its face-vertices) and
+// OpenSubdiv_Far_full_topology (fullTopologyInLastLevel, a complete mesh as
+// the others build); OpenMesh_PolyMesh / OpenMesh_TriMesh (double points).
+// The CPU time is the main thread's: for the 2-thread variant, read the real
+// (manual) time.
+//
+// Counters (memory measured once per benchmark, outside the timed loop):
+//   faces          faces of the result
+//   peak_bytes     highest heap while subdividing, the input copy included
+//   result_bytes   heap held once the call returns (OpenSubdiv: the refiner,
+//                  which keeps every level, and the points of every level)
+//   faults_per_run minor page faults per timed call (first touches of fresh
+//                  pages: what the cold runs pay for)
+//
+// Heap modes as in bench_soup_import: `warm` (no mmap, no trimming, pages
+// reused from the run before) for every case, `cold` (blocks of 128 KiB and
+// more are fresh mmaps, so every run touches new pages) for outputs of 80 k to
+// 1.5 M faces. All cold benchmarks run before the warm ones.
+//
+// At start the program checks that every implementation gives the same
+// vertex and face counts and the same points (as sets, to 1e-9) at level 2 on
+// every input, and each benchmark checks its face and vertex counts: a
+// comparison of different outputs would be worthless.
+//
+// Names follow `group/case.../implementation`; scripts/bench.sh takes the
+// first implementation whose name starts with `CGAL_ext` as the reference.
+
+#include "bench_subdivision.h"
+// The counting operator new / delete: in this translation unit only.
+#include "heap_accounting.h"
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+
+#if CGAL_EXT_HAVE_OPENSUBDIV
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/far/topologyRefinerFactory.h>
+#endif
+
+#if CGAL_EXT_HAVE_OPENMESH
+// OpenMesh's VectorT leaves its coordinates uninitialised, which its property
+// arrays then copy (PropertyT::push_back).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+#pragma GCC diagnostic pop
+#endif
+
+#include <benchmark/benchmark.h>
+
+#include <malloc.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace subdivision_bench;
+using Clock = std::chrono::steady_clock;
+
+// ---------------------------------------------------------------------------
+// Inputs
+
+// The faces of a convex polyhedron centred at the origin: the triples of
+// vertices pairwise at the shortest distance, oriented outward.
+Soup convex_triangles(std::vector<std::array<double, 3>> v)
+{
+  auto d2 = [&](std::size_t a, std::size_t b) {
+    double s = 0;
+    for (int k = 0; k < 3; ++k)
+      s += (v[a][k] - v[b][k]) * (v[a][k] - v[b][k]);
+    return s;
+  };
+  double edge = std::numeric_limits<double>::max();
+  for (std::size_t a = 0; a < v.size(); ++a)
+    for (std::size_t b = a + 1; b < v.size(); ++b)
+      edge = (std::min)(edge, d2(a, b));
+  auto adjacent = [&](std::size_t a, std::size_t b) { return d2(a, b) < edge * 1.01; };
+  Soup s;
+  for (const auto& p : v)
+    s.points.emplace_back(p[0], p[1], p[2]);
+  for (std::size_t a = 0; a < v.size(); ++a)
+    for (std::size_t b = a + 1; b < v.size(); ++b)
+      for (std::size_t c = b + 1; c < v.size(); ++c)
+        if (adjacent(a, b) && adjacent(b, c) && adjacent(a, c)) {
+          const auto n = CGAL::cross_product(s.points[b] - s.points[a], s.points[c] - s.points[a]);
+          const bool outward = n * (s.points[a] - CGAL::ORIGIN) > 0;
+          s.polygons.push_back(outward ? Polygon{a, b, c} : Polygon{a, c, b});
+        }
+  return s;
+}
+
+Soup octahedron()
+{
+  return convex_triangles({{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}});
+}
+
+Soup icosahedron()
+{
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  return convex_triangles({{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                           {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}});
+}
+
+enum class Input { octahedron, torus, icosahedron };
+
+struct Input_data
+{
+  Soup soup;
+  Scheme scheme;
+  long long euler_characteristic;
+};
+
+const Input_data& input(Input which)
+{
+  static std::map<Input, Input_data> cache;
+  auto it = cache.find(which);
+  if (it == cache.end()) {
+    Input_data d;
+    switch (which) {
+    case Input::octahedron: d = {octahedron(), Scheme::catmull_clark, 2}; break;
+    case Input::torus: d = {torus_soup(100, 100), Scheme::catmull_clark, 0}; break;
+    case Input::icosahedron: d = {icosahedron(), Scheme::loop, 2}; break;
+    }
+    it = cache.emplace(which, std::move(d)).first;
+  }
+  return it->second;
+}
+
+// Faces and vertices of the closed result: a step of Catmull–Clark turns a
+// face of n sides into n quads, of Loop a triangle into 4; V = χ + E - F.
+std::array<std::size_t, 2> expected_size(const Input_data& in, unsigned levels)
+{
+  std::size_t f = 0;
+  if (in.scheme == Scheme::catmull_clark) {
+    for (const Polygon& p : in.soup.polygons)
+      f += p.size();
+    f <<= 2 * (levels - 1);
+  } else {
+    f = in.soup.polygons.size() << (2 * levels);
+  }
+  const std::size_t e = in.scheme == Scheme::catmull_clark ? 2 * f : 3 * f / 2;
+  return {f, std::size_t(in.euler_characteristic + (long long)e - (long long)f)};
+}
+
+// ---------------------------------------------------------------------------
+// Implementations. A runner holds a working copy of one input: `reset` makes
+// a fresh one (untimed), `subdivide` is the timed call, `release` frees the
+// working mesh and the result.
+
+struct Result
+{
+  std::size_t vertices = 0, faces = 0;
+};
+
+class Runner
+{
+public:
+  virtual ~Runner() = default;
+  virtual void reset() = 0;
+  virtual void subdivide() = 0;
+  virtual void release() = 0;
+  virtual Result result() const = 0;
+  virtual std::vector<Point> points() const = 0;
+};
+
+using Make_runner = std::function<std::unique_ptr<Runner>(const Input_data&, unsigned levels)>;
+
+class Ours final : public Runner
+{
+public:
+  Ours(const Input_data& in, unsigned levels, bool parallel) : scheme_(in.scheme), levels_(levels), parallel_(parallel)
+  {
+    input_.assign(in.soup);
+  }
+  void reset() override
+  {
+    work_.reset();
+    work_ = std::make_unique<Our_mesh>();
+    work_->assign(input_);
+  }
+  void subdivide() override { work_->subdivide(scheme_, levels_, parallel_); }
+  void release() override { work_.reset(); }
+  Result result() const override { return {work_->number_of_vertices(), work_->number_of_faces()}; }
+  std::vector<Point> points() const override { return work_->points(); }
+
+private:
+  Our_mesh input_;
+  std::unique_ptr<Our_mesh> work_;
+  Scheme scheme_;
+  unsigned levels_;
+  bool parallel_;
+};
+
+class Cgal final : public Runner
+{
+  using Mesh = CGAL::Surface_mesh<Point>;
+
+public:
+  Cgal(const Input_data& in, unsigned levels) : scheme_(in.scheme), levels_(levels)
+  {
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(in.soup.points, in.soup.polygons, input_);
+  }
+  void reset() override
+  {
+    work_.reset();
+    work_.emplace(input_);
+  }
+  void subdivide() override
+  {
+    namespace SM = CGAL::Subdivision_method_3;
+    const auto np = CGAL::parameters::number_of_iterations(levels_);
+    if (scheme_ == Scheme::catmull_clark)
+      SM::CatmullClark_subdivision(*work_, np);
+    else
+      SM::Loop_subdivision(*work_, np);
+  }
+  void release() override { work_.reset(); }
+  Result result() const override { return {work_->number_of_vertices(), work_->number_of_faces()}; }
+  std::vector<Point> points() const override
+  {
+    std::vector<Point> p;
+    for (auto v : work_->vertices())
+      p.push_back(work_->point(v));
+    return p;
+  }
+
+private:
+  Mesh input_;
+  std::optional<Mesh> work_;
+  Scheme scheme_;
+  unsigned levels_;
+};
+
+#if CGAL_EXT_HAVE_OPENSUBDIV
+namespace Far = OpenSubdiv::Far;
+namespace Sdc = OpenSubdiv::Sdc;
+
+struct Osd_vertex
+{
+  double x, y, z;
+  void Clear(void* = nullptr) { x = y = z = 0; }
+  void AddWithWeight(const Osd_vertex& s, double w)
+  {
+    x += w * s.x;
+    y += w * s.y;
+    z += w * s.z;
+  }
+};
+
+class Osd final : public Runner
+{
+public:
+  // `full_topology`: the last level also gets its edges and vertex rings, as
+  // the other levels (UniformOptions::fullTopologyInLastLevel), which a
+  // complete mesh has; by default it gets only its face-vertices.
+  Osd(const Input_data& in, unsigned levels, bool full_topology)
+    : levels_(int(levels)), full_topology_(full_topology)
+  {
+    for (const Polygon& p : in.soup.polygons) {
+      sizes_.push_back(int(p.size()));
+      for (std::size_t v : p)
+        indices_.push_back(int(v));
+    }
+    for (const Point& p : in.soup.points)
+      base_.push_back({p.x(), p.y(), p.z()});
+    type_ = in.scheme == Scheme::catmull_clark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP;
+    options_.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY); // ours' default
+  }
+  void reset() override
+  {
+    release();
+    positions_ = base_;
+  }
+  void subdivide() override
+  {
+    Far::TopologyDescriptor desc;
+    desc.numVertices = int(base_.size());
+    desc.numFaces = int(sizes_.size());
+    desc.numVertsPerFace = sizes_.data();
+    desc.vertIndicesPerFace = indices_.data();
+    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+    refiner_.reset(Factory::Create(desc, Factory::Options(type_, options_)));
+    Far::TopologyRefiner::UniformOptions uniform(levels_);
+    uniform.fullTopologyInLastLevel = full_topology_;
+    refiner_->RefineUniform(uniform);
+    positions_.resize(std::size_t(refiner_->GetNumVerticesTotal()));
+    Far::PrimvarRefinerReal<double> primvar(*refiner_);
+    Osd_vertex* src = positions_.data();
+    for (int level = 1; level <= levels_; ++level) {
+      Osd_vertex* dst = src + refiner_->GetLevel(level - 1).GetNumVertices();
+      primvar.Interpolate(level, src, dst);
+      src = dst;
+    }
+  }
+  void release() override
+  {
+    refiner_.reset();
+    std::vector<Osd_vertex>().swap(positions_);
+  }
+  Result result() const override
+  {
+    const auto& last = refiner_->GetLevel(levels_);
+    return {std::size_t(last.GetNumVertices()), std::size_t(last.GetNumFaces())};
+  }
+  std::vector<Point> points() const override
+  {
+    const std::size_t n = std::size_t(refiner_->GetLevel(levels_).GetNumVertices());
+    std::vector<Point> p;
+    for (std::size_t i = positions_.size() - n; i < positions_.size(); ++i)
+      p.emplace_back(positions_[i].x, positions_[i].y, positions_[i].z);
+    return p;
+  }
+
+private:
+  std::vector<int> sizes_, indices_;
+  std::vector<Osd_vertex> base_, positions_;
+  Sdc::SchemeType type_;
+  Sdc::Options options_;
+  std::unique_ptr<Far::TopologyRefiner> refiner_;
+  int levels_;
+  bool full_topology_;
+};
+#endif
+
+#if CGAL_EXT_HAVE_OPENMESH
+// Double coordinates, as the others (OpenMesh's default is float).
+struct Om_traits : OpenMesh::DefaultTraits
+{
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using Om_poly_mesh = OpenMesh::PolyMesh_ArrayKernelT<Om_traits>;
+using Om_tri_mesh = OpenMesh::TriMesh_ArrayKernelT<Om_traits>;
+
+// Catmull–Clark needs a PolyMesh, Loop a TriMesh.
+template <class Mesh, template <class, class> class Subdivider>
+class Om final : public Runner
+{
+public:
+  Om(const Input_data& in, unsigned levels) : levels_(levels)
+  {
+    std::vector<typename Mesh::VertexHandle> v;
+    for (const Point& p : in.soup.points)
+      v.push_back(input_.add_vertex(typename Mesh::Point(p.x(), p.y(), p.z())));
+    std::vector<typename Mesh::VertexHandle> face;
+    for (const Polygon& polygon : in.soup.polygons) {
+      face.clear();
+      for (std::size_t i : polygon)
+        face.push_back(v[i]);
+      input_.add_face(face);
+    }
+  }
+  void reset() override
+  {
+    work_.reset();
+    work_.emplace(input_);
+  }
+  void subdivide() override
+  {
+    Subdivider<Mesh, double> subdivider;
+    subdivider.attach(*work_);
+    subdivider(levels_);
+    subdivider.detach();
+  }
+  void release() override { work_.reset(); }
+  Result result() const override { return {work_->n_vertices(), work_->n_faces()}; }
+  std::vector<Point> points() const override
+  {
+    std::vector<Point> p;
+    for (auto v : work_->vertices()) {
+      const auto& q = work_->point(v);
+      p.emplace_back(q[0], q[1], q[2]);
+    }
+    return p;
+  }
+
+private:
+  Mesh input_;
+  std::optional<Mesh> work_;
+  unsigned levels_;
+};
+#endif
+
+struct Implementation
+{
+  std::string name;
+  Make_runner make;
+};
+
+// The serial ours first: scripts/bench.sh takes the first `CGAL_ext*` as the reference.
+std::vector<Implementation> implementations(Scheme scheme)
+{
+  std::vector<Implementation> all;
+  all.push_back({"CGAL_ext_Mobius_mesh",
+                 [](const Input_data& in, unsigned n) { return std::make_unique<Ours>(in, n, false); }});
+  if (parallel_available())
+    all.push_back({"CGAL_ext_Mobius_mesh_2_threads",
+                   [](const Input_data& in, unsigned n) { return std::make_unique<Ours>(in, n, true); }});
+  all.push_back(
+    {"CGAL_Surface_mesh", [](const Input_data& in, unsigned n) { return std::make_unique<Cgal>(in, n); }});
+#if CGAL_EXT_HAVE_OPENSUBDIV
+  all.push_back(
+    {"OpenSubdiv_Far", [](const Input_data& in, unsigned n) { return std::make_unique<Osd>(in, n, false); }});
+  all.push_back({"OpenSubdiv_Far_full_topology",
+                 [](const Input_data& in, unsigned n) { return std::make_unique<Osd>(in, n, true); }});
+#endif
+#if CGAL_EXT_HAVE_OPENMESH
+  using namespace OpenMesh::Subdivider::Uniform;
+  if (scheme == Scheme::catmull_clark)
+    all.push_back({"OpenMesh_PolyMesh",
+                   [](const Input_data& in, unsigned n) { return std::make_unique<Om<Om_poly_mesh, CatmullClarkT>>(in, n); }});
+  else
+    all.push_back({"OpenMesh_TriMesh",
+                   [](const Input_data& in, unsigned n) { return std::make_unique<Om<Om_tri_mesh, LoopT>>(in, n); }});
+#else
+  (void)scheme;
+#endif
+  return all;
+}
+
+// ---------------------------------------------------------------------------
+// Checks
+
+// Whether `a` and `b` are the same points, as sets, to `tol` per coordinate.
+bool same_point_sets(std::vector<Point> a, std::vector<Point> b, double tol, std::string& why)
+{
+  if (a.size() != b.size()) {
+    why = std::to_string(a.size()) + " vs " + std::to_string(b.size()) + " points";
+    return false;
+  }
+  auto by_x = [](const Point& p, const Point& q) { return p.x() < q.x(); };
+  std::sort(b.begin(), b.end(), by_x);
+  std::vector<bool> used(b.size(), false);
+  for (const Point& p : a) {
+    auto it = std::lower_bound(b.begin(), b.end(), Point(p.x() - tol, 0, 0), by_x);
+    bool found = false;
+    for (; it != b.end() && it->x() <= p.x() + tol; ++it) {
+      const std::size_t i = std::size_t(it - b.begin());
+      if (!used[i] && std::abs(it->y() - p.y()) <= tol && std::abs(it->z() - p.z()) <= tol) {
+        used[i] = found = true;
+        break;
+      }
+    }
+    if (!found) {
+      why = "no match for (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Level 2 on every input: every implementation's counts and points against ours.
+bool check_implementations_agree()
+{
+  bool ok = true;
+  const std::pair<Input, const char*> inputs[] = {
+    {Input::octahedron, "Catmull-Clark octahedron"}, {Input::torus, "Catmull-Clark torus"}, {Input::icosahedron, "Loop icosahedron"}};
+  for (const auto& [which, label] : inputs) {
+    const Input_data& in = input(which);
+    const unsigned levels = 2;
+    const auto expected = expected_size(in, levels);
+    std::vector<Point> reference;
+    for (const Implementation& impl : implementations(in.scheme)) {
+      auto runner = impl.make(in, levels);
+      runner->reset();
+      runner->subdivide();
+      const Result r = runner->result();
+      std::string why;
+      if (r.faces != expected[0] || r.vertices != expected[1]) {
+        why = std::to_string(r.vertices) + " vertices and " + std::to_string(r.faces) + " faces instead of " +
+              std::to_string(expected[1]) + " and " + std::to_string(expected[0]);
+      } else if (reference.empty()) {
+        reference = runner->points();
+      } else {
+        same_point_sets(reference, runner->points(), 1e-9, why);
+      }
+      if (!why.empty()) {
+        std::fprintf(stderr, "bench_subdivision: %s, level %u: %s disagrees with CGAL_ext_Mobius_mesh: %s\n", label,
+                     levels, impl.name.c_str(), why.c_str());
+        ok = false;
+      }
+    }
+  }
+  return ok;
+}
+
+// ---------------------------------------------------------------------------
+// Running
+
+// How the C library's heap treats large blocks, as in bench_soup_import.cpp:
+//  cold: every block of 128 KiB or more is a fresh mapping, returned on free,
+//        so each run touches new pages;
+//  warm: no mappings and no trimming, so a run reuses the pages of the one before.
+// Trimming is turned off with -1 (no limit), not INT_MAX: the largest cases
+// free more than 2 GiB at once, which INT_MAX would still hand back to the
+// system, so that every "warm" run faulted all its pages in again.
+enum class Heap_mode { cold, warm };
+
+void set_heap_mode(Heap_mode mode)
+{
+  if (mode == Heap_mode::cold) {
+    mallopt(M_MMAP_MAX, 65536);
+    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
+    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
+    malloc_trim(0);
+  } else {
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, -1);
+  }
+}
+
+long minor_faults()
+{
+  rusage u;
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
+}
+
+struct Memory
+{
+  double peak = 0, result = 0;
+};
+
+// Heap of one run, counted from an empty working mesh: the input copy, then
+// the subdivision. Nothing allocated before is freed while counting, and the
+// result is freed uncounted afterwards.
+Memory measure(Runner& runner)
+{
+  runner.release();
+  heap::live = heap::peak = 0;
+  heap::counting = true;
+  runner.reset();
+  runner.subdivide();
+  const Memory m{double(heap::peak), double(heap::live)};
+  heap::counting = false;
+  return m;
+}
+
+// `memory` is shared by the repetitions of one benchmark: it is measured once.
+void run(benchmark::State& state, Input which, unsigned levels, Heap_mode heap_mode, const Make_runner& make,
+         std::optional<Memory>& memory)
+{
+  const Input_data& in = input(which);
+  set_heap_mode(heap_mode);
+  const auto runner = make(in, levels);
+  // The measuring run, in the first repetition, also warms the heap for the
+  // timed runs; later repetitions follow the one before, whose pages the
+  // warm heap keeps (Google Benchmark runs the repetitions of a benchmark
+  // back to back, unless told to interleave them).
+  if (!memory)
+    memory = measure(*runner);
+
+  long faults = 0;
+  for (auto _ : state) {
+    state.PauseTiming(); // keeps the copy out of the CPU time too
+    runner->reset();
+    state.ResumeTiming();
+    const long faults_before = minor_faults();
+    const auto start = Clock::now();
+    runner->subdivide();
+    const auto stop = Clock::now();
+    faults += minor_faults() - faults_before;
+    state.SetIterationTime(std::chrono::duration<double>(stop - start).count());
+  }
+
+  const Result r = runner->result();
+  const auto expected = expected_size(in, levels);
+  runner->release();
+  if (r.faces != expected[0] || r.vertices != expected[1]) {
+    state.SkipWithError(("got " + std::to_string(r.vertices) + " vertices and " + std::to_string(r.faces) +
+                         " faces instead of " + std::to_string(expected[1]) + " and " + std::to_string(expected[0]))
+                          .c_str());
+    return;
+  }
+  state.counters["faces"] = double(r.faces);
+  state.counters["peak_bytes"] = memory->peak;
+  state.counters["result_bytes"] = memory->result;
+  state.counters["faults_per_run"] = double(faults) / double(state.iterations());
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(r.faces));
+}
+
+void register_all()
+{
+  struct Case
+  {
+    Input which;
+    std::string name;
+    unsigned max_level;
+  };
+  const Case cases[] = {{Input::octahedron, "catmull_clark/octahedron", 8},
+                        {Input::torus, "catmull_clark/torus100x100", 5},
+                        {Input::icosahedron, "loop/icosahedron", 8}};
+  // All cold benchmarks first: a warm run leaves its pages in the heap's free
+  // lists, and glibc serves a large block from there before it considers
+  // mmap, so a cold run after warm ones would find its pages already there.
+  for (Heap_mode mode : {Heap_mode::cold, Heap_mode::warm})
+    for (const Case& c : cases) {
+      const Input_data& in = input(c.which);
+      for (unsigned level = 1; level <= c.max_level; ++level) {
+        const std::size_t faces = expected_size(in, level)[0];
+        // Cold only for the larger outputs (some 10 MB of mesh and more), where
+        // first touches of fresh pages weigh, and up to 1.5 M faces, which keeps
+        // the program within minutes: beyond, a cold run faults in GBs at ~10 µs
+        // a page, seconds per implementation and repetition.
+        if (mode == Heap_mode::cold && !(faces >= 80000 && faces <= 1500000))
+          continue;
+        for (const Implementation& impl : implementations(in.scheme)) {
+          const std::string name = "subdivision/" + c.name + "/level_" + std::to_string(level) +
+                                   (mode == Heap_mode::cold ? "/cold/" : "/warm/") + impl.name;
+          const Input which = c.which;
+          const Make_runner make = impl.make;
+          const auto memory = std::make_shared<std::optional<Memory>>();
+          auto* b = benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& st) {
+            run(st, which, level, mode, make, *memory);
+          });
+          b->UseManualTime()->Unit(benchmark::kMillisecond);
+          // Large outputs take a second or more per run: one run per repetition.
+          if (faces >= 1000000)
+            b->Iterations(1);
+          else
+            b->MinTime(0.05);
+        }
+      }
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  limit_threads(2);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  set_heap_mode(Heap_mode::cold); // the check leaves no large free blocks behind
+  if (!check_implementations_agree()) {
+    std::fprintf(stderr, "bench_subdivision: the implementations disagree; not benchmarking\n");
+    return 1;
+  }
+  register_all();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
