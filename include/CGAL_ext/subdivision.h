@@ -106,26 +106,24 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     has_sharpness = true;
   }
 
-  Refiner<Mask, typename Traits::Weight> refiner(mask, options);
-  refiner.refine(mesh, levels, es, vs);
-
-  std::vector<Value> base;
-  base.reserve(mesh.number_of_vertices());
+  internal::Array<Value> values; // each level's points are written in full: no zero-fill
+  values.reserve(mesh.number_of_vertices());
   for (Vertex_index v : mesh.vertices())
-    base.push_back(Traits::from(get(vpm, v)));
-  std::vector<Value> result;
-  // Exact kernels stay serial: their lazy numbers share construction
-  // history between threads.
-  if constexpr (std::is_same_v<Value, Vec3>)
-    refiner.template interpolate<ConcurrencyTag>(base, result);
-  else
-    refiner.interpolate(base, result);
-
+    values.push_back(Traits::from(get(vpm, v)));
   // Build the result aside: on failure the caller's mesh stays as it was.
   Mobius_mesh<P> out;
-  refiner.build_mesh(out, has_sharpness && Mask::creases);
+  {
+    Refiner<Mask, typename Traits::Weight> refiner(mask, options);
+    // Exact kernels stay serial: their lazy numbers share construction
+    // history between threads.
+    if constexpr (std::is_same_v<Value, Vec3>)
+      refiner.template refine_and_interpolate<ConcurrencyTag>(mesh, levels, values, es, vs);
+    else
+      refiner.refine_and_interpolate(mesh, levels, values, es, vs);
+    refiner.build_mesh(out, has_sharpness && Mask::creases);
+  } // the refiner's last level is freed before the points are written
   for (Vertex_index v : out.vertices())
-    out.point(v) = Traits::to(result[v.idx()]);
+    out.point(v) = Traits::to(values[v.idx()]);
   mesh = std::move(out);
 }
 

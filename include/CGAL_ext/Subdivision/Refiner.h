@@ -18,10 +18,6 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 #include <cmath>
 #include <cstdint>
@@ -87,26 +83,6 @@ template <class V>
 void normalize_value(V&, long)
 {}
 
-// Calls body(i) for i in [0, n): in parallel with TBB for `CGAL::Parallel_tag`.
-template <class ConcurrencyTag, class Body>
-void for_each_index(u32 n, const Body& body)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr (std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>) {
-    tbb::parallel_for(tbb::blocked_range<u32>(0, n, 4096), [&](const tbb::blocked_range<u32>& r) {
-      for (u32 i = r.begin(); i != r.end(); ++i)
-        body(i);
-    });
-    return;
-  }
-#else
-  static_assert(!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>,
-                "CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB)");
-#endif
-  for (u32 i = 0; i < n; ++i)
-    body(i);
-}
-
 // Vertex -> incident edges and faces, each in increasing order: the order in
 // which the serial pass adds their terms, so a gather gives the same bits.
 struct Incidence
@@ -151,29 +127,44 @@ public:
               const std::vector<float>& vertex_sharpness = {})
   {
     levels_.resize(levels + 1);
+    edge_weights_.resize(uses_stencils ? 0 : levels);
+    vertex_weights_.resize(uses_stencils ? 0 : levels);
+    stencils_.resize(uses_stencils ? levels : 0);
     build_base(mesh, edge_sharpness, vertex_sharpness);
-    if constexpr (uses_stencils) {
-      stencils_.resize(levels);
-      internal::Face_list faces;
-      for (unsigned k = 0; k < levels; ++k) {
-        if constexpr (Mask::split == Split::dual)
-          internal::dual_split(levels_[k], mask_, faces, stencils_[k]);
-        else
-          internal::sqrt3_split(levels_[k], mask_, k % 2 == 1, faces, stencils_[k]);
-        internal::level_from_faces(stencils_[k].size(), faces, levels_[k + 1]);
-      }
-    } else {
-      edge_weights_.resize(levels);
-      vertex_weights_.resize(levels);
-      incidence_.clear();
-      for (unsigned k = 0; k < levels; ++k) {
-        if constexpr (Mask::split == Split::quad)
-          internal::quad_split(levels_[k], levels_[k + 1]);
-        else
-          internal::triangle_split(levels_[k], levels_[k + 1]);
-        compute_weights(k);
-      }
+    for (unsigned k = 0; k < levels; ++k)
+      step(k, k);
+  }
+
+  /// Refines `mesh` `levels` times and interpolates `values` (one per vertex
+  /// of `mesh`, replaced by one per vertex of the result) on the way, keeping
+  /// only two levels at a time: less memory and faster than `refine()` then
+  /// `interpolate()`, for when nothing else is to be interpolated.
+  /// Afterwards `build_mesh()` gives the result's connectivity and
+  /// `number_of_levels()` is 0.
+  /// `Values` is a `std::vector` of any value type and allocator.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values>
+  void refine_and_interpolate(const Mobius_mesh<P>& mesh, unsigned levels, Values& values,
+                              const std::vector<float>& edge_sharpness = {},
+                              const std::vector<float>& vertex_sharpness = {})
+  {
+    using Value = typename Values::value_type;
+    levels_.resize(levels == 0 ? 1 : 2);
+    build_base(mesh, edge_sharpness, vertex_sharpness);
+    Values next;
+    for (unsigned k = 0; k < levels; ++k) {
+      step<ConcurrencyTag>(0, k);
+      next.resize(levels_[1].nv);
+      interpolate_level<ConcurrencyTag>(0, values.data(), next.data());
+      Value* dst = next.data();
+      internal::for_each_index<ConcurrencyTag>(levels_[1].nv, [&](u32 v) { internal::normalize_value(dst[v], 0); });
+      values.swap(next);
+      std::swap(levels_[0], levels_[1]);
     }
+    levels_.resize(1);
+    edge_weights_.clear();
+    vertex_weights_.clear();
+    stencils_.clear();
+    incidence_.clear();
   }
 
   /// The number of refinement steps done by the last `refine()`.
@@ -244,8 +235,39 @@ public:
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
 private:
+  // Refines levels_[slot] into levels_[slot + 1] with the weights or
+  // stencils of slot `slot`; `k` is the step's number (√3 alternates).
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
+  void step(unsigned slot, unsigned k)
+  {
+    if (levels_.size() < slot + 2)
+      levels_.resize(slot + 2);
+    incidence_.clear();
+    if constexpr (uses_stencils) {
+      if (stencils_.size() < slot + 1)
+        stencils_.resize(slot + 1);
+      internal::Face_list faces;
+      if constexpr (Mask::split == Split::dual)
+        internal::dual_split(levels_[slot], mask_, faces, stencils_[slot]);
+      else
+        internal::sqrt3_split(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
+      internal::level_from_faces(stencils_[slot].size(), faces, levels_[slot + 1]);
+    } else {
+      if (edge_weights_.size() < slot + 1) {
+        edge_weights_.resize(slot + 1);
+        vertex_weights_.resize(slot + 1);
+      }
+      if constexpr (Mask::split == Split::quad)
+        internal::quad_split<ConcurrencyTag>(levels_[slot], levels_[slot + 1]);
+      else
+        internal::triangle_split<ConcurrencyTag>(levels_[slot], levels_[slot + 1]);
+      compute_weights<ConcurrencyTag>(slot);
+    }
+  }
+
   template <class P>
   void build_base(const Mobius_mesh<P>& mesh, const std::vector<float>& es, const std::vector<float>& vs);
+  template <class ConcurrencyTag>
   void compute_weights(unsigned k);
 
   static constexpr bool uses_stencils = Mask::split == Split::dual || Mask::split == Split::sqrt3;
@@ -321,6 +343,7 @@ void Refiner<Mask, W>::build_base(const Mobius_mesh<P>& m, const std::vector<flo
 }
 
 template <class Mask, class W>
+template <class ConcurrencyTag>
 void Refiner<Mask, W>::compute_weights(unsigned k)
 {
   using internal::null_u32;
@@ -354,10 +377,10 @@ void Refiner<Mask, W>::compute_weights(unsigned k)
                    : internal::decrement_sharpness(s);
   };
 
-  // Edges.
+  // Edges, each on its own.
   auto& ew = edge_weights_[k];
   ew.resize(ne);
-  for (u32 e = 0; e < ne; ++e) {
+  internal::for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
     const float s = p.e_sharp[e];
     Edge_weights<W>& w = ew[e];
     float sa = 0.0f, sb = 0.0f;
@@ -383,7 +406,7 @@ void Refiner<Mask, W>::compute_weights(unsigned k)
     w.has_face = !CGAL::is_zero(w.face);
     c.e_sharp[2 * e] = sa;
     c.e_sharp[2 * e + 1] = sb;
-  }
+  });
   for (u32 e = 2 * ne; e < c.ne; ++e)
     c.e_sharp[e] = 0.0f;
 

@@ -11,7 +11,18 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <cstdint>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -21,6 +32,57 @@ namespace internal {
 using u32 = std::uint32_t;
 constexpr u32 null_u32 = 0xffffffffu;
 
+// Leaves new elements of trivial types uninitialised: every array of a child
+// level is written in full by the split, so zero-filling it first would
+// touch the memory twice.
+template <class T>
+struct Default_init_allocator : std::allocator<T>
+{
+  template <class U>
+  struct rebind
+  {
+    using other = Default_init_allocator<U>;
+  };
+  Default_init_allocator() = default;
+  template <class U>
+  Default_init_allocator(const Default_init_allocator<U>&) noexcept
+  {}
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+template <class T>
+using Array = std::vector<T, Default_init_allocator<T>>;
+
+// Calls body(i) for i in [0, n): in parallel with TBB for `CGAL::Parallel_tag`.
+template <class ConcurrencyTag, class Body>
+void for_each_index(u32 n, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr (std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>) {
+    tbb::parallel_for(tbb::blocked_range<u32>(0, n, 4096), [&](const tbb::blocked_range<u32>& r) {
+      for (u32 i = r.begin(); i != r.end(); ++i)
+        body(i);
+    });
+    return;
+  }
+#else
+  static_assert(!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>,
+                "CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB)");
+#endif
+  for (u32 i = 0; i < n; ++i)
+    body(i);
+}
+
+
 // Arrays mirror Mobius_mesh: halfedges 2e and 2e+1 of edge e, `next`/`prev`
 // hold dart bits (halfedge << 1 | flipped), face cycles are unflipped.
 // Corners are the face halfedges numbered face by face: the corners of face f
@@ -28,13 +90,13 @@ constexpr u32 null_u32 = 0xffffffffu;
 struct Level
 {
   u32 nv = 0, ne = 0, nf = 0, nc = 0;
-  std::vector<u32> h_target, h_next, h_prev, h_face, h_corner;
-  std::vector<std::uint8_t> e_mobius;
-  std::vector<float> e_sharp;
-  std::vector<u32> v_dart;
-  std::vector<float> v_sharp;
-  std::vector<u32> f_first, f_offset, corner_h;
-  std::vector<std::uint8_t> f_hole; // empty if no face is a hole
+  Array<u32> h_target, h_next, h_prev, h_face, h_corner;
+  Array<std::uint8_t> e_mobius;
+  Array<float> e_sharp;
+  Array<u32> v_dart;
+  Array<float> v_sharp;
+  Array<u32> f_first, f_offset, corner_h;
+  Array<std::uint8_t> f_hole; // empty if no face is a hole
 
   void resize(u32 v, u32 e, u32 f, u32 c)
   {
@@ -179,13 +241,15 @@ inline void split_edges_and_border(const Level& p, Level& c, u32 edge_point_offs
 // Catmull–Clark / bilinear split: child vertices [vertex points | edge points
 // | face points]; child edges [2e, 2e+1 halves of parent edge e | one inner
 // edge per parent corner c at 2ne + c]; child face c is the quad at corner c.
-inline void quad_split(const Level& p, Level& c)
+// Faces write disjoint parts of the child, so they may be split in parallel.
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void quad_split(const Level& p, Level& c)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
   c.resize(nv + ne + nf, 2 * ne + nc, nc, 4 * nc);
   split_edges_and_border(p, c, nv);
   const u32 fp = nv + ne;
-  for (u32 f = 0; f < nf; ++f) {
+  for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
     const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
     c.v_dart[fp + f] = (2 * (2 * ne + k0)) << 1;
     for (u32 k = k0; k < k1; ++k) {
@@ -209,7 +273,7 @@ inline void quad_split(const Level& p, Level& c)
       c.f_first[k] = q[0];
       c.f_offset[k] = 4 * k;
     }
-  }
+  });
   c.f_offset[nc] = 4 * nc;
   if (!p.f_hole.empty()) {
     c.f_hole.resize(nc);
@@ -224,12 +288,13 @@ inline void quad_split(const Level& p, Level& c)
 // Loop / linear triangle split (triangles only): child vertices [vertex
 // points | edge points]; child edges [halves | inner edge 2ne + c opposite
 // corner c]; child faces [corner triangle c | centre triangle nc + f].
-inline void triangle_split(const Level& p, Level& c)
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void triangle_split(const Level& p, Level& c)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
   c.resize(nv + ne, 2 * ne + nc, nc + nf, 3 * (nc + nf));
   split_edges_and_border(p, c, nv);
-  for (u32 f = 0; f < nf; ++f) {
+  for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
     const u32 k0 = p.f_offset[f];
     const u32 centre = nc + f;
     for (u32 i = 0; i < 3; ++i) {
@@ -259,7 +324,7 @@ inline void triangle_split(const Level& p, Level& c)
     }
     c.f_first[centre] = 2 * (2 * ne + k0) + 1;
     c.f_offset[centre] = 3 * centre;
-  }
+  });
   c.f_offset[nc + nf] = 3 * (nc + nf);
   if (!p.f_hole.empty()) {
     c.f_hole.resize(nc + nf);
