@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fstream>
@@ -385,6 +386,74 @@ TEST(Conversion, SharpnessAndCorrespondences)
   for (const auto& [s, d] : back_pairs) {
     EXPECT_EQ(std::size_t(back.source(d).idx()), std::size_t(original[sm.source(s)].idx()));
     EXPECT_EQ(std::size_t(back.target(d).idx()), std::size_t(original[sm.target(s)].idx()));
+  }
+}
+
+TEST(Conversion, PropertiesWithoutOutputIterators)
+{
+  // The element correspondences are built only for property maps or output
+  // iterators: with maps alone, every value must still go both ways.
+  auto key = [](auto a, auto b) {
+    return std::make_pair(std::size_t((std::min)(a, b)), std::size_t((std::max)(a, b)));
+  };
+  for (const char* file : {"nonorientable/mobius_20x4_quads.obj", "nonorientable/torus_24x12_quads.obj"}) {
+    SCOPED_TRACE(file);
+    auto mesh = mesh_of<Kd::Point_3>(read_obj(file));
+    auto es = CGAL_ext::edge_sharpness_map(mesh);
+    auto vs = CGAL_ext::vertex_sharpness_map(mesh);
+    auto hl = mesh.add_property_map<CGAL_ext::Halfedge_index, int>("h:label", -1).first;
+    std::map<std::pair<std::size_t, std::size_t>, float> by_ends;
+    for (auto e : mesh.edges()) {
+      es[e] = float(e.idx() % 7) * 0.5f;
+      by_ends[key(mesh.vertex(e, 0).idx(), mesh.vertex(e, 1).idx())] = es[e];
+    }
+    for (auto v : mesh.vertices())
+      vs[v] = float(v.idx() % 5);
+    for (auto h : mesh.halfedges())
+      hl[h] = int(h.idx());
+
+    using SM = CGAL::Surface_mesh<Kd::Point_3>;
+    SM sm;
+    CGAL_ext::to_surface_mesh(mesh, sm);
+    auto sm_es = sm.property_map<SM::Edge_index, float>("e:sharpness");
+    auto sm_vs = sm.property_map<SM::Vertex_index, float>("v:sharpness");
+    auto sm_hl = sm.property_map<SM::Halfedge_index, int>("h:label");
+    ASSERT_TRUE(sm_es.second && sm_vs.second && sm_hl.second);
+    // Seam copies of a vertex share its point.
+    std::map<Kd::Point_3, CGAL_ext::Vertex_index> by_point;
+    for (auto v : mesh.vertices())
+      by_point.emplace(mesh.point(v), v);
+    ASSERT_EQ(by_point.size(), mesh.number_of_vertices());
+    auto original = [&](SM::Vertex_index s) { return by_point.at(sm.point(s)).idx(); };
+    for (auto s : sm.vertices())
+      EXPECT_EQ(sm_vs.first[s], vs[CGAL_ext::Vertex_index(original(s))]);
+    for (auto h : sm.halfedges()) {
+      const auto ends = key(original(sm.source(h)), original(sm.target(h)));
+      EXPECT_EQ(sm_es.first[sm.edge(h)], by_ends.at(ends));
+      if (sm_hl.first[h] < 0) { // only a border halfedge made by the cut has no source
+        EXPECT_TRUE(sm.is_border(h));
+        continue;
+      }
+      const CGAL_ext::Halfedge_index g(std::size_t(sm_hl.first[h]));
+      EXPECT_EQ(key(mesh.source(g).idx(), mesh.target(g).idx()), ends);
+    }
+
+    CGAL_ext::Mobius_mesh<Kd::Point_3> back;
+    CGAL_ext::from_surface_mesh(sm, back);
+    auto bes = back.property_map<CGAL_ext::Edge_index, float>("e:sharpness");
+    auto bvs = back.property_map<CGAL_ext::Vertex_index, float>("v:sharpness");
+    auto bhl = back.property_map<CGAL_ext::Halfedge_index, int>("h:label");
+    ASSERT_TRUE(bes && bvs && bhl);
+    for (auto v : mesh.vertices())
+      EXPECT_EQ((*bvs)[v], vs[v]);
+    for (auto e : back.edges())
+      EXPECT_EQ((*bes)[e], by_ends.at(key(back.vertex(e, 0).idx(), back.vertex(e, 1).idx())));
+    for (auto h : back.halfedges()) {
+      if (back.is_border(h))
+        continue;
+      const CGAL_ext::Halfedge_index g(std::size_t((*bhl)[h]));
+      EXPECT_EQ(key(mesh.source(g).idx(), mesh.target(g).idx()), key(back.source(h).idx(), back.target(h).idx()));
+    }
   }
 }
 

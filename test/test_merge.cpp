@@ -11,6 +11,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -272,6 +273,58 @@ void cube_halves()
 
 TEST(MergeAuto, CubeHalvesDouble) { cube_halves<Kd::Point_3>(); }
 TEST(MergeAuto, CubeHalvesEpeck) { cube_halves<Epeck::Point_3>(); }
+
+TEST(MergeAuto, HalfedgeEdgeAndFaceMapsAreCarried)
+{
+  // The merge builds the halfedge and edge correspondences only when such
+  // maps exist: check that they still carry every value, the first mesh's
+  // on a glued edge.
+  using P = Kd::Point_3;
+  Mesh<P> a = box_half<P>(true, 0, 0.5), b = box_half<P>(false, 1, 0.5);
+  using Ends = std::pair<P, P>;
+  auto ends = [](const Mesh<P>& m, CGAL_ext::Edge_index e) {
+    const P p = m.point(m.vertex(e, 0)), q = m.point(m.vertex(e, 1));
+    return q < p ? Ends(q, p) : Ends(p, q);
+  };
+  std::map<Ends, int> edge_label;            // the first mesh's label wins
+  std::vector<std::vector<int>> face_sides;  // per face (a's, then b's), in cycle order
+  std::vector<int> face_label;
+  int next = 0;
+  for (Mesh<P>* m : {&a, &b}) {
+    auto el = m->add_property_map<CGAL_ext::Edge_index, int>("e:label", -1).first;
+    auto hl = m->add_property_map<CGAL_ext::Halfedge_index, int>("h:label", -1).first;
+    auto fl = m->add_property_map<CGAL_ext::Face_index, int>("f:label", -1).first;
+    for (auto e : m->edges()) {
+      el[e] = next++;
+      edge_label.emplace(ends(*m, e), el[e]);
+    }
+    for (auto h : m->halfedges())
+      hl[h] = next++;
+    for (auto f : m->faces()) {
+      fl[f] = next++;
+      face_label.push_back(fl[f]);
+      face_sides.emplace_back();
+      for (auto d : CGAL_ext::halfedges_around_face(m->halfedge(f), *m))
+        face_sides.back().push_back(hl[d.halfedge()]);
+    }
+  }
+  CGAL_ext::merge_borders(a, b);
+  ASSERT_TRUE(a.is_valid(true));
+  auto el = a.property_map<CGAL_ext::Edge_index, int>("e:label");
+  auto hl = a.property_map<CGAL_ext::Halfedge_index, int>("h:label");
+  auto fl = a.property_map<CGAL_ext::Face_index, int>("f:label");
+  ASSERT_TRUE(el && hl && fl);
+  ASSERT_EQ(a.number_of_faces(), face_label.size());
+  for (auto e : a.edges())
+    EXPECT_EQ((*el)[e], edge_label.at(ends(a, e)));
+  for (auto f : a.faces()) {
+    EXPECT_EQ((*fl)[f], face_label[f.idx()]);
+    std::vector<int> sides;
+    for (auto d : CGAL_ext::halfedges_around_face(a.halfedge(f), a))
+      sides.push_back((*hl)[d.halfedge()]);
+    EXPECT_EQ(sides, face_sides[f.idx()]);
+  }
+}
 
 TEST(MergeAuto, KleinBottleHalves)
 {

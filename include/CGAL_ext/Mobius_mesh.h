@@ -563,6 +563,38 @@ public:
     fprops_.resize(nf);
   }
 
+  /// As `assign_connectivity()`, from contiguous containers (`data()`,
+  /// `size()`) that are emptied and freed one by one as soon as they are
+  /// copied, so that at no time both the sources and the mesh are held whole.
+  template <class U32s, class U8s>
+  void assign_connectivity_releasing(size_type nv, size_type ne, size_type nf, U32s& target, U32s& next_bits,
+                                     U32s& prev_bits, U32s& face, U8s& mobius, U32s& vertex_dart_bits,
+                                     U32s& face_halfedge)
+  {
+    static_assert(sizeof(typename U32s::value_type) == 4 && sizeof(typename U8s::value_type) == 1,
+                  "32-bit indices and 8-bit Möbius flags");
+    const std::size_t nh = 2 * std::size_t(ne);
+    auto move_in = [](auto& array, auto& source, std::size_t n) {
+      array.resize(n);
+      if (n)
+        std::memcpy(static_cast<void*>(array.data()), source.data(), n * sizeof(source[0]));
+      std::decay_t<decltype(source)>().swap(source);
+    };
+    move_in(h_target_, target, nh);
+    move_in(h_next_, next_bits, nh);
+    move_in(h_prev_, prev_bits, nh);
+    move_in(h_face_, face, nh);
+    move_in(e_mobius_, mobius, ne);
+    move_in(v_halfedge_, vertex_dart_bits, nv);
+    move_in(f_halfedge_, face_halfedge, nf);
+    for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
+      props->resize(0);
+    vprops_.resize(nv);
+    hprops_.resize(nh);
+    eprops_.resize(ne);
+    fprops_.resize(nf);
+  }
+
   /// Links `a` to `b`: afterwards `next(a) == b` and `prev(b) == a`.
   void set_next(Dart a, Dart b)
   {

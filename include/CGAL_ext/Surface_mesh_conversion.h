@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <boost/graph/graph_traits.hpp>
+#include <boost/range/iterator_range.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -99,6 +100,26 @@ bool is_surface_mesh_internal_property(const std::string& name)
          name == reversed_faces_map_name;
 }
 
+// True if there are property maps of kind `I` to carry over (points and
+// Surface_mesh's own maps aside): the element correspondences, a pair per
+// element, are built only then (or for an output iterator).
+template <class I, class P>
+bool has_user_properties(const Mobius_mesh<P>& mesh)
+{
+  for (const std::string& name : mesh.template properties<I>())
+    if (name != "v:point")
+      return true;
+  return false;
+}
+template <class SI, class Q>
+bool has_user_properties(const CGAL::Surface_mesh<Q>& sm)
+{
+  for (const std::string& name : sm.template properties<SI>())
+    if (!is_surface_mesh_internal_property<Q>(name))
+      return true;
+  return false;
+}
+
 // Mobius_mesh -> Surface_mesh properties of kind `I` (Mobius index type) / `SI`
 // (Surface_mesh index type): `pairs` lists (Mobius element, Surface_mesh element).
 template <class I, class SI, class P, class Q>
@@ -155,6 +176,13 @@ void properties_from_surface_mesh(const CGAL::Surface_mesh<Q>& src, Mobius_mesh<
   }
 }
 
+// The body of to_surface_mesh(), given `oriented`: the connectivity of `mesh`
+// with its faces oriented and `mobius_left` Möbius edges left (`mesh` itself
+// when it has none).
+template <class P, class O, class Q, class NamedParameters>
+Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<O>& oriented, std::size_t mobius_left,
+                                  CGAL::Surface_mesh<Q>& sm, const NamedParameters& np);
+
 } // namespace internal
 
 /// \ingroup PkgMobiusMeshConversion
@@ -204,6 +232,22 @@ template <class P, class Q, class NamedParameters = parameters::Default_named_pa
 Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh<Q>& sm,
                                   const NamedParameters& np = parameters::default_values())
 {
+  // Without Möbius edges the faces are oriented alike already: orient()
+  // would reverse none, and the mesh serves as its own oriented copy.
+  if (CGAL_ext::number_of_mobius_edges(mesh) == 0)
+    return internal::to_surface_mesh(mesh, mesh, 0, sm, np);
+  Mobius_mesh<std::uint8_t> oriented; // connectivity only
+  internal::copy_connectivity(mesh, oriented);
+  const std::size_t mobius_left = CGAL_ext::orient(oriented);
+  return internal::to_surface_mesh(mesh, oriented, mobius_left, sm, np);
+}
+
+namespace internal {
+
+template <class P, class O, class Q, class NamedParameters>
+Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<O>& oriented, std::size_t mobius_left,
+                                  CGAL::Surface_mesh<Q>& sm, const NamedParameters& np)
+{
   using SM = CGAL::Surface_mesh<Q>;
   using SV = typename SM::Vertex_index;
   using SH = typename SM::Halfedge_index;
@@ -212,10 +256,7 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
   constexpr std::uint32_t none = Vertex_index::null_value;
   Conversion_result result;
 
-  // 1. Orient a connectivity-only copy; `reversed[f]` says which faces turned.
-  Mobius_mesh<std::uint8_t> oriented;
-  internal::copy_connectivity(mesh, oriented);
-  orient(oriented);
+  // 1. `reversed[f]` says which faces turned.
   const std::size_t nv = mesh.number_of_vertices(), nh = mesh.number_of_halfedges(), nf = mesh.number_of_faces();
   std::vector<bool> reversed(nf, false);
   for (Face_index f : mesh.faces()) {
@@ -233,45 +274,59 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
   std::vector<Vertex_index> wedge_vertex(nv);
   for (std::size_t i = 0; i < nv; ++i)
     wedge_vertex[i] = Vertex_index(i);
-  for (Vertex_index v : oriented.vertices()) {
-    Dart start = oriented.halfedge(v);
-    if (!start.is_valid())
-      continue;
-    if (!oriented.is_border(start)) {
-      // Start on a Möbius edge, so that the walk's wrap-around is not inside a wedge.
-      for (Dart d : halfedges_around_target(start, oriented))
-        if (oriented.is_mobius(oriented.edge(d))) {
-          start = d;
-          break;
-        }
-    }
-    std::uint32_t label = none;
-    for (Dart d : halfedges_around_target(start, oriented)) {
-      if (oriented.is_border(d))
+  if (mobius_left == 0) {
+    // Nothing is cut: each corner is its own vertex, no walk around vertices.
+    for (Halfedge_index h : oriented.halfedges())
+      if (!oriented.is_border(h))
+        wedge[h.idx()] = oriented.target(Dart(h, false)).idx();
+  } else {
+    for (Vertex_index v : oriented.vertices()) {
+      Dart start = oriented.halfedge(v);
+      if (!start.is_valid())
         continue;
-      if (label == none)
-        label = v.idx();
-      else if (oriented.is_mobius(oriented.edge(d))) {
-        label = std::uint32_t(wedge_vertex.size());
-        wedge_vertex.push_back(v);
+      if (!oriented.is_border(start)) {
+        // Start on a Möbius edge, so that the walk's wrap-around is not inside a wedge.
+        for (Dart d : CGAL_ext::halfedges_around_target(start, oriented))
+          if (oriented.is_mobius(oriented.edge(d))) {
+            start = d;
+            break;
+          }
       }
-      // A flipped incoming dart is the halfedge leaving v in its face: the
-      // corner at v ends the previous halfedge of the face.
-      const Halfedge_index corner = d.is_flipped() ? oriented.next(d).halfedge() : d.halfedge();
-      wedge[corner.idx()] = label;
+      std::uint32_t label = none;
+      for (Dart d : CGAL_ext::halfedges_around_target(start, oriented)) {
+        if (oriented.is_border(d))
+          continue;
+        if (label == none)
+          label = v.idx();
+        else if (oriented.is_mobius(oriented.edge(d))) {
+          label = std::uint32_t(wedge_vertex.size());
+          wedge_vertex.push_back(v);
+        }
+        // A flipped incoming dart is the halfedge leaving v in its face: the
+        // corner at v ends the previous halfedge of the face.
+        const Halfedge_index corner = d.is_flipped() ? oriented.next(d).halfedge() : d.halfedge();
+        wedge[corner.idx()] = label;
+      }
     }
   }
   result.added_vertices = wedge_vertex.size() - nv;
 
-  // 3. Build the Surface_mesh connectivity directly (linear, no search).
+  // 3. Build the Surface_mesh connectivity directly (linear, no search),
+  //    in arrays reserved once: each cut Möbius edge becomes two edges.
   const internal::Point_converter<P, Q> convert;
+  sm.reserve(typename SM::size_type(sm.number_of_vertices() + sm.number_of_removed_vertices() + wedge_vertex.size()),
+             typename SM::size_type(sm.number_of_edges() + sm.number_of_removed_edges() + mesh.number_of_edges() +
+                                    mobius_left),
+             typename SM::size_type(sm.number_of_faces() + sm.number_of_removed_faces() + nf));
   std::vector<SV> sm_vertex(wedge_vertex.size());
   for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
     sm_vertex[w] = sm.add_vertex(convert(mesh.point(wedge_vertex[w])));
   std::vector<SH> face_he(nh);   // the face halfedge of sm for a face halfedge of mesh
-  std::vector<SH> seam_he(nh);   // its border partner, where the edge was cut
+  std::vector<SH> seam_he(mobius_left > 0 ? nh : 0); // its border partner, where the edge was cut
+  const bool want_edge_pairs = internal::has_user_properties<Edge_index>(mesh);
   std::vector<std::pair<Edge_index, SE>> edge_pairs;
-  edge_pairs.reserve(mesh.number_of_edges() + 16);
+  if (want_edge_pairs)
+    edge_pairs.reserve(mesh.number_of_edges() + mobius_left);
   for (Edge_index e : oriented.edges()) {
     const Halfedge_index h0 = Mobius_mesh<P>::halfedge(e, 0), h1 = Mobius_mesh<P>::halfedge(e, 1);
     const bool f0 = !oriented.is_border(h0), f1 = !oriented.is_border(h1);
@@ -279,7 +334,8 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
       const SH s = sm.add_edge();
       face_he[h0.idx()] = s;
       face_he[h1.idx()] = sm.opposite(s);
-      edge_pairs.emplace_back(e, sm.edge(s));
+      if (want_edge_pairs)
+        edge_pairs.emplace_back(e, sm.edge(s));
       continue;
     }
     for (Halfedge_index h : {h0, h1}) {
@@ -287,7 +343,8 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
         continue;
       const SH s = sm.add_edge();
       face_he[h.idx()] = s;
-      edge_pairs.emplace_back(e, sm.edge(s));
+      if (want_edge_pairs)
+        edge_pairs.emplace_back(e, sm.edge(s));
       if (oriented.is_mobius(e))
         seam_he[h.idx()] = sm.opposite(s);
     }
@@ -300,8 +357,11 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
     face_pairs[f.idx()] = {f, sf};
     const Dart first = oriented.halfedge(f);
     sm.set_halfedge(sf, face_he[first.halfedge().idx()]);
-    for (Dart d : halfedges_around_face(first, oriented)) {
-      const Halfedge_index h = d.halfedge();
+    for (Dart d : CGAL_ext::halfedges_around_face(first, oriented)) {
+      // Darts of a face cycle are valid: the halfedge is read off the bits,
+      // where d.halfedge() would show GCC 12 its null branch and a false
+      // -Warray-bounds at -O3.
+      const Halfedge_index h(Dart::size_type(d.bits() >> 1));
       const SH s = face_he[h.idx()];
       const std::uint32_t t = wedge[h.idx()], src = wedge[oriented.prev(d).halfedge().idx()];
       sm.set_target(s, sm_vertex[t]);
@@ -343,17 +403,24 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
     for (Face_index f : mesh.faces())
       flag[face_pairs[f.idx()].second] = reversed[f.idx()];
   }
-  std::vector<std::pair<Vertex_index, SV>> vertex_pairs(wedge_vertex.size());
-  for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
-    vertex_pairs[w] = {wedge_vertex[w], sm_vertex[w]};
+  std::vector<std::pair<Vertex_index, SV>> vertex_pairs;
+  if (internal::has_user_properties<Vertex_index>(mesh) ||
+      internal::has_output<NamedParameters>(CGAL::internal_np::vertex_to_vertex_output_iterator)) {
+    vertex_pairs.resize(wedge_vertex.size());
+    for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
+      vertex_pairs[w] = {wedge_vertex[w], sm_vertex[w]};
+  }
   std::vector<std::pair<Halfedge_index, SH>> halfedge_pairs;
-  halfedge_pairs.reserve(nh);
-  for (Halfedge_index h : mesh.halfedges())
-    if (!mesh.is_border(h)) {
-      halfedge_pairs.emplace_back(h, face_he[h.idx()]);
-      if (mesh.is_border(Mobius_mesh<P>::opposite_halfedge(h)))
-        halfedge_pairs.emplace_back(Mobius_mesh<P>::opposite_halfedge(h), sm.opposite(face_he[h.idx()]));
-    }
+  if (internal::has_user_properties<Halfedge_index>(mesh) ||
+      internal::has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator)) {
+    halfedge_pairs.reserve(nh);
+    for (Halfedge_index h : mesh.halfedges())
+      if (!mesh.is_border(h)) {
+        halfedge_pairs.emplace_back(h, face_he[h.idx()]);
+        if (mesh.is_border(Mobius_mesh<P>::opposite_halfedge(h)))
+          halfedge_pairs.emplace_back(Mobius_mesh<P>::opposite_halfedge(h), sm.opposite(face_he[h.idx()]));
+      }
+  }
   internal::properties_to_surface_mesh(mesh, sm, vertex_pairs);
   internal::properties_to_surface_mesh(mesh, sm, halfedge_pairs);
   internal::properties_to_surface_mesh(mesh, sm, edge_pairs);
@@ -376,6 +443,8 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
   });
   return result;
 }
+
+} // namespace internal
 
 /// \ingroup PkgMobiusMeshConversion
 ///
@@ -492,10 +561,22 @@ Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh
     class_index[i] = class_index[r];
   }
   result.added_vertices = vertex_of.size() - points.size();
-  std::vector<std::vector<std::uint32_t>> polygons(face_of.size());
-  for (std::size_t f = 0; f < face_of.size(); ++f)
+  // Corners in one flat array with a view per polygon: a vector per face
+  // would cost one allocation per face, a third of the conversion.
+  std::vector<std::uint32_t> corners;
+  std::vector<std::size_t> start;
+  corners.reserve(sm.number_of_halfedges());
+  start.reserve(face_of.size() + 1);
+  start.push_back(0);
+  for (std::size_t f = 0; f < face_of.size(); ++f) {
     for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm))
-      polygons[f].push_back(class_index[dense[std::size_t(sm.source(h))]]);
+      corners.push_back(class_index[dense[std::size_t(sm.source(h))]]);
+    start.push_back(corners.size());
+  }
+  std::vector<boost::iterator_range<const std::uint32_t*>> polygons;
+  polygons.reserve(face_of.size());
+  for (std::size_t f = 0; f < face_of.size(); ++f)
+    polygons.emplace_back(corners.data() + start[f], corners.data() + start[f + 1]);
 
   Mobius_mesh<P> part;
   try {
@@ -510,13 +591,19 @@ Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh
     throw Seam_error("gluing the seam does not give a 2-manifold at vertices {" + where + "}: " + e.what());
   }
 
-  // 4. Correspondences, read off the face cycles in step.
+  // 4. Correspondences, read off the face cycles in step (halfedges and
+  //    edges only if a property map or the output iterator needs them).
   std::vector<std::pair<SH, Halfedge_index>> halfedge_pairs;
-  halfedge_pairs.reserve(sm.number_of_halfedges());
   std::vector<std::pair<SE, Edge_index>> edge_pairs;
-  edge_pairs.reserve(sm.number_of_edges());
-  std::vector<bool> edge_done(part.number_of_edges(), false);
-  for (std::size_t f = 0; f < face_of.size(); ++f) {
+  const bool want_halfedge_pairs =
+    internal::has_user_properties<SH>(sm) || internal::has_user_properties<SE>(sm) ||
+    internal::has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator);
+  if (want_halfedge_pairs) {
+    halfedge_pairs.reserve(sm.number_of_halfedges());
+    edge_pairs.reserve(sm.number_of_edges());
+  }
+  std::vector<bool> edge_done(want_halfedge_pairs ? part.number_of_edges() : 0, false);
+  for (std::size_t f = 0; want_halfedge_pairs && f < face_of.size(); ++f) {
     Dart d = part.halfedge(Face_index(f));
     for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm)) {
       halfedge_pairs.emplace_back(h, d.halfedge());

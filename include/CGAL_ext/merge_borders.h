@@ -21,6 +21,8 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/box_intersection_d.h>
 
+#include <boost/range/iterator_range.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -141,12 +143,27 @@ Mobius_mesh<P> rebuild_glued(const Mobius_mesh<P>& work, const std::vector<std::
                              const std::vector<P>& position, const std::vector<std::vector<std::uint32_t>>& extra,
                              Merge_result& result)
 {
+  // The soup in one flat array of corners with a view per polygon: a vector
+  // per face would cost one allocation per face, a third of the whole merge.
   const std::size_t nf = work.number_of_faces();
-  std::vector<std::vector<std::uint32_t>> polygons(nf);
-  for (Face_index f : work.faces())
+  std::vector<std::uint32_t> corners;
+  std::vector<std::size_t> start;
+  corners.reserve(work.number_of_halfedges());
+  start.reserve(nf + extra.size() + 1);
+  start.push_back(0);
+  for (Face_index f : work.faces()) {
     for (Dart d : CGAL_ext::halfedges_around_face(work.halfedge(f), work))
-      polygons[f.idx()].push_back(cls[work.source(d).idx()]);
-  polygons.insert(polygons.end(), extra.begin(), extra.end());
+      corners.push_back(cls[work.source(d).idx()]);
+    start.push_back(corners.size());
+  }
+  for (const std::vector<std::uint32_t>& polygon : extra) {
+    corners.insert(corners.end(), polygon.begin(), polygon.end());
+    start.push_back(corners.size());
+  }
+  std::vector<boost::iterator_range<const std::uint32_t*>> polygons;
+  polygons.reserve(start.size() - 1);
+  for (std::size_t i = 0; i + 1 < start.size(); ++i)
+    polygons.emplace_back(corners.data() + start[i], corners.data() + start[i + 1]);
 
   Mobius_mesh<P> out;
   try {
@@ -179,19 +196,24 @@ Mobius_mesh<P> rebuild_glued(const Mobius_mesh<P>& work, const std::vector<std::
   std::vector<Vertex_index> vertex_src(out.number_of_vertices());
   for (std::size_t v = cls.size(); v-- > 0;)
     vertex_src[cls[v]] = Vertex_index(v);
-  std::vector<Halfedge_index> halfedge_src(out.number_of_halfedges());
-  std::vector<Edge_index> edge_src(out.number_of_edges());
-  for (Face_index f : work.faces()) {
-    Dart d = out.halfedge(f);
-    for (Dart w : CGAL_ext::halfedges_around_face(work.halfedge(f), work)) {
-      halfedge_src[d.halfedge().idx()] = w.halfedge();
-      const Halfedge_index wo = Mobius_mesh<P>::opposite_halfedge(w.halfedge());
-      const Halfedge_index o = Mobius_mesh<P>::opposite_halfedge(d.halfedge());
-      if (work.is_border(wo) && out.is_border(o))
-        halfedge_src[o.idx()] = wo;
-      if (!edge_src[out.edge(d).idx()].is_valid())
-        edge_src[out.edge(d).idx()] = work.edge(w);
-      d = out.next(d);
+  // Halfedges and edges are walked only if they have property maps to carry.
+  const bool walk = !work.template properties<Halfedge_index>().empty() ||
+                    !work.template properties<Edge_index>().empty();
+  std::vector<Halfedge_index> halfedge_src(walk ? out.number_of_halfedges() : 0);
+  std::vector<Edge_index> edge_src(walk ? out.number_of_edges() : 0);
+  if (walk) {
+    for (Face_index f : work.faces()) {
+      Dart d = out.halfedge(f);
+      for (Dart w : CGAL_ext::halfedges_around_face(work.halfedge(f), work)) {
+        halfedge_src[d.halfedge().idx()] = w.halfedge();
+        const Halfedge_index wo = Mobius_mesh<P>::opposite_halfedge(w.halfedge());
+        const Halfedge_index o = Mobius_mesh<P>::opposite_halfedge(d.halfedge());
+        if (work.is_border(wo) && out.is_border(o))
+          halfedge_src[o.idx()] = wo;
+        if (!edge_src[out.edge(d).idx()].is_valid())
+          edge_src[out.edge(d).idx()] = work.edge(w);
+        d = out.next(d);
+      }
     }
   }
   std::vector<Face_index> face_src(out.number_of_faces());

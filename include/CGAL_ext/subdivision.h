@@ -120,8 +120,8 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
       refiner.template refine_and_interpolate<ConcurrencyTag>(mesh, levels, values, es, vs);
     else
       refiner.refine_and_interpolate(mesh, levels, values, es, vs);
-    refiner.build_mesh(out, has_sharpness && Mask::creases);
-  } // the refiner's last level is freed before the points are written
+    refiner.release_mesh(out, has_sharpness && Mask::creases);
+  }
   for (Vertex_index v : out.vertices())
     out.point(v) = Traits::to(values[v.idx()]);
   mesh = std::move(out);

@@ -153,6 +153,7 @@ public:
     Values next;
     for (unsigned k = 0; k < levels; ++k) {
       step<ConcurrencyTag>(0, k);
+      next.clear(); // the previous level's values are not needed: nothing to copy on growth
       next.resize(levels_[1].nv);
       interpolate_level<ConcurrencyTag>(0, values.data(), next.data());
       Value* dst = next.data();
@@ -233,6 +234,11 @@ public:
   /// property "f:hole" marks the faces that descend from them.
   template <class P>
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
+
+  /// As `build_mesh()`, but hands the last level's arrays over one by one,
+  /// freeing each as soon as it is copied: the refiner is empty afterwards.
+  template <class P>
+  void release_mesh(Mobius_mesh<P>& out, bool write_sharpness);
 
 private:
   // Refines levels_[slot] into levels_[slot + 1] with the weights or
@@ -697,6 +703,48 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
       dst[v] = x;
     });
   }
+}
+
+template <class Mask, class W>
+template <class P>
+void Refiner<Mask, W>::release_mesh(Mobius_mesh<P>& out, bool write_sharpness)
+{
+  using internal::null_u32;
+  Level& L = levels_.back();
+  // What the mesh does not need goes first.
+  decltype(L.h_corner)().swap(L.h_corner);
+  decltype(L.corner_h)().swap(L.corner_h);
+  decltype(L.f_offset)().swap(L.f_offset);
+  out.clear();
+  std::vector<float> edge_sharpness, vertex_sharpness;
+  if (write_sharpness) {
+    edge_sharpness.resize(L.ne);
+    for (u32 e = 0; e < L.ne; ++e)
+      edge_sharpness[e] = (L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32) ? 0.0f : L.e_sharp[e];
+    vertex_sharpness.assign(L.v_sharp.begin(), L.v_sharp.end());
+  }
+  decltype(L.e_sharp)().swap(L.e_sharp);
+  decltype(L.v_sharp)().swap(L.v_sharp);
+  internal::Array<std::uint8_t> holes;
+  holes.swap(L.f_hole);
+  const u32 nv = L.nv, ne = L.ne, nf = L.nf;
+  out.assign_connectivity_releasing(nv, ne, nf, L.h_target, L.h_next, L.h_prev, L.h_face, L.e_mobius, L.v_dart,
+                                    L.f_first);
+  if (write_sharpness) {
+    out.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first.data().swap(edge_sharpness);
+    out.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first.data().swap(
+      vertex_sharpness);
+  }
+  if (!holes.empty()) {
+    auto map = out.template add_property_map<Face_index, std::uint8_t>("f:hole", 0).first;
+    for (u32 f = 0; f < nf; ++f)
+      map[Face_index(f)] = holes[f];
+  }
+  levels_.clear();
+  edge_weights_.clear();
+  vertex_weights_.clear();
+  stencils_.clear();
+  incidence_.clear();
 }
 
 template <class Mask, class W>

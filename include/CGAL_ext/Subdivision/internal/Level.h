@@ -104,6 +104,12 @@ struct Level
     ne = e;
     nf = f;
     nc = c;
+    // Old contents are not kept: cleared first, a growing array is not copied.
+    for (auto* a : {&h_target, &h_next, &h_prev, &h_face, &h_corner, &v_dart, &f_first, &f_offset, &corner_h})
+      a->clear();
+    e_mobius.clear();
+    e_sharp.clear();
+    v_sharp.clear();
     h_target.resize(2 * std::size_t(e));
     h_next.resize(2 * std::size_t(e));
     h_prev.resize(2 * std::size_t(e));
