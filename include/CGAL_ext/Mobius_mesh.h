@@ -555,12 +555,7 @@ public:
     fill(e_mobius_, ne, mobius, 1);
     fill(v_halfedge_, nv, vertex_dart_bits, 4);
     fill(f_halfedge_, nf, face_halfedge, 4);
-    for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
-      props->resize(0);
-    vprops_.resize(nv);
-    hprops_.resize(nh);
-    eprops_.resize(ne);
-    fprops_.resize(nf);
+    reset_properties(nv, nh, ne, nf);
   }
 
   /// As `assign_connectivity()`, from contiguous containers (`data()`,
@@ -587,12 +582,7 @@ public:
     move_in(e_mobius_, mobius, ne);
     move_in(v_halfedge_, vertex_dart_bits, nv);
     move_in(f_halfedge_, face_halfedge, nf);
-    for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
-      props->resize(0);
-    vprops_.resize(nv);
-    hprops_.resize(nh);
-    eprops_.resize(ne);
-    fprops_.resize(nf);
+    reset_properties(nv, nh, ne, nf);
   }
 
   /// Links `a` to `b`: afterwards `next(a) == b` and `prev(b) == a`.
@@ -693,6 +683,17 @@ private:
       static_assert(std::is_same_v<I, Face_index>, "property maps are keyed by element indices");
       return fprops_;
     }
+  }
+
+  // Every property array back to its default values, at the given sizes.
+  void reset_properties(size_type nv, std::size_t nh, size_type ne, size_type nf)
+  {
+    for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
+      props->resize(0);
+    vprops_.resize(nv);
+    hprops_.resize(nh);
+    eprops_.resize(ne);
+    fprops_.resize(nf);
   }
 
   // Connectivity, one array per attribute.

@@ -276,6 +276,46 @@ private:
   template <class ConcurrencyTag>
   void compute_weights(unsigned k);
 
+  // The points both interpolation passes share, formed by the same
+  // expressions so that the passes agree bit for bit.
+  template <class Value>
+  static Value stencil_point(const internal::Stencils<W>& st, u32 i, const Value* src)
+  {
+    u32 j = st.offset[i];
+    const u32 j1 = st.offset[i + 1];
+    Value x = st.weight[j] * src[st.source[j]];
+    for (++j; j < j1; ++j)
+      x = x + st.weight[j] * src[st.source[j]];
+    return x;
+  }
+  template <class Value>
+  static Value face_point(const Level& p, u32 f, const Value* src)
+  {
+    const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
+    Value sum = src[p.h_target[p.corner_h[k0]]];
+    for (u32 i = k0 + 1; i < k1; ++i)
+      sum = sum + src[p.h_target[p.corner_h[i]]];
+    return (k1 - k0 == 4 ? W(1) / W(4) : W(1) / W(int(k1 - k0))) * sum;
+  }
+  // `face_points`: the level's face points (quad split), indexed by face.
+  template <class Value>
+  static Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const Value* src, const Value* face_points)
+  {
+    Value x = w.vertex * (src[p.source(4 * e)] + src[p.h_target[2 * e]]);
+    if (w.has_face) {
+      for (u32 i = 0; i < 2; ++i) {
+        const u32 h = 2 * e + i, f = p.h_face[h];
+        if (f == internal::null_u32)
+          continue;
+        if constexpr (Mask::split == Split::quad)
+          x = x + w.face * face_points[f];
+        else
+          x = x + w.face * src[p.h_target[p.h_next[h] >> 1]];
+      }
+    }
+    return x;
+  }
+
   static constexpr bool uses_stencils = Mask::split == Split::dual || Mask::split == Split::sqrt3;
 
   Mask mask_;
@@ -535,14 +575,8 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
   using internal::null_u32;
   if constexpr (uses_stencils) {
     const internal::Stencils<W>& st = stencils_[k];
-    for (u32 i = 0, n = st.size(); i < n; ++i) {
-      u32 j = st.offset[i];
-      const u32 j1 = st.offset[i + 1];
-      Value x = st.weight[j] * src[st.source[j]];
-      for (++j; j < j1; ++j)
-        x = x + st.weight[j] * src[st.source[j]];
-      dst[i] = x;
-    }
+    for (u32 i = 0, n = st.size(); i < n; ++i)
+      dst[i] = stencil_point(st, i, src);
     return;
   }
   const Level& p = levels_[k];
@@ -552,14 +586,8 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
   const u32 fp = nv + ne;
 
   if constexpr (Mask::split == Split::quad) {
-    const W quarter = W(1) / W(4);
-    for (u32 f = 0; f < nf; ++f) {
-      const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
-      Value sum = src[p.h_target[p.corner_h[k0]]];
-      for (u32 i = k0 + 1; i < k1; ++i)
-        sum = sum + src[p.h_target[p.corner_h[i]]];
-      dst[fp + f] = (k1 - k0 == 4 ? quarter : W(1) / W(int(k1 - k0))) * sum;
-    }
+    for (u32 f = 0; f < nf; ++f)
+      dst[fp + f] = face_point(p, f, src);
   }
   for (u32 v = 0; v < nv; ++v) {
     const Vertex_weights<W>& w = vw[v];
@@ -569,19 +597,7 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
   }
   for (u32 e = 0; e < ne; ++e) {
     const u32 a = p.source(4 * e), b = p.h_target[2 * e];
-    const Edge_weights<W>& w = ew[e];
-    Value x = w.vertex * (src[a] + src[b]);
-    if (w.has_face) {
-      for (u32 i = 0; i < 2; ++i) {
-        const u32 h = 2 * e + i, f = p.h_face[h];
-        if (f == null_u32)
-          continue;
-        if constexpr (Mask::split == Split::quad)
-          x = x + w.face * dst[fp + f];
-        else
-          x = x + w.face * src[p.h_target[p.h_next[h] >> 1]];
-      }
-    }
+    const Value x = edge_point(p, ew[e], e, src, dst + fp);
     dst[nv + e] = x;
     const Vertex_weights<W>&wa = vw[a], &wb = vw[b];
     if (wa.terms & 1)
@@ -613,14 +629,7 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
     interpolate_level(k, src, dst);
   } else if constexpr (uses_stencils) {
     const internal::Stencils<W>& st = stencils_[k];
-    internal::for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) {
-      u32 j = st.offset[i];
-      const u32 j1 = st.offset[i + 1];
-      Value x = st.weight[j] * src[st.source[j]];
-      for (++j; j < j1; ++j)
-        x = x + st.weight[j] * src[st.source[j]];
-      dst[i] = x;
-    });
+    internal::for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { dst[i] = stencil_point(st, i, src); });
   } else {
     const Level& p = levels_[k];
     const auto& ew = edge_weights_[k];
@@ -657,33 +666,10 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
     }
 
     // The serial pass's three loops as gathers, in the same order of terms.
-    if constexpr (Mask::split == Split::quad) {
-      const W quarter = W(1) / W(4);
-      internal::for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
-        const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
-        Value sum = src[p.h_target[p.corner_h[k0]]];
-        for (u32 i = k0 + 1; i < k1; ++i)
-          sum = sum + src[p.h_target[p.corner_h[i]]];
-        dst[fp + f] = (k1 - k0 == 4 ? quarter : W(1) / W(int(k1 - k0))) * sum;
-      });
-    }
-    internal::for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
-      const u32 a = p.source(4 * e), b = p.h_target[2 * e];
-      const Edge_weights<W>& w = ew[e];
-      Value x = w.vertex * (src[a] + src[b]);
-      if (w.has_face) {
-        for (u32 i = 0; i < 2; ++i) {
-          const u32 h = 2 * e + i, f = p.h_face[h];
-          if (f == null_u32)
-            continue;
-          if constexpr (Mask::split == Split::quad)
-            x = x + w.face * dst[fp + f];
-          else
-            x = x + w.face * src[p.h_target[p.h_next[h] >> 1]];
-        }
-      }
-      dst[nv + e] = x;
-    });
+    if constexpr (Mask::split == Split::quad)
+      internal::for_each_index<ConcurrencyTag>(nf, [&](u32 f) { dst[fp + f] = face_point(p, f, src); });
+    internal::for_each_index<ConcurrencyTag>(
+      ne, [&](u32 e) { dst[nv + e] = edge_point(p, ew[e], e, src, dst + fp); });
     internal::for_each_index<ConcurrencyTag>(nv, [&](u32 v) {
       const Vertex_weights<W>& w = vw[v];
       Value x = w.vertex * src[v];
