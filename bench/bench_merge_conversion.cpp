@@ -35,6 +35,8 @@
 // breaking on Mobius_mesh when both are in one translation unit.
 #include <CGAL_ext/Surface_mesh_conversion.h>
 
+#include "heap_modes.h"
+
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -253,19 +255,11 @@ void timed(benchmark::State& state, Prepare prepare, Run run, Check check)
   state.counters["faults"] = double(faults) / double(state.iterations());
 }
 
-// Heap behaviour, fixed for the whole run so that the order of the benchmarks
-// does not matter (glibc's default mmap threshold adapts to what was freed).
+// Heap behaviour (heap_modes.h); the cold runs also trim before each call.
 void set_heap_mode(bool cold)
 {
   cold_heap = cold;
-  if (cold) {
-    mallopt(M_MMAP_MAX, 65536);
-    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
-    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
-  } else {
-    mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-  }
+  set_heap_mode(cold ? Heap_mode::cold : Heap_mode::warm);
 }
 
 // Iterations per repetition: about `per_million` on 1M faces, more on small

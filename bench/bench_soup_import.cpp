@@ -24,6 +24,7 @@
 #include "bench_soup_import.h"
 // The counting operator new / delete: in this translation unit only.
 #include "heap_accounting.h"
+#include "heap_modes.h"
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -218,28 +219,6 @@ Mesh_stats orient_and_import_into_surface_mesh(std::vector<Point>& points, std::
   return {mesh.number_of_vertices(), mesh.number_of_edges(), mesh.number_of_faces()};
 }
 
-// How the C library's heap treats the meshes' large arrays.
-//  cold: every block of 128 KiB or more is a fresh mapping, returned on free, so
-//        each build touches new pages, as the only build of a process does;
-//  warm: no mappings and no trimming, so a build reuses the pages of the one
-//        before, as in a program that builds meshes repeatedly.
-// glibc's default sits in between and depends on what ran before (its mmap
-// threshold adapts to freed blocks), which would make the order of the
-// benchmarks matter.
-enum class Heap_mode { cold, warm };
-
-void set_heap_mode(Heap_mode mode)
-{
-  if (mode == Heap_mode::cold) {
-    mallopt(M_MMAP_MAX, 65536);
-    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
-    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
-    malloc_trim(0);
-  } else {
-    mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-  }
-}
 
 // Times `build(points, polygons, while_built)` (one import, mesh destroyed), then
 // measures the heap of one more build. With `needs_copy`, `build` gets a private

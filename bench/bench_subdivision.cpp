@@ -49,6 +49,7 @@
 #include "bench_subdivision.h"
 // The counting operator new / delete: in this translation unit only.
 #include "heap_accounting.h"
+#include "heap_modes.h"
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
@@ -526,27 +527,6 @@ bool check_implementations_agree()
 // ---------------------------------------------------------------------------
 // Running
 
-// How the C library's heap treats large blocks, as in bench_soup_import.cpp:
-//  cold: every block of 128 KiB or more is a fresh mapping, returned on free,
-//        so each run touches new pages;
-//  warm: no mappings and no trimming, so a run reuses the pages of the one before.
-// Trimming is turned off with -1 (no limit), not INT_MAX: the largest cases
-// free more than 2 GiB at once, which INT_MAX would still hand back to the
-// system, so that every "warm" run faulted all its pages in again.
-enum class Heap_mode { cold, warm };
-
-void set_heap_mode(Heap_mode mode)
-{
-  if (mode == Heap_mode::cold) {
-    mallopt(M_MMAP_MAX, 65536);
-    mallopt(M_MMAP_THRESHOLD, 128 * 1024);
-    mallopt(M_TRIM_THRESHOLD, 128 * 1024);
-    malloc_trim(0);
-  } else {
-    mallopt(M_MMAP_MAX, 0);
-    mallopt(M_TRIM_THRESHOLD, -1);
-  }
-}
 
 long minor_faults()
 {
