@@ -48,24 +48,12 @@ struct Soup
 Soup read_obj(const std::string& relative)
 {
   Soup soup;
-  std::ifstream in(test::data(relative));
-  EXPECT_TRUE(in) << relative;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string tag;
-    ls >> tag;
-    if (tag == "v") {
-      double x, y, z;
-      ls >> x >> y >> z;
-      soup.points.emplace_back(x, y, z);
-    } else if (tag == "f") {
-      std::vector<std::size_t> polygon;
-      std::string corner;
-      while (ls >> corner)
-        polygon.push_back(std::stoul(corner.substr(0, corner.find('/'))) - 1);
-      soup.polygons.push_back(polygon);
-    } else if (tag == "#" && line.find("V=") != std::string::npos) {
+  const bool opened = test::read_obj_lines(
+    test::data(relative), [&](double x, double y, double z) { soup.points.emplace_back(x, y, z); },
+    [&](const std::vector<std::size_t>& polygon) { soup.polygons.push_back(polygon); },
+    [&](const std::string& tag, const std::string& line, std::istream&) {
+      if (tag != "#" || line.find("V=") == std::string::npos)
+        return;
       auto value = [&](const std::string& key) {
         const std::size_t at = line.find(key);
         return line.substr(at + key.size(), line.find(' ', at) - at - key.size());
@@ -76,8 +64,8 @@ Soup read_obj(const std::string& relative)
       soup.chi = std::stol(value("chi="));
       soup.orientable = value("orientable=") == "True";
       soup.loops = std::stoul(value("boundary_loops="));
-    }
-  }
+    });
+  EXPECT_TRUE(opened) << relative;
   return soup;
 }
 

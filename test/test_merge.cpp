@@ -330,27 +330,12 @@ TEST(MergeAuto, KleinBottleHalves)
 {
   // Read the figure-8 Klein bottle and split its faces into two halves, each
   // with its own copies of the points.
-  std::ifstream in(test::data("nonorientable/klein_fig8_24x12_quads.obj"));
-  ASSERT_TRUE(in);
   std::vector<Epeck::Point_3> points;
   std::vector<std::vector<std::size_t>> faces;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string tag;
-    ls >> tag;
-    if (tag == "v") {
-      double x, y, z;
-      ls >> x >> y >> z;
-      points.emplace_back(x, y, z);
-    } else if (tag == "f") {
-      std::vector<std::size_t> f;
-      std::string c;
-      while (ls >> c)
-        f.push_back(std::stoul(c.substr(0, c.find('/'))) - 1);
-      faces.push_back(f);
-    }
-  }
+  ASSERT_TRUE(test::read_obj_lines(
+    test::data("nonorientable/klein_fig8_24x12_quads.obj"),
+    [&](double x, double y, double z) { points.emplace_back(x, y, z); },
+    [&](const std::vector<std::size_t>& f) { faces.push_back(f); }, [](const auto&...) {}));
   ASSERT_EQ(faces.size(), 288u);
   std::vector<std::vector<std::size_t>> first(faces.begin(), faces.begin() + 144),
     second(faces.begin() + 144, faces.end());

@@ -58,24 +58,12 @@ struct Shape
 Shape read_shape(const std::string& file)
 {
   Shape s;
-  std::ifstream in(file);
-  EXPECT_TRUE(in.good()) << file;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string tag;
-    ls >> tag;
-    if (tag == "v") {
-      double x, y, z;
-      ls >> x >> y >> z;
-      s.points.emplace_back(x, y, z);
-    } else if (tag == "f") {
-      std::vector<int> f;
-      std::string w;
-      while (ls >> w)
-        f.push_back(std::stoi(w.substr(0, w.find('/'))) - 1);
-      s.faces.push_back(f);
-    } else if (tag == "t") {
+  const bool opened = test::read_obj_lines(
+    file, [&](double x, double y, double z) { s.points.emplace_back(x, y, z); },
+    [&](const std::vector<std::size_t>& f) { s.faces.emplace_back(f.begin(), f.end()); },
+    [&](const std::string& tag, const std::string&, std::istream& ls) {
+      if (tag != "t")
+        return;
       std::string name, counts;
       ls >> name >> counts;
       int ni = 0, nf = 0, ns = 0;
@@ -110,8 +98,8 @@ Shape read_shape(const std::string& file)
       } else if (name == "smoothtriangles") {
         s.triangles = strings[0] == "smooth" ? Triangle_subdivision::smooth : Triangle_subdivision::catmark;
       }
-    }
-  }
+    });
+  EXPECT_TRUE(opened) << file;
   return s;
 }
 

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,38 @@ using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 
 inline std::string data(const std::string& relative) { return std::string(CGAL_EXT_TEST_DATA_DIR) + "/" + relative; }
+
+// The tests' own OBJ reader, independent of the library's: `on_vertex(x, y, z)`
+// for each `v` line, `on_face(indices)` (0-based; `a/t/n` corners allowed) for
+// each `f` line, `on_other(tag, line, rest)` for every other line, `rest` being
+// the stream after the tag. Returns false if the file cannot be opened.
+template <class OnVertex, class OnFace, class OnOther>
+bool read_obj_lines(const std::string& path, OnVertex on_vertex, OnFace on_face, OnOther on_other)
+{
+  std::ifstream in(path);
+  if (!in)
+    return false;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string tag;
+    ls >> tag;
+    if (tag == "v") {
+      double x, y, z;
+      ls >> x >> y >> z;
+      on_vertex(x, y, z);
+    } else if (tag == "f") {
+      std::vector<std::size_t> face;
+      std::string corner;
+      while (ls >> corner)
+        face.push_back(std::stoul(corner.substr(0, corner.find('/'))) - 1);
+      on_face(face);
+    } else {
+      on_other(tag, line, ls);
+    }
+  }
+  return true;
+}
 
 // How many points of `a` have no point of `b` within `tolerance`: the two
 // point sets agree, whatever the vertex numbering, when both directions give 0.
