@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
 #include <memory>
 #include <random>
@@ -887,6 +889,81 @@ TEST(SubdivisionApi, EdgePointsVertexRule)
   S::catmull_clark(m, CGAL_ext::parameters::vertex_rule(S::Vertex_rule::edge_points));
   const CGAL::Gmpq c(7, 36);
   EXPECT_EQ(m.point(CGAL_ext::Vertex_index(0)), K::Point_3(c, c, c));
+}
+
+// The one-pass path (used by the free functions) against refine(),
+// interpolate_level() and build_mesh(): the same mesh, bit for bit the same
+// points, the same sharpness and hole maps.
+template <class Mask, class ConcurrencyTag = CGAL::Sequential_tag>
+void check_one_pass(const std::string& file, unsigned n, const Boundary_interpolation* boundary = nullptr)
+{
+  SCOPED_TRACE(file);
+  const Shape s = read_shape(test::data(file));
+  const Built b = build(s);
+  S::Refinement_options options;
+  options.boundary_interpolation = boundary ? *boundary : s.boundary;
+  options.crease_method = s.crease_method;
+  S::Refiner<Mask> r(Mask(), options);
+  const std::vector<std::vector<V3>> levels = our_levels(r, b, n);
+  Mesh expected;
+  r.build_mesh(expected, true);
+
+  S::Refiner<Mask> one(Mask(), options);
+  std::vector<V3> values = levels[0];
+  Mesh out;
+  one.template refine_and_interpolate<ConcurrencyTag>(b.mesh, n, values, out, b.edge_sharpness,
+                                                      b.vertex_sharpness, true);
+  EXPECT_EQ(one.number_of_levels(), 0u);
+  ASSERT_TRUE(out.is_valid(true));
+  ASSERT_EQ(out.number_of_vertices(), expected.number_of_vertices());
+  ASSERT_EQ(out.number_of_edges(), expected.number_of_edges());
+  ASSERT_EQ(out.number_of_faces(), expected.number_of_faces());
+  for (auto h : out.halfedges()) {
+    const CGAL_ext::Dart d(h, false);
+    ASSERT_EQ(out.target(d), expected.target(d));
+    ASSERT_EQ(out.next(d), expected.next(d));
+    ASSERT_EQ(out.face(h), expected.face(h));
+  }
+  for (auto e : out.edges())
+    ASSERT_EQ(out.is_mobius(e), expected.is_mobius(e));
+  for (auto v : out.vertices())
+    ASSERT_EQ(out.halfedge(v), expected.halfedge(v));
+  ASSERT_EQ(values.size(), levels[n].size());
+  EXPECT_EQ(std::memcmp(values.data(), levels[n].data(), values.size() * sizeof(V3)), 0);
+  auto es = out.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name);
+  auto es_expected = expected.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name);
+  auto vs = out.property_map<CGAL_ext::Vertex_index, float>(CGAL_ext::vertex_sharpness_name);
+  auto vs_expected = expected.property_map<CGAL_ext::Vertex_index, float>(CGAL_ext::vertex_sharpness_name);
+  ASSERT_TRUE(es && es_expected && vs && vs_expected);
+  EXPECT_EQ(es->data(), es_expected->data());
+  EXPECT_EQ(vs->data(), vs_expected->data());
+  auto holes = out.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+  auto holes_expected = expected.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+  ASSERT_EQ(holes.has_value(), holes_expected.has_value());
+  if (holes) {
+    EXPECT_EQ(holes->data(), holes_expected->data());
+  }
+}
+
+TEST(SubdivisionApi, OnePassEqualsLevelByLevel)
+{
+  const Boundary_interpolation none = Boundary_interpolation::none;
+  check_one_pass<S::Catmull_clark_mask>("opensubdiv/catmark_cube_creases1.obj", 3);
+  check_one_pass<S::Catmull_clark_mask>("opensubdiv/catmark_chaikin1.obj", 3);
+  check_one_pass<S::Catmull_clark_mask>("opensubdiv/catmark_edgecorner.obj", 3);
+  check_one_pass<S::Catmull_clark_mask>("opensubdiv/catmark_edgecorner.obj", 2, &none);
+  check_one_pass<S::Catmull_clark_mask>("nonorientable/mobius_20x4_quads.obj", 3);
+  check_one_pass<S::Catmull_clark_mask>("nonorientable/torus_24x12_quads.obj", 2);
+  check_one_pass<S::Loop_mask>("opensubdiv/loop_icos_semisharp.obj", 3);
+  check_one_pass<S::Loop_mask>("opensubdiv/loop_triangle_edgeonly.obj", 3);
+  check_one_pass<S::Loop_mask>("opensubdiv/loop_triangle_edgeonly.obj", 2, &none);
+  check_one_pass<S::Loop_mask>("nonorientable/mobius_20x4_tris.obj", 3, &none);
+  check_one_pass<S::Bilinear_mask>("opensubdiv/catmark_cube_creases1.obj", 2);
+  check_one_pass<S::Catmull_clark_mask>("opensubdiv/catmark_cube_creases1.obj", 0);
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+  check_one_pass<S::Catmull_clark_mask, CGAL::Parallel_tag>("opensubdiv/catmark_chaikin1.obj", 3);
+  check_one_pass<S::Loop_mask, CGAL::Parallel_tag>("opensubdiv/loop_icos_semisharp.obj", 3);
+#endif
 }
 
 TEST(SubdivisionApi, RefinerReinterpolatesOtherData)

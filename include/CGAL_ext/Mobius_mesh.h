@@ -8,6 +8,7 @@
 #define CGAL_EXT_MOBIUS_MESH_H
 
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
+#include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <CGAL/Origin.h>
 
@@ -498,9 +499,9 @@ public:
   {
     h_target_.push_back(t0);
     h_target_.push_back(t1);
-    h_next_.resize(h_next_.size() + 2);
-    h_prev_.resize(h_prev_.size() + 2);
-    h_face_.resize(h_face_.size() + 2);
+    h_next_.resize(h_next_.size() + 2, Dart());
+    h_prev_.resize(h_prev_.size() + 2, Dart());
+    h_face_.resize(h_face_.size() + 2, Face_index());
     hprops_.resize(h_target_.size());
     e_mobius_.push_back(mobius ? 1 : 0);
     eprops_.resize(e_mobius_.size());
@@ -515,16 +516,16 @@ public:
   /// Resizes all element arrays at once (new elements are unlinked).
   void resize(size_type nv, size_type ne, size_type nf)
   {
-    v_halfedge_.resize(nv);
+    v_halfedge_.resize(nv, Dart());
     vprops_.resize(nv);
-    h_target_.resize(2 * std::size_t(ne));
-    h_next_.resize(2 * std::size_t(ne));
-    h_prev_.resize(2 * std::size_t(ne));
-    h_face_.resize(2 * std::size_t(ne));
+    h_target_.resize(2 * std::size_t(ne), Vertex_index());
+    h_next_.resize(2 * std::size_t(ne), Dart());
+    h_prev_.resize(2 * std::size_t(ne), Dart());
+    h_face_.resize(2 * std::size_t(ne), Face_index());
     hprops_.resize(2 * std::size_t(ne));
-    e_mobius_.resize(ne);
+    e_mobius_.resize(ne, 0);
     eprops_.resize(ne);
-    f_halfedge_.resize(nf);
+    f_halfedge_.resize(nf, Halfedge_index());
     fprops_.resize(nf);
   }
   /// Replaces the connectivity by whole arrays, for algorithms that compute
@@ -539,50 +540,56 @@ public:
                            const std::uint32_t* face, const std::uint8_t* mobius, const std::uint32_t* vertex_dart_bits,
                            const std::uint32_t* face_halfedge)
   {
-    static_assert(sizeof(Dart) == 4 && sizeof(Vertex_index) == 4 && sizeof(Face_index) == 4 &&
-                    sizeof(Halfedge_index) == 4 && std::is_trivially_copyable_v<Dart>,
-                  "handles are plain 32-bit values");
     const std::size_t nh = 2 * std::size_t(ne);
-    auto fill = [](auto& array, std::size_t n, const void* source, std::size_t element_size) {
-      array.resize(n);
-      if (n)
-        std::memcpy(static_cast<void*>(array.data()), source, n * element_size);
-    };
-    fill(h_target_, nh, target, 4);
-    fill(h_next_, nh, next_bits, 4);
-    fill(h_prev_, nh, prev_bits, 4);
-    fill(h_face_, nh, face, 4);
-    fill(e_mobius_, ne, mobius, 1);
-    fill(v_halfedge_, nv, vertex_dart_bits, 4);
-    fill(f_halfedge_, nf, face_halfedge, 4);
+    assign_bits(h_target_, target, nh);
+    assign_bits(h_next_, next_bits, nh);
+    assign_bits(h_prev_, prev_bits, nh);
+    assign_bits(h_face_, face, nh);
+    e_mobius_.assign(mobius, mobius + ne);
+    assign_bits(v_halfedge_, vertex_dart_bits, nv);
+    assign_bits(f_halfedge_, face_halfedge, nf);
     reset_properties(nv, nh, ne, nf);
   }
 
-  /// As `assign_connectivity()`, from contiguous containers (`data()`,
-  /// `size()`) that are emptied and freed one by one as soon as they are
-  /// copied, so that at no time both the sources and the mesh are held whole.
-  template <class U32s, class U8s>
-  void assign_connectivity_releasing(size_type nv, size_type ne, size_type nf, U32s& target, U32s& next_bits,
-                                     U32s& prev_bits, U32s& face, U8s& mobius, U32s& vertex_dart_bits,
-                                     U32s& face_halfedge)
+  /// Where `overwrite_connectivity()` lets an algorithm write the arrays.
+  struct Connectivity_arrays
   {
-    static_assert(sizeof(typename U32s::value_type) == 4 && sizeof(typename U8s::value_type) == 1,
-                  "32-bit indices and 8-bit Möbius flags");
+    std::uint32_t *target, *next_bits, *prev_bits, *face, *vertex_dart_bits, *face_halfedge;
+    std::uint8_t* mobius;
+  };
+
+  /// As `assign_connectivity()`, for an algorithm that writes the arrays in
+  /// place instead of copying them in: resizes them for `nv` vertices, `ne`
+  /// edges and `nf` faces *without initialising them*, and returns where to
+  /// write the values that `assign_connectivity()` takes. Property maps are
+  /// emptied until `reset_property_maps()`, to be called once every value
+  /// is written (the caller may free its own memory in between).
+  Connectivity_arrays overwrite_connectivity(size_type nv, size_type ne, size_type nf)
+  {
     const std::size_t nh = 2 * std::size_t(ne);
-    auto move_in = [](auto& array, auto& source, std::size_t n) {
+    auto uninitialized = [](auto& array, std::size_t n) {
+      array.clear(); // nothing to copy if it grows
       array.resize(n);
-      if (n)
-        std::memcpy(static_cast<void*>(array.data()), source.data(), n * sizeof(source[0]));
-      std::decay_t<decltype(source)>().swap(source);
+      return reinterpret_cast<std::uint32_t*>(array.data());
     };
-    move_in(h_target_, target, nh);
-    move_in(h_next_, next_bits, nh);
-    move_in(h_prev_, prev_bits, nh);
-    move_in(h_face_, face, nh);
-    move_in(e_mobius_, mobius, ne);
-    move_in(v_halfedge_, vertex_dart_bits, nv);
-    move_in(f_halfedge_, face_halfedge, nf);
-    reset_properties(nv, nh, ne, nf);
+    Connectivity_arrays a;
+    a.target = uninitialized(h_target_, nh);
+    a.next_bits = uninitialized(h_next_, nh);
+    a.prev_bits = uninitialized(h_prev_, nh);
+    a.face = uninitialized(h_face_, nh);
+    a.vertex_dart_bits = uninitialized(v_halfedge_, nv);
+    a.face_halfedge = uninitialized(f_halfedge_, nf);
+    e_mobius_.clear();
+    e_mobius_.resize(ne);
+    a.mobius = e_mobius_.data();
+    reset_properties(0, 0, 0, 0);
+    return a;
+  }
+  /// Sizes every property map to the number of its elements, with all values
+  /// reset to the map's default.
+  void reset_property_maps()
+  {
+    reset_properties(number_of_vertices(), number_of_halfedges(), number_of_edges(), number_of_faces());
   }
 
   /// Links `a` to `b`: afterwards `next(a) == b` and `prev(b) == a`.
@@ -686,6 +693,18 @@ private:
   }
 
   // Every property array back to its default values, at the given sizes.
+  // Replaces `array` by `n` 32-bit handle values (array elements are not
+  // zeroed on resize: one pass).
+  template <class T>
+  static void assign_bits(internal::Uninitialized_array<T>& array, const void* source, std::size_t n)
+  {
+    static_assert(sizeof(T) == 4 && std::is_trivially_copyable_v<T>, "handles are plain 32-bit values");
+    array.clear(); // nothing to copy if it grows
+    array.resize(n);
+    if (n)
+      std::memcpy(static_cast<void*>(array.data()), source, 4 * n);
+  }
+
   void reset_properties(size_type nv, std::size_t nh, size_type ne, size_type nf)
   {
     for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
@@ -697,13 +716,14 @@ private:
   }
 
   // Connectivity, one array per attribute.
-  std::vector<Dart> v_halfedge_;
-  std::vector<Vertex_index> h_target_;
-  std::vector<Dart> h_next_;
-  std::vector<Dart> h_prev_;
-  std::vector<Face_index> h_face_;
-  std::vector<std::uint8_t> e_mobius_;
-  std::vector<Halfedge_index> f_halfedge_;
+  // (Not zeroed when resized: see resize() and assign_connectivity().)
+  internal::Uninitialized_array<Dart> v_halfedge_;
+  internal::Uninitialized_array<Vertex_index> h_target_;
+  internal::Uninitialized_array<Dart> h_next_;
+  internal::Uninitialized_array<Dart> h_prev_;
+  internal::Uninitialized_array<Face_index> h_face_;
+  internal::Uninitialized_array<std::uint8_t> e_mobius_;
+  internal::Uninitialized_array<Halfedge_index> f_halfedge_;
 
   internal::Property_container vprops_, hprops_, eprops_, fprops_;
   Property_map<Vertex_index, Point> points_;

@@ -116,11 +116,11 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     Refiner<Mask, typename Traits::Weight> refiner(mask, options);
     // Exact kernels stay serial: their lazy numbers share construction
     // history between threads.
+    const bool write_sharpness = has_sharpness && Mask::creases;
     if constexpr (std::is_same_v<Value, Vec3>)
-      refiner.template refine_and_interpolate<ConcurrencyTag>(mesh, levels, values, es, vs);
+      refiner.template refine_and_interpolate<ConcurrencyTag>(mesh, levels, values, out, es, vs, write_sharpness);
     else
-      refiner.refine_and_interpolate(mesh, levels, values, es, vs);
-    refiner.release_mesh(out, has_sharpness && Mask::creases);
+      refiner.refine_and_interpolate(mesh, levels, values, out, es, vs, write_sharpness);
   }
   for (Vertex_index v : out.vertices())
     out.point(v) = Traits::to(values[v.idx()]);

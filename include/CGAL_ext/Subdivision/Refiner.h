@@ -19,6 +19,7 @@
 #include <CGAL/tags.h>
 
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -90,6 +91,51 @@ struct Incidence
   std::vector<u32> edge_offset, edges, face_offset, faces;
 };
 
+// The weights of one step, each distinct set stored once: every parent edge
+// and vertex holds the index of its weights in a small table, 4 bytes where
+// a copy would take 24 (edge) or 56 (vertex). Smooth weights depend only on
+// face degrees or valence and are shared; crease, corner and semi-sharp
+// weights, rarer, get entries of their own or share the constant ones.
+template <class W>
+struct Step_weights
+{
+  static constexpr u32 max_shared_degree = 16; // smooth edges between faces of fewer sides are shared
+
+  std::vector<Edge_weights<W>> edges;
+  std::vector<Vertex_weights<W>> vertices;
+  Array<u32> edge_class, vertex_class;
+  std::vector<u32> smooth_edge, smooth_vertex; // by degree pair / valence; null_u32 if not yet made
+  u32 crease_edge = null_u32, corner_vertex = null_u32;
+
+  void reset(u32 ne, u32 nv)
+  {
+    edges.clear();
+    vertices.clear();
+    edge_class.clear(); // not copied when growing
+    edge_class.resize(ne);
+    vertex_class.clear();
+    vertex_class.resize(nv);
+    smooth_edge.assign(max_shared_degree * max_shared_degree, null_u32);
+    smooth_vertex.clear();
+    crease_edge = corner_vertex = null_u32;
+  }
+  u32 add(Edge_weights<W> w)
+  {
+    w.has_face = !CGAL::is_zero(w.face);
+    edges.push_back(w);
+    return u32(edges.size() - 1);
+  }
+  u32 add(Vertex_weights<W> w)
+  {
+    w.terms = std::uint8_t((CGAL::is_zero(w.edge) ? 0 : 1) | (CGAL::is_zero(w.face) ? 0 : 2) |
+                           (CGAL::is_zero(w.edge_point) ? 0 : 4) | (CGAL::is_zero(w.crease) ? 0 : 8));
+    vertices.push_back(w);
+    return u32(vertices.size() - 1);
+  }
+  const Edge_weights<W>& edge(u32 e) const { return edges[edge_class[e]]; }
+  const Vertex_weights<W>& vertex(u32 v) const { return vertices[vertex_class[v]]; }
+};
+
 } // namespace internal
 
 /// \ingroup PkgSubdivision
@@ -127,54 +173,80 @@ public:
               const std::vector<float>& vertex_sharpness = {})
   {
     levels_.resize(levels + 1);
-    edge_weights_.resize(uses_stencils ? 0 : levels);
-    vertex_weights_.resize(uses_stencils ? 0 : levels);
+    weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
     build_base(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k)
       step(k, k);
   }
 
-  /// Refines `mesh` `levels` times and interpolates `values` (one per vertex
-  /// of `mesh`, replaced by one per vertex of the result) on the way, keeping
-  /// only two levels at a time: less memory and faster than `refine()` then
-  /// `interpolate()`, for when nothing else is to be interpolated.
-  /// Afterwards `build_mesh()` gives the result's connectivity and
-  /// `number_of_levels()` is 0.
+  /// Refines `mesh` `levels` times into `out`, interpolating `values` (one
+  /// per vertex of `mesh`, replaced by one per vertex of `out`) on the way.
+  /// Only two levels are alive at a time, and the last one is written
+  /// straight into `out`'s arrays: less memory and faster than `refine()`,
+  /// `interpolate()` and `build_mesh()`, for when nothing else is to be
+  /// interpolated. `out` gets the sharpness maps and the holes as with
+  /// `build_mesh()`. The refiner keeps no level afterwards
+  /// (`number_of_levels()` is 0).
   /// `Values` is a `std::vector` of any value type and allocator.
-  template <class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values>
-  void refine_and_interpolate(const Mobius_mesh<P>& mesh, unsigned levels, Values& values,
+  /// \throws Parameter_error as `refine()`, before `out` is touched.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values, class Q>
+  void refine_and_interpolate(const Mobius_mesh<P>& mesh, unsigned levels, Values& values, Mobius_mesh<Q>& out,
                               const std::vector<float>& edge_sharpness = {},
-                              const std::vector<float>& vertex_sharpness = {})
+                              const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
   {
-    using Value = typename Values::value_type;
     levels_.resize(levels == 0 ? 1 : 2);
     build_base(mesh, edge_sharpness, vertex_sharpness);
     Values next;
-    for (unsigned k = 0; k < levels; ++k) {
-      step<ConcurrencyTag>(0, k);
-      next.clear(); // the previous level's values are not needed: nothing to copy on growth
-      next.resize(levels_[1].nv);
+    // Interpolates level 0 into level 1 and keeps only the new values: what
+    // a step needs of its parent level is its topology and its weights.
+    auto advance_values = [&]() {
+      next.clear(); // nothing to copy on growth
+      next.resize(child_vertex_count(0));
       interpolate_level<ConcurrencyTag>(0, values.data(), next.data());
-      Value* dst = next.data();
-      internal::for_each_index<ConcurrencyTag>(levels_[1].nv, [&](u32 v) { internal::normalize_value(dst[v], 0); });
+      auto* dst = next.data();
+      internal::for_each_index<ConcurrencyTag>(u32(next.size()),
+                                               [&](u32 v) { internal::normalize_value(dst[v], 0); });
       values.swap(next);
+      Values().swap(next);
+    };
+    for (unsigned k = 0; k < levels; ++k) {
+      const bool last = k + 1 == levels;
+      if constexpr (uses_stencils) {
+        step(0, k);
+        advance_values();
+      } else {
+        if (weights_.empty())
+          weights_.resize(1);
+        compute_weights(0);
+        advance_values();
+        weights_[0] = internal::Step_weights<W>(); // the split does not need them
+        incidence_.clear();
+        if (last) {
+          split_into_mesh<ConcurrencyTag>(out, write_sharpness);
+          levels_.clear();
+          clear_scratch();
+          return;
+        }
+        split<ConcurrencyTag>(0, true);
+      }
       std::swap(levels_[0], levels_[1]);
+      levels_[1] = Level(); // the parent: too small to hold the next level
     }
     levels_.resize(1);
-    edge_weights_.clear();
-    vertex_weights_.clear();
-    stencils_.clear();
-    incidence_.clear();
+    build_mesh(out, write_sharpness);
+    levels_.clear();
+    clear_scratch();
   }
 
   /// The number of refinement steps done by the last `refine()`.
   unsigned number_of_levels() const { return levels_.empty() ? 0u : unsigned(levels_.size() - 1); }
   /// The topology of level `k` (0 is the base mesh).
   const Level& level(unsigned k) const { return levels_[k]; }
-  /// The weights of step `k` (primal schemes: quad and triangle splits).
-  const std::vector<Edge_weights<W>>& edge_weights(unsigned k) const { return edge_weights_[k]; }
-  const std::vector<Vertex_weights<W>>& vertex_weights(unsigned k) const { return vertex_weights_[k]; }
+  /// The weights of edge `e` and vertex `v` of level `k` in step `k`
+  /// (primal schemes: quad and triangle splits).
+  const Edge_weights<W>& edge_weights(unsigned k, u32 e) const { return weights_[k].edge(e); }
+  const Vertex_weights<W>& vertex_weights(unsigned k, u32 v) const { return weights_[k].vertex(v); }
   /// The stencils of step `k` (Doo–Sabin and √3): child vertex `i` is the sum
   /// of `weight[j]` times parent vertex `source[j]` over `j` in
   /// `[offset[i], offset[i+1])`.
@@ -235,10 +307,6 @@ public:
   template <class P>
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
-  /// As `build_mesh()`, but hands the last level's arrays over one by one,
-  /// freeing each as soon as it is copied: the refiner is empty afterwards.
-  template <class P>
-  void release_mesh(Mobius_mesh<P>& out, bool write_sharpness);
 
 private:
   // Refines levels_[slot] into levels_[slot + 1] with the weights or
@@ -259,21 +327,95 @@ private:
         internal::sqrt3_split(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
       internal::level_from_faces(stencils_[slot].size(), faces, levels_[slot + 1]);
     } else {
-      if (edge_weights_.size() < slot + 1) {
-        edge_weights_.resize(slot + 1);
-        vertex_weights_.resize(slot + 1);
-      }
-      if constexpr (Mask::split == Split::quad)
-        internal::quad_split<ConcurrencyTag>(levels_[slot], levels_[slot + 1]);
-      else
-        internal::triangle_split<ConcurrencyTag>(levels_[slot], levels_[slot + 1]);
-      compute_weights<ConcurrencyTag>(slot);
+      CGAL_USE(k);
+      if (weights_.size() < slot + 1)
+        weights_.resize(slot + 1);
+      compute_weights(slot);
+      split<ConcurrencyTag>(slot, true);
     }
+  }
+
+  // The topological split of levels_[slot] into levels_[slot + 1] (primal
+  // schemes), after compute_weights(slot), whose child sharpness it takes.
+  template <class ConcurrencyTag>
+  void split(unsigned slot, bool corner_table)
+  {
+    Level& c = levels_[slot + 1];
+    if constexpr (Mask::split == Split::quad)
+      internal::quad_split<ConcurrencyTag>(levels_[slot], c, corner_table);
+    else
+      internal::triangle_split<ConcurrencyTag>(levels_[slot], c, corner_table);
+    if (child_sharp_) {
+      c.sharp = true;
+      c.e_sharp.swap(child_e_sharp_);
+      c.v_sharp.swap(child_v_sharp_);
+    }
+  }
+
+  // The last split of a one-pass refinement: levels_[0] into `out`.
+  template <class ConcurrencyTag, class Q>
+  void split_into_mesh(Mobius_mesh<Q>& out, bool write_sharpness)
+  {
+    out.clear();
+    internal::Mesh_writer<Mobius_mesh<Q>> c(out);
+    if constexpr (Mask::split == Split::quad)
+      internal::quad_split<ConcurrencyTag>(levels_[0], c, false);
+    else
+      internal::triangle_split<ConcurrencyTag>(levels_[0], c, false);
+    levels_[0] = Level(); // freed before the maps are made
+    out.reset_property_maps();
+    if (write_sharpness)
+      add_sharpness_maps(out, child_sharp_ ? child_e_sharp_.data() : nullptr,
+                         child_sharp_ ? child_v_sharp_.data() : nullptr);
+    add_hole_map(out, c.f_hole);
+  }
+
+  // The number of vertices of the child of level `k` (primal schemes).
+  u32 child_vertex_count(unsigned k) const
+  {
+    if constexpr (uses_stencils) {
+      return stencils_[k].size();
+    } else {
+      const Level& p = levels_[k];
+      return p.nv + p.ne + (Mask::split == Split::quad ? p.nf : 0u);
+    }
+  }
+
+  void clear_scratch()
+  {
+    weights_.clear();
+    stencils_.clear();
+    incidence_.clear();
+    decltype(child_e_sharp_)().swap(child_e_sharp_);
+    decltype(child_v_sharp_)().swap(child_v_sharp_);
+  }
+
+  // The maps build_mesh() documents; null sharpness means all 0.
+  template <class Q>
+  static void add_sharpness_maps(Mobius_mesh<Q>& out, const float* edge_sharpness, const float* vertex_sharpness)
+  {
+    auto es = out.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first;
+    auto vs = out.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first;
+    if (edge_sharpness)
+      for (Edge_index e : out.edges())
+        if (!out.is_border(e))
+          es[e] = edge_sharpness[e.idx()]; // border edges are sharp by rule
+    if (vertex_sharpness)
+      for (Vertex_index v : out.vertices())
+        vs[v] = vertex_sharpness[v.idx()];
+  }
+  template <class Q, class Holes>
+  static void add_hole_map(Mobius_mesh<Q>& out, const Holes& holes)
+  {
+    if (holes.empty())
+      return;
+    auto map = out.template add_property_map<Face_index, std::uint8_t>("f:hole", 0).first;
+    for (Face_index f : out.faces())
+      map[f] = holes[f.idx()];
   }
 
   template <class P>
   void build_base(const Mobius_mesh<P>& mesh, const std::vector<float>& es, const std::vector<float>& vs);
-  template <class ConcurrencyTag>
   void compute_weights(unsigned k);
 
   // The points both interpolation passes share, formed by the same
@@ -323,8 +465,11 @@ private:
   std::vector<Level> levels_;
   std::vector<internal::Stencils<W>> stencils_;
   mutable std::vector<internal::Incidence> incidence_; // built by the first parallel interpolation
-  std::vector<std::vector<Edge_weights<W>>> edge_weights_;
-  std::vector<std::vector<Vertex_weights<W>>> vertex_weights_;
+  std::vector<internal::Step_weights<W>> weights_;
+  // The sharpness of the next level, made by compute_weights() before the
+  // split; unused if `child_sharp_` is false (it is all 0).
+  internal::Array<float> child_e_sharp_, child_v_sharp_;
+  bool child_sharp_ = false;
   // per-vertex scratch of compute_weights()
   std::vector<u32> valence_, sharp_count_, semi_count_;
   std::vector<float> semi_sum_;
@@ -386,28 +531,47 @@ void Refiner<Mask, W>::build_base(const Mobius_mesh<P>& m, const std::vector<flo
     if (options_.boundary_interpolation == Boundary_interpolation::edge_and_corner && edges == 2)
       L.v_sharp[v] = infinitely_sharp;
   }
+  // A level without sharpness skips its bookkeeping, and so do its children.
+  auto positive = [](float s) { return s > 0.0f; };
+  if (std::none_of(L.e_sharp.begin(), L.e_sharp.end(), positive) &&
+      std::none_of(L.v_sharp.begin(), L.v_sharp.end(), positive))
+    L.drop_sharpness();
 }
 
 template <class Mask, class W>
-template <class ConcurrencyTag>
 void Refiner<Mask, W>::compute_weights(unsigned k)
 {
   using internal::null_u32;
   const Level& p = levels_[k];
-  Level& c = levels_[k + 1];
+  internal::Step_weights<W>& sw = weights_[k];
   const u32 nv = p.nv, ne = p.ne;
   const bool chaikin = options_.crease_method == Crease_method::chaikin;
+  sw.reset(ne, nv);
+  // The child's sharpness, if the parent has any.
+  const u32 child_ne = 2 * ne + p.nc, child_nv = child_vertex_count(k);
+  child_e_sharp_.clear();
+  child_v_sharp_.clear();
+  if (p.sharp) {
+    child_e_sharp_.resize(child_ne);
+    child_v_sharp_.resize(child_nv);
+  }
+  float* const ces = child_e_sharp_.data();
+  float* const cvs = child_v_sharp_.data();
 
   valence_.assign(nv, 0);
-  sharp_count_.assign(nv, 0);
-  semi_count_.assign(nv, 0);
-  semi_sum_.assign(nv, 0.0f);
   for (u32 e = 0; e < ne; ++e) {
-    const u32 a = p.source(4 * e), b = p.h_target[2 * e];
-    ++valence_[a];
-    ++valence_[b];
-    const float s = p.e_sharp[e];
-    if (s > 0.0f) {
+    ++valence_[p.source(4 * e)];
+    ++valence_[p.h_target[2 * e]];
+  }
+  if (p.sharp) {
+    sharp_count_.assign(nv, 0);
+    semi_count_.assign(nv, 0);
+    semi_sum_.assign(nv, 0.0f);
+    for (u32 e = 0; e < ne; ++e) {
+      const float s = p.e_sharp[e];
+      if (s <= 0.0f)
+        continue;
+      const u32 a = p.source(4 * e), b = p.h_target[2 * e];
       ++sharp_count_[a];
       ++sharp_count_[b];
       if (s < infinitely_sharp) {
@@ -422,43 +586,54 @@ void Refiner<Mask, W>::compute_weights(unsigned k)
     return chaikin ? internal::chaikin_sharpness(s, valence_[v], semi_sum_[v], semi_count_[v])
                    : internal::decrement_sharpness(s);
   };
+  bool child_sharp = false; // does any child edge or vertex keep some sharpness?
 
   // Edges, each on its own.
-  auto& ew = edge_weights_[k];
-  ew.resize(ne);
-  internal::for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
-    const float s = p.e_sharp[e];
-    Edge_weights<W>& w = ew[e];
+  for (u32 e = 0; e < ne; ++e) {
+    const float s = p.sharp ? p.e_sharp[e] : 0.0f;
     float sa = 0.0f, sb = 0.0f;
     if (s > 0.0f) {
       sa = child_sharpness(s, p.source(4 * e));
       sb = child_sharpness(s, p.h_target[2 * e]);
+      ces[2 * e] = sa;
+      ces[2 * e + 1] = sb;
+      child_sharp = child_sharp || sa > 0.0f || sb > 0.0f;
+    } else if (p.sharp) {
+      ces[2 * e] = ces[2 * e + 1] = 0.0f;
     }
     const bool crease = Mask::creases && s > 0.0f && (s >= 1.0f || (chaikin && sa > 0.0f && sb > 0.0f));
+    u32& cls = sw.edge_class[e];
     if (crease) {
-      w.vertex = W(0.5);
-      w.face = W(0);
-    } else {
-      const u32 f0 = p.h_face[2 * e], f1 = p.h_face[2 * e + 1];
-      mask_.smooth_edge(f0 == null_u32 ? 0u : p.degree(f0), f1 == null_u32 ? 0u : p.degree(f1), w);
-      if (Mask::creases && s > 0.0f) {
-        // Semi-sharp edge decaying to smooth: OpenSubdiv's blend, with the
-        // parent sharpness as weight (not clamped).
-        const W pw = W(double(s)), cw = W(1) - pw;
-        w.vertex = pw * W(0.5) + cw * w.vertex;
-        w.face = cw * w.face;
-      }
+      if (sw.crease_edge == null_u32)
+        sw.crease_edge = sw.add(Edge_weights<W>{W(0.5), W(0), false});
+      cls = sw.crease_edge;
+      continue;
     }
-    w.has_face = !CGAL::is_zero(w.face);
-    c.e_sharp[2 * e] = sa;
-    c.e_sharp[2 * e + 1] = sb;
-  });
-  for (u32 e = 2 * ne; e < c.ne; ++e)
-    c.e_sharp[e] = 0.0f;
+    const u32 f0 = p.h_face[2 * e], f1 = p.h_face[2 * e + 1];
+    const u32 d0 = f0 == null_u32 ? 0u : p.degree(f0), d1 = f1 == null_u32 ? 0u : p.degree(f1);
+    const bool blended = Mask::creases && s > 0.0f;
+    constexpr u32 D = internal::Step_weights<W>::max_shared_degree;
+    if (!blended && d0 < D && d1 < D && sw.smooth_edge[d0 * D + d1] != null_u32) {
+      cls = sw.smooth_edge[d0 * D + d1];
+      continue;
+    }
+    Edge_weights<W> w{};
+    mask_.smooth_edge(d0, d1, w);
+    if (blended) {
+      // Semi-sharp edge decaying to smooth: OpenSubdiv's blend, with the
+      // parent sharpness as weight (not clamped).
+      const W pw = W(double(s)), cw = W(1) - pw;
+      w.vertex = pw * W(0.5) + cw * w.vertex;
+      w.face = cw * w.face;
+    }
+    cls = sw.add(w);
+    if (!blended && d0 < D && d1 < D)
+      sw.smooth_edge[d0 * D + d1] = cls;
+  }
+  if (p.sharp)
+    std::fill(ces + 2 * ne, ces + child_ne, 0.0f);
 
   // Vertices.
-  auto& vw = vertex_weights_[k];
-  vw.resize(nv);
   auto zero = [](Vertex_weights<W>& w) {
     w.vertex = w.edge = w.face = w.edge_point = w.crease = W(0);
     w.crease_ends[0] = w.crease_ends[1] = null_u32;
@@ -478,94 +653,127 @@ void Refiner<Mask, W>::compute_weights(unsigned k)
     zero(w);
     mask_.smooth_vertex(n, w);
   };
-  for (u32 v = 0; v < nv; ++v) {
-    Vertex_weights<W>& w = vw[v];
-    const float vs = p.v_sharp[v];
-    c.v_sharp[v] = internal::decrement_sharpness(vs);
-    const u32 n = valence_[v];
-    if (n == 0) {
-      corner_mask(w);
-    } else if (!Mask::creases || (vs <= 0.0f && sharp_count_[v] == 0)) {
+  auto smooth_class = [&](u32 n) {
+    if (sw.smooth_vertex.size() <= n)
+      sw.smooth_vertex.resize(n + 1, null_u32);
+    if (sw.smooth_vertex[n] == null_u32) {
+      Vertex_weights<W> w{};
       smooth_mask(w, n);
-    } else {
-      const unsigned prule = internal::vertex_rule(vs, sharp_count_[v]);
-      if (prule == internal::rule_smooth || prule == internal::rule_dart) {
-        smooth_mask(w, n);
+      sw.smooth_vertex[n] = sw.add(w);
+    }
+    return sw.smooth_vertex[n];
+  };
+  auto corner_class = [&]() {
+    if (sw.corner_vertex == null_u32) {
+      Vertex_weights<W> w{};
+      corner_mask(w);
+      sw.corner_vertex = sw.add(w);
+    }
+    return sw.corner_vertex;
+  };
+  for (u32 v = 0; v < nv; ++v) {
+    u32& cls = sw.vertex_class[v];
+    const u32 n = valence_[v];
+    if (!p.sharp) {
+      cls = n == 0 ? corner_class() : smooth_class(n);
+      continue;
+    }
+    const float vs = p.v_sharp[v];
+    cvs[v] = internal::decrement_sharpness(vs);
+    child_sharp = child_sharp || cvs[v] > 0.0f;
+    if (n == 0) {
+      cls = corner_class();
+      continue;
+    }
+    if (!Mask::creases || (vs <= 0.0f && sharp_count_[v] == 0)) {
+      cls = smooth_class(n);
+      continue;
+    }
+    const unsigned prule = internal::vertex_rule(vs, sharp_count_[v]);
+    if (prule == internal::rule_smooth || prule == internal::rule_dart) {
+      cls = smooth_class(n);
+      continue;
+    }
+    // Walk the ring: sharpness of each edge now and in the child level.
+    ring_u_.clear();
+    ring_s_.clear();
+    ring_cs_.clear();
+    const u32 d0 = p.v_dart[v];
+    u32 d = d0;
+    do {
+      const float s = p.e_sharp[d >> 2];
+      ring_u_.push_back(p.source(d));
+      ring_s_.push_back(s);
+      ring_cs_.push_back(s > 0.0f ? child_sharpness(s, v) : 0.0f);
+      d = p.opposite(p.next(d));
+    } while (d != d0);
+    const std::size_t m = ring_u_.size();
+    u32 sharp_children = 0;
+    for (std::size_t i = 0; i < m; ++i)
+      sharp_children += ring_cs_[i] > 0.0f ? 1u : 0u;
+    const unsigned crule = internal::vertex_rule(cvs[v], sharp_children);
+    if (crule == prule && prule == internal::rule_corner) {
+      cls = corner_class();
+      continue;
+    }
+    // The mask of a rule, its crease ends taken from sharpness `sv`.
+    auto assign = [&](Vertex_weights<W>& x, unsigned rule, const std::vector<float>& sv) {
+      if (rule == internal::rule_corner) {
+        corner_mask(x);
+      } else if (rule == internal::rule_crease) {
+        u32 ends[2] = {null_u32, null_u32};
+        for (std::size_t i = 0, j = 0; i < m && j < 2; ++i)
+          if (sv[i] > 0.0f)
+            ends[j++] = ring_u_[i];
+        crease_mask(x, ends[0], ends[1]);
       } else {
-        // Walk the ring: sharpness of each edge now and in the child level.
-        ring_u_.clear();
-        ring_s_.clear();
-        ring_cs_.clear();
-        const u32 d0 = p.v_dart[v];
-        u32 d = d0;
-        do {
-          const float s = p.e_sharp[d >> 2];
-          ring_u_.push_back(p.source(d));
-          ring_s_.push_back(s);
-          ring_cs_.push_back(s > 0.0f ? child_sharpness(s, v) : 0.0f);
-          d = p.opposite(p.next(d));
-        } while (d != d0);
-        const std::size_t m = ring_u_.size();
-        u32 child_sharp = 0;
-        for (std::size_t i = 0; i < m; ++i)
-          child_sharp += ring_cs_[i] > 0.0f ? 1u : 0u;
-        const float cvs = c.v_sharp[v];
-        const unsigned crule = internal::vertex_rule(cvs, child_sharp);
-        // The mask of a rule, its crease ends taken from sharpness `sv`.
-        auto assign = [&](Vertex_weights<W>& x, unsigned rule, const std::vector<float>& sv) {
-          if (rule == internal::rule_corner) {
-            corner_mask(x);
-          } else if (rule == internal::rule_crease) {
-            u32 ends[2] = {null_u32, null_u32};
-            for (std::size_t i = 0, j = 0; i < m && j < 2; ++i)
-              if (sv[i] > 0.0f)
-                ends[j++] = ring_u_[i];
-            crease_mask(x, ends[0], ends[1]);
-          } else {
-            smooth_mask(x, n);
-          }
-        };
-        assign(w, prule, ring_s_);
-        if (crule != prule) {
-          // OpenSubdiv's fractional weight: the mean sharpness of what
-          // becomes smooth in the child level, clamped to 1 (float).
-          unsigned count = 0;
-          float sum = 0.0f;
-          if (vs > 0.0f && cvs <= 0.0f) {
-            count = 1;
-            sum = vs;
-          }
-          for (std::size_t i = 0; i < m; ++i) {
-            if (ring_s_[i] > 0.0f && ring_cs_[i] <= 0.0f) {
-              sum += ring_s_[i];
-              ++count;
-            }
-          }
-          float frac = count ? sum / float(count) : 0.0f;
-          if (frac > 1.0f)
-            frac = 1.0f;
-          Vertex_weights<W> child;
-          assign(child, crule, ring_cs_);
-          const W pw = W(double(frac)), cw = W(1) - pw;
-          w.vertex = pw * w.vertex + cw * child.vertex;
-          w.edge = pw * w.edge + cw * child.edge;
-          w.face = pw * w.face + cw * child.face;
-          w.edge_point = pw * w.edge_point + cw * child.edge_point;
-          if (child.crease_ends[0] != null_u32) {
-            w.crease = cw * child.crease;
-            w.crease_ends[0] = child.crease_ends[0];
-            w.crease_ends[1] = child.crease_ends[1];
-          } else {
-            w.crease = pw * w.crease;
-          }
+        smooth_mask(x, n);
+      }
+    };
+    Vertex_weights<W> w{};
+    assign(w, prule, ring_s_);
+    if (crule != prule) {
+      // OpenSubdiv's fractional weight: the mean sharpness of what
+      // becomes smooth in the child level, clamped to 1 (float).
+      unsigned count = 0;
+      float sum = 0.0f;
+      if (vs > 0.0f && cvs[v] <= 0.0f) {
+        count = 1;
+        sum = vs;
+      }
+      for (std::size_t i = 0; i < m; ++i) {
+        if (ring_s_[i] > 0.0f && ring_cs_[i] <= 0.0f) {
+          sum += ring_s_[i];
+          ++count;
         }
       }
+      float frac = count ? sum / float(count) : 0.0f;
+      if (frac > 1.0f)
+        frac = 1.0f;
+      Vertex_weights<W> child{};
+      assign(child, crule, ring_cs_);
+      const W pw = W(double(frac)), cw = W(1) - pw;
+      w.vertex = pw * w.vertex + cw * child.vertex;
+      w.edge = pw * w.edge + cw * child.edge;
+      w.face = pw * w.face + cw * child.face;
+      w.edge_point = pw * w.edge_point + cw * child.edge_point;
+      if (child.crease_ends[0] != null_u32) {
+        w.crease = cw * child.crease;
+        w.crease_ends[0] = child.crease_ends[0];
+        w.crease_ends[1] = child.crease_ends[1];
+      } else {
+        w.crease = pw * w.crease;
+      }
     }
-    w.terms = std::uint8_t((CGAL::is_zero(w.edge) ? 0 : 1) | (CGAL::is_zero(w.face) ? 0 : 2) |
-                           (CGAL::is_zero(w.edge_point) ? 0 : 4) | (CGAL::is_zero(w.crease) ? 0 : 8));
+    cls = sw.add(w);
   }
-  for (u32 v = nv; v < c.nv; ++v)
-    c.v_sharp[v] = 0.0f;
+  child_sharp_ = child_sharp;
+  if (child_sharp) {
+    std::fill(cvs + nv, cvs + child_nv, 0.0f);
+  } else {
+    decltype(child_e_sharp_)().swap(child_e_sharp_);
+    decltype(child_v_sharp_)().swap(child_v_sharp_);
+  }
 }
 
 template <class Mask, class W>
@@ -580,8 +788,7 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
     return;
   }
   const Level& p = levels_[k];
-  const auto& ew = edge_weights_[k];
-  const auto& vw = vertex_weights_[k];
+  const internal::Step_weights<W>& sw = weights_[k];
   const u32 nv = p.nv, ne = p.ne, nf = p.nf;
   const u32 fp = nv + ne;
 
@@ -590,16 +797,16 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
       dst[fp + f] = face_point(p, f, src);
   }
   for (u32 v = 0; v < nv; ++v) {
-    const Vertex_weights<W>& w = vw[v];
+    const Vertex_weights<W>& w = sw.vertex(v);
     dst[v] = w.vertex * src[v];
     if (w.terms & 8)
       dst[v] = dst[v] + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
   }
   for (u32 e = 0; e < ne; ++e) {
     const u32 a = p.source(4 * e), b = p.h_target[2 * e];
-    const Value x = edge_point(p, ew[e], e, src, dst + fp);
+    const Value x = edge_point(p, sw.edge(e), e, src, dst + fp);
     dst[nv + e] = x;
-    const Vertex_weights<W>&wa = vw[a], &wb = vw[b];
+    const Vertex_weights<W>&wa = sw.vertex(a), &wb = sw.vertex(b);
     if (wa.terms & 1)
       dst[a] = dst[a] + wa.edge * src[b];
     if (wb.terms & 1)
@@ -613,8 +820,9 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
     for (u32 f = 0; f < nf; ++f) {
       for (u32 i = p.f_offset[f], i1 = p.f_offset[f + 1]; i < i1; ++i) {
         const u32 v = p.h_target[p.corner_h[i]];
-        if (vw[v].terms & 2)
-          dst[v] = dst[v] + vw[v].face * dst[fp + f];
+        const Vertex_weights<W>& w = sw.vertex(v);
+        if (w.terms & 2)
+          dst[v] = dst[v] + w.face * dst[fp + f];
       }
     }
   }
@@ -632,12 +840,11 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
     internal::for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { dst[i] = stencil_point(st, i, src); });
   } else {
     const Level& p = levels_[k];
-    const auto& ew = edge_weights_[k];
-    const auto& vw = vertex_weights_[k];
+    const internal::Step_weights<W>& sw = weights_[k];
     const u32 nv = p.nv, ne = p.ne, nf = p.nf;
     const u32 fp = nv + ne;
-    if (incidence_.size() != edge_weights_.size())
-      incidence_.assign(edge_weights_.size(), internal::Incidence());
+    if (incidence_.size() != weights_.size())
+      incidence_.assign(weights_.size(), internal::Incidence());
     internal::Incidence& inc = incidence_[k];
     if (inc.edge_offset.empty()) {
       inc.edge_offset.assign(nv + 1, 0);
@@ -669,9 +876,9 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
     if constexpr (Mask::split == Split::quad)
       internal::for_each_index<ConcurrencyTag>(nf, [&](u32 f) { dst[fp + f] = face_point(p, f, src); });
     internal::for_each_index<ConcurrencyTag>(
-      ne, [&](u32 e) { dst[nv + e] = edge_point(p, ew[e], e, src, dst + fp); });
+      ne, [&](u32 e) { dst[nv + e] = edge_point(p, sw.edge(e), e, src, dst + fp); });
     internal::for_each_index<ConcurrencyTag>(nv, [&](u32 v) {
-      const Vertex_weights<W>& w = vw[v];
+      const Vertex_weights<W>& w = sw.vertex(v);
       Value x = w.vertex * src[v];
       if (w.terms & 8)
         x = x + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
@@ -693,70 +900,16 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
 
 template <class Mask, class W>
 template <class P>
-void Refiner<Mask, W>::release_mesh(Mobius_mesh<P>& out, bool write_sharpness)
-{
-  using internal::null_u32;
-  Level& L = levels_.back();
-  // What the mesh does not need goes first.
-  decltype(L.h_corner)().swap(L.h_corner);
-  decltype(L.corner_h)().swap(L.corner_h);
-  decltype(L.f_offset)().swap(L.f_offset);
-  out.clear();
-  std::vector<float> edge_sharpness, vertex_sharpness;
-  if (write_sharpness) {
-    edge_sharpness.resize(L.ne);
-    for (u32 e = 0; e < L.ne; ++e)
-      edge_sharpness[e] = (L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32) ? 0.0f : L.e_sharp[e];
-    vertex_sharpness.assign(L.v_sharp.begin(), L.v_sharp.end());
-  }
-  decltype(L.e_sharp)().swap(L.e_sharp);
-  decltype(L.v_sharp)().swap(L.v_sharp);
-  internal::Array<std::uint8_t> holes;
-  holes.swap(L.f_hole);
-  const u32 nv = L.nv, ne = L.ne, nf = L.nf;
-  out.assign_connectivity_releasing(nv, ne, nf, L.h_target, L.h_next, L.h_prev, L.h_face, L.e_mobius, L.v_dart,
-                                    L.f_first);
-  if (write_sharpness) {
-    out.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first.data().swap(edge_sharpness);
-    out.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first.data().swap(
-      vertex_sharpness);
-  }
-  if (!holes.empty()) {
-    auto map = out.template add_property_map<Face_index, std::uint8_t>("f:hole", 0).first;
-    for (u32 f = 0; f < nf; ++f)
-      map[Face_index(f)] = holes[f];
-  }
-  levels_.clear();
-  edge_weights_.clear();
-  vertex_weights_.clear();
-  stencils_.clear();
-  incidence_.clear();
-}
-
-template <class Mask, class W>
-template <class P>
 void Refiner<Mask, W>::build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const
 {
-  using internal::null_u32;
   const Level& L = levels_.back();
   // The level already holds the mesh's arrays, index for index.
   out.clear();
   out.assign_connectivity(L.nv, L.ne, L.nf, L.h_target.data(), L.h_next.data(), L.h_prev.data(), L.h_face.data(),
                           L.e_mobius.data(), L.v_dart.data(), L.f_first.data());
-  if (write_sharpness) {
-    auto es = out.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first;
-    auto vs = out.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first;
-    for (u32 e = 0; e < L.ne; ++e)
-      es[Edge_index(e)] =
-        (L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32) ? 0.0f : L.e_sharp[e];
-    for (u32 v = 0; v < L.nv; ++v)
-      vs[Vertex_index(v)] = L.v_sharp[v];
-  }
-  if (!L.f_hole.empty()) {
-    auto holes = out.template add_property_map<Face_index, std::uint8_t>("f:hole", 0).first;
-    for (u32 f = 0; f < L.nf; ++f)
-      holes[Face_index(f)] = L.f_hole[f];
-  }
+  if (write_sharpness)
+    add_sharpness_maps(out, L.sharp ? L.e_sharp.data() : nullptr, L.sharp ? L.v_sharp.data() : nullptr);
+  add_hole_map(out, L.f_hole);
 }
 
 } // namespace Subdivision

@@ -10,8 +10,11 @@
 #define CGAL_EXT_SUBDIVISION_INTERNAL_LEVEL_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/internal/Uninitialized_array.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/tags.h>
+#include <CGAL/use.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -32,35 +35,9 @@ namespace internal {
 using u32 = std::uint32_t;
 constexpr u32 null_u32 = 0xffffffffu;
 
-// Leaves new elements of trivial types uninitialised: every array of a child
-// level is written in full by the split, so zero-filling it first would
-// touch the memory twice.
+// Every array of a child level is written in full by the split: not zeroed first.
 template <class T>
-struct Default_init_allocator : std::allocator<T>
-{
-  template <class U>
-  struct rebind
-  {
-    using other = Default_init_allocator<U>;
-  };
-  Default_init_allocator() = default;
-  template <class U>
-  Default_init_allocator(const Default_init_allocator<U>&) noexcept
-  {}
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
-  {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
-template <class T>
-using Array = std::vector<T, Default_init_allocator<T>>;
+using Array = CGAL_ext::internal::Uninitialized_array<T>;
 
 // Calls body(i) for i in [0, n): in parallel with TBB for `CGAL::Parallel_tag`.
 template <class ConcurrencyTag, class Body>
@@ -85,25 +62,36 @@ void for_each_index(u32 n, const Body& body)
 
 // Arrays mirror Mobius_mesh: halfedges 2e and 2e+1 of edge e, `next`/`prev`
 // hold dart bits (halfedge << 1 | flipped), face cycles are unflipped.
-// Corners are the face halfedges numbered face by face: the corners of face f
-// are [f_offset[f], f_offset[f+1]) in cycle order from f_first[f].
 struct Level
 {
   u32 nv = 0, ne = 0, nf = 0, nc = 0;
-  Array<u32> h_target, h_next, h_prev, h_face, h_corner;
+  Array<u32> h_target, h_next, h_prev, h_face;
   Array<std::uint8_t> e_mobius;
-  Array<float> e_sharp;
-  Array<u32> v_dart;
-  Array<float> v_sharp;
-  Array<u32> f_first, f_offset, corner_h;
+  Array<u32> v_dart, f_first;
+  // Corners are the face halfedges numbered face by face: the corners of face
+  // f are [f_offset[f], f_offset[f+1]) in cycle order from f_first[f].
+  // Empty in a level that is neither split nor interpolated from (the last
+  // level of a one-pass refinement), as nothing but the mesh is made of it.
+  Array<u32> f_offset, corner_h;
+  // The corner of each face halfedge (null on the border): read only by the
+  // dual and √3 splits, filled only by fill_level(), which builds their levels.
+  Array<u32> h_corner;
+  // Sharpness: empty when `sharp` is false, meaning every edge and vertex is
+  // smooth (and there is no border, whose edges are infinitely sharp).
+  bool sharp = false;
+  Array<float> e_sharp, v_sharp;
   Array<std::uint8_t> f_hole; // empty if no face is a hole
 
-  void resize(u32 v, u32 e, u32 f, u32 c)
+  // What resize() allocates besides the connectivity.
+  enum Parts : unsigned { corner_table = 1, sharpness = 2, halfedge_corners = 4 };
+
+  void resize(u32 v, u32 e, u32 f, u32 c, unsigned parts)
   {
     nv = v;
     ne = e;
     nf = f;
     nc = c;
+    sharp = (parts & sharpness) != 0;
     // Old contents are not kept: cleared first, a growing array is not copied.
     for (auto* a : {&h_target, &h_next, &h_prev, &h_face, &h_corner, &v_dart, &f_first, &f_offset, &corner_h})
       a->clear();
@@ -114,14 +102,27 @@ struct Level
     h_next.resize(2 * std::size_t(e));
     h_prev.resize(2 * std::size_t(e));
     h_face.resize(2 * std::size_t(e));
-    h_corner.resize(2 * std::size_t(e));
     e_mobius.resize(e);
-    e_sharp.resize(e);
     v_dart.resize(v);
-    v_sharp.resize(v);
     f_first.resize(f);
-    f_offset.resize(std::size_t(f) + 1);
-    corner_h.resize(c);
+    if (parts & corner_table) {
+      f_offset.resize(std::size_t(f) + 1);
+      corner_h.resize(c);
+    }
+    if (parts & halfedge_corners)
+      h_corner.resize(2 * std::size_t(e));
+    if (sharp) {
+      e_sharp.resize(e);
+      v_sharp.resize(v);
+    }
+  }
+
+  // Forgets the sharpness (all of it is zero).
+  void drop_sharpness()
+  {
+    sharp = false;
+    decltype(e_sharp)().swap(e_sharp);
+    decltype(v_sharp)().swap(v_sharp);
   }
 
   // Dart navigation, as in Mobius_mesh.
@@ -138,18 +139,6 @@ struct Level
   u32 prev(u32 d) const { return (d & 1u) ? (h_next[d >> 1] ^ 1u) : h_prev[d >> 1]; }
   u32 opposite(u32 d) const { return (d ^ 2u) ^ u32(e_mobius[d >> 2]); }
   u32 degree(u32 f) const { return f_offset[f + 1] - f_offset[f]; }
-
-  void set_next(u32 a, u32 b)
-  {
-    if (a & 1u)
-      h_prev[a >> 1] = b ^ 1u;
-    else
-      h_next[a >> 1] = b;
-    if (b & 1u)
-      h_next[b >> 1] = a ^ 1u;
-    else
-      h_prev[b >> 1] = a;
-  }
 
   // Child halfedges of parent halfedge h: the half at h's source and the half
   // at its target. Child edge 2e lies at source(2e), 2e+1 at target(2e).
@@ -174,6 +163,55 @@ struct Level
   }
 };
 
+// Links dart `a` to dart `b` in a level or a Mesh_writer, as Mobius_mesh::set_next().
+template <class Child>
+void link(Child& c, u32 a, u32 b)
+{
+  if (a & 1u)
+    c.h_prev[a >> 1] = b ^ 1u;
+  else
+    c.h_next[a >> 1] = b;
+  if (b & 1u)
+    c.h_next[b >> 1] = a ^ 1u;
+  else
+    c.h_prev[b >> 1] = a;
+}
+
+// Stands for the last level of a refinement in the splits, which then write
+// its connectivity straight into the arrays of `mesh`: that level is not
+// made twice. It has no corner table.
+template <class Mesh>
+struct Mesh_writer
+{
+  explicit Mesh_writer(Mesh& m) : mesh(m) {}
+
+  Mesh& mesh;
+  u32 nv = 0, ne = 0, nf = 0, nc = 0;
+  u32 *h_target = nullptr, *h_next = nullptr, *h_prev = nullptr, *h_face = nullptr;
+  std::uint8_t* e_mobius = nullptr;
+  u32 *v_dart = nullptr, *f_first = nullptr;
+  u32 *f_offset = nullptr, *corner_h = nullptr;
+  Array<std::uint8_t> f_hole;
+
+  void resize(u32 v, u32 e, u32 f, u32 c, unsigned parts)
+  {
+    CGAL_precondition(parts == 0); // no corner table
+    CGAL_USE(parts);
+    nv = v;
+    ne = e;
+    nf = f;
+    nc = c;
+    const auto a = mesh.overwrite_connectivity(v, e, f);
+    h_target = a.target;
+    h_next = a.next_bits;
+    h_prev = a.prev_bits;
+    h_face = a.face;
+    e_mobius = a.mobius;
+    v_dart = a.vertex_dart_bits;
+    f_first = a.face_halfedge;
+  }
+};
+
 // The connectivity of `m` as a level (sharpness 0, no holes). Corners are
 // numbered face by face from each face's first halfedge.
 template <class P>
@@ -183,7 +221,7 @@ void fill_level(const Mobius_mesh<P>& m, Level& L)
   u32 nc = 0;
   for (u32 h = 0; h < 2 * ne; ++h)
     nc += m.is_border(Halfedge_index(h)) ? 0 : 1;
-  L.resize(nv, ne, nf, nc);
+  L.resize(nv, ne, nf, nc, Level::corner_table | Level::sharpness | Level::halfedge_corners);
   for (u32 h = 0; h < 2 * ne; ++h) {
     const Dart d(Halfedge_index(h), false);
     L.h_target[h] = m.target(d).idx();
@@ -220,7 +258,8 @@ void fill_level(const Mobius_mesh<P>& m, Level& L)
 
 // What both splits share: parent edges split in two, parent vertices keep
 // their index, border loops and Möbius bits are inherited.
-inline void split_edges_and_border(const Level& p, Level& c, u32 edge_point_offset)
+template <class Child>
+void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
 {
   const u32 nh = 2 * p.ne;
   for (u32 h = 0; h < nh; ++h) {
@@ -230,10 +269,9 @@ inline void split_edges_and_border(const Level& p, Level& c, u32 edge_point_offs
     if (p.h_face[h] != null_u32)
       continue;
     c.h_face[h0] = c.h_face[h1] = null_u32;
-    c.h_corner[h0] = c.h_corner[h1] = null_u32;
-    c.set_next(h0 << 1, h1 << 1);
-    c.set_next(h1 << 1, p.child_dart_from_source(p.h_next[h]));
-    c.set_next(p.child_dart_to_target(p.h_prev[h]), h0 << 1);
+    link(c, h0 << 1, h1 << 1);
+    link(c, h1 << 1, p.child_dart_from_source(p.h_next[h]));
+    link(c, p.child_dart_to_target(p.h_prev[h]), h0 << 1);
   }
   for (u32 e = 0; e < p.ne; ++e) {
     c.e_mobius[2 * e] = c.e_mobius[2 * e + 1] = p.e_mobius[e];
@@ -244,43 +282,60 @@ inline void split_edges_and_border(const Level& p, Level& c, u32 edge_point_offs
     c.v_dart[v] = p.v_dart[v] == null_u32 ? null_u32 : p.child_dart_to_target(p.v_dart[v]);
 }
 
+// Calls body(std::true_type()) or body(std::false_type()), so that a flag
+// tested in an inner loop is a constant there.
+template <class Body>
+void with_flag(bool flag, const Body& body)
+{
+  if (flag)
+    body(std::true_type());
+  else
+    body(std::false_type());
+}
+
 // Catmull–Clark / bilinear split: child vertices [vertex points | edge points
 // | face points]; child edges [2e, 2e+1 halves of parent edge e | one inner
 // edge per parent corner c at 2ne + c]; child face c is the quad at corner c.
 // Faces write disjoint parts of the child, so they may be split in parallel.
-template <class ConcurrencyTag = CGAL::Sequential_tag>
-void quad_split(const Level& p, Level& c)
+// The child (a Level or a Mesh_writer) gets a corner table if
+// `corner_table`; its sharpness is left to the caller.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Child>
+void quad_split(const Level& p, Child& c, bool corner_table)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
-  c.resize(nv + ne + nf, 2 * ne + nc, nc, 4 * nc);
+  c.resize(nv + ne + nf, 2 * ne + nc, nc, 4 * nc, corner_table ? Level::corner_table : 0u);
   split_edges_and_border(p, c, nv);
   const u32 fp = nv + ne;
-  for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
-    const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
-    c.v_dart[fp + f] = (2 * (2 * ne + k0)) << 1;
-    for (u32 k = k0; k < k1; ++k) {
-      const u32 h = p.corner_h[k];
-      const u32 hn = p.h_next[h] >> 1;
-      const u32 kn = (k + 1 == k1) ? k0 : k + 1;
-      const u32 ie = 2 * ne + k;
-      c.h_target[2 * ie] = fp + f;
-      c.h_target[2 * ie + 1] = nv + (h >> 1);
-      c.e_mobius[ie] = 0;
-      // Quad at the corner where h ends: vertex point, edge point of hn,
-      // face point, edge point of h.
-      const u32 q[4] = {p.first_child(hn), 2 * (2 * ne + kn), 2 * ie + 1, p.second_child(h)};
-      for (int i = 0; i < 4; ++i) {
-        c.h_next[q[i]] = q[(i + 1) & 3] << 1;
-        c.h_prev[q[i]] = q[(i + 3) & 3] << 1;
-        c.h_face[q[i]] = k;
-        c.h_corner[q[i]] = 4 * k + u32(i);
-        c.corner_h[4 * k + u32(i)] = q[i];
+  with_flag(corner_table, [&](auto with_corners) {
+    for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
+      const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
+      c.v_dart[fp + f] = (2 * (2 * ne + k0)) << 1;
+      for (u32 k = k0; k < k1; ++k) {
+        const u32 h = p.corner_h[k];
+        const u32 hn = p.h_next[h] >> 1;
+        const u32 kn = (k + 1 == k1) ? k0 : k + 1;
+        const u32 ie = 2 * ne + k;
+        c.h_target[2 * ie] = fp + f;
+        c.h_target[2 * ie + 1] = nv + (h >> 1);
+        c.e_mobius[ie] = 0;
+        // Quad at the corner where h ends: vertex point, edge point of hn,
+        // face point, edge point of h.
+        const u32 q[4] = {p.first_child(hn), 2 * (2 * ne + kn), 2 * ie + 1, p.second_child(h)};
+        for (int i = 0; i < 4; ++i) {
+          c.h_next[q[i]] = q[(i + 1) & 3] << 1;
+          c.h_prev[q[i]] = q[(i + 3) & 3] << 1;
+          c.h_face[q[i]] = k;
+          if constexpr (decltype(with_corners)::value)
+            c.corner_h[4 * k + u32(i)] = q[i];
+        }
+        c.f_first[k] = q[0];
+        if constexpr (decltype(with_corners)::value)
+          c.f_offset[k] = 4 * k;
       }
-      c.f_first[k] = q[0];
-      c.f_offset[k] = 4 * k;
-    }
+    });
   });
-  c.f_offset[nc] = 4 * nc;
+  if (corner_table)
+    c.f_offset[nc] = 4 * nc;
   if (!p.f_hole.empty()) {
     c.f_hole.resize(nc);
     for (u32 f = 0; f < nf; ++f)
@@ -294,44 +349,51 @@ void quad_split(const Level& p, Level& c)
 // Loop / linear triangle split (triangles only): child vertices [vertex
 // points | edge points]; child edges [halves | inner edge 2ne + c opposite
 // corner c]; child faces [corner triangle c | centre triangle nc + f].
-template <class ConcurrencyTag = CGAL::Sequential_tag>
-void triangle_split(const Level& p, Level& c)
+// Child, corner table and sharpness as quad_split().
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Child>
+void triangle_split(const Level& p, Child& c, bool corner_table)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
-  c.resize(nv + ne, 2 * ne + nc, nc + nf, 3 * (nc + nf));
+  c.resize(nv + ne, 2 * ne + nc, nc + nf, 3 * (nc + nf), corner_table ? Level::corner_table : 0u);
   split_edges_and_border(p, c, nv);
-  for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
-    const u32 k0 = p.f_offset[f];
-    const u32 centre = nc + f;
-    for (u32 i = 0; i < 3; ++i) {
-      const u32 k = k0 + i, kn = k0 + (i + 1) % 3;
-      const u32 h = p.corner_h[k], hn = p.corner_h[kn];
-      const u32 ie = 2 * ne + k;
-      c.h_target[2 * ie] = nv + (h >> 1);
-      c.h_target[2 * ie + 1] = nv + (hn >> 1);
-      c.e_mobius[ie] = 0;
-      const u32 q[3] = {p.first_child(hn), 2 * ie, p.second_child(h)};
-      for (u32 j = 0; j < 3; ++j) {
-        c.h_next[q[j]] = q[(j + 1) % 3] << 1;
-        c.h_prev[q[j]] = q[(j + 2) % 3] << 1;
-        c.h_face[q[j]] = k;
-        c.h_corner[q[j]] = 3 * k + j;
-        c.corner_h[3 * k + j] = q[j];
+  with_flag(corner_table, [&](auto with_corners) {
+    constexpr bool corners = decltype(with_corners)::value;
+    for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
+      const u32 k0 = p.f_offset[f];
+      const u32 centre = nc + f;
+      for (u32 i = 0; i < 3; ++i) {
+        const u32 k = k0 + i, kn = k0 + (i + 1) % 3;
+        const u32 h = p.corner_h[k], hn = p.corner_h[kn];
+        const u32 ie = 2 * ne + k;
+        c.h_target[2 * ie] = nv + (h >> 1);
+        c.h_target[2 * ie + 1] = nv + (hn >> 1);
+        c.e_mobius[ie] = 0;
+        const u32 q[3] = {p.first_child(hn), 2 * ie, p.second_child(h)};
+        for (u32 j = 0; j < 3; ++j) {
+          c.h_next[q[j]] = q[(j + 1) % 3] << 1;
+          c.h_prev[q[j]] = q[(j + 2) % 3] << 1;
+          c.h_face[q[j]] = k;
+          if constexpr (corners)
+            c.corner_h[3 * k + j] = q[j];
+        }
+        c.f_first[k] = q[0];
+        if constexpr (corners)
+          c.f_offset[k] = 3 * k;
+        // Centre triangle: inner halfedges from edge point of h to that of hn.
+        const u32 in = 2 * ie + 1, in_next = 2 * (2 * ne + kn) + 1, in_prev = 2 * (2 * ne + k0 + (i + 2) % 3) + 1;
+        c.h_next[in] = in_next << 1;
+        c.h_prev[in] = in_prev << 1;
+        c.h_face[in] = centre;
+        if constexpr (corners)
+          c.corner_h[3 * centre + i] = in;
       }
-      c.f_first[k] = q[0];
-      c.f_offset[k] = 3 * k;
-      // Centre triangle: inner halfedges from edge point of h to that of hn.
-      const u32 in = 2 * ie + 1, in_next = 2 * (2 * ne + kn) + 1, in_prev = 2 * (2 * ne + k0 + (i + 2) % 3) + 1;
-      c.h_next[in] = in_next << 1;
-      c.h_prev[in] = in_prev << 1;
-      c.h_face[in] = centre;
-      c.h_corner[in] = 3 * centre + i;
-      c.corner_h[3 * centre + i] = in;
-    }
-    c.f_first[centre] = 2 * (2 * ne + k0) + 1;
-    c.f_offset[centre] = 3 * centre;
+      c.f_first[centre] = 2 * (2 * ne + k0) + 1;
+      if constexpr (corners)
+        c.f_offset[centre] = 3 * centre;
+    });
   });
-  c.f_offset[nc + nf] = 3 * (nc + nf);
+  if (corner_table)
+    c.f_offset[nc + nf] = 3 * (nc + nf);
   if (!p.f_hole.empty()) {
     c.f_hole.resize(nc + nf);
     for (u32 f = 0; f < nf; ++f) {
