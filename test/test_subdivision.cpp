@@ -903,6 +903,7 @@ void check_one_pass(const std::string& file, unsigned n, const Boundary_interpol
   S::Refinement_options options;
   options.boundary_interpolation = boundary ? *boundary : s.boundary;
   options.crease_method = s.crease_method;
+  options.parallel_min_vertices = 0; // the parallel pass on every level, however small
   S::Refiner<Mask> r(Mask(), options);
   const std::vector<std::vector<V3>> levels = our_levels(r, b, n);
   Mesh expected;

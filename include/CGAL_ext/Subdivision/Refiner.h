@@ -34,6 +34,10 @@ struct Refinement_options
 {
   Boundary_interpolation boundary_interpolation = Boundary_interpolation::edge_only;
   Crease_method crease_method = Crease_method::uniform;
+  /// With `CGAL::Parallel_tag`, levels of fewer vertices are interpolated
+  /// serially (with the same result): on small levels the incidence tables
+  /// of the parallel pass cost more than the threads save.
+  std::uint32_t parallel_min_vertices = 1u << 17;
 };
 
 namespace internal {
@@ -834,6 +838,8 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
 {
   using internal::null_u32;
   if constexpr (!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>) {
+    interpolate_level(k, src, dst);
+  } else if (!uses_stencils && levels_[k].nv < options_.parallel_min_vertices) {
     interpolate_level(k, src, dst);
   } else if constexpr (uses_stencils) {
     const internal::Stencils<W>& st = stencils_[k];
