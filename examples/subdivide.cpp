@@ -100,6 +100,15 @@ Settings parse(int argc, char** argv)
   return s;
 }
 
+template <class Mesh>
+bool is_triangle_mesh(const Mesh& mesh)
+{
+  for (auto f : mesh.faces())
+    if (mesh.degree(f) != 3)
+      return false;
+  return true;
+}
+
 template <class K>
 void run(const Settings& s)
 {
@@ -118,8 +127,10 @@ void run(const Settings& s)
   const auto start = std::chrono::steady_clock::now();
   if (s.scheme == "loop")
     S::loop(mesh, np);
+  else if (s.scheme == "linear" && is_triangle_mesh(mesh))
+    S::linear(mesh, np); // midpoints, each triangle into four
   else if (s.scheme == "linear")
-    S::bilinear(mesh, np);
+    S::bilinear(mesh, np); // midpoints and centroids, each n-gon into n quads
   else if (s.scheme == "doo-sabin")
     S::doo_sabin(mesh, np);
   else if (s.scheme == "sqrt3")

@@ -3,7 +3,8 @@
 # Möbius strip of 160 triangles, Loop, 2 steps: 2560 faces; Doo-Sabin of
 # the cube: a vertex per corner, a face per face, edge and vertex, 24/48/26;
 # sqrt3 of the 160-triangle strip, 1 step: 3 triangles per face, border
-# edges kept), and bad options or input exit with status 2.
+# edges kept; linear: each triangle into four, each quad into four: 26/48/24
+# on the cube), and bad options or input exit with status 2.
 if(CGAL_EXT_BUILD_TESTS)
   set(_data ${PROJECT_SOURCE_DIR}/test/data)
   add_test(NAME example.subdivide.cube
@@ -24,6 +25,15 @@ if(CGAL_EXT_BUILD_TESTS)
            COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius_s3.obj
                    --scheme sqrt3)
   set_tests_properties(example.subdivide.mobius_sqrt3 PROPERTIES PASS_REGULAR_EXPRESSION "\"faces\":480,")
+  add_test(NAME example.subdivide.mobius_linear
+           COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius_lin.obj
+                   --scheme linear)
+  set_tests_properties(example.subdivide.mobius_linear PROPERTIES PASS_REGULAR_EXPRESSION "\"faces\":640,")
+  add_test(NAME example.subdivide.cube_linear
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube_lin.obj
+                   --scheme linear --kernel epeck)
+  set_tests_properties(example.subdivide.cube_linear PROPERTIES
+    PASS_REGULAR_EXPRESSION "\"vertices\":26,\"edges\":48,\"faces\":24,\"seconds\":")
   add_test(NAME example.subdivide.sqrt3_on_quads
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme sqrt3)
   add_test(NAME example.subdivide.bad_option

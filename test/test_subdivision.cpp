@@ -567,10 +567,19 @@ TEST(SubdivisionMobius, TopologyIsKept)
     std::size_t corners = 0;
     for (CGAL_ext::Face_index f : m.faces())
       corners += m.degree(f);
-    if (c.loop)
+    Mesh linear = m; // the midpoint split keeps the same counts as Loop's or Catmull-Clark's
+    if (c.loop) {
       S::loop(m, CGAL_ext::parameters::number_of_iterations(2));
-    else
+      S::linear(linear, CGAL_ext::parameters::number_of_iterations(2));
+    } else {
       S::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(2));
+      S::bilinear(linear, CGAL_ext::parameters::number_of_iterations(2));
+    }
+    ASSERT_TRUE(linear.is_valid(true));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(linear), c.chi);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(linear), c.borders);
+    EXPECT_FALSE(CGAL_ext::is_orientable(linear));
+    EXPECT_EQ(linear.number_of_faces(), m.number_of_faces());
     ASSERT_TRUE(m.is_valid(true));
     EXPECT_EQ(CGAL_ext::euler_characteristic(m), c.chi);
     EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), c.borders);
@@ -960,6 +969,7 @@ TEST(SubdivisionApi, OnePassEqualsLevelByLevel)
   check_one_pass<S::Loop_mask>("opensubdiv/loop_triangle_edgeonly.obj", 2, &none);
   check_one_pass<S::Loop_mask>("nonorientable/mobius_20x4_tris.obj", 3, &none);
   check_one_pass<S::Bilinear_mask>("opensubdiv/catmark_cube_creases1.obj", 2);
+  check_one_pass<S::Linear_mask>("nonorientable/mobius_20x4_tris.obj", 2);
   check_one_pass<S::Catmull_clark_mask>("opensubdiv/catmark_cube_creases1.obj", 0);
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
   check_one_pass<S::Catmull_clark_mask, CGAL::Parallel_tag>("opensubdiv/catmark_chaikin1.obj", 3);

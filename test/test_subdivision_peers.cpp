@@ -114,7 +114,9 @@ Soup icosahedron()
            {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}}};
 }
 
-enum class Scheme { catmull_clark, loop, doo_sabin, sqrt3 };
+enum class Scheme { catmull_clark, loop, doo_sabin, sqrt3, linear, bilinear };
+// (Its one-argument constructor does not compile in CGAL 5.5.)
+using Cgal_linear_mask = CGAL::Linear_mask_3<CGAL::Surface_mesh<Point>>;
 
 // Ours and CGAL's, n levels; the results as point sets and face counts.
 void compare_with_cgal(const Soup& soup, Scheme scheme, unsigned levels)
@@ -143,6 +145,14 @@ void compare_with_cgal(const Soup& soup, Scheme scheme, unsigned levels)
   case Scheme::sqrt3:
     S::sqrt3(ours, np);
     SM3::Sqrt3_subdivision(theirs, cgal_np);
+    break;
+  case Scheme::linear: // CGAL's linear mask in its triangle and quad hosts
+    S::linear(ours, np);
+    SM3::PTQ(theirs, Cgal_linear_mask(&theirs, get(CGAL::vertex_point, theirs)), int(levels));
+    break;
+  case Scheme::bilinear:
+    S::bilinear(ours, np);
+    SM3::PQQ(theirs, Cgal_linear_mask(&theirs, get(CGAL::vertex_point, theirs)), int(levels));
     break;
   }
   ASSERT_TRUE(ours.is_valid(true));
@@ -191,6 +201,16 @@ TEST(SubdivisionCgal, Sqrt3)
   for (const Soup& s : {octahedron(), icosahedron(), torus(8, 6, true)})
     for (unsigned n = 1; n <= 4; ++n)
       compare_with_cgal(s, Scheme::sqrt3, n);
+}
+
+TEST(SubdivisionCgal, LinearAndBilinear)
+{
+  for (const Soup& s : {octahedron(), icosahedron(), torus(8, 6, true)})
+    for (unsigned n = 1; n <= 3; ++n)
+      compare_with_cgal(s, Scheme::linear, n);
+  for (const Soup& s : {cube(), octahedron(), torus(8, 6, false), torus_mixed()})
+    for (unsigned n = 1; n <= 3; ++n)
+      compare_with_cgal(s, Scheme::bilinear, n);
 }
 
 // ----------------------------------------------------------------- exact, by hand
@@ -256,6 +276,35 @@ TEST(SubdivisionExact, Sqrt3TetrahedronByHand)
   S::sqrt3(e);
   EXPECT_EQ(e.point(CGAL_ext::Vertex_index(0)), test::Epeck::Point_3(test::Epeck::FT(7) / 27, test::Epeck::FT(7) / 27,
                                                                    test::Epeck::FT(7) / 27));
+}
+
+TEST(SubdivisionExact, LinearTetrahedronTwoLevelsByHand)
+{
+  // Midpoint subdivision, twice: every vertex of the result is (a + b) / 2
+  // of the ends of the parent edge it was made on, old vertices stay.
+  Soup tet{"tetrahedron", {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}, {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}};
+  auto m = exact_mesh<Kq>(tet);
+  for (int step = 0; step < 2; ++step) {
+    const auto parent = m;
+    S::linear(m);
+    ASSERT_EQ(m.number_of_vertices(), parent.number_of_vertices() + parent.number_of_edges());
+    ASSERT_EQ(m.number_of_faces(), 4 * parent.number_of_faces());
+    for (auto v : parent.vertices())
+      EXPECT_EQ(m.point(v), parent.point(v));
+    for (auto e : parent.edges()) {
+      const CGAL_ext::Dart d = parent.halfedge(e);
+      const Kq::Point_3 a = parent.point(parent.source(d)), b = parent.point(parent.target(d));
+      const Kq::Point_3 mid((a.x() + b.x()) / 2, (a.y() + b.y()) / 2, (a.z() + b.z()) / 2);
+      EXPECT_EQ(m.point(CGAL_ext::Vertex_index(parent.number_of_vertices() + e.idx())), mid);
+    }
+  }
+  // Two of them by hand: the midpoint of (1,1,1) and (1,-1,-1) is (1,0,0),
+  // and a second-level point lies a quarter of the way along an edge.
+  EXPECT_EQ(m.number_of_vertices(), 34u); // 4 + 6, then 10 + 24
+  std::size_t found = 0;
+  for (auto v : m.vertices())
+    found += (m.point(v) == Kq::Point_3(1, 0, 0) || m.point(v) == Kq::Point_3(1, Q(1, 2), Q(1, 2))) ? 1 : 0;
+  EXPECT_EQ(found, 2u);
 }
 
 // ----------------------------------------------------------------- memory

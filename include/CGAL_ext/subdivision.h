@@ -132,8 +132,8 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
 /// \ingroup PkgSubdivision
 ///
 /// Subdivides `mesh` with a `SubdivisionMask`: the general form of
-/// `catmull_clark()`, `loop()` and `bilinear()`, which document the named
-/// parameters. Property maps other than the points and sharpness are not
+/// `catmull_clark()`, `loop()`, `bilinear()` and `linear()`, which document
+/// the named parameters. Property maps other than the points and sharpness are not
 /// carried over; use `Refiner` to interpolate other vertex data.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class Mask, class P,
           class NamedParameters = parameters::Default_named_parameters>
@@ -248,6 +248,22 @@ template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
 void bilinear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
   internal::subdivide<ConcurrencyTag>(mesh, Bilinear_mask(), np);
+}
+
+/// \ingroup PkgSubdivision
+///
+/// Linear (midpoint) subdivision of a triangle mesh: the Loop split, each
+/// triangle into four, with new points at edge midpoints and old points kept
+/// (CGAL's `PTQ` with `Linear_mask_3`). Child vertices are laid out as
+/// `[vertex points | edge points]`. Named parameters `number_of_iterations`
+/// and `vertex_point_map`. For other polygons, `bilinear()`.
+///
+/// \throws Parameter_error if a face is not a triangle; `mesh` is then unchanged.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NamedParameters = parameters::Default_named_parameters>
+void linear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
+{
+  internal::subdivide<ConcurrencyTag>(mesh, Linear_mask(), np);
 }
 
 /// \ingroup PkgSubdivision

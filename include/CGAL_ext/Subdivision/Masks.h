@@ -104,7 +104,7 @@ struct SubdivisionMask {
 };
 \endcode
 
-\cgalHasModel `Catmull_clark_mask`, `Loop_mask`, `Bilinear_mask`, `Sqrt3_mask`
+\cgalHasModel `Catmull_clark_mask`, `Loop_mask`, `Bilinear_mask`, `Linear_mask`, `Sqrt3_mask`
 
 A `Sqrt3_mask` (`split == Split::sqrt3`) uses only `smooth_vertex()`, with
 `vertex` and `edge` weights; its face points are centroids and its border
@@ -212,6 +212,27 @@ struct Bilinear_mask
   void smooth_vertex(unsigned, Vertex_weights<W>& w) const
   {
     w.vertex = W(1);
+  }
+};
+
+/// \ingroup PkgSubdivision
+/// Linear (midpoint) subdivision of triangle meshes: each triangle into four,
+/// new points at edge midpoints, old points kept (CGAL's `Linear_mask_3`
+/// with `PTQ`). As with `Bilinear_mask`, sharpness and borders change nothing.
+struct Linear_mask
+{
+  static constexpr Split split = Split::triangle;
+  static constexpr bool creases = false;
+
+  template <class W>
+  void smooth_edge(unsigned d0, unsigned d1, Edge_weights<W>& w) const
+  {
+    Bilinear_mask().smooth_edge(d0, d1, w);
+  }
+  template <class W>
+  void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
+  {
+    Bilinear_mask().smooth_vertex(n, w);
   }
 };
 
