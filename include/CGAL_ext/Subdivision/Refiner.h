@@ -311,7 +311,6 @@ public:
   template <class P>
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
-
 private:
   // Refines levels_[slot] into levels_[slot + 1] with the weights or
   // stencils of slot `slot`; `k` is the step's number (√3 alternates).
