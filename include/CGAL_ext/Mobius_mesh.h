@@ -692,7 +692,6 @@ private:
     }
   }
 
-  // Every property array back to its default values, at the given sizes.
   // Replaces `array` by `n` 32-bit handle values (array elements are not
   // zeroed on resize: one pass).
   template <class T>
@@ -705,6 +704,7 @@ private:
       std::memcpy(static_cast<void*>(array.data()), source, 4 * n);
   }
 
+  // Every property array back to its default values, at the given sizes.
   void reset_properties(size_type nv, std::size_t nh, size_type ne, size_type nf)
   {
     for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
@@ -716,7 +716,7 @@ private:
   }
 
   // Connectivity, one array per attribute.
-  // (Not zeroed when resized: see resize() and assign_connectivity().)
+  // (Not zeroed when resized without a value: see overwrite_connectivity().)
   internal::Uninitialized_array<Dart> v_halfedge_;
   internal::Uninitialized_array<Vertex_index> h_target_;
   internal::Uninitialized_array<Dart> h_next_;

@@ -114,9 +114,9 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
   Mobius_mesh<P> out;
   {
     Refiner<Mask, typename Traits::Weight> refiner(mask, options);
+    const bool write_sharpness = has_sharpness && Mask::creases;
     // Exact kernels stay serial: their lazy numbers share construction
     // history between threads.
-    const bool write_sharpness = has_sharpness && Mask::creases;
     if constexpr (std::is_same_v<Value, Vec3>)
       refiner.template refine_and_interpolate<ConcurrencyTag>(mesh, levels, values, out, es, vs, write_sharpness);
     else
