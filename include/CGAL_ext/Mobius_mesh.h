@@ -545,7 +545,7 @@ public:
     assign_bits(h_next_, next_bits, nh);
     assign_bits(h_prev_, prev_bits, nh);
     assign_bits(h_face_, face, nh);
-    e_mobius_.assign(mobius, mobius + ne);
+    assign_bits(e_mobius_, mobius, ne);
     assign_bits(v_halfedge_, vertex_dart_bits, nv);
     assign_bits(f_halfedge_, face_halfedge, nf);
     reset_properties(nv, nh, ne, nf);
@@ -567,21 +567,14 @@ public:
   Connectivity_arrays overwrite_connectivity(size_type nv, size_type ne, size_type nf)
   {
     const std::size_t nh = 2 * std::size_t(ne);
-    auto uninitialized = [](auto& array, std::size_t n) {
-      array.clear(); // nothing to copy if it grows
-      array.resize(n);
-      return reinterpret_cast<std::uint32_t*>(array.data());
-    };
     Connectivity_arrays a;
-    a.target = uninitialized(h_target_, nh);
-    a.next_bits = uninitialized(h_next_, nh);
-    a.prev_bits = uninitialized(h_prev_, nh);
-    a.face = uninitialized(h_face_, nh);
-    a.vertex_dart_bits = uninitialized(v_halfedge_, nv);
-    a.face_halfedge = uninitialized(f_halfedge_, nf);
-    e_mobius_.clear();
-    e_mobius_.resize(ne);
-    a.mobius = e_mobius_.data();
+    a.target = resize_for_overwrite(h_target_, nh);
+    a.next_bits = resize_for_overwrite(h_next_, nh);
+    a.prev_bits = resize_for_overwrite(h_prev_, nh);
+    a.face = resize_for_overwrite(h_face_, nh);
+    a.vertex_dart_bits = resize_for_overwrite(v_halfedge_, nv);
+    a.face_halfedge = resize_for_overwrite(f_halfedge_, nf);
+    a.mobius = resize_for_overwrite(e_mobius_, ne);
     reset_properties(0, 0, 0, 0);
     return a;
   }
@@ -692,16 +685,26 @@ private:
     }
   }
 
-  // Replaces `array` by `n` 32-bit handle values (array elements are not
-  // zeroed on resize: one pass).
+  // Resizes `array` to `n` elements left unwritten (nothing is copied if it
+  // grows) and returns where to write their values: 32-bit handle values, or
+  // bytes for the Möbius flags.
+  template <class T>
+  static auto resize_for_overwrite(internal::Uninitialized_array<T>& array, std::size_t n)
+  {
+    static_assert(std::is_trivially_copyable_v<T> && (sizeof(T) == 4 || sizeof(T) == 1),
+                  "handles are plain 32-bit values");
+    array.clear();
+    array.resize(n);
+    using Raw = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint8_t>;
+    return reinterpret_cast<Raw*>(array.data());
+  }
+  // Replaces `array` by `n` values copied from `source`, in one pass.
   template <class T>
   static void assign_bits(internal::Uninitialized_array<T>& array, const void* source, std::size_t n)
   {
-    static_assert(sizeof(T) == 4 && std::is_trivially_copyable_v<T>, "handles are plain 32-bit values");
-    array.clear(); // nothing to copy if it grows
-    array.resize(n);
+    auto* target = resize_for_overwrite(array, n);
     if (n)
-      std::memcpy(static_cast<void*>(array.data()), source, 4 * n);
+      std::memcpy(target, source, sizeof(T) * n);
   }
 
   // Every property array back to its default values, at the given sizes.

@@ -344,15 +344,22 @@ private:
   void split(unsigned slot, bool corner_table)
   {
     Level& c = levels_[slot + 1];
-    if constexpr (Mask::split == Split::quad)
-      internal::quad_split<ConcurrencyTag>(levels_[slot], c, corner_table);
-    else
-      internal::triangle_split<ConcurrencyTag>(levels_[slot], c, corner_table);
+    split_level<ConcurrencyTag>(levels_[slot], c, corner_table);
     if (child_sharp_) {
       c.sharp = true;
       c.e_sharp.swap(child_e_sharp_);
       c.v_sharp.swap(child_v_sharp_);
     }
+  }
+
+  // The mask's split of `p` into `c`, a Level or a Mesh_writer.
+  template <class ConcurrencyTag, class Child>
+  static void split_level(const Level& p, Child& c, bool corner_table)
+  {
+    if constexpr (Mask::split == Split::quad)
+      internal::quad_split<ConcurrencyTag>(p, c, corner_table);
+    else
+      internal::triangle_split<ConcurrencyTag>(p, c, corner_table);
   }
 
   // The last split of a one-pass refinement: levels_[0] into `out`.
@@ -361,10 +368,7 @@ private:
   {
     out.clear();
     internal::Mesh_writer<Mobius_mesh<Q>> c(out);
-    if constexpr (Mask::split == Split::quad)
-      internal::quad_split<ConcurrencyTag>(levels_[0], c, false);
-    else
-      internal::triangle_split<ConcurrencyTag>(levels_[0], c, false);
+    split_level<ConcurrencyTag>(levels_[0], c, false);
     levels_[0] = Level(); // freed before the maps are made
     out.reset_property_maps();
     if (write_sharpness)
