@@ -12,11 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <random>
 #include <set>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -32,25 +30,11 @@ using CGAL_ext::Vertex_index;
 // A plain v/f reader, independent of the library's I/O.
 void read_obj(const std::string& file, std::vector<Point>& points, std::vector<std::vector<std::size_t>>& polygons)
 {
-  std::ifstream in(file);
-  ASSERT_TRUE(in) << file;
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream s(line);
-    std::string tag;
-    s >> tag;
-    if (tag == "v") {
-      double x, y, z;
-      s >> x >> y >> z;
-      points.emplace_back(x, y, z);
-    } else if (tag == "f") {
-      std::vector<std::size_t> polygon;
-      std::string word;
-      while (s >> word)
-        polygon.push_back(std::stoul(word.substr(0, word.find('/'))) - 1);
-      polygons.push_back(polygon);
-    }
-  }
+  const bool opened = test::read_obj_lines(
+    file, [&](double x, double y, double z) { points.emplace_back(x, y, z); },
+    [&](const std::vector<std::size_t>& polygon) { polygons.push_back(polygon); },
+    [](const std::string&, const std::string&, std::istream&) {});
+  ASSERT_TRUE(opened) << file;
 }
 
 Mesh load(const std::string& relative)
