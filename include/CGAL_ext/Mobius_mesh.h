@@ -8,6 +8,7 @@
 #define CGAL_EXT_MOBIUS_MESH_H
 
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
+#include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <CGAL/Origin.h>
@@ -88,7 +89,7 @@ public:
 
   constexpr Dart() = default;
   constexpr Dart(Halfedge_index h, bool flipped)
-    : bits_(h.is_valid() ? (h.idx() << 1) | size_type(flipped) : null_value)
+    : bits_(h.is_valid() ? internal::dart_encoding::dart(h.idx(), flipped) : null_value)
   {}
   constexpr explicit Dart(Halfedge_index h) : Dart(h, false) {}
 
@@ -101,10 +102,10 @@ public:
   constexpr size_type bits() const { return bits_; }
   constexpr Halfedge_index halfedge() const
   {
-    return is_valid() ? Halfedge_index(size_type(bits_ >> 1)) : Halfedge_index();
+    return is_valid() ? Halfedge_index(internal::dart_encoding::halfedge_of_dart(bits_)) : Halfedge_index();
   }
-  constexpr bool is_flipped() const { return (bits_ & 1u) != 0; }
-  constexpr Dart flipped() const { return from_bits(bits_ ^ 1u); }
+  constexpr bool is_flipped() const { return internal::dart_encoding::is_flipped(bits_); }
+  constexpr Dart flipped() const { return from_bits(internal::dart_encoding::flip(bits_)); }
   constexpr bool is_valid() const { return bits_ != null_value; }
 
   constexpr bool operator==(Dart o) const { return bits_ == o.bits_; }
@@ -357,10 +358,10 @@ public:
   Dart opposite(Dart d) const
   {
     const size_type b = d.bits();
-    return Dart::from_bits((b ^ 2u) ^ size_type(e_mobius_[b >> 2]));
+    return Dart::from_bits(internal::dart_encoding::opposite_dart(b, e_mobius_[internal::dart_encoding::edge_of_dart(b)] != 0));
   }
   Face_index face(Dart d) const { return h_face_[d.halfedge().idx()]; }
-  Edge_index edge(Dart d) const { return Edge_index(size_type(d.bits() >> 2)); }
+  Edge_index edge(Dart d) const { return Edge_index(internal::dart_encoding::edge_of_dart(d.bits())); }
   static Halfedge_index halfedge(Dart d) { return d.halfedge(); }
 
   /// An incoming dart of `v` (target `v`); a border dart if `v` is on the border.
@@ -368,13 +369,16 @@ public:
   /// The unflipped dart of the stored halfedge of `f`.
   Dart halfedge(Face_index f) const { return Dart(f_halfedge_[f.idx()], false); }
   /// The unflipped dart of the first halfedge of `e`.
-  static Dart halfedge(Edge_index e) { return Dart(Halfedge_index(size_type(2 * e.idx())), false); }
+  static Dart halfedge(Edge_index e) { return Dart(halfedge(e, 0), false); }
   static Halfedge_index halfedge(Edge_index e, unsigned i)
   {
-    return Halfedge_index(size_type(2 * e.idx() + i));
+    return Halfedge_index(internal::dart_encoding::halfedge_of_edge(e.idx(), i));
   }
-  static Edge_index edge(Halfedge_index h) { return Edge_index(size_type(h.idx() >> 1)); }
-  static Halfedge_index opposite_halfedge(Halfedge_index h) { return Halfedge_index(size_type(h.idx() ^ 1u)); }
+  static Edge_index edge(Halfedge_index h) { return Edge_index(internal::dart_encoding::edge_of_halfedge(h.idx())); }
+  static Halfedge_index opposite_halfedge(Halfedge_index h)
+  {
+    return Halfedge_index(internal::dart_encoding::opposite_halfedge(h.idx()));
+  }
 
   Vertex_index target(Halfedge_index h) const { return target(dart(h)); }
   Vertex_index source(Halfedge_index h) const { return source(dart(h)); }
@@ -632,8 +636,8 @@ private:
   Vertex_index source_of(Halfedge_index h) const
   {
     const size_type i = h.idx();
-    if (e_mobius_[i >> 1] == 0)
-      return h_target_[i ^ 1u];
+    if (e_mobius_[internal::dart_encoding::edge_of_halfedge(i)] == 0)
+      return h_target_[internal::dart_encoding::opposite_halfedge(i)];
     return h_target_[h_prev_[i].halfedge().idx()];
   }
 
@@ -1191,7 +1195,7 @@ std::string Mobius_mesh<P>::validity_report() const
       return (out << h << " has an invalid face", out.str());
   }
   for (size_type e = 0; e < number_of_edges(); ++e) {
-    const Halfedge_index h0(2 * e), h1(2 * e + 1);
+    const Halfedge_index h0 = halfedge(Edge_index(e), 0), h1 = halfedge(Edge_index(e), 1);
     if (is_border(h0) && is_border(h1))
       return (out << Edge_index(e) << " has no face", out.str());
     if (is_mobius(Edge_index(e)) && (is_border(h0) || is_border(h1)))

@@ -361,7 +361,7 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<
       // Darts of a face cycle are valid: the halfedge is read off the bits,
       // where d.halfedge() would show GCC 12 its null branch and a false
       // -Warray-bounds at -O3.
-      const Halfedge_index h(Dart::size_type(d.bits() >> 1));
+      const Halfedge_index h(internal::dart_encoding::halfedge_of_dart(d.bits()));
       const SH s = face_he[h.idx()];
       const std::uint32_t t = wedge[h.idx()], src = wedge[oriented.prev(d).halfedge().idx()];
       sm.set_target(s, sm_vertex[t]);
@@ -393,7 +393,7 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<
     for (Edge_index e : oriented.edges()) {
       if (!oriented.is_mobius(e))
         continue;
-      const SH b0 = seam_he[2 * e.idx()], b1 = seam_he[2 * e.idx() + 1];
+      const SH b0 = seam_he[Mobius_mesh<P>::halfedge(e, 0).idx()], b1 = seam_he[Mobius_mesh<P>::halfedge(e, 1).idx()];
       seam[b0] = Seam_link{b1, true};
       seam[b1] = Seam_link{b0, true};
     }
