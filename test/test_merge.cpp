@@ -6,6 +6,8 @@
 #include <CGAL_ext/merge_borders.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
+#include <CGAL/Exact_rational.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -518,3 +520,72 @@ TEST(MergeManual, MismatchedChainsAndBadDartsAreRefused)
 }
 
 } // namespace
+
+// ---------------------------------------------------------------------------- one tolerance rule
+
+// The soup import and merge_borders decide "within the tolerance" by one
+// rule: the exact distance against the exact value of the tolerance. The
+// cases put a point at exactly the tolerance (merged) and a unit in the last
+// place beyond it (not merged), with tolerances whose square no double holds,
+// along an axis and along a diagonal whose every coordinate differs.
+struct Tolerance_case
+{
+  double dx, dy, dz, tolerance;
+  bool close;
+};
+
+std::vector<Tolerance_case> tolerance_cases()
+{
+  const double t = 0.10000000000000002;
+  // m has 40 significant bits, so m, 2m and 3m are doubles and the distance
+  // |(m, 2m, 2m)| = 3m is exact, while (3m)² needs about 80 bits.
+  const double m = std::ldexp(std::round(std::ldexp(0.1, 40)), -40);
+  const double below = std::nextafter(3 * m, 0.0), beyond = std::nextafter(m, 1.0);
+  return {{t, 0, 0, t, true},          {t, 0, 0, std::nextafter(t, 0.0), false},
+          {0, 0, t, t, true},          {m, 2 * m, 2 * m, 3 * m, true},
+          {m, 2 * m, 2 * m, below, false}, {beyond, 2 * m, 2 * m, 3 * m, false},
+          {-m, 2 * m, -2 * m, 3 * m, true}};
+}
+
+// Two triangles of a square, the second with its own copy of the shared
+// side moved by (dx, dy, dz): 4 vertices if the copies merge, 6 if not.
+template <class K>
+std::size_t soup_vertices_after_merge(const Tolerance_case& c)
+{
+  using P = typename K::Point_3;
+  const std::vector<P> points = {P(0, 0, 0),          P(0, 1, 0),      P(-1, 0.5, 0),
+                                 P(c.dx, c.dy, c.dz), P(1, 0.5, 0),    P(c.dx, 1 + c.dy, c.dz)};
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {3, 4, 5}};
+  Mesh<P> m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, CGAL_ext::parameters::tolerance(c.tolerance));
+  return m.number_of_vertices();
+}
+
+// The same two sides as the borders of two quads, glued by merge_borders.
+template <class K>
+std::size_t glued_edges(const Tolerance_case& c)
+{
+  using P = typename K::Point_3;
+  Mesh<P> a = from_soup<P>({P(-1, 0, 0), P(0, 0, 0), P(0, 1, 0), P(-1, 1, 0)}, {{0, 1, 2, 3}});
+  const Mesh<P> b = from_soup<P>({P(c.dx, c.dy, c.dz), P(1, 0, 0), P(1, 1, 0), P(c.dx, 1 + c.dy, c.dz)}, {{0, 1, 2, 3}});
+  return CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(c.tolerance)).glued_edges;
+}
+
+template <class K>
+void one_tolerance_rule()
+{
+  for (const Tolerance_case& c : tolerance_cases()) {
+    SCOPED_TRACE(::testing::Message() << std::hexfloat << "offset (" << c.dx << ", " << c.dy << ", " << c.dz
+                                      << "), tolerance " << c.tolerance);
+    EXPECT_EQ(soup_vertices_after_merge<K>(c), c.close ? 4u : 6u);
+    EXPECT_EQ(glued_edges<K>(c), c.close ? 1u : 0u);
+  }
+}
+
+TEST(ToleranceRule, SoupAndMergeAgreeAtTheBoundaryDouble) { one_tolerance_rule<Kd>(); }
+TEST(ToleranceRule, SoupAndMergeAgreeAtTheBoundaryEpick) { one_tolerance_rule<Epick>(); }
+TEST(ToleranceRule, SoupAndMergeAgreeAtTheBoundaryEpeck) { one_tolerance_rule<Epeck>(); }
+TEST(ToleranceRule, SoupAndMergeAgreeAtTheBoundaryRationals)
+{
+  one_tolerance_rule<CGAL::Simple_cartesian<CGAL::Exact_rational>>();
+}

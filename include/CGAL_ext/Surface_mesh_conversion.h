@@ -14,12 +14,12 @@
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
-#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/internal/Union_find.h>
 
 #include <CGAL/Surface_mesh.h>
 
 #include <boost/graph/graph_traits.hpp>
-#include <boost/range/iterator_range.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -502,18 +502,8 @@ Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh
   std::vector<SF> face_of(sm.faces().begin(), sm.faces().end());
 
   // 2. Identify the vertices that the seam glues.
-  std::vector<std::uint32_t> parent(vertex_of.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&parent](std::uint32_t x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  auto unite = [&](SV a, SV b) {
-    const std::uint32_t ra = find(dense[std::size_t(a)]), rb = find(dense[std::size_t(b)]);
-    if (ra != rb)
-      parent[(std::max)(ra, rb)] = (std::min)(ra, rb);
-  };
+  internal::Union_find glued_vertices{std::uint32_t(vertex_of.size())};
+  auto unite = [&](SV a, SV b) { glued_vertices.unite(dense[std::size_t(a)], dense[std::size_t(b)]); };
   const auto [seam, has_seam] = sm.template property_map<SH, Seam_link>(seam_map_name);
   std::vector<bool> glued(sm.number_of_halfedges() + sm.number_of_removed_halfedges(), false);
   if (has_seam) {
@@ -548,40 +538,30 @@ Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh
   // 3. The glued soup: one point per class (ordered by lowest member), one
   //    polygon per face starting at the source of the face's halfedge, so
   //    that the new face's halfedge is the same one.
-  std::vector<std::uint32_t> class_index(vertex_of.size(), none);
-  std::vector<Q> points;
-  std::vector<SV> class_rep;
-  for (std::uint32_t i = 0; i < vertex_of.size(); ++i) {
-    const std::uint32_t r = find(i);
-    if (class_index[r] == none) {
-      class_index[r] = std::uint32_t(points.size());
-      points.push_back(sm.point(vertex_of[i]));
-      class_rep.push_back(vertex_of[i]);
-    }
-    class_index[i] = class_index[r];
-  }
-  result.added_vertices = vertex_of.size() - points.size();
-  // Corners in one flat array with a view per polygon: a vector per face
-  // would cost one allocation per face, a third of the conversion.
-  std::vector<std::uint32_t> corners;
-  std::vector<std::size_t> start;
+  std::uint32_t n_classes = 0;
+  const std::vector<std::uint32_t> class_index = glued_vertices.classes(n_classes);
+  std::vector<SV> class_rep(n_classes);
+  for (std::uint32_t i = std::uint32_t(vertex_of.size()); i-- > 0;)
+    class_rep[class_index[i]] = vertex_of[i];
+  result.added_vertices = vertex_of.size() - n_classes;
+  // Corners in one flat array: a vector per face would cost one allocation
+  // per face, a third of the conversion.
+  std::vector<std::uint32_t> corners, start;
   corners.reserve(sm.number_of_halfedges());
   start.reserve(face_of.size() + 1);
   start.push_back(0);
   for (std::size_t f = 0; f < face_of.size(); ++f) {
     for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm))
       corners.push_back(class_index[dense[std::size_t(sm.source(h))]]);
-    start.push_back(corners.size());
+    start.push_back(std::uint32_t(corners.size()));
   }
-  std::vector<boost::iterator_range<const std::uint32_t*>> polygons;
-  polygons.reserve(face_of.size());
-  for (std::size_t f = 0; f < face_of.size(); ++f)
-    polygons.emplace_back(corners.data() + start[f], corners.data() + start[f + 1]);
+  const internal::Face_lists faces{n_classes, std::uint32_t(face_of.size()), start.data(), corners.data()};
 
   Mobius_mesh<P> part;
   try {
-    polygon_soup_to_mobius_mesh(points, polygons, part,
-                                parameters::point_map(internal::Point_converter<Q, P>()));
+    const internal::Point_converter<Q, P> convert;
+    internal::build_mesh_from_faces(
+      faces, [&](std::uint32_t v) { return convert(sm.point(class_rep[v])); }, false, part);
   } catch (const Soup_error& e) {
     std::string where;
     for (std::size_t c : e.vertices())
@@ -618,8 +598,8 @@ Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh
       d = part.next(d);
     }
   }
-  std::vector<std::pair<SV, Vertex_index>> rep_pairs(points.size());
-  for (std::size_t c = 0; c < points.size(); ++c)
+  std::vector<std::pair<SV, Vertex_index>> rep_pairs(n_classes);
+  for (std::size_t c = 0; c < n_classes; ++c)
     rep_pairs[c] = {class_rep[c], Vertex_index(c)};
   std::vector<std::pair<SF, Face_index>> face_pairs(face_of.size());
   for (std::size_t f = 0; f < face_of.size(); ++f)

@@ -17,6 +17,21 @@
 
 namespace CGAL_ext {
 
+namespace internal {
+
+// Ids in an error message: the first few, then how many in all.
+inline std::string join_ids(const std::vector<std::size_t>& ids, const char* prefix = "", std::size_t max_shown = 8)
+{
+  std::string s;
+  for (std::size_t i = 0; i < ids.size() && i < max_shown; ++i)
+    s += (i ? ", " : "") + std::string(prefix) + std::to_string(ids[i]);
+  if (ids.size() > max_shown)
+    s += ", ... (" + std::to_string(ids.size()) + " in all)";
+  return s;
+}
+
+} // namespace internal
+
 /// Base class of every exception CGAL_ext throws.
 class Error : public std::runtime_error
 {

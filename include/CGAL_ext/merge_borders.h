@@ -14,14 +14,11 @@
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
-#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/internal/Close_points.h>
+#include <CGAL_ext/internal/Union_find.h>
 
-#include <CGAL/Box_intersection_d/Box_with_info_d.h>
-#include <CGAL/Exact_rational.h>
 #include <CGAL/Kernel_traits.h>
-#include <CGAL/box_intersection_d.h>
-
-#include <boost/range/iterator_range.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -67,71 +64,6 @@ enum class Merge_strategy {
 
 namespace internal {
 
-// Exact "distance at most tolerance" test: the kernel's
-// Compare_squared_distance_3 against tolerance². With a floating-point FT,
-// tolerance² may not be representable; then the decision is made on the
-// exact rational values of the coordinates instead, so that a point at
-// exactly the tolerance is within it and one a unit in the last place
-// beyond is not.
-template <class Traits>
-class Within_tolerance
-{
-public:
-  using FT = typename Traits::FT;
-  using Point = typename Traits::Point_3;
-
-  Within_tolerance(const Traits& traits, const FT& tolerance) : traits_(traits), tolerance_(tolerance)
-  {
-    squared_ = tolerance * tolerance;
-    if constexpr (std::is_floating_point_v<FT>) {
-      // tol² is exact iff the fused residual is 0 and it is far from underflow.
-      exact_square_ = std::fma(tolerance, tolerance, -squared_) == 0 &&
-                      (tolerance == 0 || squared_ > std::ldexp(1.0, -960));
-    }
-  }
-
-  bool operator()(const Point& p, const Point& q) const
-  {
-    if constexpr (std::is_floating_point_v<FT>) {
-      if (!exact_square_) {
-        using Q = CGAL::Exact_rational;
-        const Q dx = Q(p.x()) - Q(q.x()), dy = Q(p.y()) - Q(q.y()), dz = Q(p.z()) - Q(q.z());
-        const Q t(tolerance_);
-        return dx * dx + dy * dy + dz * dz <= t * t;
-      }
-    }
-    return traits_.compare_squared_distance_3_object()(p, q, squared_) != CGAL::LARGER;
-  }
-
-private:
-  Traits traits_;
-  FT tolerance_, squared_;
-  bool exact_square_ = true;
-};
-
-template <class FT, class T>
-FT checked_tolerance(const T& t)
-{
-  if constexpr (std::is_floating_point_v<T>)
-    if (!std::isfinite(t))
-      throw Parameter_error("the merge tolerance must be a finite number >= 0 (it is " + std::to_string(t) + ")");
-  const FT tolerance(t);
-  if (CGAL::is_negative(tolerance))
-    throw Parameter_error("the merge tolerance must be a finite number >= 0 (it is " +
-                          std::to_string(CGAL::to_double(tolerance)) + ")");
-  return tolerance;
-}
-
-inline std::string vertex_list(const std::vector<std::size_t>& vs)
-{
-  std::string s;
-  for (std::size_t i = 0; i < vs.size() && i < 8; ++i)
-    s += (i ? ", v" : "v") + std::to_string(vs[i]);
-  if (vs.size() > 8)
-    s += ", ... (" + std::to_string(vs.size()) + " in all)";
-  return s;
-}
-
 // Rebuilds `work` with the vertices of each class of `cls` identified (and
 // `extra` polygons added, by class), through a soup: linear time, and the
 // soup import finds every normal and Möbius connection and refuses what is
@@ -143,31 +75,28 @@ Mobius_mesh<P> rebuild_glued(const Mobius_mesh<P>& work, const std::vector<std::
                              const std::vector<P>& position, const std::vector<std::vector<std::uint32_t>>& extra,
                              Merge_result& result)
 {
-  // The soup in one flat array of corners with a view per polygon: a vector
-  // per face would cost one allocation per face, a third of the whole merge.
+  // The faces in one flat array of corners: a vector per face would cost
+  // one allocation per face, a third of the whole merge.
   const std::size_t nf = work.number_of_faces();
-  std::vector<std::uint32_t> corners;
-  std::vector<std::size_t> start;
+  std::vector<std::uint32_t> corners, start;
   corners.reserve(work.number_of_halfedges());
   start.reserve(nf + extra.size() + 1);
   start.push_back(0);
   for (Face_index f : work.faces()) {
     for (Dart d : CGAL_ext::halfedges_around_face(work.halfedge(f), work))
       corners.push_back(cls[work.source(d).idx()]);
-    start.push_back(corners.size());
+    start.push_back(std::uint32_t(corners.size()));
   }
   for (const std::vector<std::uint32_t>& polygon : extra) {
     corners.insert(corners.end(), polygon.begin(), polygon.end());
-    start.push_back(corners.size());
+    start.push_back(std::uint32_t(corners.size()));
   }
-  std::vector<boost::iterator_range<const std::uint32_t*>> polygons;
-  polygons.reserve(start.size() - 1);
-  for (std::size_t i = 0; i + 1 < start.size(); ++i)
-    polygons.emplace_back(corners.data() + start[i], corners.data() + start[i + 1]);
+  const Face_lists faces{std::uint32_t(position.size()), std::uint32_t(start.size() - 1), start.data(),
+                         corners.data()};
 
   Mobius_mesh<P> out;
   try {
-    polygon_soup_to_mobius_mesh(position, polygons, out);
+    build_mesh_from_faces(faces, [&position](std::uint32_t v) { return position[v]; }, false, out);
   } catch (const Soup_error& e) {
     std::vector<std::size_t> vs;
     for (std::size_t c : e.vertices())
@@ -178,15 +107,15 @@ Mobius_mesh<P> rebuild_glued(const Mobius_mesh<P>& work, const std::vector<std::
     switch (e.kind()) {
     case Soup_error::Kind::repeated_vertex:
       throw Merge_error(K::collapsed_face,
-                        "the merge would identify two vertices of one face (" + vertex_list(vs) +
+                        "the merge would identify two vertices of one face (" + join_ids(vs, "v") +
                           "): is the tolerance larger than the mesh's edges?",
                         vs);
     case Soup_error::Kind::non_manifold_edge:
       throw Merge_error(K::non_manifold_edge,
-                        "the merge would give the edge between " + vertex_list(vs) + " three or more faces", vs);
+                        "the merge would give the edge between " + join_ids(vs, "v") + " three or more faces", vs);
     default:
       throw Merge_error(K::non_manifold_vertex,
-                        "the merge would make a non-manifold vertex of " + vertex_list(vs) +
+                        "the merge would make a non-manifold vertex of " + join_ids(vs, "v") +
                           " (its faces would form separate fans)",
                         vs);
     }
@@ -236,25 +165,139 @@ Mobius_mesh<P> rebuild_glued(const Mobius_mesh<P>& work, const std::vector<std::
   return out;
 }
 
-// Numbers the classes of a union-find by their lowest member.
-inline std::vector<std::uint32_t> number_classes(std::vector<std::uint32_t>& parent, std::size_t& n_classes)
+// Border vertices within the tolerance of each other: those of [0, split)
+// with those of [split, nv), or any two if `self`. `match[v]` lists v's.
+template <class P, class Traits>
+std::size_t close_border_vertices(const Mobius_mesh<P>& work, std::size_t split, bool self,
+                                  const Close_points<Traits>& close, std::vector<std::vector<std::uint32_t>>& match)
 {
-  const std::uint32_t none = Vertex_index::null_value;
-  std::vector<std::uint32_t> cls(parent.size(), none);
-  n_classes = 0;
-  for (std::uint32_t v = 0; v < parent.size(); ++v) {
-    std::uint32_t r = v;
-    while (parent[r] != r)
-      r = parent[r];
-    if (cls[r] == none)
-      cls[r] = std::uint32_t(n_classes++);
-    cls[v] = cls[r];
-  }
-  return cls;
+  std::vector<std::uint32_t> first, second;
+  for (Vertex_index v : work.vertices())
+    if (!work.is_isolated(v) && work.is_border(v))
+      (self || v.idx() < split ? first : second).push_back(v.idx());
+  match.assign(work.number_of_vertices(), {});
+  std::size_t n_pairs = 0;
+  auto report = [&](std::uint32_t u, std::uint32_t w) {
+    match[u].push_back(w);
+    match[w].push_back(u);
+    ++n_pairs;
+  };
+  auto point_of = [&work](std::uint32_t v) -> const P& { return work.point(Vertex_index(v)); };
+  if (self)
+    close.self_pairs(first, point_of, report);
+  else
+    close.cross_pairs(first, second, point_of, report);
+  return n_pairs;
 }
 
-// The automatic merge on `work`: border vertices of `first` are matched with
-// those of `second` (both halves of the index range [0, nv) if `self`).
+// The border edges that border halfedge `b` (s -> t) may be glued to: those
+// from a vertex matched with s (or s) to one matched with t (or t), with
+// whether each runs the same way as b.
+template <class P>
+std::vector<std::pair<Halfedge_index, bool>>
+glue_candidates(const Mobius_mesh<P>& work, Halfedge_index b, const std::vector<std::vector<std::uint32_t>>& match)
+{
+  const std::uint32_t s = work.source(Dart(b, false)).idx(), t = work.target(Dart(b, false)).idx();
+  auto is_close = [&](std::uint32_t x, std::uint32_t y) {
+    return x == y || std::find(match[x].begin(), match[x].end(), y) != match[x].end();
+  };
+  std::vector<std::pair<Halfedge_index, bool>> found;
+  std::vector<std::uint32_t> around = match[s];
+  around.push_back(s);
+  for (std::uint32_t s2 : around) {
+    const Dart in = work.halfedge(Vertex_index(s2)); // border dart into s2
+    for (Dart c : {in, work.next(in)}) {
+      if (c.halfedge() == b)
+        continue;
+      const std::uint32_t cs = work.source(c).idx(), ct = work.target(c).idx();
+      const std::uint32_t other = cs == s2 ? ct : cs;
+      if ((other == t && s2 == s) || !is_close(t, other) || (other == t && s2 != s && !is_close(s, s2)))
+        continue;
+      // Runs the same way as b if it leaves the vertex matched with s.
+      const bool same = work.source(Dart(c.halfedge(), false)).idx() == s2;
+      if (std::find_if(found.begin(), found.end(), [&](const auto& p) { return p.first == c.halfedge(); }) ==
+          found.end())
+        found.emplace_back(c.halfedge(), same);
+    }
+  }
+  return found;
+}
+
+template <class P>
+[[noreturn]] void throw_ambiguous_glue(const Mobius_mesh<P>& work, Halfedge_index b,
+                                       const std::vector<std::pair<Halfedge_index, bool>>& found)
+{
+  const std::size_t s = work.source(Dart(b, false)).idx(), t = work.target(Dart(b, false)).idx();
+  std::vector<std::size_t> vs = {s, t};
+  for (const auto& candidate : found) {
+    vs.push_back(work.source(Dart(candidate.first, false)).idx());
+    vs.push_back(work.target(Dart(candidate.first, false)).idx());
+  }
+  throw Merge_error(Merge_error::Kind::non_manifold_edge,
+                    "border edge (v" + std::to_string(s) + ", v" + std::to_string(t) + ") could be glued to " +
+                      std::to_string(found.size()) + " border edges (" + join_ids(vs, "v") +
+                      "): an edge takes at most two faces",
+                    vs);
+}
+
+// Pairs the border edges to glue (each border edge takes at most one
+// partner) and unites their ends; records pairs and counts in `result`.
+template <class P>
+void pair_border_edges(const Mobius_mesh<P>& work, const std::vector<std::vector<std::uint32_t>>& match,
+                       Union_find& glued, Merge_result& result)
+{
+  const std::uint32_t none = Vertex_index::null_value;
+  std::vector<std::uint32_t> partner(work.number_of_halfedges(), none);
+  for (Halfedge_index b : work.halfedges()) {
+    if (!work.is_border(b) || partner[b.idx()] != none)
+      continue;
+    const std::uint32_t s = work.source(Dart(b, false)).idx(), t = work.target(Dart(b, false)).idx();
+    if (match[s].empty() && match[t].empty())
+      continue;
+    const std::vector<std::pair<Halfedge_index, bool>> found = glue_candidates(work, b, match);
+    if (found.empty())
+      continue;
+    if (found.size() > 1)
+      throw_ambiguous_glue(work, b, found);
+    const auto [g, same] = found[0];
+    const std::uint32_t gs = work.source(Dart(g, false)).idx(), gt = work.target(Dart(g, false)).idx();
+    if (partner[g.idx()] != none)
+      throw Merge_error(Merge_error::Kind::non_manifold_edge,
+                        "border edge (" + join_ids({gs, gt}, "v") + ") could be glued to two border edges",
+                        {s, t, gs, gt});
+    partner[b.idx()] = g.idx();
+    partner[g.idx()] = b.idx();
+    const std::uint32_t s2 = same ? gs : gt, t2 = same ? gt : gs;
+    for (auto [x, y] : {std::make_pair(s, s2), std::make_pair(t, t2)}) {
+      if (x == y)
+        continue;
+      glued.unite(x, y);
+      result.vertex_pairs.emplace_back((std::min)(x, y), (std::max)(x, y));
+    }
+    result.halfedge_pairs.emplace_back(b.idx(), g.idx());
+    ++result.glued_edges;
+    result.mobius_edges += same ? 1 : 0;
+  }
+  std::sort(result.vertex_pairs.begin(), result.vertex_pairs.end());
+  result.vertex_pairs.erase(std::unique(result.vertex_pairs.begin(), result.vertex_pairs.end()),
+                            result.vertex_pairs.end());
+}
+
+// Close pairs that glue no edge.
+inline std::size_t count_ignored_pairs(const std::vector<std::vector<std::uint32_t>>& match, std::size_t close_pairs,
+                                       const Merge_result& result)
+{
+  std::size_t used_pairs = 0;
+  for (std::uint32_t u = 0; u < match.size(); ++u)
+    for (std::uint32_t w : match[u])
+      if (u < w && std::binary_search(result.vertex_pairs.begin(), result.vertex_pairs.end(),
+                                      std::make_pair(std::size_t(u), std::size_t(w))))
+        ++used_pairs;
+  return close_pairs - used_pairs;
+}
+
+// The automatic merge on `work`: border vertices of [0, split) are matched
+// with those of [split, nv) (any two if `self`).
 template <class P, class NP>
 Merge_result merge_borders_impl(Mobius_mesh<P>& target, const Mobius_mesh<P>& work, std::size_t split, bool self,
                                 const NP& np)
@@ -264,155 +307,31 @@ Merge_result merge_borders_impl(Mobius_mesh<P>& target, const Mobius_mesh<P>& wo
   using Default_traits = typename CGAL::Kernel_traits<P>::Kernel;
   const auto traits = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Default_traits());
   using Traits = std::decay_t<decltype(traits)>;
-  using FT = typename Traits::FT;
-  const auto tol_param = choose_parameter(get_parameter(np, CGAL_ext::internal_np::tolerance), 0.0);
-  const FT tolerance = checked_tolerance<FT>(tol_param);
-  const Within_tolerance<Traits> within(traits, tolerance);
-  const std::size_t nv = work.number_of_vertices();
+  const auto tolerance = choose_parameter(get_parameter(np, CGAL_ext::internal_np::tolerance), 0.0);
+  const Close_points<Traits> close(traits, checked_tolerance<typename Traits::FT>(tolerance));
+  const std::uint32_t nv = work.number_of_vertices();
   Merge_result result;
 
-  // 1. Candidate vertex pairs: closed, padded double boxes around border
-  //    vertices, then the exact test.
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
-  const double pad = CGAL::to_interval(tolerance).second;
-  std::vector<Box> boxes_a, boxes_b;
-  for (Vertex_index v : work.vertices()) {
-    if (work.is_isolated(v) || !work.is_border(v))
-      continue;
-    const CGAL::Bbox_3 b = work.point(v).bbox();
-    double lo[3] = {std::nextafter(b.xmin() - pad, -HUGE_VAL), std::nextafter(b.ymin() - pad, -HUGE_VAL),
-                          std::nextafter(b.zmin() - pad, -HUGE_VAL)};
-    double hi[3] = {std::nextafter(b.xmax() + pad, HUGE_VAL), std::nextafter(b.ymax() + pad, HUGE_VAL),
-                          std::nextafter(b.zmax() + pad, HUGE_VAL)};
-    (self || v.idx() < split ? boxes_a : boxes_b).emplace_back(lo, hi, v.idx());
-  }
-  std::vector<std::vector<std::uint32_t>> match(nv);
-  std::size_t close_pairs = 0;
-  auto test = [&](const Box& a, const Box& b) {
-    const std::uint32_t u = a.info(), w = b.info();
-    if (within(work.point(Vertex_index(u)), work.point(Vertex_index(w)))) {
-      match[u].push_back(w);
-      match[w].push_back(u);
-      ++close_pairs;
-    }
-  };
-  if (self)
-    CGAL::box_self_intersection_d(boxes_a.begin(), boxes_a.end(), test);
-  else
-    CGAL::box_intersection_d(boxes_a.begin(), boxes_a.end(), boxes_b.begin(), boxes_b.end(), test);
-
-  // 2. Border edges to glue: (s, t) with (s', t') where s' matches s (or is
-  //    s) and t' matches t (or is t). Each border edge may have one partner.
-  auto is_close = [&](std::uint32_t a, std::uint32_t b) {
-    return a == b || std::find(match[a].begin(), match[a].end(), b) != match[a].end();
-  };
-  const std::uint32_t none = Vertex_index::null_value;
-  std::vector<std::uint32_t> partner(work.number_of_halfedges(), none);
-  std::vector<std::uint8_t> same_way(work.number_of_halfedges(), 0);
-  std::vector<std::uint32_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&parent](std::uint32_t x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::vector<bool> used_vertex(nv, false);
-  for (Halfedge_index b : work.halfedges()) {
-    if (!work.is_border(b) || partner[b.idx()] != none)
-      continue;
-    const Dart db(b, false);
-    const std::uint32_t s = work.source(db).idx(), t = work.target(db).idx();
-    if (match[s].empty() && match[t].empty())
-      continue;
-    std::vector<std::pair<Halfedge_index, bool>> found; // partner, runs the same way
-    std::vector<std::uint32_t> around = match[s];
-    around.push_back(s);
-    for (std::uint32_t s2 : around) {
-      const Dart in = work.halfedge(Vertex_index(s2)); // border dart into s2
-      for (Dart c : {in, work.next(in)}) {
-        if (c.halfedge() == b)
-          continue;
-        const std::uint32_t cs = work.source(c).idx(), ct = work.target(c).idx();
-        const std::uint32_t other = cs == s2 ? ct : cs;
-        if ((other == t && s2 == s) || !is_close(t, other))
-          continue;
-        if (other == t && s2 != s && !is_close(s, s2))
-          continue;
-        // Runs the same way as b if it leaves the vertex matched with s.
-        const bool same = work.source(Dart(c.halfedge(), false)).idx() == s2;
-        if (std::find_if(found.begin(), found.end(), [&](const auto& p) { return p.first == c.halfedge(); }) ==
-            found.end())
-          found.emplace_back(c.halfedge(), same);
-      }
-    }
-    if (found.empty())
-      continue;
-    if (found.size() > 1) {
-      std::vector<std::size_t> vs = {s, t};
-      for (const auto& [h, same] : found) {
-        vs.push_back(work.source(Dart(h, false)).idx());
-        vs.push_back(work.target(Dart(h, false)).idx());
-      }
-      throw Merge_error(Merge_error::Kind::non_manifold_edge,
-                        "border edge (v" + std::to_string(s) + ", v" + std::to_string(t) + ") could be glued to " +
-                          std::to_string(found.size()) + " border edges (" + vertex_list(vs) +
-                          "): an edge takes at most two faces",
-                        vs);
-    }
-    const Halfedge_index g = found[0].first;
-    if (partner[g.idx()] != none) {
-      const std::vector<std::size_t> vs = {s, t, work.source(Dart(g, false)).idx(), work.target(Dart(g, false)).idx()};
-      throw Merge_error(Merge_error::Kind::non_manifold_edge,
-                        "border edge (" + vertex_list({vs[2], vs[3]}) + ") could be glued to two border edges",
-                        vs);
-    }
-    partner[b.idx()] = g.idx();
-    partner[g.idx()] = b.idx();
-    same_way[b.idx()] = same_way[g.idx()] = found[0].second ? 1 : 0;
-    const std::uint32_t gs = work.source(Dart(g, false)).idx(), gt = work.target(Dart(g, false)).idx();
-    const std::uint32_t s2 = found[0].second ? gs : gt, t2 = found[0].second ? gt : gs;
-    for (auto [x, y] : {std::make_pair(s, s2), std::make_pair(t, t2)}) {
-      if (x == y)
-        continue;
-      const std::uint32_t rx = find(x), ry = find(y);
-      if (rx != ry)
-        parent[(std::max)(rx, ry)] = (std::min)(rx, ry);
-      result.vertex_pairs.emplace_back((std::min)(x, y), (std::max)(x, y));
-      used_vertex[x] = used_vertex[y] = true;
-    }
-    result.halfedge_pairs.emplace_back(b.idx(), g.idx());
-    ++result.glued_edges;
-    result.mobius_edges += found[0].second ? 1 : 0;
-  }
-  std::sort(result.vertex_pairs.begin(), result.vertex_pairs.end());
-  result.vertex_pairs.erase(std::unique(result.vertex_pairs.begin(), result.vertex_pairs.end()),
-                            result.vertex_pairs.end());
-  {
-    std::size_t used_pairs = 0;
-    for (std::uint32_t u = 0; u < nv; ++u)
-      for (std::uint32_t w : match[u])
-        if (u < w && std::binary_search(result.vertex_pairs.begin(), result.vertex_pairs.end(),
-                                        std::make_pair(std::size_t(u), std::size_t(w))))
-          ++used_pairs;
-    result.ignored_vertex_pairs = close_pairs - used_pairs;
-  }
+  std::vector<std::vector<std::uint32_t>> match;
+  const std::size_t close_pairs = close_border_vertices(work, split, self, close, match);
+  Union_find glued(nv);
+  pair_border_edges(work, match, glued, result);
+  result.ignored_vertex_pairs = count_ignored_pairs(match, close_pairs, result);
   if (result.glued_edges == 0) {
     result.vertex_map.resize(nv);
-    for (std::size_t v = 0; v < nv; ++v)
+    for (std::uint32_t v = 0; v < nv; ++v)
       result.vertex_map[v] = Vertex_index(v);
     if (&target != &work)
       target = work;
     return result;
   }
 
-  // 3. Rebuild with the glued vertices identified; each keeps the position
-  //    of its class's lowest vertex (the first mesh's, in a two-mesh merge).
-  std::size_t n_classes = 0;
-  for (std::uint32_t v = 0; v < nv; ++v)
-    parent[v] = find(v);
-  const std::vector<std::uint32_t> cls = number_classes(parent, n_classes);
+  // Rebuild with the glued vertices identified; each keeps the position of
+  // its class's lowest vertex (the first mesh's, in a two-mesh merge).
+  std::uint32_t n_classes = 0;
+  const std::vector<std::uint32_t> cls = glued.classes(n_classes);
   std::vector<P> position(n_classes);
-  for (std::size_t v = nv; v-- > 0;)
+  for (std::uint32_t v = nv; v-- > 0;)
     position[cls[v]] = work.point(Vertex_index(v));
   target = rebuild_glued(work, cls, position, {}, result);
   return result;
@@ -451,11 +370,13 @@ std::vector<std::uint32_t> border_chain(const Mobius_mesh<P>& m, Dart d, const c
 /// first. Property maps of the value types listed at `copy_mesh()` are kept
 /// (a glued vertex or edge takes `mesh_a`'s value).
 ///
-/// The tolerance test is `Compare_squared_distance_3(p, q, tolerance²)` of the
-/// kernel, never a square root: with EPICK or EPECK a point at exactly the
-/// tolerance merges and one a unit in the last place further does not (with a
-/// `double` tolerance whose square is not a `double`, the comparison is done
-/// on exact rationals). A tolerance of 0 glues exact coincidences only.
+/// Two vertices are within the tolerance iff their exact distance is at most
+/// the exact value of the tolerance, on every kernel, as in the soup import:
+/// no square root and no rounded square (floating-point coordinates are
+/// decided by an interval filter, then exact rationals; exact kernels by
+/// their own `Compare_squared_distance_3`). A point at exactly the tolerance
+/// merges and one a unit in the last place further does not. A tolerance of
+/// 0 glues exact coincidences only.
 ///
 /// \param mesh_a the first mesh, which receives the result
 /// \param mesh_b the second mesh
@@ -541,8 +462,7 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_m
   const std::size_t nv = work.number_of_vertices();
   Merge_result result;
 
-  std::vector<std::uint32_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0u);
+  internal::Union_find glued{std::uint32_t(nv)};
   std::vector<std::vector<std::uint32_t>> extra;
   if (strategy != Merge_strategy::bridge) {
     if (chain_a.size() != chain_b.size()) {
@@ -554,7 +474,7 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_m
                         vs);
     }
     for (std::size_t i = 0; i < chain_a.size(); ++i) {
-      parent[chain_b[i]] = chain_a[i];
+      glued.unite(chain_a[i], chain_b[i]);
       result.vertex_pairs.emplace_back(chain_a[i], chain_b[i]);
     }
     // The i-th edges of the two walks are glued: the border halfedges under
@@ -591,8 +511,8 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_m
       }
     }
   }
-  std::size_t n_classes = 0;
-  const std::vector<std::uint32_t> cls = internal::number_classes(parent, n_classes);
+  std::uint32_t n_classes = 0;
+  const std::vector<std::uint32_t> cls = glued.classes(n_classes);
   std::vector<P> position(n_classes);
   for (std::size_t v = nv; v-- > 0;) // the lowest member (the first mesh's) wins
     position[cls[v]] = work.point(Vertex_index(v));

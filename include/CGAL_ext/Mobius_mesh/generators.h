@@ -10,7 +10,8 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/exceptions.h>
-#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/Mobius_mesh/transform.h>
 
 #include <CGAL/Kernel_traits.h>
 
@@ -85,6 +86,16 @@ struct Periodic_grid
   }
 };
 
+// Appends the faces, numbered over `points`, to `mesh`.
+template <class P>
+void append_generated(Mobius_mesh<P>& mesh, const std::vector<P>& points, const Face_list& faces)
+{
+  Mobius_mesh<P> part;
+  build_mesh_from_faces(faces.view(std::uint32_t(points.size())),
+                        [&points](std::uint32_t v) -> const P& { return points[v]; }, false, part);
+  append_mesh(mesh, std::move(part));
+}
+
 // Builds the grid's cells as quads (i, j), (i+1, j), (i+1, j+1), (i, j+1), or
 // as two triangles split along (i, j)-(i+1, j+1), welded by index. Returns
 // the unflipped dart of the first new face from (0, 0) to (1, 0) if the grid
@@ -102,23 +113,20 @@ Dart make_periodic_grid(Mobius_mesh<P>& mesh, const Periodic_grid& grid, bool qu
   const std::size_t rows = grid.wrap_v ? grid.nvv : grid.nvv - 1;
   const Vertex_index first_vertex(mesh.number_of_vertices());
   const Face_index first_face(mesh.number_of_faces());
-  if (quads) {
-    std::vector<std::array<std::size_t, 4>> polygons;
-    polygons.reserve(grid.nu * rows);
-    for (std::size_t i = 0; i < grid.nu; ++i)
-      for (std::size_t j = 0; j < rows; ++j)
-        polygons.push_back({grid(i, j), grid(i + 1, j), grid(i + 1, j + 1), grid(i, j + 1)});
-    polygon_soup_to_mobius_mesh(points, polygons, mesh);
-  } else {
-    std::vector<std::array<std::size_t, 3>> polygons;
-    polygons.reserve(2 * grid.nu * rows);
-    for (std::size_t i = 0; i < grid.nu; ++i)
-      for (std::size_t j = 0; j < rows; ++j) {
-        polygons.push_back({grid(i, j), grid(i + 1, j), grid(i + 1, j + 1)});
-        polygons.push_back({grid(i, j), grid(i + 1, j + 1), grid(i, j + 1)});
+  auto v = [&grid](std::size_t i, std::size_t j) { return std::uint32_t(grid(i, j)); };
+  Face_list faces;
+  faces.offset.reserve((quads ? 1 : 2) * grid.nu * rows + 1);
+  faces.vertex.reserve(4 * grid.nu * rows + 2 * grid.nu * rows * (quads ? 0 : 1));
+  for (std::size_t i = 0; i < grid.nu; ++i)
+    for (std::size_t j = 0; j < rows; ++j) {
+      if (quads) {
+        faces.add({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+      } else {
+        faces.add({v(i, j), v(i + 1, j), v(i + 1, j + 1)});
+        faces.add({v(i, j), v(i + 1, j + 1), v(i, j + 1)});
       }
-    polygon_soup_to_mobius_mesh(points, polygons, mesh);
-  }
+    }
+  append_generated(mesh, points, faces);
   return grid.wrap_v ? mesh.halfedge(first_face) : mesh.halfedge(first_vertex);
 }
 
@@ -342,27 +350,26 @@ Dart make_projective_plane(Mobius_mesh<P>& mesh, std::size_t k)
     return (1 - a) * side_a0 + a * side_a1 + (1 - b) * side_b0 + b * side_b1 - bilinear;
   };
 
-  std::vector<std::size_t> vertex_of_key(n_keys, std::numeric_limits<std::size_t>::max());
+  std::vector<std::uint32_t> vertex_of_key(n_keys, std::numeric_limits<std::uint32_t>::max());
   std::vector<P> points;
   points.reserve(3 * k * k + 1);
   auto vertex = [&](std::size_t s, std::size_t i, std::size_t j) {
-    std::size_t& v = vertex_of_key[key(s, i, j)];
-    if (v == std::numeric_limits<std::size_t>::max()) {
-      v = points.size();
+    std::uint32_t& v = vertex_of_key[key(s, i, j)];
+    if (v == std::numeric_limits<std::uint32_t>::max()) {
+      v = std::uint32_t(points.size());
       const std::array<double, 3> c = internal::boy_surface_point(disk_point(s, i, j));
       points.push_back(internal::make_generator_point<P>(c[0], c[1], c[2]));
     }
     return v;
   };
-  std::vector<std::array<std::size_t, 4>> polygons;
-  polygons.reserve(3 * k * k);
+  internal::Face_list faces;
   for (std::size_t s = 0; s < 3; ++s)
     for (std::size_t i = 0; i < k; ++i)
       for (std::size_t j = 0; j < k; ++j)
-        polygons.push_back({vertex(s, i, j), vertex(s, i + 1, j), vertex(s, i + 1, j + 1), vertex(s, i, j + 1)});
+        faces.add({vertex(s, i, j), vertex(s, i + 1, j), vertex(s, i + 1, j + 1), vertex(s, i, j + 1)});
 
   const Face_index first_face(mesh.number_of_faces());
-  polygon_soup_to_mobius_mesh(points, polygons, mesh);
+  internal::append_generated(mesh, points, faces);
   return mesh.halfedge(first_face);
 }
 

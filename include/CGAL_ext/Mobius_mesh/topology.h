@@ -8,6 +8,7 @@
 #define CGAL_EXT_MOBIUS_MESH_TOPOLOGY_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/internal/Union_find.h>
 
 #include <cstdint>
 #include <numeric>
@@ -78,27 +79,13 @@ template <class P>
 Mesh_components connected_components(const Mobius_mesh<P>& mesh)
 {
   const std::size_t nv = mesh.number_of_vertices();
-  std::vector<std::uint32_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&parent](std::uint32_t x) {
-    while (parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (Edge_index e : mesh.edges()) {
-    const std::uint32_t a = find(mesh.vertex(e, 0).idx()), b = find(mesh.vertex(e, 1).idx());
-    if (a != b)
-      parent[(std::max)(a, b)] = (std::min)(a, b);
-  }
+  internal::Union_find linked{std::uint32_t(nv)};
+  for (Edge_index e : mesh.edges())
+    linked.unite(mesh.vertex(e, 0).idx(), mesh.vertex(e, 1).idx());
   Mesh_components result;
-  result.vertex_component.assign(nv, 0);
-  std::vector<std::uint32_t> label(nv, Vertex_index::null_value);
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    const std::uint32_t r = find(v);
-    if (label[r] == Vertex_index::null_value)
-      label[r] = std::uint32_t(result.count++);
-    result.vertex_component[v] = label[r];
-  }
+  std::uint32_t count = 0;
+  result.vertex_component = linked.classes(count);
+  result.count = count;
   result.face_component.resize(mesh.number_of_faces());
   for (Face_index f : mesh.faces())
     result.face_component[f.idx()] = result.vertex_component[mesh.target(mesh.halfedge(f)).idx()];

@@ -212,8 +212,31 @@ struct Mesh_writer
   }
 };
 
-// The connectivity of `m` as a level (sharpness 0, no holes). Corners are
-// numbered face by face from each face's first halfedge.
+// Completes a level whose connectivity is written: no sharpness, no holes,
+// corners numbered face by face from each face's first halfedge.
+inline void index_corners(Level& L)
+{
+  for (u32 h = 0; h < 2 * L.ne; ++h)
+    L.h_corner[h] = null_u32;
+  std::fill(L.e_sharp.begin(), L.e_sharp.end(), 0.0f);
+  std::fill(L.v_sharp.begin(), L.v_sharp.end(), 0.0f);
+  u32 k = 0;
+  for (u32 f = 0; f < L.nf; ++f) {
+    const u32 first = L.f_first[f];
+    L.f_offset[f] = k;
+    u32 h = first;
+    do {
+      L.corner_h[k] = h;
+      L.h_corner[h] = k;
+      ++k;
+      h = CGAL_ext::internal::dart_encoding::halfedge_of_dart(L.h_next[h]);
+    } while (h != first);
+  }
+  L.f_offset[L.nf] = k;
+  L.f_hole.clear();
+}
+
+// The connectivity of `m` as a level (sharpness 0, no holes).
 template <class P>
 void fill_level(const Mobius_mesh<P>& m, Level& L)
 {
@@ -229,31 +252,14 @@ void fill_level(const Mobius_mesh<P>& m, Level& L)
     L.h_prev[h] = m.prev(d).bits();
     const Face_index f = m.face(d);
     L.h_face[h] = f.is_valid() ? f.idx() : null_u32;
-    L.h_corner[h] = null_u32;
   }
-  for (u32 e = 0; e < ne; ++e) {
+  for (u32 e = 0; e < ne; ++e)
     L.e_mobius[e] = m.is_mobius(Edge_index(e)) ? 1 : 0;
-    L.e_sharp[e] = 0.0f;
-  }
-  for (u32 v = 0; v < nv; ++v) {
+  for (u32 v = 0; v < nv; ++v)
     L.v_dart[v] = m.halfedge(Vertex_index(v)).bits();
-    L.v_sharp[v] = 0.0f;
-  }
-  u32 k = 0;
-  for (u32 f = 0; f < nf; ++f) {
-    const u32 first = m.halfedge(Face_index(f)).halfedge().idx();
-    L.f_first[f] = first;
-    L.f_offset[f] = k;
-    u32 h = first;
-    do {
-      L.corner_h[k] = h;
-      L.h_corner[h] = k;
-      ++k;
-      h = L.h_next[h] >> 1;
-    } while (h != first);
-  }
-  L.f_offset[nf] = k;
-  L.f_hole.clear();
+  for (u32 f = 0; f < nf; ++f)
+    L.f_first[f] = m.halfedge(Face_index(f)).halfedge().idx();
+  index_corners(L);
 }
 
 // What both splits share: parent edges split in two, parent vertices keep

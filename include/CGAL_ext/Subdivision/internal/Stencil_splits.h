@@ -7,16 +7,15 @@
 // arithmetic on the parent level, oriented like the parent faces they come
 // from, and gives every child vertex a stencil (weighted parent vertices).
 // The child connectivity, Möbius edges included, is then built from the face
-// list by the linear-time soup builder.
+// list by the mesh's linear-time connectivity builder.
 
 #ifndef CGAL_EXT_SUBDIVISION_INTERNAL_STENCIL_SPLITS_H
 #define CGAL_EXT_SUBDIVISION_INTERNAL_STENCIL_SPLITS_H
 
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/Subdivision/internal/Level.h>
-#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
 
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/assertions.h>
 
 #include <initializer_list>
@@ -50,27 +49,7 @@ struct Stencils
 };
 
 // Child faces as flat lists of child vertices.
-struct Face_list
-{
-  std::vector<u32> offset, vertex;
-
-  void clear()
-  {
-    offset.assign(1, 0);
-    vertex.clear();
-  }
-  void add(std::initializer_list<u32> vs)
-  {
-    vertex.insert(vertex.end(), vs.begin(), vs.end());
-    offset.push_back(u32(vertex.size()));
-  }
-  template <class It>
-  void add(It begin, It end)
-  {
-    vertex.insert(vertex.end(), begin, end);
-    offset.push_back(u32(vertex.size()));
-  }
-};
+using CGAL_ext::internal::Face_list;
 
 // The corner at end `v` of face halfedge `h`.
 inline u32 corner_at(const Level& p, u32 h, u32 v)
@@ -83,25 +62,18 @@ inline bool is_border_edge(const Level& p, u32 e)
   return p.h_face[2 * e] == null_u32 || p.h_face[2 * e + 1] == null_u32;
 }
 
-// Builds level `c` (nv vertices) from a face list. The soup builder pairs
-// the faces' sides and sets a Möbius bit where two faces run the same way.
+// Builds level `c` (nv vertices) from a face list, through the mesh's
+// connectivity builder, which pairs the faces' sides and sets a Möbius bit
+// where two faces run the same way.
 inline void level_from_faces(u32 nv, const Face_list& faces, Level& c)
 {
-  struct Span
-  {
-    const u32 *b, *e;
-    const u32* begin() const { return b; }
-    const u32* end() const { return e; }
-    std::size_t size() const { return std::size_t(e - b); }
-  };
-  std::vector<Span> polygons(faces.offset.size() - 1);
-  for (std::size_t f = 0; f < polygons.size(); ++f)
-    polygons[f] = {faces.vertex.data() + faces.offset[f], faces.vertex.data() + faces.offset[f + 1]};
-  using Point = CGAL::Simple_cartesian<double>::Point_3;
-  const std::vector<Point> points(nv, Point(CGAL::ORIGIN));
-  Mobius_mesh<Point> mesh;
-  polygon_soup_to_mobius_mesh(points, polygons, mesh);
-  fill_level(mesh, c);
+  CGAL_ext::internal::Connectivity_builder builder(faces.view(nv));
+  c.resize(nv, builder.number_of_edges(), faces.size(), u32(faces.vertex.size()),
+           Level::corner_table | Level::sharpness | Level::halfedge_corners);
+  builder.build({c.h_target.data(), c.h_next.data(), c.h_prev.data(), c.h_face.data(), c.v_dart.data(),
+                 c.f_first.data(), c.e_mobius.data()},
+                false);
+  index_corners(c);
 }
 
 // Doo–Sabin: child vertex k is parent corner k. Child faces: one per face

@@ -1,0 +1,420 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The one connectivity builder: from faces given as lists of vertex indices
+// to halfedges, darts, Möbius bits and border links, in time linear in the
+// number of corners. It knows no geometry; the soup import, the generators,
+// merging, the Surface_mesh conversion and the subdivision splits that list
+// their child faces all build through it.
+
+#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_CONNECTIVITY_BUILDER_H
+#define CGAL_EXT_MOBIUS_MESH_INTERNAL_CONNECTIVITY_BUILDER_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
+#include <CGAL_ext/exceptions.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace internal {
+
+/// Faces as one flat array of vertex indices: face f is
+/// `vertex[offset[f]] ... vertex[offset[f + 1] - 1]`, in cycle order.
+struct Face_lists
+{
+  std::uint32_t n_vertices = 0;
+  std::uint32_t n_faces = 0;
+  const std::uint32_t* offset = nullptr; ///< n_faces + 1 entries
+  const std::uint32_t* vertex = nullptr;
+};
+
+/// Faces listed one after the other, in arrays of their own; `view()` gives
+/// the builder its input.
+struct Face_list
+{
+  std::vector<std::uint32_t> offset{0}, vertex;
+
+  void clear()
+  {
+    offset.assign(1, 0);
+    vertex.clear();
+  }
+  void add(std::initializer_list<std::uint32_t> vs) { add(vs.begin(), vs.end()); }
+  template <class It>
+  void add(It begin, It end)
+  {
+    vertex.insert(vertex.end(), begin, end);
+    offset.push_back(std::uint32_t(vertex.size()));
+  }
+  std::uint32_t size() const { return std::uint32_t(offset.size() - 1); }
+  Face_lists view(std::uint32_t n_vertices) const { return {n_vertices, size(), offset.data(), vertex.data()}; }
+};
+
+/// Where the builder writes: the arrays of the mesh's layout (see
+/// Dart_encoding.h), sized by the caller for the vertex, edge and face
+/// counts the builder reports. Per halfedge: target, `next` and `prev` dart,
+/// face (null on the border); per edge: the Möbius bit; per vertex: an
+/// incoming dart (a border dart on the border; null if isolated); per face:
+/// its first halfedge.
+struct Connectivity_view
+{
+  std::uint32_t *target, *next, *prev, *face, *vertex_dart, *face_halfedge;
+  std::uint8_t* mobius;
+};
+
+/// A vertex whose faces form several fans gets a copy per further fan when
+/// splitting is asked for: copy `n_vertices + k` is `split[k].original`, its
+/// incoming dart `split[k].dart`.
+struct Split_vertex
+{
+  std::uint32_t original;
+  std::uint32_t dart;
+};
+
+/// Builds the connectivity of a 2-manifold from face lists in two phases:
+/// the constructor pairs the faces' sides into edges (so that the caller
+/// can size the output), `build()` writes the links. Two faces that share an
+/// edge are connected whichever way they run along it; running the same way
+/// makes a Möbius edge. Input that is not a 2-manifold throws `Soup_error`
+/// naming the faces and vertices at fault, before anything is written.
+class Connectivity_builder
+{
+public:
+  using u32 = std::uint32_t;
+
+  explicit Connectivity_builder(const Face_lists& faces) : faces_(faces)
+  {
+    number_corners();
+    check_repeated_vertices();
+    pair_sides();
+    number_edges();
+  }
+
+  u32 number_of_vertices() const { return faces_.n_vertices; }
+  u32 number_of_edges() const { return n_edges_; }
+  u32 number_of_faces() const { return faces_.n_faces; }
+
+  /// Writes the links into `out`. A non-manifold vertex throws unless
+  /// `split_non_manifold_vertices`; then its further fans get new vertices
+  /// (returned; their halfedges' targets are already set to the copies).
+  std::vector<Split_vertex> build(const Connectivity_view& out, bool split_non_manifold_vertices)
+  {
+    out_ = out;
+    link_faces();
+    return link_fans(split_non_manifold_vertices);
+  }
+
+private:
+  static constexpr u32 null = dart_encoding::null;
+
+  u32 corner_vertex(std::size_t t) const { return faces_.vertex[t]; }
+  std::size_t next_corner(std::size_t t) const
+  {
+    const u32 f = corner_face_[t];
+    return t + 1 == faces_.offset[f + 1] ? faces_.offset[f] : t + 1;
+  }
+  u32 side_low(std::size_t t) const { return (std::min)(corner_vertex(t), corner_vertex(next_corner(t))); }
+  u32 side_high(std::size_t t) const { return (std::max)(corner_vertex(t), corner_vertex(next_corner(t))); }
+
+  void number_corners()
+  {
+    n_corners_ = faces_.offset[faces_.n_faces];
+    corner_face_.resize(n_corners_);
+    for (u32 f = 0; f < faces_.n_faces; ++f)
+      std::fill(corner_face_.begin() + faces_.offset[f], corner_face_.begin() + faces_.offset[f + 1], f);
+  }
+
+  void check_repeated_vertices() const
+  {
+    std::vector<u32> seen_in_face(faces_.n_vertices, null);
+    for (u32 f = 0; f < faces_.n_faces; ++f) {
+      for (u32 t = faces_.offset[f]; t < faces_.offset[f + 1]; ++t) {
+        const u32 v = corner_vertex(t);
+        if (seen_in_face[v] == f)
+          throw Soup_error(Soup_error::Kind::repeated_vertex,
+                           "polygon " + std::to_string(f) + " visits vertex " + std::to_string(v) + " twice", {f},
+                           {std::size_t(v)});
+        seen_in_face[v] = f;
+      }
+    }
+  }
+
+  // Sides are bucketed by their lower vertex; within a bucket a stamped slot
+  // per upper vertex finds the partner in O(1).
+  void pair_sides()
+  {
+    const u32 nv = faces_.n_vertices;
+    std::vector<u32> bucket_start(std::size_t(nv) + 1, 0);
+    for (std::size_t t = 0; t < n_corners_; ++t)
+      ++bucket_start[side_low(t) + 1];
+    std::partial_sum(bucket_start.begin(), bucket_start.end(), bucket_start.begin());
+    std::vector<u32> bucket(n_corners_);
+    {
+      std::vector<u32> fill(bucket_start.begin(), bucket_start.end() - 1);
+      for (std::size_t t = 0; t < n_corners_; ++t)
+        bucket[fill[side_low(t)]++] = u32(t);
+    }
+    partner_.assign(n_corners_, null);
+    std::vector<u32> stamp(nv, null), first(nv);
+    for (u32 lo = 0; lo < nv; ++lo) {
+      for (u32 k = bucket_start[lo]; k < bucket_start[lo + 1]; ++k) {
+        const u32 t = bucket[k], hi = side_high(t);
+        if (stamp[hi] != lo) {
+          stamp[hi] = lo;
+          first[hi] = t;
+        } else if (partner_[first[hi]] == null) {
+          partner_[first[hi]] = t;
+          partner_[t] = first[hi];
+        } else {
+          throw_non_manifold_edge(lo, hi, bucket.data() + bucket_start[lo], bucket.data() + bucket_start[lo + 1]);
+        }
+      }
+    }
+  }
+
+  [[noreturn]] void throw_non_manifold_edge(u32 lo, u32 hi, const u32* begin, const u32* end) const
+  {
+    std::vector<std::size_t> offenders;
+    for (const u32* s = begin; s != end; ++s)
+      if (side_high(*s) == hi)
+        offenders.push_back(corner_face_[*s]);
+    throw Soup_error(Soup_error::Kind::non_manifold_edge,
+                     "edge (" + std::to_string(lo) + ", " + std::to_string(hi) + ") is shared by " +
+                       std::to_string(offenders.size()) + " polygons (" + join_ids(offenders) +
+                       "); a 2-manifold edge has at most two",
+                     offenders, {std::size_t(lo), std::size_t(hi)});
+  }
+
+  // Edges are numbered in order of first use; the corner that uses an edge
+  // first gets its halfedge 2e, the partner 2e+1.
+  void number_edges()
+  {
+    corner_halfedge_.assign(n_corners_, null);
+    n_edges_ = 0;
+    for (std::size_t t = 0; t < n_corners_; ++t) {
+      if (corner_halfedge_[t] != null)
+        continue;
+      corner_halfedge_[t] = dart_encoding::halfedge_of_edge(n_edges_, 0);
+      if (partner_[t] != null)
+        corner_halfedge_[partner_[t]] = dart_encoding::halfedge_of_edge(n_edges_, 1);
+      ++n_edges_;
+    }
+  }
+
+  // Face cycles, border targets, Möbius bits.
+  void link_faces()
+  {
+    const std::size_t nh = 2 * std::size_t(n_edges_);
+    std::fill(out_.next, out_.next + nh, null);
+    std::fill(out_.prev, out_.prev + nh, null);
+    std::fill(out_.face, out_.face + nh, null);
+    std::fill(out_.mobius, out_.mobius + n_edges_, std::uint8_t(0));
+    std::fill(out_.vertex_dart, out_.vertex_dart + faces_.n_vertices, null);
+    corners_at_.assign(faces_.n_vertices, 0);
+    for (u32 f = 0; f < faces_.n_faces; ++f) {
+      out_.face_halfedge[f] = corner_halfedge_[faces_.offset[f]];
+      for (u32 t = faces_.offset[f]; t < faces_.offset[f + 1]; ++t) {
+        const std::size_t u = next_corner(t);
+        const u32 h = corner_halfedge_[t], target = corner_vertex(u);
+        out_.target[h] = target;
+        out_.face[h] = f;
+        set_next(dart_encoding::dart(h, false), dart_encoding::dart(corner_halfedge_[u], false));
+        ++corners_at_[target];
+        out_.vertex_dart[target] = dart_encoding::dart(h, false);
+        if (partner_[t] == null)
+          out_.target[dart_encoding::opposite_halfedge(h)] = corner_vertex(t);
+        else if (t < partner_[t])
+          out_.mobius[dart_encoding::edge_of_halfedge(h)] = corner_vertex(partner_[t]) == corner_vertex(t);
+      }
+    }
+    std::vector<u32>().swap(partner_);
+  }
+
+  // Dart navigation on the output arrays, as in Mobius_mesh.
+  u32 next(u32 d) const
+  {
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    return dart_encoding::is_flipped(d) ? dart_encoding::flip(out_.prev[h]) : out_.next[h];
+  }
+  u32 prev(u32 d) const
+  {
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    return dart_encoding::is_flipped(d) ? dart_encoding::flip(out_.next[h]) : out_.prev[h];
+  }
+  u32 opposite(u32 d) const { return dart_encoding::opposite_dart(d, out_.mobius[dart_encoding::edge_of_dart(d)] != 0); }
+  bool is_border(u32 d) const { return out_.face[dart_encoding::halfedge_of_dart(d)] == null; }
+  u32 face(u32 d) const { return out_.face[dart_encoding::halfedge_of_dart(d)]; }
+  void set_next(u32 a, u32 b)
+  {
+    using namespace dart_encoding;
+    if (is_flipped(a))
+      out_.prev[halfedge_of_dart(a)] = flip(b);
+    else
+      out_.next[halfedge_of_dart(a)] = b;
+    if (is_flipped(b))
+      out_.next[halfedge_of_dart(b)] = flip(a);
+    else
+      out_.prev[halfedge_of_dart(b)] = a;
+  }
+
+  // Walks the fan of incoming darts from `start` through its faces, stamping
+  // them with `stamp`; on the border, links the fan's two border darts to
+  // each other. Returns the fan's first dart (the border dart, if any) and
+  // how many faces it has; `touched` receives its halfedges if given.
+  std::pair<u32, u32> walk_fan(u32 start, u32 stamp, std::vector<u32>* touched)
+  {
+    u32 visited = 0;
+    auto visit = [&](u32 d) {
+      face_stamp_[face(d)] = stamp;
+      ++visited;
+      if (touched) {
+        touched->push_back(dart_encoding::halfedge_of_dart(d));
+        touched->push_back(dart_encoding::opposite_halfedge(dart_encoding::halfedge_of_dart(d)));
+      }
+    };
+    visit(start);
+    u32 in = start;
+    for (;;) {
+      const u32 o = opposite(next(in));
+      if (o == start)
+        return {start, visited};
+      in = o;
+      if (is_border(in))
+        break;
+      visit(in);
+    }
+    u32 out = opposite(start);
+    while (!is_border(out)) {
+      const u32 d = prev(out);
+      visit(d);
+      out = opposite(d);
+    }
+    if (touched) {
+      touched->push_back(dart_encoding::halfedge_of_dart(in));
+      touched->push_back(dart_encoding::halfedge_of_dart(out));
+    }
+    set_next(in, out);
+    return {in, visited};
+  }
+
+  std::vector<Split_vertex> link_fans(bool split)
+  {
+    face_stamp_.assign(faces_.n_faces, null);
+    std::vector<Split_vertex> copies;
+    for (u32 v = 0; v < faces_.n_vertices; ++v) {
+      if (corners_at_[v] == 0)
+        continue; // isolated
+      const auto [first, visited] = walk_fan(out_.vertex_dart[v], v, nullptr);
+      out_.vertex_dart[v] = first;
+      if (visited == corners_at_[v])
+        continue;
+      if (!split)
+        throw_non_manifold_vertex(v);
+      split_vertex(v, copies);
+    }
+    return copies;
+  }
+
+  // The corners whose side ends at each vertex, indexed only once a vertex
+  // turns out to be non-manifold.
+  void index_incoming_corners()
+  {
+    if (!incoming_start_.empty())
+      return;
+    incoming_start_.assign(std::size_t(faces_.n_vertices) + 1, 0);
+    for (std::size_t t = 0; t < n_corners_; ++t)
+      ++incoming_start_[corner_vertex(next_corner(t)) + 1];
+    std::partial_sum(incoming_start_.begin(), incoming_start_.end(), incoming_start_.begin());
+    incoming_corner_.resize(n_corners_);
+    std::vector<u32> fill(incoming_start_.begin(), incoming_start_.end() - 1);
+    for (std::size_t t = 0; t < n_corners_; ++t)
+      incoming_corner_[fill[corner_vertex(next_corner(t))]++] = u32(t);
+  }
+
+  [[noreturn]] void throw_non_manifold_vertex(u32 v)
+  {
+    index_incoming_corners();
+    std::vector<std::size_t> first_fan, others;
+    for (u32 k = incoming_start_[v]; k < incoming_start_[v + 1]; ++k) {
+      const u32 f = corner_face_[incoming_corner_[k]];
+      (face_stamp_[f] == v ? first_fan : others).push_back(f);
+    }
+    std::vector<std::size_t> all = first_fan;
+    all.insert(all.end(), others.begin(), others.end());
+    std::sort(all.begin(), all.end());
+    throw Soup_error(Soup_error::Kind::non_manifold_vertex,
+                     "vertex " + std::to_string(v) + " is non-manifold: its polygons form separate fans (" +
+                       join_ids(first_fan) + " | " + join_ids(others) + ")",
+                     all, {std::size_t(v)});
+  }
+
+  // Gives every fan of `v` but the first a vertex of its own.
+  void split_vertex(u32 v, std::vector<Split_vertex>& copies)
+  {
+    index_incoming_corners();
+    for (u32 k = incoming_start_[v]; k < incoming_start_[v + 1]; ++k) {
+      const u32 t = incoming_corner_[k];
+      if (face_stamp_[corner_face_[t]] == v)
+        continue;
+      const u32 copy = faces_.n_vertices + u32(copies.size());
+      std::vector<u32> touched;
+      const u32 first = walk_fan(dart_encoding::dart(corner_halfedge_[t], false), v, &touched).first;
+      for (u32 h : touched)
+        if (out_.target[h] == v)
+          out_.target[h] = copy;
+      copies.push_back({v, first});
+    }
+  }
+
+  Face_lists faces_;
+  Connectivity_view out_{};
+  std::size_t n_corners_ = 0;
+  u32 n_edges_ = 0;
+  std::vector<u32> corner_face_, partner_, corner_halfedge_, corners_at_, face_stamp_;
+  std::vector<u32> incoming_start_, incoming_corner_;
+};
+
+
+/// Builds `out` (empty) from face lists: the connectivity through the
+/// builder, written straight into the mesh's arrays, and the point of each
+/// vertex from `point_of(v)` (a copy made by splitting a non-manifold vertex
+/// takes its original's point). Returns the number of such copies.
+template <class P, class PointOf>
+std::size_t build_mesh_from_faces(const Face_lists& faces, PointOf point_of, bool split_non_manifold_vertices,
+                                  Mobius_mesh<P>& out)
+{
+  Connectivity_builder builder(faces);
+  const auto arrays = out.overwrite_connectivity(builder.number_of_vertices(), builder.number_of_edges(),
+                                                 builder.number_of_faces());
+  const Connectivity_view view{arrays.target, arrays.next_bits, arrays.prev_bits, arrays.face,
+                               arrays.vertex_dart_bits, arrays.face_halfedge, arrays.mobius};
+  std::vector<Split_vertex> copies;
+  try {
+    copies = builder.build(view, split_non_manifold_vertices);
+  } catch (...) {
+    out = Mobius_mesh<P>(); // the arrays are half written
+    throw;
+  }
+  out.reset_property_maps();
+  auto points = out.points();
+  for (std::uint32_t v = 0; v < faces.n_vertices; ++v)
+    points[Vertex_index(v)] = point_of(v);
+  for (const Split_vertex& copy : copies) {
+    const Vertex_index v = out.add_vertex(points[Vertex_index(copy.original)]);
+    out.set_halfedge(v, Dart::from_bits(copy.dart));
+  }
+  return copies.size();
+}
+
+} // namespace internal
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_CONNECTIVITY_BUILDER_H
