@@ -244,205 +244,409 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
 
 namespace internal {
 
-template <class P, class O, class Q, class NamedParameters>
-Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<O>& oriented, std::size_t mobius_left,
-                                  CGAL::Surface_mesh<Q>& sm, const NamedParameters& np)
+// Wedges: around each vertex, faces between two Möbius edges share a vertex
+// copy. `wedge[h]` is the copy at the target of the (oriented) face halfedge
+// h; `wedge_vertex[w]` the vertex of copy w (copy v is vertex v). Around an
+// interior vertex the Möbius edges come in even numbers (its star is a disc),
+// so a Möbius edge always has distinct copies at both ends on its two sides:
+// the cut is a 2-manifold.
+template <class O>
+void label_wedges(const Mobius_mesh<O>& oriented, std::size_t mobius_left, std::vector<std::uint32_t>& wedge,
+                  std::vector<Vertex_index>& wedge_vertex)
 {
-  using SM = CGAL::Surface_mesh<Q>;
-  using SV = typename SM::Vertex_index;
-  using SH = typename SM::Halfedge_index;
-  using SE = typename SM::Edge_index;
-  using SF = typename SM::Face_index;
   constexpr std::uint32_t none = Vertex_index::null_value;
-  Conversion_result result;
-
-  // 1. `reversed[f]` says which faces turned.
-  const std::size_t nv = mesh.number_of_vertices(), nh = mesh.number_of_halfedges(), nf = mesh.number_of_faces();
-  std::vector<bool> reversed(nf, false);
-  for (Face_index f : mesh.faces()) {
-    const Halfedge_index h = mesh.halfedge(f).halfedge();
-    reversed[f.idx()] = oriented.target(Dart(h, false)) != mesh.target(Dart(h, false));
-    result.reversed_faces += reversed[f.idx()] ? 1 : 0;
-  }
-
-  // 2. Wedges: around each vertex, faces between two Möbius edges share a
-  //    vertex copy. `wedge[h]` is the copy at the target of the (oriented)
-  //    face halfedge h. Around an interior vertex the Möbius edges come in
-  //    even numbers (its star is a disc), so a Möbius edge always has distinct
-  //    copies at both ends on its two sides: the cut is a 2-manifold.
-  std::vector<std::uint32_t> wedge(nh, none);
-  std::vector<Vertex_index> wedge_vertex(nv);
-  for (std::size_t i = 0; i < nv; ++i)
+  wedge.assign(oriented.number_of_halfedges(), none);
+  wedge_vertex.resize(oriented.number_of_vertices());
+  for (std::size_t i = 0; i < wedge_vertex.size(); ++i)
     wedge_vertex[i] = Vertex_index(i);
   if (mobius_left == 0) {
     // Nothing is cut: each corner is its own vertex, no walk around vertices.
     for (Halfedge_index h : oriented.halfedges())
       if (!oriented.is_border(h))
         wedge[h.idx()] = oriented.target(Dart(h, false)).idx();
-  } else {
-    for (Vertex_index v : oriented.vertices()) {
-      Dart start = oriented.halfedge(v);
-      if (!start.is_valid())
-        continue;
-      if (!oriented.is_border(start)) {
-        // Start on a Möbius edge, so that the walk's wrap-around is not inside a wedge.
-        for (Dart d : CGAL_ext::halfedges_around_target(start, oriented))
-          if (oriented.is_mobius(oriented.edge(d))) {
-            start = d;
-            break;
-          }
-      }
-      std::uint32_t label = none;
-      for (Dart d : CGAL_ext::halfedges_around_target(start, oriented)) {
-        if (oriented.is_border(d))
-          continue;
-        if (label == none)
-          label = v.idx();
-        else if (oriented.is_mobius(oriented.edge(d))) {
-          label = std::uint32_t(wedge_vertex.size());
-          wedge_vertex.push_back(v);
+    return;
+  }
+  for (Vertex_index v : oriented.vertices()) {
+    Dart start = oriented.halfedge(v);
+    if (!start.is_valid())
+      continue;
+    if (!oriented.is_border(start)) {
+      // Start on a Möbius edge, so that the walk's wrap-around is not inside a wedge.
+      for (Dart d : CGAL_ext::halfedges_around_target(start, oriented))
+        if (oriented.is_mobius(oriented.edge(d))) {
+          start = d;
+          break;
         }
-        // A flipped incoming dart is the halfedge leaving v in its face: the
-        // corner at v ends the previous halfedge of the face.
-        const Halfedge_index corner = d.is_flipped() ? oriented.next(d).halfedge() : d.halfedge();
-        wedge[corner.idx()] = label;
+    }
+    std::uint32_t label = none;
+    for (Dart d : CGAL_ext::halfedges_around_target(start, oriented)) {
+      if (oriented.is_border(d))
+        continue;
+      if (label == none)
+        label = v.idx();
+      else if (oriented.is_mobius(oriented.edge(d))) {
+        label = std::uint32_t(wedge_vertex.size());
+        wedge_vertex.push_back(v);
       }
+      // A flipped incoming dart is the halfedge leaving v in its face: the
+      // corner at v ends the previous halfedge of the face.
+      const Halfedge_index corner = d.is_flipped() ? oriented.next(d).halfedge() : d.halfedge();
+      wedge[corner.idx()] = label;
     }
   }
-  result.added_vertices = wedge_vertex.size() - nv;
+}
 
-  // 3. Build the Surface_mesh connectivity directly (linear, no search),
-  //    in arrays reserved once: each cut Möbius edge becomes two edges.
-  const internal::Point_converter<P, Q> convert;
-  sm.reserve(typename SM::size_type(sm.number_of_vertices() + sm.number_of_removed_vertices() + wedge_vertex.size()),
-             typename SM::size_type(sm.number_of_edges() + sm.number_of_removed_edges() + mesh.number_of_edges() +
-                                    mobius_left),
-             typename SM::size_type(sm.number_of_faces() + sm.number_of_removed_faces() + nf));
-  std::vector<SV> sm_vertex(wedge_vertex.size());
-  for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
-    sm_vertex[w] = sm.add_vertex(convert(mesh.point(wedge_vertex[w])));
-  std::vector<SH> face_he(nh);   // the face halfedge of sm for a face halfedge of mesh
-  std::vector<SH> seam_he(mobius_left > 0 ? nh : 0); // its border partner, where the edge was cut
-  const bool want_edge_pairs = internal::has_user_properties<Edge_index>(mesh);
+// The Surface_mesh written from an oriented Mobius_mesh cut along its Möbius
+// edges: its elements for ours, built directly (linear, no search) in arrays
+// reserved once; each cut Möbius edge becomes two edges.
+template <class O, class Q>
+struct Cut_writer
+{
+  using SM = CGAL::Surface_mesh<Q>;
+  using SV = typename SM::Vertex_index;
+  using SH = typename SM::Halfedge_index;
+  using SE = typename SM::Edge_index;
+  using SF = typename SM::Face_index;
+
+  const Mobius_mesh<O>& oriented;
+  SM& sm;
+  std::vector<std::uint32_t> wedge;
+  std::vector<Vertex_index> wedge_vertex;
+  std::vector<SV> sm_vertex;
+  std::vector<SH> face_he; // the face halfedge of sm for a face halfedge of ours
+  std::vector<SH> seam_he; // its border partner, where the edge was cut
   std::vector<std::pair<Edge_index, SE>> edge_pairs;
-  if (want_edge_pairs)
-    edge_pairs.reserve(mesh.number_of_edges() + mobius_left);
-  for (Edge_index e : oriented.edges()) {
-    const Halfedge_index h0 = Mobius_mesh<P>::halfedge(e, 0), h1 = Mobius_mesh<P>::halfedge(e, 1);
-    const bool f0 = !oriented.is_border(h0), f1 = !oriented.is_border(h1);
-    if (f0 && f1 && !oriented.is_mobius(e)) {
-      const SH s = sm.add_edge();
-      face_he[h0.idx()] = s;
-      face_he[h1.idx()] = sm.opposite(s);
-      if (want_edge_pairs)
-        edge_pairs.emplace_back(e, sm.edge(s));
-      continue;
-    }
-    for (Halfedge_index h : {h0, h1}) {
-      if (oriented.is_border(h))
-        continue;
-      const SH s = sm.add_edge();
-      face_he[h.idx()] = s;
-      if (want_edge_pairs)
-        edge_pairs.emplace_back(e, sm.edge(s));
-      if (oriented.is_mobius(e))
-        seam_he[h.idx()] = sm.opposite(s);
-    }
-    result.seam_edges += oriented.is_mobius(e) ? 1 : 0;
-  }
-  std::vector<std::pair<Face_index, SF>> face_pairs(nf);
-  std::vector<SH> border_in(wedge_vertex.size()), border_out(wedge_vertex.size());
-  for (Face_index f : oriented.faces()) {
-    const SF sf = sm.add_face();
-    face_pairs[f.idx()] = {f, sf};
-    const Dart first = oriented.halfedge(f);
-    sm.set_halfedge(sf, face_he[first.halfedge().idx()]);
-    for (Dart d : CGAL_ext::halfedges_around_face(first, oriented)) {
-      // Darts of a face cycle are valid: the halfedge is read off the bits,
-      // where d.halfedge() would show GCC 12 its null branch and a false
-      // -Warray-bounds at -O3.
-      const Halfedge_index h(internal::dart_encoding::halfedge_of_dart(d.bits()));
-      const SH s = face_he[h.idx()];
-      const std::uint32_t t = wedge[h.idx()], src = wedge[oriented.prev(d).halfedge().idx()];
-      sm.set_target(s, sm_vertex[t]);
-      sm.set_face(s, sf);
-      sm.set_next(s, face_he[oriented.next(d).halfedge().idx()]);
-      sm.set_halfedge(sm_vertex[t], s);
-      // A face halfedge without a face on the other side: its partner is a
-      // border halfedge of sm, running from t to src.
-      const bool border_edge = oriented.is_border(Mobius_mesh<P>::opposite_halfedge(h));
-      if (border_edge || oriented.is_mobius(oriented.edge(d))) {
-        const SH b = sm.opposite(s);
-        sm.set_target(b, sm_vertex[src]);
-        sm.set_face(b, SF());
-        border_in[src] = b;
-        border_out[t] = b;
-      }
-    }
-  }
-  for (std::size_t w = 0; w < wedge_vertex.size(); ++w) {
-    if (border_in[w] == SH())
-      continue;
-    sm.set_next(border_in[w], border_out[w]);
-    sm.set_halfedge(sm_vertex[w], border_in[w]);
+  std::vector<std::pair<Face_index, SF>> face_pairs;
+  std::size_t seam_edges = 0;
+
+  template <class P>
+  void add_vertices(const Mobius_mesh<P>& mesh, std::size_t mobius_left)
+  {
+    sm.reserve(typename SM::size_type(sm.number_of_vertices() + sm.number_of_removed_vertices() + wedge_vertex.size()),
+               typename SM::size_type(sm.number_of_edges() + sm.number_of_removed_edges() + mesh.number_of_edges() +
+                                      mobius_left),
+               typename SM::size_type(sm.number_of_faces() + sm.number_of_removed_faces() + mesh.number_of_faces()));
+    const Point_converter<P, Q> convert;
+    sm_vertex.resize(wedge_vertex.size());
+    for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
+      sm_vertex[w] = sm.add_vertex(convert(mesh.point(wedge_vertex[w])));
   }
 
-  // 4. The seam and orientation records, and the user's property maps.
-  if (result.seam_edges > 0) {
-    auto seam = sm.template add_property_map<SH, Seam_link>(seam_map_name, Seam_link()).first;
+  void add_edges(bool want_edge_pairs, std::size_t mobius_left)
+  {
+    face_he.resize(oriented.number_of_halfedges());
+    seam_he.resize(mobius_left > 0 ? oriented.number_of_halfedges() : 0);
+    if (want_edge_pairs)
+      edge_pairs.reserve(oriented.number_of_edges() + mobius_left);
     for (Edge_index e : oriented.edges()) {
-      if (!oriented.is_mobius(e))
+      const Halfedge_index h0 = Mobius_mesh<O>::halfedge(e, 0), h1 = Mobius_mesh<O>::halfedge(e, 1);
+      if (!oriented.is_border(h0) && !oriented.is_border(h1) && !oriented.is_mobius(e)) {
+        const SH s = sm.add_edge();
+        face_he[h0.idx()] = s;
+        face_he[h1.idx()] = sm.opposite(s);
+        if (want_edge_pairs)
+          edge_pairs.emplace_back(e, sm.edge(s));
         continue;
-      const SH b0 = seam_he[Mobius_mesh<P>::halfedge(e, 0).idx()], b1 = seam_he[Mobius_mesh<P>::halfedge(e, 1).idx()];
-      seam[b0] = Seam_link{b1, true};
-      seam[b1] = Seam_link{b0, true};
+      }
+      for (Halfedge_index h : {h0, h1}) {
+        if (oriented.is_border(h))
+          continue;
+        const SH s = sm.add_edge();
+        face_he[h.idx()] = s;
+        if (want_edge_pairs)
+          edge_pairs.emplace_back(e, sm.edge(s));
+        if (oriented.is_mobius(e))
+          seam_he[h.idx()] = sm.opposite(s);
+      }
+      seam_edges += oriented.is_mobius(e) ? 1 : 0;
     }
   }
-  if (result.reversed_faces > 0) {
-    auto flag = sm.template add_property_map<SF, bool>(reversed_faces_map_name, false).first;
-    for (Face_index f : mesh.faces())
-      flag[face_pairs[f.idx()].second] = reversed[f.idx()];
+
+  void add_faces()
+  {
+    face_pairs.resize(oriented.number_of_faces());
+    std::vector<SH> border_in(wedge_vertex.size()), border_out(wedge_vertex.size());
+    for (Face_index f : oriented.faces()) {
+      const SF sf = sm.add_face();
+      face_pairs[f.idx()] = {f, sf};
+      const Dart first = oriented.halfedge(f);
+      sm.set_halfedge(sf, face_he[first.halfedge().idx()]);
+      for (Dart d : CGAL_ext::halfedges_around_face(first, oriented)) {
+        // Darts of a face cycle are valid: the halfedge is read off the bits,
+        // where d.halfedge() would show GCC 12 its null branch and a false
+        // -Warray-bounds at -O3.
+        const Halfedge_index h(dart_encoding::halfedge_of_dart(d.bits()));
+        const SH s = face_he[h.idx()];
+        const std::uint32_t t = wedge[h.idx()], src = wedge[oriented.prev(d).halfedge().idx()];
+        sm.set_target(s, sm_vertex[t]);
+        sm.set_face(s, sf);
+        sm.set_next(s, face_he[oriented.next(d).halfedge().idx()]);
+        sm.set_halfedge(sm_vertex[t], s);
+        // A face halfedge without a face on the other side: its partner is a
+        // border halfedge of sm, running from t to src.
+        if (oriented.is_border(Mobius_mesh<O>::opposite_halfedge(h)) || oriented.is_mobius(oriented.edge(d))) {
+          const SH b = sm.opposite(s);
+          sm.set_target(b, sm_vertex[src]);
+          sm.set_face(b, SF());
+          border_in[src] = b;
+          border_out[t] = b;
+        }
+      }
+    }
+    for (std::size_t w = 0; w < wedge_vertex.size(); ++w) {
+      if (border_in[w] == SH())
+        continue;
+      sm.set_next(border_in[w], border_out[w]);
+      sm.set_halfedge(sm_vertex[w], border_in[w]);
+    }
   }
+
+  // The seam and orientation records that from_surface_mesh() reads.
+  void record_seam_and_reversals(const std::vector<bool>& reversed, std::size_t reversed_faces)
+  {
+    if (seam_edges > 0) {
+      auto seam = sm.template add_property_map<SH, Seam_link>(seam_map_name, Seam_link()).first;
+      for (Edge_index e : oriented.edges()) {
+        if (!oriented.is_mobius(e))
+          continue;
+        const SH b0 = seam_he[Mobius_mesh<O>::halfedge(e, 0).idx()], b1 = seam_he[Mobius_mesh<O>::halfedge(e, 1).idx()];
+        seam[b0] = Seam_link{b1, true};
+        seam[b1] = Seam_link{b0, true};
+      }
+    }
+    if (reversed_faces > 0) {
+      auto flag = sm.template add_property_map<SF, bool>(reversed_faces_map_name, false).first;
+      for (const auto& [f, sf] : face_pairs)
+        flag[sf] = reversed[f.idx()];
+    }
+  }
+};
+
+// The user's property maps and the output iterators of to_surface_mesh().
+template <class P, class O, class Q, class NamedParameters>
+void carry_to_surface_mesh(const Mobius_mesh<P>& mesh, const Cut_writer<O, Q>& w, const std::vector<bool>& reversed,
+                           const NamedParameters& np)
+{
+  using SV = typename Cut_writer<O, Q>::SV;
+  using SH = typename Cut_writer<O, Q>::SH;
   std::vector<std::pair<Vertex_index, SV>> vertex_pairs;
-  if (internal::has_user_properties<Vertex_index>(mesh) ||
-      internal::has_output<NamedParameters>(CGAL::internal_np::vertex_to_vertex_output_iterator)) {
-    vertex_pairs.resize(wedge_vertex.size());
-    for (std::size_t w = 0; w < wedge_vertex.size(); ++w)
-      vertex_pairs[w] = {wedge_vertex[w], sm_vertex[w]};
+  if (has_user_properties<Vertex_index>(mesh) ||
+      has_output<NamedParameters>(CGAL::internal_np::vertex_to_vertex_output_iterator)) {
+    vertex_pairs.resize(w.wedge_vertex.size());
+    for (std::size_t i = 0; i < w.wedge_vertex.size(); ++i)
+      vertex_pairs[i] = {w.wedge_vertex[i], w.sm_vertex[i]};
   }
   std::vector<std::pair<Halfedge_index, SH>> halfedge_pairs;
-  if (internal::has_user_properties<Halfedge_index>(mesh) ||
-      internal::has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator)) {
-    halfedge_pairs.reserve(nh);
+  if (has_user_properties<Halfedge_index>(mesh) ||
+      has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator)) {
+    halfedge_pairs.reserve(mesh.number_of_halfedges());
     for (Halfedge_index h : mesh.halfedges())
       if (!mesh.is_border(h)) {
-        halfedge_pairs.emplace_back(h, face_he[h.idx()]);
+        halfedge_pairs.emplace_back(h, w.face_he[h.idx()]);
         if (mesh.is_border(Mobius_mesh<P>::opposite_halfedge(h)))
-          halfedge_pairs.emplace_back(Mobius_mesh<P>::opposite_halfedge(h), sm.opposite(face_he[h.idx()]));
+          halfedge_pairs.emplace_back(Mobius_mesh<P>::opposite_halfedge(h), w.sm.opposite(w.face_he[h.idx()]));
       }
   }
-  internal::properties_to_surface_mesh(mesh, sm, vertex_pairs);
-  internal::properties_to_surface_mesh(mesh, sm, halfedge_pairs);
-  internal::properties_to_surface_mesh(mesh, sm, edge_pairs);
-  internal::properties_to_surface_mesh(mesh, sm, face_pairs);
+  properties_to_surface_mesh(mesh, w.sm, vertex_pairs);
+  properties_to_surface_mesh(mesh, w.sm, halfedge_pairs);
+  properties_to_surface_mesh(mesh, w.sm, w.edge_pairs);
+  properties_to_surface_mesh(mesh, w.sm, w.face_pairs);
 
-  internal::write_pairs(np, CGAL::internal_np::vertex_to_vertex_output_iterator, [&](auto out) {
+  write_pairs(np, CGAL::internal_np::vertex_to_vertex_output_iterator, [&](auto out) {
     for (const auto& p : vertex_pairs)
       out(p);
   });
-  internal::write_pairs(np, CGAL::internal_np::halfedge_to_halfedge_output_iterator, [&](auto out) {
+  write_pairs(np, CGAL::internal_np::halfedge_to_halfedge_output_iterator, [&](auto out) {
     for (const auto& [h, s] : halfedge_pairs) {
       const Halfedge_index fh = mesh.is_border(h) ? Mobius_mesh<P>::opposite_halfedge(h) : h;
       const Dart d(fh, reversed[mesh.face(fh).idx()]);
       out(std::make_pair(mesh.is_border(h) ? mesh.opposite(d) : d, s));
     }
   });
-  internal::write_pairs(np, CGAL::internal_np::face_to_face_output_iterator, [&](auto out) {
-    for (const auto& p : face_pairs)
+  write_pairs(np, CGAL::internal_np::face_to_face_output_iterator, [&](auto out) {
+    for (const auto& p : w.face_pairs)
       out(p);
   });
+}
+
+template <class P, class O, class Q, class NamedParameters>
+Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<O>& oriented, std::size_t mobius_left,
+                                  CGAL::Surface_mesh<Q>& sm, const NamedParameters& np)
+{
+  Conversion_result result;
+  // Which faces orient() turned.
+  std::vector<bool> reversed(mesh.number_of_faces(), false);
+  for (Face_index f : mesh.faces()) {
+    const Halfedge_index h = mesh.halfedge(f).halfedge();
+    reversed[f.idx()] = oriented.target(Dart(h, false)) != mesh.target(Dart(h, false));
+    result.reversed_faces += reversed[f.idx()] ? 1 : 0;
+  }
+  Cut_writer<O, Q> w{oriented, sm, {}, {}, {}, {}, {}, {}, {}, 0};
+  label_wedges(oriented, mobius_left, w.wedge, w.wedge_vertex);
+  result.added_vertices = w.wedge_vertex.size() - mesh.number_of_vertices();
+  w.add_vertices(mesh, mobius_left);
+  w.add_edges(has_user_properties<Edge_index>(mesh), mobius_left);
+  w.add_faces();
+  result.seam_edges = w.seam_edges;
+  w.record_seam_and_reversals(reversed, result.reversed_faces);
+  carry_to_surface_mesh(mesh, w, reversed, np);
   return result;
 }
+
+} // namespace internal
+
+namespace internal {
+
+// Reading a Surface_mesh back: its elements densely numbered, the vertices
+// that its seam map glues identified, the glued mesh built through the
+// connectivity builder, and the correspondences of the elements.
+template <class Q>
+struct Seam_gluing
+{
+  using SM = CGAL::Surface_mesh<Q>;
+  using SV = typename SM::Vertex_index;
+  using SH = typename SM::Halfedge_index;
+  using SE = typename SM::Edge_index;
+  using SF = typename SM::Face_index;
+
+  const SM& sm;
+  std::vector<std::uint32_t> dense; // dense number of each vertex not removed
+  std::vector<SV> vertex_of;
+  std::vector<SF> face_of;
+  std::vector<bool> glued;          // per halfedge: glued by the seam map
+  std::vector<std::uint32_t> class_index;
+  std::vector<SV> class_rep;        // the lowest vertex of each class
+  std::uint32_t n_classes = 0;
+
+  explicit Seam_gluing(const SM& mesh)
+    : sm(mesh), dense(sm.number_of_vertices() + sm.number_of_removed_vertices(), Vertex_index::null_value),
+      face_of(sm.faces().begin(), sm.faces().end()), glued(sm.number_of_halfedges() + sm.number_of_removed_halfedges())
+  {
+    vertex_of.reserve(sm.number_of_vertices());
+    for (SV v : sm.vertices()) {
+      dense[std::size_t(v)] = std::uint32_t(vertex_of.size());
+      vertex_of.push_back(v);
+    }
+  }
+
+  // Checks the seam map and identifies the vertices it glues; returns the
+  // number of glued edges.
+  std::size_t glue()
+  {
+    Union_find glued_vertices{std::uint32_t(vertex_of.size())};
+    auto unite = [&](SV a, SV b) { glued_vertices.unite(dense[std::size_t(a)], dense[std::size_t(b)]); };
+    std::size_t seam_edges = 0;
+    const auto [seam, has_seam] = sm.template property_map<SH, Seam_link>(seam_map_name);
+    for (SH h : sm.halfedges()) {
+      if (!has_seam)
+        break;
+      const Seam_link link = seam[h];
+      if (link.partner == SH())
+        continue;
+      const SH g = link.partner;
+      check_link(seam, h, link);
+      glued[std::size_t(h)] = true;
+      if (h < g) {
+        ++seam_edges;
+        unite(sm.source(h), link.twisted ? sm.source(g) : sm.target(g));
+        unite(sm.target(h), link.twisted ? sm.target(g) : sm.source(g));
+      }
+    }
+    class_index = glued_vertices.classes(n_classes);
+    class_rep.resize(n_classes);
+    for (std::uint32_t i = std::uint32_t(vertex_of.size()); i-- > 0;)
+      class_rep[class_index[i]] = vertex_of[i];
+    return seam_edges;
+  }
+
+  template <class SeamMap>
+  void check_link(const SeamMap& seam, SH h, const Seam_link& link) const
+  {
+    auto name = [](SH x) { return "h" + std::to_string(std::size_t(x)); };
+    const SH g = link.partner;
+    if (!sm.is_border(h))
+      throw Seam_error("seam map: " + name(h) + " is glued but is not a border halfedge");
+    if (std::size_t(g) >= sm.number_of_halfedges() + sm.number_of_removed_halfedges() || sm.is_removed(g) ||
+        !sm.is_border(g))
+      throw Seam_error("seam map: the partner " + name(g) + " of " + name(h) + " is not a border halfedge");
+    if (g == h || seam[g].partner != h || seam[g].twisted != link.twisted)
+      throw Seam_error("seam map: " + name(h) + " -> " + name(g) + " is not matched by " + name(g) + " -> " +
+                       name(h) + " with the same twist");
+  }
+
+  // One vertex per class, one face per face starting at the source of the
+  // face's halfedge, so that the new face's halfedge is the same one.
+  template <class P>
+  void build(Mobius_mesh<P>& part) const
+  {
+    // Corners in one flat array: a vector per face would cost one
+    // allocation per face, a third of the conversion.
+    Face_list faces;
+    faces.vertex.reserve(sm.number_of_halfedges());
+    faces.offset.reserve(face_of.size() + 1);
+    for (SF f : face_of) {
+      for (SH h : CGAL::halfedges_around_face(sm.halfedge(f), sm))
+        faces.vertex.push_back(class_index[dense[std::size_t(sm.source(h))]]);
+      faces.offset.push_back(std::uint32_t(faces.vertex.size()));
+    }
+    try {
+      const Point_converter<Q, P> convert;
+      build_mesh_from_faces(
+        faces.view(n_classes), [&](std::uint32_t v) { return convert(sm.point(class_rep[v])); }, false, part);
+    } catch (const Soup_error& e) {
+      std::vector<std::size_t> where;
+      for (std::size_t c : e.vertices())
+        for (std::uint32_t i = 0; i < vertex_of.size(); ++i)
+          if (class_index[i] == c)
+            where.push_back(std::size_t(vertex_of[i]));
+      throw Seam_error("gluing the seam does not give a 2-manifold at vertices {" +
+                       join_ids(where, "v", where.size()) + "}: " + e.what());
+    }
+  }
+
+  // Correspondences, read off the face cycles in step (halfedges and edges
+  // only if a property map or the caller needs them), and the property maps
+  // carried over. Returns the halfedge and face pairs.
+  template <class P>
+  std::pair<std::vector<std::pair<SH, Halfedge_index>>, std::vector<std::pair<SF, Face_index>>>
+  carry_properties(Mobius_mesh<P>& part, bool want_halfedges) const
+  {
+    std::vector<std::pair<SH, Halfedge_index>> halfedge_pairs;
+    std::vector<std::pair<SE, Edge_index>> edge_pairs;
+    want_halfedges = want_halfedges || has_user_properties<SH>(sm) || has_user_properties<SE>(sm);
+    if (want_halfedges) {
+      halfedge_pairs.reserve(sm.number_of_halfedges());
+      edge_pairs.reserve(sm.number_of_edges());
+    }
+    std::vector<bool> edge_done(want_halfedges ? part.number_of_edges() : 0, false);
+    for (std::size_t f = 0; want_halfedges && f < face_of.size(); ++f) {
+      Dart d = part.halfedge(Face_index(f));
+      for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm)) {
+        halfedge_pairs.emplace_back(h, d.halfedge());
+        const SH o = sm.opposite(h);
+        if (sm.is_border(o) && !glued[std::size_t(o)])
+          halfedge_pairs.emplace_back(o, Mobius_mesh<P>::opposite_halfedge(d.halfedge()));
+        const Edge_index e = part.edge(d);
+        if (!edge_done[e.idx()]) { // a glued edge takes the first of its two copies' values
+          edge_done[e.idx()] = true;
+          edge_pairs.emplace_back(sm.edge(h), e);
+        }
+        d = part.next(d);
+      }
+    }
+    std::vector<std::pair<SV, Vertex_index>> rep_pairs(n_classes);
+    for (std::uint32_t c = 0; c < n_classes; ++c)
+      rep_pairs[c] = {class_rep[c], Vertex_index(c)};
+    std::vector<std::pair<SF, Face_index>> face_pairs(face_of.size());
+    for (std::size_t f = 0; f < face_of.size(); ++f)
+      face_pairs[f] = {face_of[f], Face_index(f)};
+    properties_from_surface_mesh(sm, part, rep_pairs);
+    properties_from_surface_mesh(sm, part, halfedge_pairs);
+    properties_from_surface_mesh(sm, part, edge_pairs);
+    properties_from_surface_mesh(sm, part, face_pairs);
+    return {std::move(halfedge_pairs), std::move(face_pairs)};
+  }
+};
 
 } // namespace internal
 
@@ -483,133 +687,21 @@ template <class Q, class P, class NamedParameters = parameters::Default_named_pa
 Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh<P>& mesh,
                                     const NamedParameters& np = parameters::default_values())
 {
-  using SM = CGAL::Surface_mesh<Q>;
-  using SV = typename SM::Vertex_index;
-  using SH = typename SM::Halfedge_index;
-  using SE = typename SM::Edge_index;
-  using SF = typename SM::Face_index;
-  constexpr std::uint32_t none = Vertex_index::null_value;
+  using SH = typename CGAL::Surface_mesh<Q>::Halfedge_index;
+  using SF = typename CGAL::Surface_mesh<Q>::Face_index;
   Conversion_result result;
-
-  // 1. Dense numbering of the elements that are not removed.
-  std::vector<std::uint32_t> dense(sm.number_of_vertices() + sm.number_of_removed_vertices(), none);
-  std::vector<SV> vertex_of;
-  vertex_of.reserve(sm.number_of_vertices());
-  for (SV v : sm.vertices()) {
-    dense[std::size_t(v)] = std::uint32_t(vertex_of.size());
-    vertex_of.push_back(v);
-  }
-  std::vector<SF> face_of(sm.faces().begin(), sm.faces().end());
-
-  // 2. Identify the vertices that the seam glues.
-  internal::Union_find glued_vertices{std::uint32_t(vertex_of.size())};
-  auto unite = [&](SV a, SV b) { glued_vertices.unite(dense[std::size_t(a)], dense[std::size_t(b)]); };
-  const auto [seam, has_seam] = sm.template property_map<SH, Seam_link>(seam_map_name);
-  std::vector<bool> glued(sm.number_of_halfedges() + sm.number_of_removed_halfedges(), false);
-  if (has_seam) {
-    auto name = [](SH h) { return "h" + std::to_string(std::size_t(h)); };
-    for (SH h : sm.halfedges()) {
-      const Seam_link link = seam[h];
-      if (link.partner == SH())
-        continue;
-      const SH g = link.partner;
-      if (!sm.is_border(h))
-        throw Seam_error("seam map: " + name(h) + " is glued but is not a border halfedge");
-      if (std::size_t(g) >= sm.number_of_halfedges() + sm.number_of_removed_halfedges() || sm.is_removed(g) ||
-          !sm.is_border(g))
-        throw Seam_error("seam map: the partner " + name(g) + " of " + name(h) + " is not a border halfedge");
-      if (g == h || seam[g].partner != h || seam[g].twisted != link.twisted)
-        throw Seam_error("seam map: " + name(h) + " -> " + name(g) + " is not matched by " + name(g) + " -> " +
-                         name(h) + " with the same twist");
-      glued[std::size_t(h)] = true;
-      if (h < g) {
-        ++result.seam_edges;
-        if (link.twisted) {
-          unite(sm.source(h), sm.source(g));
-          unite(sm.target(h), sm.target(g));
-        } else {
-          unite(sm.source(h), sm.target(g));
-          unite(sm.target(h), sm.source(g));
-        }
-      }
-    }
-  }
-
-  // 3. The glued soup: one point per class (ordered by lowest member), one
-  //    polygon per face starting at the source of the face's halfedge, so
-  //    that the new face's halfedge is the same one.
-  std::uint32_t n_classes = 0;
-  const std::vector<std::uint32_t> class_index = glued_vertices.classes(n_classes);
-  std::vector<SV> class_rep(n_classes);
-  for (std::uint32_t i = std::uint32_t(vertex_of.size()); i-- > 0;)
-    class_rep[class_index[i]] = vertex_of[i];
-  result.added_vertices = vertex_of.size() - n_classes;
-  // Corners in one flat array: a vector per face would cost one allocation
-  // per face, a third of the conversion.
-  std::vector<std::uint32_t> corners, start;
-  corners.reserve(sm.number_of_halfedges());
-  start.reserve(face_of.size() + 1);
-  start.push_back(0);
-  for (std::size_t f = 0; f < face_of.size(); ++f) {
-    for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm))
-      corners.push_back(class_index[dense[std::size_t(sm.source(h))]]);
-    start.push_back(std::uint32_t(corners.size()));
-  }
-  const internal::Face_lists faces{n_classes, std::uint32_t(face_of.size()), start.data(), corners.data()};
-
+  internal::Seam_gluing<Q> gluing(sm);
+  result.seam_edges = gluing.glue();
+  result.added_vertices = gluing.vertex_of.size() - gluing.n_classes;
   Mobius_mesh<P> part;
-  try {
-    const internal::Point_converter<Q, P> convert;
-    internal::build_mesh_from_faces(
-      faces, [&](std::uint32_t v) { return convert(sm.point(class_rep[v])); }, false, part);
-  } catch (const Soup_error& e) {
-    std::string where;
-    for (std::size_t c : e.vertices())
-      for (std::uint32_t i = 0; i < vertex_of.size(); ++i)
-        if (class_index[i] == c)
-          where += (where.empty() ? "" : ", ") + std::string("v") + std::to_string(std::size_t(vertex_of[i]));
-    throw Seam_error("gluing the seam does not give a 2-manifold at vertices {" + where + "}: " + e.what());
-  }
+  gluing.build(part);
+  const auto carried = gluing.carry_properties(
+    part, internal::has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator));
+  const auto& halfedge_pairs = carried.first;
+  const auto& face_pairs = carried.second;
+  const std::vector<SF>& face_of = gluing.face_of;
 
-  // 4. Correspondences, read off the face cycles in step (halfedges and
-  //    edges only if a property map or the output iterator needs them).
-  std::vector<std::pair<SH, Halfedge_index>> halfedge_pairs;
-  std::vector<std::pair<SE, Edge_index>> edge_pairs;
-  const bool want_halfedge_pairs =
-    internal::has_user_properties<SH>(sm) || internal::has_user_properties<SE>(sm) ||
-    internal::has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator);
-  if (want_halfedge_pairs) {
-    halfedge_pairs.reserve(sm.number_of_halfedges());
-    edge_pairs.reserve(sm.number_of_edges());
-  }
-  std::vector<bool> edge_done(want_halfedge_pairs ? part.number_of_edges() : 0, false);
-  for (std::size_t f = 0; want_halfedge_pairs && f < face_of.size(); ++f) {
-    Dart d = part.halfedge(Face_index(f));
-    for (SH h : CGAL::halfedges_around_face(sm.halfedge(face_of[f]), sm)) {
-      halfedge_pairs.emplace_back(h, d.halfedge());
-      const SH o = sm.opposite(h);
-      if (sm.is_border(o) && !glued[std::size_t(o)])
-        halfedge_pairs.emplace_back(o, Mobius_mesh<P>::opposite_halfedge(d.halfedge()));
-      const Edge_index e = part.edge(d);
-      if (!edge_done[e.idx()]) { // a glued edge takes the first of its two copies' values
-        edge_done[e.idx()] = true;
-        edge_pairs.emplace_back(sm.edge(h), e);
-      }
-      d = part.next(d);
-    }
-  }
-  std::vector<std::pair<SV, Vertex_index>> rep_pairs(n_classes);
-  for (std::size_t c = 0; c < n_classes; ++c)
-    rep_pairs[c] = {class_rep[c], Vertex_index(c)};
-  std::vector<std::pair<SF, Face_index>> face_pairs(face_of.size());
-  for (std::size_t f = 0; f < face_of.size(); ++f)
-    face_pairs[f] = {face_of[f], Face_index(f)};
-  internal::properties_from_surface_mesh(sm, part, rep_pairs);
-  internal::properties_from_surface_mesh(sm, part, halfedge_pairs);
-  internal::properties_from_surface_mesh(sm, part, edge_pairs);
-  internal::properties_from_surface_mesh(sm, part, face_pairs);
-
-  // 5. Restore the orientations that to_surface_mesh() changed.
+  // Restore the orientations that to_surface_mesh() changed.
   std::vector<bool> reversed(face_of.size(), false);
   const auto [flag, has_flag] = sm.template property_map<SF, bool>(reversed_faces_map_name);
   if (has_flag)
@@ -635,12 +727,12 @@ Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh
 
   const auto off = internal::append_mesh(mesh, std::move(part));
   internal::write_pairs(np, CGAL::internal_np::vertex_to_vertex_output_iterator, [&](auto out) {
-    for (std::uint32_t i = 0; i < vertex_of.size(); ++i)
-      out(std::make_pair(vertex_of[i], Vertex_index(class_index[i] + off.vertices)));
+    for (std::uint32_t i = 0; i < gluing.vertex_of.size(); ++i)
+      out(std::make_pair(gluing.vertex_of[i], Vertex_index(gluing.class_index[i] + off.vertices)));
   });
   internal::write_pairs(np, CGAL::internal_np::halfedge_to_halfedge_output_iterator, [&](auto out) {
     for (const auto& [s, d] : dart_pairs)
-      out(std::make_pair(s, Dart::from_bits(d.bits() + 4 * off.edges)));
+      out(std::make_pair(s, Dart::from_bits(internal::dart_encoding::shift_dart(d.bits(), off.edges))));
   });
   internal::write_pairs(np, CGAL::internal_np::face_to_face_output_iterator, [&](auto out) {
     for (const auto& [s, f] : face_pairs)

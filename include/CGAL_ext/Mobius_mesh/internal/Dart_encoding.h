@@ -31,6 +31,9 @@ constexpr u32 halfedge_of_dart(u32 d) { return d >> 1; }
 constexpr bool is_flipped(u32 d) { return (d & 1u) != 0; }
 constexpr u32 flip(u32 d) { return d ^ 1u; }
 constexpr u32 edge_of_dart(u32 d) { return d >> 2; }
+/// The same dart once the edges are renumbered from `edge_offset` on (a
+/// mesh appended to another).
+constexpr u32 shift_dart(u32 d, u32 edge_offset) { return d + 4 * edge_offset; }
 
 /// The dart of the other halfedge of the edge, running against `d`: the
 /// partner halfedge, with the orientation bit toggled across a Möbius edge
