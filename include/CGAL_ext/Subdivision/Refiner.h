@@ -17,9 +17,7 @@
 #include <CGAL_ext/Subdivision/internal/Weights.h>
 #include <CGAL_ext/exceptions.h>
 
-#include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
-
 
 #include <algorithm>
 #include <cmath>
@@ -432,7 +430,7 @@ void Refiner<Mask, W>::build_base(const Mobius_mesh<P>& m, const std::vector<flo
     u32 edges = 0, d = d0;
     do {
       ++edges;
-      const u32 f = L.h_face[d >> 1];
+      const u32 f = L.h_face[internal::dart_encoding::halfedge_of_dart(d)];
       if (f != null_u32 && !L.f_hole.empty())
         L.f_hole[f] = 1;
       d = L.opposite(L.next(d));

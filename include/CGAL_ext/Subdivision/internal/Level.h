@@ -23,10 +23,7 @@
 #endif
 
 #include <cstdint>
-#include <memory>
-#include <new>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
