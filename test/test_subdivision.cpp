@@ -4,6 +4,7 @@
 // kernel, and topological invariants (Euler characteristic, border loops).
 #include "test_util.h"
 
+#include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 #include <CGAL_ext/subdivision.h>
@@ -23,6 +24,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
@@ -1003,6 +1005,81 @@ TEST(SubdivisionApi, RefinerReinterpolatesOtherData)
   r.interpolate(ones, res, tmp);
   for (double x : res)
     EXPECT_NEAR(x, 1.0, 1e-14);
+}
+
+// interpolate() is const and writes nothing into the refiner: threads that
+// share one refiner get the same bits as one thread alone.
+TEST(SubdivisionApi, RefinerInterpolatesFromSeveralThreads)
+{
+  const Shape s = read_shape(test::data("opensubdiv/catmark_chaikin1.obj"));
+  const Built b = build(s);
+  S::Refinement_options options;
+  options.crease_method = s.crease_method;
+  options.parallel_min_vertices = 0; // incidence tables on every level
+  S::Refiner<S::Catmull_clark_mask> r(S::Catmull_clark_mask(), options);
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+  r.refine<CGAL::Parallel_tag>(b.mesh, 3, b.edge_sharpness, b.vertex_sharpness);
+#else
+  r.refine(b.mesh, 3, b.edge_sharpness, b.vertex_sharpness);
+#endif
+  std::vector<V3> base;
+  for (auto v : b.mesh.vertices()) {
+    const Point& p = b.mesh.point(v);
+    base.push_back({p.x(), p.y(), p.z()});
+  }
+  std::vector<V3> expected;
+  r.interpolate(base, expected);
+  std::vector<std::vector<V3>> results(4);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < results.size(); ++i)
+    threads.emplace_back([&, i]() {
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+      if (i % 2 == 1) {
+        r.interpolate<CGAL::Parallel_tag>(base, results[i]);
+        return;
+      }
+#endif
+      r.interpolate(base, results[i]);
+    });
+  for (std::thread& t : threads)
+    t.join();
+  for (const std::vector<V3>& result : results) {
+    ASSERT_EQ(result.size(), expected.size());
+    EXPECT_EQ(std::memcmp(result.data(), expected.data(), expected.size() * sizeof(V3)), 0);
+  }
+}
+
+// Doo–Sabin's vertex faces are oriented against most of the edge quads
+// around them, so the Möbius edges do not multiply from level to level. A
+// strip needs at least one Möbius edge per row of faces across it (a seam
+// from border to border), and a step makes 2r − 1 rows of r (the faces and
+// the quads of the edges between them): on a 12×3 Möbius strip the counts
+// are 3, 5, 9, 17, that minimum, where orienting the vertex faces like most
+// of their faces gave 3, 9, 13, 37. The surface stays a one-sided strip.
+TEST(SubdivisionMobius, DooSabinKeepsFewMobiusEdges)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3);
+  const std::size_t base = CGAL_ext::number_of_mobius_edges(m);
+  ASSERT_EQ(base, 3u);
+  ASSERT_EQ(CGAL_ext::euler_characteristic(m), 0);
+  std::vector<std::size_t> counts{base};
+  for (int level = 1; level <= 3; ++level) {
+    S::doo_sabin(m);
+    ASSERT_TRUE(m.is_valid(true));
+    counts.push_back(CGAL_ext::number_of_mobius_edges(m));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+    EXPECT_FALSE(CGAL_ext::is_orientable(m));
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 1u);
+  }
+  for (std::size_t k = 1; k < counts.size(); ++k)
+    EXPECT_LE(counts[k], 2 * counts[k - 1] - 1) << ::testing::PrintToString(counts);
+  // An orientable mesh stays without Möbius edges.
+  Mesh torus;
+  CGAL_ext::make_torus(torus, 8, 6);
+  S::doo_sabin(torus, CGAL_ext::parameters::number_of_iterations(2));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(torus), 0u);
+  EXPECT_TRUE(CGAL_ext::is_orientable(torus));
 }
 
 } // namespace

@@ -79,7 +79,11 @@ struct Vertex_weights
 {
   W vertex, edge, face, edge_point, crease;
   std::uint32_t crease_ends[2];
-  std::uint8_t terms; ///< which sums are non-zero: 1 edge, 2 face, 4 edge_point, 8 crease (set by the refiner)
+  // Which sums are non-zero, so that the interpolation skips the others (set by the refiner).
+  bool has_edge;       ///< `edge` is not zero
+  bool has_face;       ///< `face` is not zero
+  bool has_edge_point; ///< `edge_point` is not zero
+  bool has_crease;     ///< `crease` is not zero
 };
 
 /*!

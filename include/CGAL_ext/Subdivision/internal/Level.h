@@ -10,6 +10,7 @@
 #define CGAL_EXT_SUBDIVISION_INTERNAL_LEVEL_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <CGAL/assertions.h>
@@ -22,10 +23,7 @@
 #endif
 
 #include <cstdint>
-#include <memory>
-#include <new>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -33,7 +31,14 @@ namespace Subdivision {
 namespace internal {
 
 using u32 = std::uint32_t;
-constexpr u32 null_u32 = 0xffffffffu;
+constexpr u32 null_u32 = CGAL_ext::internal::dart_encoding::null;
+namespace dart_encoding = CGAL_ext::internal::dart_encoding;
+
+// Whether halfedge h is the first of its edge's two (2e, not 2e+1).
+constexpr bool is_first_halfedge(u32 h)
+{
+  return h == dart_encoding::halfedge_of_edge(dart_encoding::edge_of_halfedge(h), 0);
+}
 
 // Every array of a child level is written in full by the split: not zeroed first.
 template <class T>
@@ -126,55 +131,88 @@ struct Level
   }
 
   // Dart navigation, as in Mobius_mesh.
-  static u32 edge_of(u32 d) { return d >> 2; }
-  static u32 halfedge_of(u32 d) { return d >> 1; }
-  bool is_border_dart(u32 d) const { return h_face[d >> 1] == null_u32; }
+  bool is_border_dart(u32 d) const { return h_face[dart_encoding::halfedge_of_dart(d)] == null_u32; }
   u32 source_of(u32 h) const
   {
-    return e_mobius[h >> 1] ? h_target[h_prev[h] >> 1] : h_target[h ^ 1u];
+    namespace de = dart_encoding;
+    return e_mobius[de::edge_of_halfedge(h)] ? h_target[de::halfedge_of_dart(h_prev[h])]
+                                             : h_target[de::opposite_halfedge(h)];
   }
-  u32 target(u32 d) const { return (d & 1u) ? source_of(d >> 1) : h_target[d >> 1]; }
-  u32 source(u32 d) const { return (d & 1u) ? h_target[d >> 1] : source_of(d >> 1); }
-  u32 next(u32 d) const { return (d & 1u) ? (h_prev[d >> 1] ^ 1u) : h_next[d >> 1]; }
-  u32 prev(u32 d) const { return (d & 1u) ? (h_next[d >> 1] ^ 1u) : h_prev[d >> 1]; }
-  u32 opposite(u32 d) const { return (d ^ 2u) ^ u32(e_mobius[d >> 2]); }
+  u32 target(u32 d) const
+  {
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    return dart_encoding::is_flipped(d) ? source_of(h) : h_target[h];
+  }
+  u32 source(u32 d) const
+  {
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    return dart_encoding::is_flipped(d) ? h_target[h] : source_of(h);
+  }
+  u32 next(u32 d) const
+  {
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    return dart_encoding::is_flipped(d) ? dart_encoding::flip(h_prev[h]) : h_next[h];
+  }
+  u32 prev(u32 d) const
+  {
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    return dart_encoding::is_flipped(d) ? dart_encoding::flip(h_next[h]) : h_prev[h];
+  }
+  u32 opposite(u32 d) const
+  {
+    return dart_encoding::opposite_dart(d, e_mobius[dart_encoding::edge_of_dart(d)] != 0);
+  }
   u32 degree(u32 f) const { return f_offset[f + 1] - f_offset[f]; }
 
   // Child halfedges of parent halfedge h: the half at h's source and the half
-  // at its target. Child edge 2e lies at source(2e), 2e+1 at target(2e).
+  // at its target. Child edge 2e lies at source(2e), 2e+1 at target(2e); on a
+  // Möbius edge both halfedges run the same way, so 2e+1 starts at the source.
   u32 first_child(u32 h) const
   {
-    const u32 e = h >> 1;
-    return (h & 1u) == 0 ? 4 * e : (e_mobius[e] ? 4 * e + 1 : 4 * e + 3);
+    const u32 e = dart_encoding::edge_of_halfedge(h);
+    if (is_first_halfedge(h))
+      return dart_encoding::halfedge_of_edge(2 * e, 0);
+    return e_mobius[e] ? dart_encoding::halfedge_of_edge(2 * e, 1) : dart_encoding::halfedge_of_edge(2 * e + 1, 1);
   }
   u32 second_child(u32 h) const
   {
-    const u32 e = h >> 1;
-    return (h & 1u) == 0 ? 4 * e + 2 : (e_mobius[e] ? 4 * e + 3 : 4 * e + 1);
+    const u32 e = dart_encoding::edge_of_halfedge(h);
+    if (is_first_halfedge(h))
+      return dart_encoding::halfedge_of_edge(2 * e + 1, 0);
+    return e_mobius[e] ? dart_encoding::halfedge_of_edge(2 * e + 1, 1) : dart_encoding::halfedge_of_edge(2 * e, 1);
   }
-  // The child dart that starts where parent dart d starts / ends where it ends.
+  // The child dart that starts where parent dart d starts / ends where it
+  // ends, with d's orientation.
   u32 child_dart_from_source(u32 d) const
   {
-    return (d & 1u) ? ((second_child(d >> 1) << 1) | 1u) : (first_child(d >> 1) << 1);
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    const bool flipped = dart_encoding::is_flipped(d);
+    return dart_encoding::dart(flipped ? second_child(h) : first_child(h), flipped);
   }
   u32 child_dart_to_target(u32 d) const
   {
-    return (d & 1u) ? ((first_child(d >> 1) << 1) | 1u) : (second_child(d >> 1) << 1);
+    const u32 h = dart_encoding::halfedge_of_dart(d);
+    const bool flipped = dart_encoding::is_flipped(d);
+    return dart_encoding::dart(flipped ? first_child(h) : second_child(h), flipped);
   }
 };
+
+// The unflipped dart of halfedge h: how face cycles are linked.
+constexpr u32 face_dart(u32 h) { return dart_encoding::dart(h, false); }
 
 // Links dart `a` to dart `b` in a level or a Mesh_writer, as Mobius_mesh::set_next().
 template <class Child>
 void link(Child& c, u32 a, u32 b)
 {
-  if (a & 1u)
-    c.h_prev[a >> 1] = b ^ 1u;
+  namespace de = dart_encoding;
+  if (de::is_flipped(a))
+    c.h_prev[de::halfedge_of_dart(a)] = de::flip(b);
   else
-    c.h_next[a >> 1] = b;
-  if (b & 1u)
-    c.h_next[b >> 1] = a ^ 1u;
+    c.h_next[de::halfedge_of_dart(a)] = b;
+  if (de::is_flipped(b))
+    c.h_next[de::halfedge_of_dart(b)] = de::flip(a);
   else
-    c.h_prev[b >> 1] = a;
+    c.h_prev[de::halfedge_of_dart(b)] = a;
 }
 
 // Stands for the last level of a refinement in the splits, which then write
@@ -229,7 +267,7 @@ inline void index_corners(Level& L)
       L.corner_h[k] = h;
       L.h_corner[h] = k;
       ++k;
-      h = CGAL_ext::internal::dart_encoding::halfedge_of_dart(L.h_next[h]);
+      h = dart_encoding::halfedge_of_dart(L.h_next[h]);
     } while (h != first);
   }
   L.f_offset[L.nf] = k;
@@ -270,19 +308,21 @@ void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
   const u32 nh = 2 * p.ne;
   for (u32 h = 0; h < nh; ++h) {
     const u32 h0 = p.first_child(h), h1 = p.second_child(h);
-    c.h_target[h0] = edge_point_offset + (h >> 1);
+    c.h_target[h0] = edge_point_offset + dart_encoding::edge_of_halfedge(h);
     c.h_target[h1] = p.h_target[h];
     if (p.h_face[h] != null_u32)
       continue;
     c.h_face[h0] = c.h_face[h1] = null_u32;
-    link(c, h0 << 1, h1 << 1);
-    link(c, h1 << 1, p.child_dart_from_source(p.h_next[h]));
-    link(c, p.child_dart_to_target(p.h_prev[h]), h0 << 1);
+    link(c, face_dart(h0), face_dart(h1));
+    link(c, face_dart(h1), p.child_dart_from_source(p.h_next[h]));
+    link(c, p.child_dart_to_target(p.h_prev[h]), face_dart(h0));
   }
   for (u32 e = 0; e < p.ne; ++e) {
     c.e_mobius[2 * e] = c.e_mobius[2 * e + 1] = p.e_mobius[e];
-    const u32 g = p.h_face[2 * e] == null_u32 ? 2 * e : (p.h_face[2 * e + 1] == null_u32 ? 2 * e + 1 : 2 * e);
-    c.v_dart[edge_point_offset + e] = p.first_child(g) << 1;
+    // The edge point's dart: on the border halfedge, if the edge has one.
+    const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
+    const u32 g = p.h_face[h0] != null_u32 && p.h_face[h1] == null_u32 ? h1 : h0;
+    c.v_dart[edge_point_offset + e] = face_dart(p.first_child(g));
   }
   for (u32 v = 0; v < p.nv; ++v)
     c.v_dart[v] = p.v_dart[v] == null_u32 ? null_u32 : p.child_dart_to_target(p.v_dart[v]);
@@ -315,21 +355,24 @@ void quad_split(const Level& p, Child& c, bool corner_table)
   with_flag(corner_table, [&](auto with_corners) {
     for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
       const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
-      c.v_dart[fp + f] = (2 * (2 * ne + k0)) << 1;
+      namespace de = dart_encoding;
+      c.v_dart[fp + f] = face_dart(de::halfedge_of_edge(2 * ne + k0, 0));
       for (u32 k = k0; k < k1; ++k) {
         const u32 h = p.corner_h[k];
-        const u32 hn = p.h_next[h] >> 1;
+        const u32 hn = de::halfedge_of_dart(p.h_next[h]);
         const u32 kn = (k + 1 == k1) ? k0 : k + 1;
         const u32 ie = 2 * ne + k;
-        c.h_target[2 * ie] = fp + f;
-        c.h_target[2 * ie + 1] = nv + (h >> 1);
+        // Inner edge ie: halfedge 0 to the face point, 1 to the edge point of h.
+        c.h_target[de::halfedge_of_edge(ie, 0)] = fp + f;
+        c.h_target[de::halfedge_of_edge(ie, 1)] = nv + de::edge_of_halfedge(h);
         c.e_mobius[ie] = 0;
         // Quad at the corner where h ends: vertex point, edge point of hn,
         // face point, edge point of h.
-        const u32 q[4] = {p.first_child(hn), 2 * (2 * ne + kn), 2 * ie + 1, p.second_child(h)};
+        const u32 q[4] = {p.first_child(hn), de::halfedge_of_edge(2 * ne + kn, 0), de::halfedge_of_edge(ie, 1),
+                          p.second_child(h)};
         for (int i = 0; i < 4; ++i) {
-          c.h_next[q[i]] = q[(i + 1) & 3] << 1;
-          c.h_prev[q[i]] = q[(i + 3) & 3] << 1;
+          c.h_next[q[i]] = face_dart(q[(i + 1) % 4]);
+          c.h_prev[q[i]] = face_dart(q[(i + 3) % 4]);
           c.h_face[q[i]] = k;
           if constexpr (decltype(with_corners)::value)
             c.corner_h[4 * k + u32(i)] = q[i];
@@ -365,19 +408,22 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
   with_flag(corner_table, [&](auto with_corners) {
     constexpr bool corners = decltype(with_corners)::value;
     for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
+      namespace de = dart_encoding;
       const u32 k0 = p.f_offset[f];
       const u32 centre = nc + f;
       for (u32 i = 0; i < 3; ++i) {
         const u32 k = k0 + i, kn = k0 + (i + 1) % 3;
         const u32 h = p.corner_h[k], hn = p.corner_h[kn];
         const u32 ie = 2 * ne + k;
-        c.h_target[2 * ie] = nv + (h >> 1);
-        c.h_target[2 * ie + 1] = nv + (hn >> 1);
+        // Inner edge ie, across corner k: halfedge 0 to the edge point of h
+        // (in the corner triangle), 1 to that of hn (in the centre one).
+        c.h_target[de::halfedge_of_edge(ie, 0)] = nv + de::edge_of_halfedge(h);
+        c.h_target[de::halfedge_of_edge(ie, 1)] = nv + de::edge_of_halfedge(hn);
         c.e_mobius[ie] = 0;
-        const u32 q[3] = {p.first_child(hn), 2 * ie, p.second_child(h)};
+        const u32 q[3] = {p.first_child(hn), de::halfedge_of_edge(ie, 0), p.second_child(h)};
         for (u32 j = 0; j < 3; ++j) {
-          c.h_next[q[j]] = q[(j + 1) % 3] << 1;
-          c.h_prev[q[j]] = q[(j + 2) % 3] << 1;
+          c.h_next[q[j]] = face_dart(q[(j + 1) % 3]);
+          c.h_prev[q[j]] = face_dart(q[(j + 2) % 3]);
           c.h_face[q[j]] = k;
           if constexpr (corners)
             c.corner_h[3 * k + j] = q[j];
@@ -386,14 +432,15 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
         if constexpr (corners)
           c.f_offset[k] = 3 * k;
         // Centre triangle: inner halfedges from edge point of h to that of hn.
-        const u32 in = 2 * ie + 1, in_next = 2 * (2 * ne + kn) + 1, in_prev = 2 * (2 * ne + k0 + (i + 2) % 3) + 1;
-        c.h_next[in] = in_next << 1;
-        c.h_prev[in] = in_prev << 1;
+        const u32 in = de::halfedge_of_edge(ie, 1), in_next = de::halfedge_of_edge(2 * ne + kn, 1),
+                  in_prev = de::halfedge_of_edge(2 * ne + k0 + (i + 2) % 3, 1);
+        c.h_next[in] = face_dart(in_next);
+        c.h_prev[in] = face_dart(in_prev);
         c.h_face[in] = centre;
         if constexpr (corners)
           c.corner_h[3 * centre + i] = in;
       }
-      c.f_first[centre] = 2 * (2 * ne + k0) + 1;
+      c.f_first[centre] = de::halfedge_of_edge(2 * ne + k0, 1);
       if constexpr (corners)
         c.f_offset[centre] = 3 * centre;
     });

@@ -18,7 +18,9 @@
 
 #include <CGAL/assertions.h>
 
+#include <array>
 #include <initializer_list>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -76,6 +78,52 @@ inline void level_from_faces(u32 nv, const Face_list& faces, Level& c)
   index_corners(c);
 }
 
+// The Doo–Sabin quad of interior edge e, oriented like its face h0 (the
+// corners at e's ends, in that face's order reversed): P, Q, R, S with P, Q
+// in face h0 and R, S in face h1, Q and R at the source of h0.
+inline std::array<u32, 4> dual_edge_quad(const Level& p, u32 e)
+{
+  const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
+  const u32 a = p.source_of(h0), b = p.h_target[h0];
+  return {p.h_corner[h0], corner_at(p, h0, a), corner_at(p, h1, a), corner_at(p, h1, b)};
+}
+
+// Whether the quad of edge e runs from corner x to corner y.
+inline bool quad_runs_from_to(const Level& p, u32 e, u32 x, u32 y)
+{
+  const std::array<u32, 4> q = dual_edge_quad(p, e);
+  for (u32 i = 0; i < 4; ++i)
+    if (q[i] == x && q[(i + 1) % 4] == y)
+      return true;
+  return false;
+}
+
+// The Doo–Sabin face of vertex v: its corners in the order of the walk
+// around v (border darts skipped), into `ring`. Returns the number of
+// sides it shares with an edge quad and how many of those the quad runs
+// along in walk order: a side run the same way by both faces is a Möbius edge.
+inline std::pair<u32, u32> dual_vertex_ring(const Level& p, u32 v, std::vector<u32>& ring)
+{
+  ring.clear();
+  u32 shared = 0, along = 0;
+  const u32 d0 = p.v_dart[v];
+  u32 d = d0;
+  do {
+    const u32 dn = p.opposite(p.next(d)); // across the edge of next(d)
+    if (!p.is_border_dart(d)) {
+      const u32 x = corner_at(p, dart_encoding::halfedge_of_dart(d), v);
+      ring.push_back(x);
+      if (!p.is_border_dart(dn)) {
+        ++shared;
+        const u32 y = corner_at(p, dart_encoding::halfedge_of_dart(dn), v);
+        along += quad_runs_from_to(p, dart_encoding::edge_of_dart(dn), x, y) ? 1u : 0u;
+      }
+    }
+    d = dn;
+  } while (d != d0);
+  return {shared, along};
+}
+
 // Doo–Sabin: child vertex k is parent corner k. Child faces: one per face
 // (its corners), one quad per interior edge, one per vertex with three or
 // more faces (interior or border).
@@ -119,35 +167,23 @@ void dual_split(const Level& p, const Mask& mask, Face_list& faces, Stencils<W>&
   for (u32 e = 0; e < p.ne; ++e) {
     if (is_border_edge(p, e))
       continue;
-    const u32 h0 = 2 * e, h1 = 2 * e + 1;
-    const u32 a = p.source_of(h0), b = p.h_target[h0];
-    // Against face h0 across the edge, so both are oriented alike.
-    faces.add({p.h_corner[h0], corner_at(p, h0, a), corner_at(p, h1, a), corner_at(p, h1, b)});
+    const std::array<u32, 4> q = dual_edge_quad(p, e);
+    faces.add(q.begin(), q.end());
   }
   for (u32 v = 0; v < p.nv; ++v) {
-    const u32 d0 = p.v_dart[v];
-    if (d0 == null_u32)
+    if (p.v_dart[v] == null_u32)
       continue;
-    ring.clear();
-    u32 d = d0, flipped = 0;
-    do {
-      if (!p.is_border_dart(d)) {
-        ring.push_back(corner_at(p, d >> 1, v));
-        flipped += d & 1u;
-      }
-      d = p.opposite(p.next(d));
-    } while (d != d0);
+    const auto [shared, along] = dual_vertex_ring(p, v, ring);
     // Two corners are already joined by the quads of the edges between them.
     if (ring.size() < 3)
       continue;
-    // The walk turns against the orientation of the faces it enters by
-    // unflipped darts. Across a Möbius edge the ring holds faces of both
-    // senses: orient the polygon like most of them, so that few of its sides
-    // become Möbius edges.
-    if (2 * flipped > ring.size())
-      faces.add(ring.begin(), ring.end());
-    else
+    // The polygon's sides are shared with edge quads only: orient it against
+    // most of them, so that as few sides as can be become Möbius edges (none
+    // on an orientable mesh, where the quads all run along the walk).
+    if (2 * along > shared)
       faces.add(ring.rbegin(), ring.rend());
+    else
+      faces.add(ring.begin(), ring.end());
   }
 }
 

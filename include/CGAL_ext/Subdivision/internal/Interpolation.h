@@ -1,0 +1,209 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Applying one step's weights or stencils to vertex data: a serial pass that
+// scatters each edge's and face's terms into the vertex points, and a
+// parallel pass that gathers them per vertex from incidence tables, in the
+// same order, so that both give the same bits.
+
+#ifndef CGAL_EXT_SUBDIVISION_INTERNAL_INTERPOLATION_H
+#define CGAL_EXT_SUBDIVISION_INTERNAL_INTERPOLATION_H
+
+#include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
+#include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/internal/Level.h>
+#include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
+#include <CGAL_ext/Subdivision/internal/Weights.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Subdivision {
+namespace internal {
+
+// Vertex -> incident edges and faces, each in increasing order: the order in
+// which the serial pass adds their terms, so a gather gives the same bits.
+struct Incidence
+{
+  std::vector<u32> edge_offset, edges, face_offset, faces;
+
+  bool empty() const { return edge_offset.empty(); }
+  void clear() { *this = Incidence(); }
+};
+
+// Offsets from counts: offset[v + 1] holds the count of v on entry.
+inline void prefix_sum(std::vector<u32>& offset)
+{
+  for (std::size_t v = 1; v < offset.size(); ++v)
+    offset[v] += offset[v - 1];
+}
+
+// The incidence tables of level `p`.
+inline void build_incidence(const Level& p, Incidence& inc)
+{
+  namespace de = dart_encoding;
+  auto ends = [&](u32 e) {
+    const u32 h = de::halfedge_of_edge(e, 0);
+    return std::pair<u32, u32>(p.source(de::dart(h, false)), p.h_target[h]);
+  };
+  inc.edge_offset.assign(std::size_t(p.nv) + 1, 0);
+  for (u32 e = 0; e < p.ne; ++e) {
+    ++inc.edge_offset[ends(e).first + 1];
+    ++inc.edge_offset[ends(e).second + 1];
+  }
+  prefix_sum(inc.edge_offset);
+  inc.edges.resize(2 * std::size_t(p.ne));
+  std::vector<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
+  for (u32 e = 0; e < p.ne; ++e) {
+    inc.edges[fill[ends(e).first]++] = e;
+    inc.edges[fill[ends(e).second]++] = e;
+  }
+  inc.face_offset.assign(std::size_t(p.nv) + 1, 0);
+  for (u32 c = 0; c < p.nc; ++c)
+    ++inc.face_offset[p.h_target[p.corner_h[c]] + 1];
+  prefix_sum(inc.face_offset);
+  inc.faces.resize(p.nc);
+  fill.assign(inc.face_offset.begin(), inc.face_offset.end() - 1);
+  for (u32 f = 0; f < p.nf; ++f)
+    for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+      inc.faces[fill[p.h_target[p.corner_h[c]]]++] = f;
+}
+
+// The points both passes share, formed by the same expressions so that the
+// passes agree bit for bit.
+template <class W, class Value>
+Value stencil_point(const Stencils<W>& st, u32 i, const Value* src)
+{
+  u32 j = st.offset[i];
+  const u32 j1 = st.offset[i + 1];
+  Value x = st.weight[j] * src[st.source[j]];
+  for (++j; j < j1; ++j)
+    x = x + st.weight[j] * src[st.source[j]];
+  return x;
+}
+
+template <class W, class Value>
+Value face_point(const Level& p, u32 f, const Value* src)
+{
+  const u32 k0 = p.f_offset[f], k1 = p.f_offset[f + 1];
+  Value sum = src[p.h_target[p.corner_h[k0]]];
+  for (u32 i = k0 + 1; i < k1; ++i)
+    sum = sum + src[p.h_target[p.corner_h[i]]];
+  return (k1 - k0 == 4 ? W(1) / W(4) : W(1) / W(int(k1 - k0))) * sum;
+}
+
+// `face_points`: the level's face points (quad split), indexed by face; the
+// triangle split takes the vertices opposite the edge instead.
+template <Split split, class W, class Value>
+Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const Value* src, const Value* face_points)
+{
+  namespace de = dart_encoding;
+  const u32 h0 = de::halfedge_of_edge(e, 0);
+  Value x = w.vertex * (src[p.source(de::dart(h0, false))] + src[p.h_target[h0]]);
+  if (w.has_face) {
+    for (u32 i = 0; i < 2; ++i) {
+      const u32 h = de::halfedge_of_edge(e, i), f = p.h_face[h];
+      if (f == null_u32)
+        continue;
+      if constexpr (split == Split::quad)
+        x = x + w.face * face_points[f];
+      else
+        x = x + w.face * src[p.h_target[de::halfedge_of_dart(p.h_next[h])]];
+    }
+  }
+  return x;
+}
+
+// Child vertex i of a stencil step, for every i.
+template <class ConcurrencyTag, class W, class Value>
+void interpolate_stencils(const Stencils<W>& st, const Value* src, Value* dst)
+{
+  for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { dst[i] = stencil_point(st, i, src); });
+}
+
+// The serial pass of a primal step: vertex points start from their own
+// terms, then each edge and each face corner adds its terms to the vertex
+// points it touches, in edge and face order.
+template <Split split, class W, class Value>
+void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* src, Value* dst)
+{
+  namespace de = dart_encoding;
+  const u32 nv = p.nv, ne = p.ne, nf = p.nf;
+  const u32 fp = nv + ne;
+  if constexpr (split == Split::quad) {
+    for (u32 f = 0; f < nf; ++f)
+      dst[fp + f] = face_point<W>(p, f, src);
+  }
+  for (u32 v = 0; v < nv; ++v) {
+    const Vertex_weights<W>& w = sw.vertex(v);
+    dst[v] = w.vertex * src[v];
+    if (w.has_crease)
+      dst[v] = dst[v] + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
+  }
+  for (u32 e = 0; e < ne; ++e) {
+    const u32 h0 = de::halfedge_of_edge(e, 0);
+    const u32 a = p.source(de::dart(h0, false)), b = p.h_target[h0];
+    const Value x = edge_point<split>(p, sw.edge(e), e, src, dst + fp);
+    dst[nv + e] = x;
+    const Vertex_weights<W>&wa = sw.vertex(a), &wb = sw.vertex(b);
+    if (wa.has_edge)
+      dst[a] = dst[a] + wa.edge * src[b];
+    if (wb.has_edge)
+      dst[b] = dst[b] + wb.edge * src[a];
+    if (wa.has_edge_point)
+      dst[a] = dst[a] + wa.edge_point * x;
+    if (wb.has_edge_point)
+      dst[b] = dst[b] + wb.edge_point * x;
+  }
+  if constexpr (split == Split::quad) {
+    for (u32 f = 0; f < nf; ++f) {
+      for (u32 i = p.f_offset[f], i1 = p.f_offset[f + 1]; i < i1; ++i) {
+        const u32 v = p.h_target[p.corner_h[i]];
+        const Vertex_weights<W>& w = sw.vertex(v);
+        if (w.has_face)
+          dst[v] = dst[v] + w.face * dst[fp + f];
+      }
+    }
+  }
+}
+
+// The serial pass's three loops as gathers over `inc` (the incidence tables
+// of `p`), in the same order of terms; each loop may run in parallel.
+template <class ConcurrencyTag, Split split, class W, class Value>
+void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Incidence& inc, const Value* src,
+                        Value* dst)
+{
+  namespace de = dart_encoding;
+  const u32 nv = p.nv, ne = p.ne, nf = p.nf;
+  const u32 fp = nv + ne;
+  if constexpr (split == Split::quad)
+    for_each_index<ConcurrencyTag>(nf, [&](u32 f) { dst[fp + f] = face_point<W>(p, f, src); });
+  for_each_index<ConcurrencyTag>(ne,
+                                 [&](u32 e) { dst[nv + e] = edge_point<split>(p, sw.edge(e), e, src, dst + fp); });
+  for_each_index<ConcurrencyTag>(nv, [&](u32 v) {
+    const Vertex_weights<W>& w = sw.vertex(v);
+    Value x = w.vertex * src[v];
+    if (w.has_crease)
+      x = x + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
+    for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
+      const u32 e = inc.edges[i];
+      const u32 h0 = de::halfedge_of_edge(e, 0);
+      const u32 a = p.source(de::dart(h0, false));
+      if (w.has_edge)
+        x = x + w.edge * src[a == v ? p.h_target[h0] : a];
+      if (w.has_edge_point)
+        x = x + w.edge_point * dst[nv + e];
+    }
+    if (w.has_face)
+      for (u32 i = inc.face_offset[v]; i < inc.face_offset[v + 1]; ++i)
+        x = x + w.face * dst[fp + inc.faces[i]];
+    dst[v] = x;
+  });
+}
+
+} // namespace internal
+} // namespace Subdivision
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SUBDIVISION_INTERNAL_INTERPOLATION_H
