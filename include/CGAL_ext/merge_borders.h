@@ -448,8 +448,8 @@ std::vector<std::uint32_t> border_chain(const Mobius_mesh<P>& m, Dart d, const c
 ///
 /// `mesh_a` receives the union of both meshes with the glue; glued vertices
 /// keep `mesh_a`'s positions. Faces keep their orientation, `mesh_a`'s faces
-/// first. Property maps of the value types listed at `copy_mesh()` are kept
-/// (a glued vertex or edge takes `mesh_a`'s value).
+/// first. Property maps of every value type are kept (a glued vertex or edge
+/// takes `mesh_a`'s value).
 ///
 /// The tolerance test is `Compare_squared_distance_3(p, q, tolerance²)` of the
 /// kernel, never a square root: with EPICK or EPECK a point at exactly the
