@@ -569,12 +569,89 @@ TEST(Copy, DisjointUnionCountsAdd)
   const auto a = mesh_of<Kd::Point_3>(read_obj("nonorientable/mobius_20x4_quads.obj"));
   const auto b = mesh_of<Kd::Point_3>(read_obj("nonorientable/rp2_hemi_icosahedron.obj"));
   auto u = a;
-  CGAL_ext::disjoint_union(u, b);
+  CGAL_ext::disjoint_union(b, u);
   ASSERT_TRUE(u.is_valid(true));
   EXPECT_EQ(u.number_of_vertices(), 106u);
   EXPECT_EQ(CGAL_ext::euler_characteristic(u), 0 + 1);
   EXPECT_EQ(CGAL_ext::connected_components(u).count, 2u);
   EXPECT_EQ(CGAL_ext::number_of_border_cycles(u), 1u);
+}
+
+// A value type the library has never heard of.
+struct Rgb
+{
+  int r = -1, g = -1, b = -1;
+  bool operator==(const Rgb& o) const { return r == o.r && g == o.g && b == o.b; }
+};
+Rgb rgb_of(std::size_t i) { return Rgb{int(i), int(i % 3), -int(i)}; }
+
+TEST(Copy, UserValueTypesCrossKernelsAndUnions)
+{
+  const auto src = [] {
+    auto m = mesh_of<Kd::Point_3>(read_obj("nonorientable/mobius_20x4_quads.obj"));
+    auto colour = m.add_property_map<CGAL_ext::Face_index, Rgb>("f:colour").first;
+    for (auto f : m.faces())
+      colour[f] = rgb_of(f.idx());
+    auto mark = m.add_property_map<CGAL_ext::Vertex_index, bool>("v:mark", false).first;
+    for (auto v : m.vertices())
+      mark[v] = v.idx() % 4 == 1;
+    return m;
+  }();
+  auto check = [&](const auto& dst, std::size_t face_offset, std::size_t vertex_offset) {
+    const auto colour = dst.template property_map<CGAL_ext::Face_index, Rgb>("f:colour");
+    const auto mark = dst.template property_map<CGAL_ext::Vertex_index, bool>("v:mark");
+    ASSERT_TRUE(colour && mark);
+    for (std::size_t f = 0; f < face_offset; ++f) // faces that were there before: the default
+      EXPECT_EQ((*colour)[CGAL_ext::Face_index(f)], Rgb());
+    for (std::size_t f = 0; f < 80; ++f)
+      EXPECT_EQ((*colour)[CGAL_ext::Face_index(f + face_offset)], rgb_of(f));
+    std::size_t marked = 0;
+    for (auto v : dst.vertices())
+      marked += (*mark)[v] ? 1 : 0;
+    EXPECT_EQ(marked, 25u); // 1, 5, ..., 97
+    EXPECT_TRUE((*mark)[CGAL_ext::Vertex_index(vertex_offset + 97)]);
+  };
+
+  // Across kernels, appended to a mesh that is not empty.
+  CGAL_ext::Mobius_mesh<Epeck::Point_3> exact;
+  exact.add_vertex(Epeck::Point_3(9, 9, 9));
+  const auto off = CGAL_ext::copy_mesh(src, exact);
+  EXPECT_EQ(off.vertices, 1u);
+  check(exact, 0, 1);
+
+  // Source first: `dst` grows by `src`, which is left alone.
+  auto dst = mesh_of<Kd::Point_3>(read_obj("nonorientable/rp2_hemi_icosahedron.obj"));
+  const std::size_t nf = dst.number_of_faces(), nv = dst.number_of_vertices();
+  const auto union_off = CGAL_ext::disjoint_union(src, dst);
+  EXPECT_EQ(union_off.faces, nf);
+  EXPECT_EQ(dst.number_of_faces(), nf + 80);
+  EXPECT_EQ(src.number_of_faces(), 80u);
+  check(dst, nf, nv);
+}
+
+TEST(Conversion, BoolMapsGoBothWays)
+{
+  auto mesh = mesh_of<Kd::Point_3>(read_obj("nonorientable/torus_24x12_quads.obj"));
+  auto even = mesh.add_property_map<CGAL_ext::Face_index, bool>("f:even", false).first;
+  for (auto f : mesh.faces())
+    even[f] = f.idx() % 2 == 0;
+  using SM = CGAL::Surface_mesh<Kd::Point_3>;
+  SM sm;
+  CGAL_ext::to_surface_mesh(mesh, sm); // orientable and empty: faces keep their indices
+  const auto [sm_even, found] = sm.property_map<SM::Face_index, bool>("f:even");
+  ASSERT_TRUE(found);
+  std::size_t n = 0;
+  for (auto f : sm.faces()) {
+    EXPECT_EQ(bool(sm_even[f]), f.idx() % 2 == 0);
+    n += sm_even[f] ? 1 : 0;
+  }
+  EXPECT_EQ(n, 288u / 2);
+  CGAL_ext::Mobius_mesh<Kd::Point_3> back;
+  CGAL_ext::from_surface_mesh(sm, back);
+  const auto back_even = back.property_map<CGAL_ext::Face_index, bool>("f:even");
+  ASSERT_TRUE(back_even);
+  for (auto f : back.faces())
+    EXPECT_EQ((*back_even)[f], f.idx() % 2 == 0);
 }
 
 TEST(Transform, ExactOnEpeck)

@@ -468,6 +468,87 @@ TEST(MergeManual, FourStrategiesOnCubeHalvesEpeck)
   EXPECT_TRUE(m.is_valid(true));
 }
 
+// Traits whose "midpoint" lies a quarter of the way: `average` must use it.
+struct Quarter_point_traits : Epeck
+{
+  struct Construct_midpoint_3
+  {
+    Epeck::Point_3 operator()(const Epeck::Point_3& p, const Epeck::Point_3& q) const { return p + (q - p) / 4; }
+  };
+  Construct_midpoint_3 construct_midpoint_3_object() const { return {}; }
+};
+
+TEST(MergeManual, AverageUsesTheGivenTraits)
+{
+  using P = Epeck::Point_3;
+  const Mesh<P> lower = box_half<P>(true, 0, 0.5), upper = box_half<P>(false, 1, 0.625);
+  const CGAL_ext::Dart da = border_dart_at(lower, 0, 0, 1, 0), db = border_dart_at(upper, 0, 0, 1, 0);
+  Mesh<P> m = lower;
+  CGAL_ext::merge_borders(m, da, upper, db, CGAL_ext::Merge_strategy::average,
+                          CGAL_ext::parameters::geom_traits(Quarter_point_traits()));
+  std::size_t at_quarter = 0; // 1/2 + (5/8 - 1/2) / 4
+  for (auto v : m.vertices())
+    at_quarter += m.point(v).z() == Epeck::FT(17) / 32 ? 1 : 0;
+  EXPECT_EQ(at_quarter, 4u);
+}
+
+// A value type the library has never heard of, on vertices and faces.
+struct Label
+{
+  int id = -1;
+  std::string from;
+};
+
+template <class P>
+void label(Mesh<P>& m, int base, const std::string& from)
+{
+  auto vl = m.template add_property_map<CGAL_ext::Vertex_index, Label>("v:label").first;
+  for (auto v : m.vertices())
+    vl[v] = Label{base + int(v.idx()), from};
+  auto fl = m.template add_property_map<CGAL_ext::Face_index, Label>("f:label").first;
+  for (auto f : m.faces())
+    fl[f] = Label{base + int(f.idx()), from};
+}
+
+TEST(MergeManual, UserValueTypesAreCarried)
+{
+  using P = Epeck::Point_3;
+  Mesh<P> lower = box_half<P>(true, 0, 0.5), upper = box_half<P>(false, 1, 0.5);
+  label(lower, 0, "lower");
+  label(upper, 100, "upper");
+  const CGAL_ext::Dart da = border_dart_at(lower, 0, 0, 1, 0), db = border_dart_at(upper, 0, 0, 1, 0);
+  for (bool manual : {true, false}) {
+    SCOPED_TRACE(manual ? "manual" : "automatic");
+    Mesh<P> m = lower;
+    const auto r = manual ? CGAL_ext::merge_borders(m, da, upper, db, CGAL_ext::Merge_strategy::keep_first)
+                          : CGAL_ext::merge_borders(m, upper, CGAL_ext::parameters::tolerance(0));
+    EXPECT_EQ(r.glued_edges, 4u);
+    ASSERT_EQ(m.number_of_vertices(), 12u);
+    ASSERT_EQ(m.number_of_faces(), 10u);
+    const auto vl = m.property_map<CGAL_ext::Vertex_index, Label>("v:label");
+    const auto fl = m.property_map<CGAL_ext::Face_index, Label>("f:label");
+    ASSERT_TRUE(vl && fl);
+    // Faces one to one, the first mesh's first.
+    for (std::size_t f = 0; f < 10; ++f) {
+      const Label& l = (*fl)[CGAL_ext::Face_index(f)];
+      EXPECT_EQ(l.id, f < 5 ? int(f) : 100 + int(f) - 5);
+      EXPECT_EQ(l.from, f < 5 ? "lower" : "upper");
+    }
+    // The 8 vertices of the lower half (4 of them glued, keeping the lower
+    // value) and the 4 of the upper half's closed end.
+    std::size_t from_lower = 0, from_upper = 0;
+    for (auto v : m.vertices()) {
+      const Label& l = (*vl)[v];
+      const bool is_lower = l.from == "lower";
+      (is_lower ? from_lower : from_upper) += 1;
+      EXPECT_TRUE(is_lower ? l.id < 8 : l.id >= 100 && l.id < 104) << l.id;
+      EXPECT_EQ(m.point(v).z() == 1, !is_lower);
+    }
+    EXPECT_EQ(from_lower, 8u);
+    EXPECT_EQ(from_upper, 4u);
+  }
+}
+
 TEST(MergeManual, BridgeEqualAndUnequalLoops)
 {
   using P = Kd::Point_3;

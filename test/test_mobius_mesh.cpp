@@ -17,6 +17,8 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -429,6 +431,60 @@ TEST(MobiusMesh, PropertyMaps)
   EXPECT_FALSE(label_found);
   auto points = m.points();
   EXPECT_FALSE(m.remove_property_map(points));
+}
+
+// Bool maps store a byte per element, so they hand out `bool&` like any other map.
+TEST(MobiusMesh, BoolPropertyMaps)
+{
+  using Flag_map = Mesh::Property_map<Vertex_index, bool>;
+  static_assert(std::is_same_v<decltype(std::declval<Flag_map>()[Vertex_index()]), bool&>,
+                "a bool map hands out a real reference");
+  Mesh m = load("nonorientable/mobius_20x4_quads.obj"); // 100 vertices
+  auto [flag, created] = m.add_property_map<Vertex_index, bool>("v:flag", false);
+  ASSERT_TRUE(created);
+  // Every third vertex through operator[], one through put(): 34 + 1 set.
+  for (Vertex_index v : m.vertices())
+    if (v.idx() % 3 == 0) {
+      bool& cell = flag[v];
+      cell = true;
+    }
+  put(flag, Vertex_index(1u), true);
+  auto count = [](const Mesh& mesh, const Flag_map& map) {
+    std::size_t n = 0;
+    for (Vertex_index v : mesh.vertices())
+      n += get(map, v) ? 1 : 0;
+    return n;
+  };
+  EXPECT_EQ(count(m, flag), 34u + 1u);
+  EXPECT_TRUE(get(flag, Vertex_index(99u)));
+  EXPECT_FALSE(get(flag, Vertex_index(2u)));
+
+  // A new vertex gets the default; a map with default true fills with true.
+  const Vertex_index w = m.add_vertex(Point(5, 5, 5));
+  EXPECT_FALSE(flag[w]);
+  auto on = m.add_property_map<Vertex_index, bool>("v:on", true).first;
+  EXPECT_EQ(count(m, on), 101u);
+
+  // Copies own their bytes.
+  Mesh copy = m;
+  auto copied = *copy.property_map<Vertex_index, bool>("v:flag");
+  copied[Vertex_index(0u)] = false;
+  EXPECT_TRUE(flag[Vertex_index(0u)]);
+  EXPECT_EQ(count(copy, copied), 34u);
+
+  // Join carries the values, shifted; the joined vertices of a mesh without
+  // the map get the default.
+  Mesh joined = load("nonorientable/mobius_min_5tris.obj");
+  const std::size_t n0 = joined.number_of_vertices();
+  joined.join(m);
+  auto joined_flag = *joined.property_map<Vertex_index, bool>("v:flag");
+  EXPECT_EQ(count(joined, joined_flag), 35u);
+  for (Vertex_index v : m.vertices())
+    EXPECT_EQ(joined_flag[Vertex_index(v.idx() + n0)], flag[v]);
+
+  EXPECT_TRUE(m.remove_property_map(flag));
+  const bool still_there = m.property_map<Vertex_index, bool>("v:flag").has_value();
+  EXPECT_FALSE(still_there);
 }
 
 TEST(MobiusMesh, CopiesShareNothing)

@@ -7,8 +7,9 @@
 #ifndef CGAL_EXT_MOBIUS_MESH_H
 #define CGAL_EXT_MOBIUS_MESH_H
 
-#include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
+#include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <CGAL/Origin.h>
@@ -16,7 +17,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <functional>
 #include <iostream>
 #include <iterator>
@@ -532,63 +532,6 @@ public:
     f_halfedge_.resize(nf, Halfedge_index());
     fprops_.resize(nf);
   }
-  /// Replaces the connectivity by whole arrays, for algorithms that compute
-  /// it by index arithmetic (subdivision): per halfedge the target, the
-  /// `Dart::bits()` of `next` and `prev` and the face (`Face_index::null_value`
-  /// on the border); per edge the Möbius bit; per vertex the bits of
-  /// `halfedge(v)`; per face its halfedge. Property maps are resized, their
-  /// values reset to the defaults. The caller vouches for consistency
-  /// (`is_valid()` checks it).
-  void assign_connectivity(size_type nv, size_type ne, size_type nf, const std::uint32_t* target,
-                           const std::uint32_t* next_bits, const std::uint32_t* prev_bits,
-                           const std::uint32_t* face, const std::uint8_t* mobius, const std::uint32_t* vertex_dart_bits,
-                           const std::uint32_t* face_halfedge)
-  {
-    const std::size_t nh = 2 * std::size_t(ne);
-    assign_bits(h_target_, target, nh);
-    assign_bits(h_next_, next_bits, nh);
-    assign_bits(h_prev_, prev_bits, nh);
-    assign_bits(h_face_, face, nh);
-    assign_bits(e_mobius_, mobius, ne);
-    assign_bits(v_halfedge_, vertex_dart_bits, nv);
-    assign_bits(f_halfedge_, face_halfedge, nf);
-    reset_properties(nv, nh, ne, nf);
-  }
-
-  /// Where `overwrite_connectivity()` lets an algorithm write the arrays.
-  struct Connectivity_arrays
-  {
-    std::uint32_t *target, *next_bits, *prev_bits, *face, *vertex_dart_bits, *face_halfedge;
-    std::uint8_t* mobius;
-  };
-
-  /// As `assign_connectivity()`, for an algorithm that writes the arrays in
-  /// place instead of copying them in: resizes them for `nv` vertices, `ne`
-  /// edges and `nf` faces *without initialising them*, and returns where to
-  /// write the values that `assign_connectivity()` takes. Property maps are
-  /// emptied until `reset_property_maps()`, to be called once every value
-  /// is written (the caller may free its own memory in between).
-  Connectivity_arrays overwrite_connectivity(size_type nv, size_type ne, size_type nf)
-  {
-    const std::size_t nh = 2 * std::size_t(ne);
-    Connectivity_arrays a;
-    a.target = resize_for_overwrite(h_target_, nh);
-    a.next_bits = resize_for_overwrite(h_next_, nh);
-    a.prev_bits = resize_for_overwrite(h_prev_, nh);
-    a.face = resize_for_overwrite(h_face_, nh);
-    a.vertex_dart_bits = resize_for_overwrite(v_halfedge_, nv);
-    a.face_halfedge = resize_for_overwrite(f_halfedge_, nf);
-    a.mobius = resize_for_overwrite(e_mobius_, ne);
-    reset_properties(0, 0, 0, 0);
-    return a;
-  }
-  /// Sizes every property map to the number of its elements, with all values
-  /// reset to the map's default.
-  void reset_property_maps()
-  {
-    reset_properties(number_of_vertices(), number_of_halfedges(), number_of_edges(), number_of_faces());
-  }
-
   /// Links `a` to `b`: afterwards `next(a) == b` and `prev(b) == a`.
   void set_next(Dart a, Dart b)
   {
@@ -606,8 +549,6 @@ public:
   void set_halfedge(Vertex_index v, Dart d) { v_halfedge_[v.idx()] = d; }
   void set_halfedge(Face_index f, Halfedge_index h) { f_halfedge_[f.idx()] = h; }
   void set_mobius(Edge_index e, bool m) { e_mobius_[e.idx()] = m ? 1 : 0; }
-  /// Makes `halfedge(v)` a border dart when `v` is on the border.
-  void adjust_border_halfedge(Vertex_index v);
 
   // ---------------------------------------------------------------- validity
 
@@ -624,6 +565,9 @@ public:
   }
 
 private:
+  // Subdivision writes whole arrays, copies carry property arrays of any type.
+  friend struct internal::Connectivity_access;
+
   template <class I>
   static internal::Iterator_range<internal::Index_iterator<I>> range(size_type n)
   {
@@ -689,41 +633,8 @@ private:
     }
   }
 
-  // Resizes `array` to `n` elements left unwritten (nothing is copied if it
-  // grows) and returns where to write their values: 32-bit handle values, or
-  // bytes for the Möbius flags.
-  template <class T>
-  static auto resize_for_overwrite(internal::Uninitialized_array<T>& array, std::size_t n)
-  {
-    static_assert(std::is_trivially_copyable_v<T> && (sizeof(T) == 4 || sizeof(T) == 1),
-                  "handles are plain 32-bit values");
-    array.clear();
-    array.resize(n);
-    using Raw = std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint8_t>;
-    return reinterpret_cast<Raw*>(array.data());
-  }
-  // Replaces `array` by `n` values copied from `source`, in one pass.
-  template <class T>
-  static void assign_bits(internal::Uninitialized_array<T>& array, const void* source, std::size_t n)
-  {
-    auto* target = resize_for_overwrite(array, n);
-    if (n)
-      std::memcpy(target, source, sizeof(T) * n);
-  }
-
-  // Every property array back to its default values, at the given sizes.
-  void reset_properties(size_type nv, std::size_t nh, size_type ne, size_type nf)
-  {
-    for (auto* props : {&vprops_, &hprops_, &eprops_, &fprops_})
-      props->resize(0);
-    vprops_.resize(nv);
-    hprops_.resize(nh);
-    eprops_.resize(ne);
-    fprops_.resize(nf);
-  }
-
   // Connectivity, one array per attribute.
-  // (Not zeroed when resized without a value: see overwrite_connectivity().)
+  // (Not zeroed when resized without a value: see internal::Connectivity_access::overwrite().)
   internal::Uninitialized_array<Dart> v_halfedge_;
   internal::Uninitialized_array<Vertex_index> h_target_;
   internal::Uninitialized_array<Dart> h_next_;
@@ -943,20 +854,6 @@ template <class P>
 typename Mobius_mesh<P>::size_type Mobius_mesh<P>::degree(Face_index f) const
 {
   return size_type(CGAL_ext::halfedges_around_face(halfedge(f), *this).size());
-}
-
-template <class P>
-void Mobius_mesh<P>::adjust_border_halfedge(Vertex_index v)
-{
-  const Dart start = v_halfedge_[v.idx()];
-  if (!start.is_valid())
-    return;
-  for (Dart d : CGAL_ext::halfedges_around_target(start, *this)) {
-    if (is_border(d)) {
-      v_halfedge_[v.idx()] = d;
-      return;
-    }
-  }
 }
 
 template <class P>

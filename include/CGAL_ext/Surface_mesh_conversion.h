@@ -17,6 +17,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
 #include <CGAL_ext/internal/Union_find.h>
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -98,6 +99,42 @@ bool is_surface_mesh_internal_property(const std::string& name)
   return name == "v:connectivity" || name == "h:connectivity" || name == "f:connectivity" || name == "v:point" ||
          name == "v:removed" || name == "e:removed" || name == "f:removed" || name == seam_map_name ||
          name == reversed_faces_map_name;
+}
+
+template <class T>
+struct Type_tag
+{
+  using type = T;
+};
+
+// The value types whose property maps the conversions carry. Surface_mesh
+// makes a property array only through `add_property_map<I, T>()`, with `T`
+// named at compile time, so a list is needed here (copies between
+// Mobius_meshes carry any type): bool, the arithmetic types, strings, and,
+// when both sides use the same point type, points and vectors of its kernel.
+template <class P1, class P2, class F>
+void for_each_transferable_type(F&& f)
+{
+  f(Type_tag<bool>());
+  f(Type_tag<char>());
+  f(Type_tag<signed char>());
+  f(Type_tag<unsigned char>());
+  f(Type_tag<short>());
+  f(Type_tag<unsigned short>());
+  f(Type_tag<int>());
+  f(Type_tag<unsigned int>());
+  f(Type_tag<long>());
+  f(Type_tag<unsigned long>());
+  f(Type_tag<long long>());
+  f(Type_tag<unsigned long long>());
+  f(Type_tag<float>());
+  f(Type_tag<double>());
+  f(Type_tag<std::string>());
+  if constexpr (std::is_same_v<P1, P2>) {
+    using K = typename CGAL::Kernel_traits<P1>::Kernel;
+    f(Type_tag<typename K::Point_3>());
+    f(Type_tag<typename K::Vector_3>());
+  }
 }
 
 // True if there are property maps of kind `I` to carry over (points and
@@ -208,8 +245,10 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<
 /// with an empty `sm` that is vertex `v` again, and the seam copies come
 /// after all vertices. Faces keep their order. Points are converted with
 /// `CGAL::Cartesian_converter`. Property maps of the same name are copied for
-/// the value types listed at `copy_mesh()` (on a cut vertex every copy gets
-/// the value; on a cut edge both edges do).
+/// `bool`, the arithmetic types, `std::string` and, with one point type, the
+/// kernel's `Point_3` and `Vector_3` (`Surface_mesh` makes property maps only
+/// of types named at compile time); on a cut vertex every copy gets the
+/// value, on a cut edge both edges do.
 ///
 /// \param mesh the mesh to convert
 /// \param sm the `Surface_mesh` it is appended to

@@ -367,8 +367,8 @@ std::vector<std::uint32_t> border_chain(const Mobius_mesh<P>& m, Dart d, const c
 ///
 /// `mesh_a` receives the union of both meshes with the glue; glued vertices
 /// keep `mesh_a`'s positions. Faces keep their orientation, `mesh_a`'s faces
-/// first. Property maps of the value types listed at `copy_mesh()` are kept
-/// (a glued vertex or edge takes `mesh_a`'s value).
+/// first. Property maps of every value type are kept (a glued vertex or edge
+/// takes `mesh_a`'s value).
 ///
 /// Two vertices are within the tolerance iff their exact distance is at most
 /// the exact value of the tolerance, on every kernel, as in the soup import:
@@ -442,6 +442,14 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = par
 /// - `Merge_strategy::bridge`: nothing moves; new faces join the loops, quads
 ///   where both advance together, triangles where one loop is longer.
 ///
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{the kernel whose `Construct_midpoint_3` places the vertices under
+///       `Merge_strategy::average` (no other strategy computes a point)}
+///     \cgalParamDefault{the kernel of the point type}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
 /// \returns what was glued (vertex pairs in the numbering of `Merge_result`).
 /// \throws Merge_error `not_a_border` if a dart is not a border dart,
 ///   `mismatched_chains` if the loops differ in length (not with `bridge`),
@@ -451,7 +459,10 @@ template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_mesh<P>& mesh_b, Dart border_b,
                            Merge_strategy strategy, const NamedParameters& np = parameters::default_values())
 {
-  (void)np;
+  using Default_traits = typename CGAL::Kernel_traits<P>::Kernel;
+  const auto traits =
+    parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::geom_traits), Default_traits());
+  const auto midpoint = traits.construct_midpoint_3_object();
   const std::vector<std::uint32_t> chain_a = internal::border_chain(mesh_a, border_a, "first");
   std::vector<std::uint32_t> chain_b = internal::border_chain(mesh_b, border_b, "second");
   const std::uint32_t na = mesh_a.number_of_vertices();
@@ -520,7 +531,7 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_m
     for (std::size_t i = 0; i < chain_a.size(); ++i) {
       const P& pa = work.point(Vertex_index(chain_a[i]));
       const P& pb = work.point(Vertex_index(chain_b[i]));
-      position[cls[chain_a[i]]] = strategy == Merge_strategy::keep_second ? pb : CGAL::midpoint(pa, pb);
+      position[cls[chain_a[i]]] = strategy == Merge_strategy::keep_second ? pb : midpoint(pa, pb);
     }
   Mobius_mesh<P> out = internal::rebuild_glued(work, cls, position, extra, result);
   if (strategy == Merge_strategy::bridge)

@@ -16,9 +16,11 @@
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -28,6 +30,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -210,12 +213,14 @@ struct Obj_scan
   std::vector<Crease_tag> creases;
   std::vector<Corner_tag> corners;
   Sharp_feature_options options;
-  std::string geometry; // the text with the tag lines blanked, for CGAL's reader
 };
 
-inline bool is_statement_cgal_skips(const std::string& s)
+template <class Name>
+bool is_statement_cgal_skips(const Name& s)
 {
-  // The statements CGAL's OBJ reader accepts and ignores (CGAL/IO/OBJ.h).
+  // The statements CGAL's OBJ reader accepts and ignores (CGAL/IO/OBJ.h);
+  // the OBJ files read here were read by CGAL's reader before, so they keep
+  // passing where it did.
   static const char* const names[] = {"vt",  "vn",      "vp",       "bevel",   "lod",     "ctech",   "c_interp",
                                       "usemap", "usemtl", "stech",   "d_interp", "mtllib", "shadow_obj",
                                       "trace_obj", "o",    "g",        "s",       "p",       "cstype",  "deg",
@@ -230,10 +235,9 @@ inline bool is_statement_cgal_skips(const std::string& s)
 }
 
 // Reads one OpenSubdiv tag line: `t name nint/nfloat/nstring ints floats strings`.
-inline void scan_obj_tag(const std::string& filename, const Line_reader& reader, Obj_scan& scan)
+inline void scan_obj_tag(const std::string& filename, std::size_t line, const std::vector<std::string>& tok,
+                         Obj_scan& scan)
 {
-  const std::vector<std::string>& tok = reader.tokens();
-  const std::size_t line = reader.number();
   auto fail = [&](const std::string& what) { throw IO_error(filename, line, what); };
   if (tok.size() < 2)
     fail("a tag line needs a name: 't name nint/nfloat/nstring arguments'");
@@ -320,104 +324,212 @@ inline void scan_obj_tag(const std::string& filename, const Line_reader& reader,
   }
 }
 
-// A light line scan of an OBJ file: checks the syntax of `v`, `f` and `t`
-// lines (CGAL's reader stops silently on bad input), remembers the line of
-// each vertex and face, and reads the tags.
-inline Obj_scan scan_obj(const std::string& filename, const std::string& text)
+// The checks that need the whole file: faces naming vertices beyond the last
+// one (a face may name a vertex defined further down), tags naming vertices
+// that do not exist.
+inline void check_obj_indices(const std::string& filename, long long largest_index, std::size_t n_points,
+                              const std::vector<std::vector<std::size_t>>& polygons, const Obj_scan& scan)
 {
-  Obj_scan scan;
-  scan.geometry.reserve(text.size());
-  Line_reader reader(text);
-  std::size_t first_forward_line = 0; // first face naming a vertex defined later
-  while (reader.next()) {
-    const std::vector<std::string>& tok = reader.tokens();
-    const std::size_t line = reader.number();
-    auto fail = [&](const std::string& what) { throw IO_error(filename, line, what); };
-    if (tok.empty() || tok[0][0] == '#') {
-      scan.geometry += '\n';
-      continue;
-    }
-    const std::string& s = tok[0];
-    if (s == "t") {
-      scan_obj_tag(filename, reader, scan);
-      scan.geometry += '\n'; // CGAL's reader refuses tag lines
-      continue;
-    }
-    if (s == "v") {
-      double x;
-      if (tok.size() < 4)
-        fail("a vertex needs three coordinates: 'v x y z'");
-      for (std::size_t i = 1; i < 4; ++i)
-        if (!parse_real(tok[i], x))
-          fail("vertex coordinate '" + tok[i] + "' is not a finite number");
-      scan.lines.point_lines.push_back(line);
-    } else if (s == "f") {
-      const long long n_points = static_cast<long long>(scan.lines.point_lines.size());
-      for (std::size_t i = 1; i < tok.size(); ++i) {
-        // v, v/vt, v//vn or v/vt/vn: only the vertex index matters here.
-        const std::string& t = tok[i];
-        const std::size_t slash = t.find('/');
-        long long index = 0, other = 0;
-        bool ok = parse_integer(t.substr(0, slash), index);
-        if (ok && slash != std::string::npos) {
-          const std::string rest = t.substr(slash + 1);
-          const std::size_t slash2 = rest.find('/');
-          const std::string a = rest.substr(0, slash2);
-          const std::string b = slash2 == std::string::npos ? std::string() : rest.substr(slash2 + 1);
-          ok = (a.empty() || parse_integer(a, other)) && (slash2 == std::string::npos || parse_integer(b, other)) &&
-               (!a.empty() || slash2 != std::string::npos);
-        }
-        if (!ok)
-          fail("face corner '" + t + "' is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
-        if (index == 0)
-          fail("face corner '" + t + "': OBJ vertex indices start at 1");
-        if (index < 0 && n_points + index < 0)
-          fail("face corner '" + t + "' refers " + std::to_string(-index) + " vertices back, but only " +
-               std::to_string(n_points) + " vertices precede it");
-        if (index > n_points && first_forward_line == 0)
-          first_forward_line = line;
-      }
-      scan.lines.polygon_lines.push_back(line);
-    } else if (!is_statement_cgal_skips(s)) {
-      fail("unknown OBJ statement '" + s + "'");
-    }
-    // CGAL's reader skips from one face corner to the next at a space, not a tab.
-    std::string copy = reader.line();
-    std::replace(copy.begin(), copy.end(), '\t', ' ');
-    scan.geometry += copy;
-    scan.geometry += '\n';
-  }
-  const long long n_points = static_cast<long long>(scan.lines.point_lines.size());
-  if (first_forward_line != 0) {
-    // Faces may name vertices defined further down; check them at the end.
-    Line_reader again(text);
-    while (again.next()) {
-      if (again.number() < first_forward_line || again.tokens().empty() || again.tokens()[0] != "f")
-        continue;
-      for (std::size_t i = 1; i < again.tokens().size(); ++i) {
-        long long index = 0;
-        parse_integer(again.tokens()[i].substr(0, again.tokens()[i].find('/')), index);
-        if (index > n_points)
-          throw IO_error(filename, again.number(),
-                         "face names vertex " + std::to_string(index) + ", but the file has only " +
-                           std::to_string(n_points) + " vertices");
-      }
-    }
+  const long long n = static_cast<long long>(n_points);
+  if (largest_index > n) {
+    for (std::size_t p = 0; p < polygons.size(); ++p)
+      for (std::size_t v : polygons[p])
+        if (v >= n_points)
+          throw IO_error(filename, scan.lines.polygon_lines[p],
+                         "face names vertex " + std::to_string(v + 1) + ", but the file has only " +
+                           std::to_string(n) + " vertices");
   }
   for (const Crease_tag& c : scan.creases)
     for (long long v : {c.v0, c.v1})
-      if (v < 0 || v >= n_points)
+      if (v < 0 || v >= n)
         throw IO_error(filename, c.line,
                        "crease names vertex " + std::to_string(v) + ", but tag indices run from 0 to " +
-                         std::to_string(n_points - 1));
+                         std::to_string(n - 1));
   for (const Corner_tag& c : scan.corners)
-    if (c.v < 0 || c.v >= n_points)
+    if (c.v < 0 || c.v >= n)
       throw IO_error(filename, c.line,
                      "corner names vertex " + std::to_string(c.v) + ", but tag indices run from 0 to " +
-                       std::to_string(n_points - 1));
-  return scan;
+                       std::to_string(n - 1));
 }
 
+// A token of an OBJ line: [begin, end) in the file's text.
+struct Token
+{
+  const char* begin;
+  const char* end;
+  bool empty() const { return begin == end; }
+  std::string str() const { return std::string(begin, end); }
+  bool operator==(const char* s) const
+  {
+    const std::size_t n = std::strlen(s);
+    return std::size_t(end - begin) == n && std::memcmp(begin, s, n) == 0;
+  }
+};
+
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// The whitespace-separated tokens of [begin, end), into `tokens`.
+inline void split_tokens(const char* begin, const char* end, std::vector<Token>& tokens)
+{
+  tokens.clear();
+  while (true) {
+    while (begin != end && is_blank(*begin))
+      ++begin;
+    if (begin == end)
+      return;
+    const char* stop = begin;
+    while (stop != end && !is_blank(*stop))
+      ++stop;
+    tokens.push_back(Token{begin, stop});
+    begin = stop;
+  }
+}
+
+// `parse_integer()` on a token, without making a string of it.
+inline bool parse_integer(Token t, long long& value)
+{
+  const char* p = t.begin;
+  const bool negative = p != t.end && *p == '-';
+  if (p != t.end && (*p == '-' || *p == '+'))
+    ++p;
+  if (p == t.end)
+    return false;
+  unsigned long long magnitude = 0;
+  const unsigned long long limit = negative ? 9223372036854775808ull : 9223372036854775807ull;
+  for (; p != t.end; ++p) {
+    if (*p < '0' || *p > '9')
+      return false;
+    const unsigned digit = unsigned(*p - '0');
+    if (magnitude > (limit - digit) / 10)
+      return false; // out of range, as strtoll's ERANGE
+    magnitude = magnitude * 10 + digit;
+  }
+  value = negative ? (magnitude == limit ? (std::numeric_limits<long long>::min)() : -(long long)magnitude)
+                   : (long long)magnitude;
+  return true;
+}
+
+// `parse_real()` on a token: from_chars where it can, strtod (which takes a
+// leading '+' and reads underflows as 0 or denormals) otherwise.
+inline bool parse_real(Token t, double& value)
+{
+  if (t.empty())
+    return false;
+  for (const char* p = t.begin; p != t.end; ++p)
+    if (!(std::isdigit(static_cast<unsigned char>(*p)) || *p == '+' || *p == '-' || *p == '.' || *p == 'e' ||
+          *p == 'E'))
+      return false;
+  if (*t.begin != '+') {
+    const auto [stop, error] = std::from_chars(t.begin, t.end, value);
+    if (error == std::errc() && stop == t.end)
+      return std::isfinite(value);
+    if (error != std::errc::result_out_of_range)
+      return false;
+  }
+  return parse_real(t.str(), value);
+}
+
+// A point from three coordinate tokens read as CGAL's reader reads them:
+// a `double` FT takes the correctly rounded value (as `operator>>(double&)`
+// gives); other number types read the text through their own `operator>>`
+// (exact kernels read decimals exactly; a `float` is rounded once).
+template <class P>
+P point_from_tokens(const Token* coordinates, const double* values)
+{
+  using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
+  if constexpr (std::is_same_v<FT, double>) {
+    (void)coordinates;
+    return P(FT(values[0]), FT(values[1]), FT(values[2]));
+  } else {
+    (void)values;
+    std::istringstream in(std::string(coordinates[0].begin, coordinates[2].end));
+    CGAL::IO::set_ascii_mode(in);
+    P p;
+    in >> p;
+    return p;
+  }
+}
+
+// The vertex index of one face corner (v, v/vt, v//vn or v/vt/vn).
+inline bool parse_face_corner(Token t, long long& index)
+{
+  const char* slash = std::find(t.begin, t.end, '/');
+  if (!parse_integer(Token{t.begin, slash}, index))
+    return false;
+  if (slash == t.end)
+    return true;
+  const char* slash2 = std::find(slash + 1, t.end, '/');
+  const Token texture{slash + 1, slash2};
+  long long other = 0;
+  if (slash2 == t.end) // v/vt
+    return parse_integer(texture, other);
+  return (texture.empty() || parse_integer(texture, other)) && parse_integer(Token{slash2 + 1, t.end}, other);
+}
+
+// Reads an OBJ text in one pass: points, polygons (0-based; negative indices
+// count back from the last vertex read), the line of each, and OpenSubdiv's
+// tags. Checks the syntax of `v`, `f` and `t` lines and that every face and
+// tag names a vertex of the file.
+template <class P>
+Obj_scan read_obj_text(const std::string& filename, const std::string& text, std::vector<P>& points,
+                       std::vector<std::vector<std::size_t>>& polygons)
+{
+  Obj_scan scan;
+  std::vector<Token> tok;
+  std::vector<std::string> tag_tokens;
+  long long largest_index = 0; // checked at the end: faces may name vertices defined further down
+  const char* const text_end = text.data() + text.size();
+  std::size_t line = 0;
+  for (const char* begin = text.data(); begin != text_end;) {
+    const char* end = static_cast<const char*>(std::memchr(begin, '\n', std::size_t(text_end - begin)));
+    if (end == nullptr)
+      end = text_end;
+    ++line;
+    split_tokens(begin, end, tok);
+    begin = end == text_end ? end : end + 1;
+    auto fail = [&](const std::string& what) { throw IO_error(filename, line, what); };
+    if (tok.empty() || *tok[0].begin == '#')
+      continue;
+    const Token s = tok[0];
+    if (s == "v") {
+      if (tok.size() < 4)
+        fail("a vertex needs three coordinates: 'v x y z'");
+      double xyz[3];
+      for (std::size_t i = 1; i < 4; ++i)
+        if (!parse_real(tok[i], xyz[i - 1]))
+          fail("vertex coordinate '" + tok[i].str() + "' is not a finite number");
+      points.push_back(point_from_tokens<P>(&tok[1], xyz));
+      scan.lines.point_lines.push_back(line);
+    } else if (s == "f") {
+      const long long n_points = static_cast<long long>(points.size());
+      std::vector<std::size_t> polygon;
+      polygon.reserve(tok.size() - 1);
+      for (std::size_t i = 1; i < tok.size(); ++i) {
+        long long index = 0;
+        if (!parse_face_corner(tok[i], index))
+          fail("face corner '" + tok[i].str() + "' is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
+        if (index == 0)
+          fail("face corner '" + tok[i].str() + "': OBJ vertex indices start at 1");
+        if (index < 0 && n_points + index < 0)
+          fail("face corner '" + tok[i].str() + "' refers " + std::to_string(-index) + " vertices back, but only " +
+               std::to_string(n_points) + " vertices precede it");
+        largest_index = (std::max)(largest_index, index);
+        polygon.push_back(std::size_t(index < 0 ? n_points + index : index - 1));
+      }
+      polygons.push_back(std::move(polygon));
+      scan.lines.polygon_lines.push_back(line);
+    } else if (s == "t") {
+      tag_tokens.clear();
+      for (const Token& t : tok)
+        tag_tokens.push_back(t.str());
+      scan_obj_tag(filename, line, tag_tokens, scan);
+    } else if (!is_statement_cgal_skips(s)) {
+      fail("unknown OBJ statement '" + s.str() + "'");
+    }
+  }
+  check_obj_indices(filename, largest_index, points.size(), polygons, scan);
+  return scan;
+}
 // A light line scan of an ASCII OFF file: checks the header, the vertex
 // lines and the face lines, and remembers the line of each vertex and face.
 // Binary OFF is left to CGAL's reader alone.
@@ -636,7 +748,9 @@ void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const std:
 ///
 /// Reads a polygon mesh from an OBJ, OFF or PLY file (chosen by the file
 /// name's extension, in any letter case) into `mesh`, replacing its content.
-/// The polygons go through CGAL's polygon soup readers and then
+/// OBJ text is read in one pass (vertices, faces as `v`, `v/vt`, `v//vn` or
+/// `v/vt/vn` with negative indices counting back, and tags); OFF and PLY go
+/// through CGAL's polygon soup readers. The polygons then go through
 /// `polygon_soup_to_mobius_mesh()`, so non-orientable surfaces are read with
 /// their Möbius connections; faces keep the file's orientation.
 ///
@@ -700,10 +814,10 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mobius_mesh
   } else {
     const std::string text = internal::read_whole_file(filename);
     if (format == internal::Mesh_format::obj) {
-      obj = internal::scan_obj(filename, text);
+      obj = internal::read_obj_text(filename, text, points, polygons);
       lines = &obj.lines;
-      std::istringstream in(obj.geometry);
-      read = CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+      // What CGAL's reader refused, which the file errors above leave: no points.
+      read = !points.empty() && !polygons.empty();
     } else {
       off_lines = internal::scan_off(filename, text);
       std::istringstream in(text, std::ios::in | std::ios::binary);

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Copying a Mobius_mesh (also across point types), applying an affine
-// transformation to its points, and the property-map transfer that copying,
-// conversion and merging share.
+// transformation to its points, and the property-map transfer that copying
+// and merging share.
 
 #ifndef CGAL_EXT_MOBIUS_MESH_TRANSFORM_H
 #define CGAL_EXT_MOBIUS_MESH_TRANSFORM_H
@@ -26,65 +26,29 @@
 namespace CGAL_ext {
 namespace internal {
 
-template <class T>
-struct Type_tag
-{
-  using type = T;
-};
-
-// The value types whose property maps are carried over by copies,
-// conversions and merges. Property maps are type-erased, so only a known
-// list of types can be recognised: the arithmetic types, strings, and,
-// when both sides use the same point type, points and vectors of its kernel.
-template <class P1, class P2, class F>
-void for_each_transferable_type(F&& f)
-{
-  f(Type_tag<char>());
-  f(Type_tag<signed char>());
-  f(Type_tag<unsigned char>());
-  f(Type_tag<short>());
-  f(Type_tag<unsigned short>());
-  f(Type_tag<int>());
-  f(Type_tag<unsigned int>());
-  f(Type_tag<long>());
-  f(Type_tag<unsigned long>());
-  f(Type_tag<long long>());
-  f(Type_tag<unsigned long long>());
-  f(Type_tag<float>());
-  f(Type_tag<double>());
-  f(Type_tag<std::string>());
-  if constexpr (std::is_same_v<P1, P2>) {
-    using K = typename CGAL::Kernel_traits<P1>::Kernel;
-    f(Type_tag<typename K::Point_3>());
-    f(Type_tag<typename K::Vector_3>());
-  }
-}
-
 // Copies every property map of element kind `I` (but the points) from `src`
-// to `dst`: element `i` of `dst` in [begin, end) takes the value of
-// `src_of(i)` (skipped where that is invalid).
+// to `dst`, whatever its value type: element `i` of `dst` in [begin, end)
+// takes the value of `src_of(i)` (skipped where that is invalid). A map of
+// `dst` with the same name and another value type is left alone.
 template <class I, class P1, class P2, class SrcOf>
 void transfer_properties(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst, std::size_t begin, std::size_t end,
                          SrcOf src_of)
 {
-  for (const std::string& name : src.template properties<I>()) {
-    if (name == "v:point")
+  const Property_container& from = Connectivity_access::properties<I>(src);
+  Property_container& to = Connectivity_access::properties<I>(dst);
+  std::vector<std::uint32_t> source_of;
+  for (const auto& array : from.arrays()) {
+    if (array->name() == "v:point")
       continue;
-    for_each_transferable_type<P1, P2>([&](auto tag) {
-      using T = typename decltype(tag)::type;
-      const auto from = src.template property_map<I, T>(name);
-      if (!from)
-        return;
-      auto [to, created] = dst.template add_property_map<I, T>(name, from->array()->default_value());
-      (void)created;
-      if (!to)
-        return; // `dst` has a map of that name with another type: leave it alone
+    if (source_of.empty() && begin < end) { // the correspondence, once for all maps of this kind
+      source_of.resize(end - begin);
       for (std::size_t i = begin; i < end; ++i) {
         const I s = src_of(I(i));
-        if (s.is_valid())
-          to[I(i)] = (*from)[s];
+        source_of[i - begin] = s.is_valid() ? std::uint32_t(s.idx()) : Transfer_sources::no_source;
       }
-    });
+    }
+    if (Base_property_array* target = to.add_like(*array))
+      target->transfer(*array, Transfer_sources{begin, source_of});
   }
 }
 
@@ -183,11 +147,8 @@ void write_pairs(const NP& np, Tag tag, Emit emit)
 /// are those of `src` shifted by the returned offsets (halfedges by twice the
 /// edge offset).
 ///
-/// Property maps are copied by name for the value types
-/// `char`, `short`, `int`, `long`, `long long` (signed and unsigned), `float`,
-/// `double`, `std::string`, and, when both meshes use the same point type, the
-/// kernel's `Point_3` and `Vector_3`; with the same point type and an empty
-/// `dst`, every property map is copied.
+/// Every property map of `src` is copied by name, whatever its value type
+/// (as `Mobius_mesh::join()` does).
 ///
 /// \param src the mesh to copy
 /// \param dst the mesh the copy is appended to
@@ -241,14 +202,14 @@ typename Mobius_mesh<P2>::Join_offsets copy_mesh(const Mobius_mesh<P1>& src, Mob
 
 /// \ingroup PkgMobiusMeshOperations
 ///
-/// Appends a disjoint copy of `other` to `mesh` (any point types); the same as
-/// `copy_mesh(other, mesh, np)`, under the name the operation has in the
-/// source design.
+/// Appends a disjoint copy of `src` to `dst` (any point types); the same as
+/// `copy_mesh(src, dst, np)`, under the name the operation has in the source
+/// design. Source first, as in `CGAL::copy_face_graph(source, target)`.
 template <class P1, class P2, class NamedParameters = parameters::Default_named_parameters>
-typename Mobius_mesh<P1>::Join_offsets disjoint_union(Mobius_mesh<P1>& mesh, const Mobius_mesh<P2>& other,
+typename Mobius_mesh<P2>::Join_offsets disjoint_union(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst,
                                                       const NamedParameters& np = parameters::default_values())
 {
-  return copy_mesh(other, mesh, np);
+  return copy_mesh(src, dst, np);
 }
 
 /// \ingroup PkgMobiusMeshOperations

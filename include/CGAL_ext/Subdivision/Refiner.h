@@ -315,7 +315,7 @@ private:
     internal::Mesh_writer<Mobius_mesh<Q>> c(out);
     split_level<ConcurrencyTag>(levels_[0], c, false);
     levels_[0] = Level(); // freed before the maps are made
-    out.reset_property_maps();
+    CGAL_ext::internal::Connectivity_access::reset_property_maps(out);
     if (write_sharpness)
       add_sharpness_maps(out, child_sharpness_.any ? child_sharpness_.edges.data() : nullptr,
                          child_sharpness_.any ? child_sharpness_.vertices.data() : nullptr);
@@ -476,8 +476,9 @@ void Refiner<Mask, W>::build_mesh(Mobius_mesh<P>& out, bool write_sharpness) con
   const Level& L = levels_.back();
   // The level already holds the mesh's arrays, index for index.
   out.clear();
-  out.assign_connectivity(L.nv, L.ne, L.nf, L.h_target.data(), L.h_next.data(), L.h_prev.data(), L.h_face.data(),
-                          L.e_mobius.data(), L.v_dart.data(), L.f_first.data());
+  CGAL_ext::internal::Connectivity_access::assign(out, L.nv, L.ne, L.nf, L.h_target.data(), L.h_next.data(),
+                                                  L.h_prev.data(), L.h_face.data(), L.e_mobius.data(), L.v_dart.data(),
+                                                  L.f_first.data());
   if (write_sharpness)
     add_sharpness_maps(out, L.sharp ? L.e_sharp.data() : nullptr, L.sharp ? L.v_sharp.data() : nullptr);
   add_hole_map(out, L.f_hole);

@@ -10,15 +10,26 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <memory>
-#include <optional>
 #include <string>
+#include <type_traits>
 #include <typeinfo>
 #include <utility>
 #include <vector>
 
 namespace CGAL_ext {
 namespace internal {
+
+// Where a transfer takes its values from: element `first + i` of the target
+// takes element `source_of[i]` of the source, unless that is `no_source`.
+struct Transfer_sources
+{
+  static constexpr std::uint32_t no_source = (std::numeric_limits<std::uint32_t>::max)();
+  std::size_t first;
+  const std::vector<std::uint32_t>& source_of;
+};
 
 class Base_property_array
 {
@@ -31,8 +42,10 @@ public:
   virtual void shrink_to_fit() = 0;
   // Appends `n` elements of `other` (same type), starting at its index `from`.
   virtual void append_from(const Base_property_array& other, std::size_t from, std::size_t n) = 0;
-  // Copies element `from` onto element `to`.
-  virtual void copy_element(std::size_t from, std::size_t to) = 0;
+  // Copies values from `source` as `sources` says, if it has the same value
+  // type (as CGAL's Base_property_array::transfer): the array knows its own
+  // type, so copies between meshes need no list of value types.
+  virtual bool transfer(const Base_property_array& source, const Transfer_sources& sources) = 0;
   virtual std::unique_ptr<Base_property_array> clone() const = 0;
   virtual std::unique_ptr<Base_property_array> empty_clone() const = 0;
   virtual const std::type_info& value_type() const = 0;
@@ -43,15 +56,29 @@ private:
   std::string name_;
 };
 
+// A bool stored in a byte of its own: std::vector<bool> packs bits and has
+// no `bool&` to hand out, which a property map must.
+struct Bool_cell
+{
+  bool value = false;
+  Bool_cell() = default;
+  Bool_cell(bool b) : value(b) {} // implicit, so that a vector of cells fills from a bool
+};
+
+template <class T>
+using Stored_value = std::conditional_t<std::is_same_v<T, bool>, Bool_cell, T>;
+
 template <class T>
 class Property_array final : public Base_property_array
 {
 public:
+  using Stored = Stored_value<T>;
+
   Property_array(std::string name, T default_value)
     : Base_property_array(std::move(name)), default_(std::move(default_value))
   {}
 
-  void resize(std::size_t n) override { data_.resize(n, default_); }
+  void resize(std::size_t n) override { data_.resize(n, Stored(default_)); }
   void reserve(std::size_t n) override { data_.reserve(n); }
   void shrink_to_fit() override { data_.shrink_to_fit(); }
   void append_from(const Base_property_array& other, std::size_t from, std::size_t n) override
@@ -59,7 +86,16 @@ public:
     const auto& o = static_cast<const Property_array&>(other);
     data_.insert(data_.end(), o.data_.begin() + from, o.data_.begin() + from + n);
   }
-  void copy_element(std::size_t from, std::size_t to) override { data_[to] = data_[from]; }
+  bool transfer(const Base_property_array& source, const Transfer_sources& sources) override
+  {
+    if (source.value_type() != typeid(T))
+      return false;
+    const auto& from = static_cast<const Property_array&>(source).data_;
+    for (std::size_t i = 0; i < sources.source_of.size(); ++i)
+      if (sources.source_of[i] != Transfer_sources::no_source)
+        data_[sources.first + i] = from[sources.source_of[i]];
+    return true;
+  }
   std::unique_ptr<Base_property_array> clone() const override
   {
     return std::make_unique<Property_array>(*this);
@@ -70,12 +106,19 @@ public:
   }
   const std::type_info& value_type() const override { return typeid(T); }
 
-  std::vector<T>& data() { return data_; }
-  const std::vector<T>& data() const { return data_; }
+  T& operator[](std::size_t i)
+  {
+    if constexpr (std::is_same_v<T, bool>)
+      return data_[i].value;
+    else
+      return data_[i];
+  }
+  std::vector<Stored>& data() { return data_; }
+  const std::vector<Stored>& data() const { return data_; }
   const T& default_value() const { return default_; }
 
 private:
-  std::vector<T> data_;
+  std::vector<Stored> data_;
   T default_;
 };
 
@@ -93,10 +136,10 @@ public:
   Property_map() = default;
   explicit Property_map(Property_array<T>* array) : array_(array) {}
 
-  reference operator[](Key k) const { return array_->data()[k.idx()]; }
-  std::vector<T>& data() const { return array_->data(); }
+  reference operator[](Key k) const { return (*array_)[k.idx()]; }
+  /// The values in index order (bools as `Bool_cell`s, one byte each).
+  std::vector<Stored_value<T>>& data() const { return array_->data(); }
   explicit operator bool() const { return array_ != nullptr; }
-  const std::string& name() const { return array_->name(); }
 
   friend reference get(const Property_map& m, Key k) { return m[k]; }
   friend void put(const Property_map& m, Key k, const T& v) { m[k] = v; }
@@ -153,12 +196,6 @@ public:
     arrays_.clear();
     size_ = 0;
   }
-  void copy_element(std::size_t from, std::size_t to)
-  {
-    for (auto& a : arrays_)
-      a->copy_element(from, to);
-  }
-
   // Appends all elements of `other`; arrays of the same name and type are
   // copied, others get their default values; arrays only in `other` are added.
   void append(const Property_container& other)
@@ -200,6 +237,21 @@ public:
   {
     return static_cast<Property_array<T>*>(find(name, typeid(T)));
   }
+
+  // The array named as `like` with its value type, added (with `like`'s
+  // default value) if there is none; null if the name is taken by another type.
+  Base_property_array* add_like(const Base_property_array& like)
+  {
+    if (Base_property_array* a = find_by_name(like.name()))
+      return a->value_type() == like.value_type() ? a : nullptr;
+    auto array = like.empty_clone();
+    array->resize(size_);
+    arrays_.push_back(std::move(array));
+    return arrays_.back().get();
+  }
+
+  // The arrays, for walking them all (transfers between meshes).
+  const std::vector<std::unique_ptr<Base_property_array>>& arrays() const { return arrays_; }
 
   bool remove(const Base_property_array* array)
   {

@@ -239,7 +239,7 @@ struct Mesh_writer
     ne = e;
     nf = f;
     nc = c;
-    const auto a = mesh.overwrite_connectivity(v, e, f);
+    const auto a = CGAL_ext::internal::Connectivity_access::overwrite(mesh, v, e, f);
     h_target = a.target;
     h_next = a.next_bits;
     h_prev = a.prev_bits;
