@@ -11,6 +11,7 @@
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_CONNECTIVITY_BUILDER_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/exceptions.h>
 
@@ -58,18 +59,6 @@ struct Face_list
   Face_lists view(std::uint32_t n_vertices) const { return {n_vertices, size(), offset.data(), vertex.data()}; }
 };
 
-/// Where the builder writes: the arrays of the mesh's layout (see
-/// Dart_encoding.h), sized by the caller for the vertex, edge and face
-/// counts the builder reports. Per halfedge: target, `next` and `prev` dart,
-/// face (null on the border); per edge: the Möbius bit; per vertex: an
-/// incoming dart (a border dart on the border; null if isolated); per face:
-/// its first halfedge.
-struct Connectivity_view
-{
-  std::uint32_t *target, *next, *prev, *face, *vertex_dart, *face_halfedge;
-  std::uint8_t* mobius;
-};
-
 /// A vertex whose faces form several fans gets a copy per further fan when
 /// splitting is asked for: copy `n_vertices + k` is `split[k].original`, its
 /// incoming dart `split[k].dart`.
@@ -102,10 +91,12 @@ public:
   u32 number_of_edges() const { return n_edges_; }
   u32 number_of_faces() const { return faces_.n_faces; }
 
-  /// Writes the links into `out`. A non-manifold vertex throws unless
+  /// Writes the links into `out`: arrays in the mesh's layout (see
+  /// `Connectivity_arrays`), sized by the caller for the counts above. A
+  /// non-manifold vertex throws unless
   /// `split_non_manifold_vertices`; then its further fans get new vertices
   /// (returned; their halfedges' targets are already set to the copies).
-  std::vector<Split_vertex> build(const Connectivity_view& out, bool split_non_manifold_vertices)
+  std::vector<Split_vertex> build(const Connectivity_arrays& out, bool split_non_manifold_vertices)
   {
     out_ = out;
     link_faces();
@@ -213,11 +204,11 @@ private:
   void link_faces()
   {
     const std::size_t nh = 2 * std::size_t(n_edges_);
-    std::fill(out_.next, out_.next + nh, null);
-    std::fill(out_.prev, out_.prev + nh, null);
+    std::fill(out_.next_bits, out_.next_bits + nh, null);
+    std::fill(out_.prev_bits, out_.prev_bits + nh, null);
     std::fill(out_.face, out_.face + nh, null);
     std::fill(out_.mobius, out_.mobius + n_edges_, std::uint8_t(0));
-    std::fill(out_.vertex_dart, out_.vertex_dart + faces_.n_vertices, null);
+    std::fill(out_.vertex_dart_bits, out_.vertex_dart_bits + faces_.n_vertices, null);
     corners_at_.assign(faces_.n_vertices, 0);
     for (u32 f = 0; f < faces_.n_faces; ++f) {
       out_.face_halfedge[f] = corner_halfedge_[faces_.offset[f]];
@@ -228,7 +219,7 @@ private:
         out_.face[h] = f;
         set_next(dart_encoding::dart(h, false), dart_encoding::dart(corner_halfedge_[u], false));
         ++corners_at_[target];
-        out_.vertex_dart[target] = dart_encoding::dart(h, false);
+        out_.vertex_dart_bits[target] = dart_encoding::dart(h, false);
         if (partner_[t] == null)
           out_.target[dart_encoding::opposite_halfedge(h)] = corner_vertex(t);
         else if (t < partner_[t])
@@ -242,12 +233,12 @@ private:
   u32 next(u32 d) const
   {
     const u32 h = dart_encoding::halfedge_of_dart(d);
-    return dart_encoding::is_flipped(d) ? dart_encoding::flip(out_.prev[h]) : out_.next[h];
+    return dart_encoding::is_flipped(d) ? dart_encoding::flip(out_.prev_bits[h]) : out_.next_bits[h];
   }
   u32 prev(u32 d) const
   {
     const u32 h = dart_encoding::halfedge_of_dart(d);
-    return dart_encoding::is_flipped(d) ? dart_encoding::flip(out_.next[h]) : out_.prev[h];
+    return dart_encoding::is_flipped(d) ? dart_encoding::flip(out_.next_bits[h]) : out_.prev_bits[h];
   }
   u32 opposite(u32 d) const { return dart_encoding::opposite_dart(d, out_.mobius[dart_encoding::edge_of_dart(d)] != 0); }
   bool is_border(u32 d) const { return out_.face[dart_encoding::halfedge_of_dart(d)] == null; }
@@ -256,13 +247,13 @@ private:
   {
     using namespace dart_encoding;
     if (is_flipped(a))
-      out_.prev[halfedge_of_dart(a)] = flip(b);
+      out_.prev_bits[halfedge_of_dart(a)] = flip(b);
     else
-      out_.next[halfedge_of_dart(a)] = b;
+      out_.next_bits[halfedge_of_dart(a)] = b;
     if (is_flipped(b))
-      out_.next[halfedge_of_dart(b)] = flip(a);
+      out_.next_bits[halfedge_of_dart(b)] = flip(a);
     else
-      out_.prev[halfedge_of_dart(b)] = a;
+      out_.prev_bits[halfedge_of_dart(b)] = a;
   }
 
   // Walks the fan of incoming darts from `start` through its faces, stamping
@@ -312,8 +303,8 @@ private:
     for (u32 v = 0; v < faces_.n_vertices; ++v) {
       if (corners_at_[v] == 0)
         continue; // isolated
-      const auto [first, visited] = walk_fan(out_.vertex_dart[v], v, nullptr);
-      out_.vertex_dart[v] = first;
+      const auto [first, visited] = walk_fan(out_.vertex_dart_bits[v], v, nullptr);
+      out_.vertex_dart_bits[v] = first;
       if (visited == corners_at_[v])
         continue;
       if (!split)
@@ -375,7 +366,7 @@ private:
   }
 
   Face_lists faces_;
-  Connectivity_view out_{};
+  Connectivity_arrays out_{};
   std::size_t n_corners_ = 0;
   u32 n_edges_ = 0;
   std::vector<u32> corner_face_, partner_, corner_halfedge_, corners_at_, face_stamp_;
@@ -392,18 +383,16 @@ std::size_t build_mesh_from_faces(const Face_lists& faces, PointOf point_of, boo
                                   Mobius_mesh<P>& out)
 {
   Connectivity_builder builder(faces);
-  const auto arrays = out.overwrite_connectivity(builder.number_of_vertices(), builder.number_of_edges(),
-                                                 builder.number_of_faces());
-  const Connectivity_view view{arrays.target, arrays.next_bits, arrays.prev_bits, arrays.face,
-                               arrays.vertex_dart_bits, arrays.face_halfedge, arrays.mobius};
+  const Connectivity_arrays arrays = Connectivity_access::overwrite(
+    out, builder.number_of_vertices(), builder.number_of_edges(), builder.number_of_faces());
   std::vector<Split_vertex> copies;
   try {
-    copies = builder.build(view, split_non_manifold_vertices);
+    copies = builder.build(arrays, split_non_manifold_vertices);
   } catch (...) {
     out = Mobius_mesh<P>(); // the arrays are half written
     throw;
   }
-  out.reset_property_maps();
+  Connectivity_access::reset_property_maps(out);
   auto points = out.points();
   for (std::uint32_t v = 0; v < faces.n_vertices; ++v)
     points[Vertex_index(v)] = point_of(v);

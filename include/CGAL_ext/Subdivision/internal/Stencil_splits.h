@@ -72,9 +72,15 @@ inline void level_from_faces(u32 nv, const Face_list& faces, Level& c)
   CGAL_ext::internal::Connectivity_builder builder(faces.view(nv));
   c.resize(nv, builder.number_of_edges(), faces.size(), u32(faces.vertex.size()),
            Level::corner_table | Level::sharpness | Level::halfedge_corners);
-  builder.build({c.h_target.data(), c.h_next.data(), c.h_prev.data(), c.h_face.data(), c.v_dart.data(),
-                 c.f_first.data(), c.e_mobius.data()},
-                false);
+  CGAL_ext::internal::Connectivity_arrays arrays;
+  arrays.target = c.h_target.data();
+  arrays.next_bits = c.h_next.data();
+  arrays.prev_bits = c.h_prev.data();
+  arrays.face = c.h_face.data();
+  arrays.vertex_dart_bits = c.v_dart.data();
+  arrays.face_halfedge = c.f_first.data();
+  arrays.mobius = c.e_mobius.data();
+  builder.build(arrays, false);
   index_corners(c);
 }
 
