@@ -613,6 +613,26 @@ private:
 
   void reverse_border_halfedge(Halfedge_index g);
 
+  // add_face() in three steps: what the face meets at its vertices (or why it
+  // is refused), its halfedges, and the border links around its vertices.
+  struct Border_fan { Dart first_out, last_in; }; // border darts, in cyclic order
+  struct Face_site
+  {
+    std::vector<std::vector<Border_fan>> fans; // the fans at each vertex
+    std::vector<Dart> existing;                // the border dart from vs[i] to vs[i+1], if any
+  };
+  std::string check_face_site(const std::vector<Vertex_index>& vs, Face_site& site) const;
+  std::vector<Halfedge_index> add_face_halfedges(Face_index f, const std::vector<Vertex_index>& vs,
+                                                 const std::vector<Dart>& existing, std::vector<Dart>& new_border_out,
+                                                 std::vector<Dart>& new_border_in);
+  std::size_t fan_containing(const std::vector<Border_fan>& fans, Edge_index e) const
+  {
+    for (std::size_t k = 0; k < fans.size(); ++k)
+      if (edge(fans[k].first_out) == e || edge(fans[k].last_in) == e)
+        return k;
+    return fans.size();
+  }
+
   template <class I>
   internal::Property_container& container()
   {
@@ -857,49 +877,37 @@ typename Mobius_mesh<P>::size_type Mobius_mesh<P>::degree(Face_index f) const
 }
 
 template <class P>
-template <class VertexRange>
-typename Mobius_mesh<P>::Face_index
-Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
+std::string Mobius_mesh<P>::check_face_site(const std::vector<Vertex_index>& vs, Face_site& site) const
 {
-  const std::vector<Vertex_index> vs(std::begin(vertex_range), std::end(vertex_range));
   const std::size_t n = vs.size();
-  auto refuse = [&](const std::string& reason) {
-    if (why)
-      *why = reason;
-    return null_face();
-  };
   auto name = [](Vertex_index v) { return "v" + std::to_string(v.idx()); };
   if (n < 3)
-    return refuse("a face needs at least three vertices");
+    return "a face needs at least three vertices";
   for (std::size_t i = 0; i < n; ++i) {
     if (!is_valid(vs[i]))
-      return refuse("vertex index " + std::to_string(vs[i].idx()) + " is not in the mesh");
+      return "vertex index " + std::to_string(vs[i].idx()) + " is not in the mesh";
     for (std::size_t j = 0; j < i; ++j)
       if (vs[i] == vs[j])
-        return refuse("vertex " + name(vs[i]) + " is repeated in the face");
+        return "vertex " + name(vs[i]) + " is repeated in the face";
   }
-
-  // The fans around each vertex, as (first outgoing, last incoming) border
-  // darts in the cyclic order the border links give them. A vertex may hold
-  // several fans while a mesh is built face by face, as in Surface_mesh.
-  struct Fan { Dart first_out, last_in; };
-  std::vector<std::vector<Fan>> fans(n);
+  // The fans around each vertex. A vertex may hold several fans while a mesh
+  // is built face by face, as in Surface_mesh.
+  site.fans.assign(n, {});
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex_index v = vs[i];
     if (is_isolated(v))
       continue;
     if (!is_border(v))
-      return refuse("vertex " + name(v) + " is interior; another face would make it non-manifold");
+      return "vertex " + name(v) + " is interior; another face would make it non-manifold";
     std::vector<Dart> border_in;
     for (Dart d : CGAL_ext::halfedges_around_target(halfedge(v), *this))
       if (is_border(d))
         border_in.push_back(d);
     for (std::size_t k = 0; k < border_in.size(); ++k)
-      fans[i].push_back(Fan{next(border_in[k]), border_in[(k + 1) % border_in.size()]});
+      site.fans[i].push_back(Border_fan{next(border_in[k]), border_in[(k + 1) % border_in.size()]});
   }
-
-  // Existing edges of the face: the border dart from vs[i] to vs[i+1].
-  std::vector<Dart> existing(n);
+  // Existing edges of the face.
+  site.existing.assign(n, Dart());
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex_index a = vs[i], b = vs[(i + 1) % n];
     if (is_isolated(b))
@@ -908,31 +916,32 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
       if (source(d) != a)
         continue;
       if (!is_border(edge(d)))
-        return refuse("edge (" + name(a) + ", " + name(b) + ") already has two faces");
-      existing[i] = is_border(d) ? d : opposite(d);
+        return "edge (" + name(a) + ", " + name(b) + ") already has two faces";
+      site.existing[i] = is_border(d) ? d : opposite(d);
       break;
     }
   }
-
   // The new corner at vs[i] lies between the edges in = (vs[i-1], vs[i]) and
   // out = (vs[i], vs[i+1]). Each existing one is a border edge of some fan.
-  auto fan_at = [&](std::size_t i, Edge_index e) {
-    for (std::size_t k = 0; k < fans[i].size(); ++k)
-      if (edge(fans[i][k].first_out) == e || edge(fans[i][k].last_in) == e)
-        return k;
-    return fans[i].size();
-  };
   for (std::size_t i = 0; i < n; ++i) {
-    const Dart in = existing[(i + n - 1) % n], out = existing[i];
-    if (in.is_valid() && out.is_valid() && fan_at(i, edge(in)) == fan_at(i, edge(out)) && fans[i].size() > 1)
-      return refuse("the face would close one fan of vertex " + name(vs[i]) +
-                    " while others remain (non-manifold vertex)");
+    const Dart in = site.existing[(i + n - 1) % n], out = site.existing[i];
+    if (in.is_valid() && out.is_valid() && site.fans[i].size() > 1 &&
+        fan_containing(site.fans[i], edge(in)) == fan_containing(site.fans[i], edge(out)))
+      return "the face would close one fan of vertex " + name(vs[i]) + " while others remain (non-manifold vertex)";
   }
+  return {};
+}
 
-  // ---- Commit: face halfedges, taking over existing border halfedges.
-  const Face_index f = add_face_record();
+// The face's halfedges, taking over existing border halfedges; the new
+// border darts at each vertex into `new_border_out` and `new_border_in`.
+template <class P>
+std::vector<Halfedge_index> Mobius_mesh<P>::add_face_halfedges(Face_index f, const std::vector<Vertex_index>& vs,
+                                                               const std::vector<Dart>& existing,
+                                                               std::vector<Dart>& new_border_out,
+                                                               std::vector<Dart>& new_border_in)
+{
+  const std::size_t n = vs.size();
   std::vector<Halfedge_index> face_halfedges(n);
-  std::vector<Dart> new_border_out(n), new_border_in(n); // new border darts at vs[i]
   for (std::size_t i = 0; i < n; ++i) {
     const Vertex_index a = vs[i], b = vs[(i + 1) % n];
     if (!existing[i].is_valid()) {
@@ -948,7 +957,6 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
     const bool mobius = h_target_[opposite_halfedge(g).idx()] == b;
     h_target_[g.idx()] = b;
     e_mobius_[edge(g).idx()] = mobius ? 1 : 0;
-    h_face_[g.idx()] = f;
     face_halfedges[i] = g;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -956,30 +964,49 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
     set_next(dart(face_halfedges[i]), dart(face_halfedges[(i + 1) % n]));
   }
   f_halfedge_[f.idx()] = face_halfedges[0];
+  return face_halfedges;
+}
 
-  // ---- Relink the border at each vertex: merge the new corner with the
-  //      fans it touches, walking each fan in the direction that agrees with
-  //      the new face, then link the fans in a cycle.
+template <class P>
+template <class VertexRange>
+typename Mobius_mesh<P>::Face_index
+Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
+{
+  const std::vector<Vertex_index> vs(std::begin(vertex_range), std::end(vertex_range));
+  const std::size_t n = vs.size();
+  Face_site site;
+  if (std::string reason = check_face_site(vs, site); !reason.empty()) {
+    if (why)
+      *why = reason;
+    return null_face();
+  }
+  const std::vector<Dart>& existing = site.existing;
+  const Face_index f = add_face_record();
+  std::vector<Dart> new_border_out(n), new_border_in(n); // new border darts at vs[i]
+  const std::vector<Halfedge_index> face_halfedges =
+    add_face_halfedges(f, vs, existing, new_border_out, new_border_in);
+
+  // Relink the border at each vertex: merge the new corner with the fans it
+  // touches, walking each fan in the direction that agrees with the new
+  // face, then link the fans in a cycle.
   for (std::size_t i = 0; i < n; ++i) {
-    const Vertex_index v = vs[i];
-    std::vector<Fan>& list = fans[i];
+    std::vector<Border_fan>& list = site.fans[i];
     const std::size_t ip = (i + n - 1) % n;
     // Going backward from the new corner crosses `in`, forward crosses `out`.
     const Edge_index e_in = edge(dart(face_halfedges[ip])), e_out = edge(dart(face_halfedges[i]));
-    Fan merged{new_border_out[i], new_border_in[i]};
+    Border_fan merged{new_border_out[i], new_border_in[i]};
     auto take = [&](Edge_index e, bool before) {
-      const std::size_t k = fan_at(i, e);
-      Fan x = list[k];
+      const std::size_t k = fan_containing(list, e);
+      Border_fan x = list[k];
       list.erase(list.begin() + std::ptrdiff_t(k));
       // A fan before the corner must end at e; one after it must start at e.
-      const bool ends_at_e = edge(x.last_in) == e;
-      if (before != ends_at_e)
-        x = Fan{x.last_in.flipped(), x.first_out.flipped()};
+      if (before != (edge(x.last_in) == e))
+        x = Border_fan{x.last_in.flipped(), x.first_out.flipped()};
       return x;
     };
-    if (existing[ip].is_valid() && existing[i].is_valid() && fan_at(i, e_in) == fan_at(i, e_out)) {
-      list.erase(list.begin() + std::ptrdiff_t(fan_at(i, e_in))); // the fan closes
-      merged = Fan{};
+    if (existing[ip].is_valid() && existing[i].is_valid() && fan_containing(list, e_in) == fan_containing(list, e_out)) {
+      list.erase(list.begin() + std::ptrdiff_t(fan_containing(list, e_in))); // the fan closes
+      merged = Border_fan{};
     } else {
       if (existing[ip].is_valid())
         merged.first_out = take(e_in, true).first_out;
@@ -990,7 +1017,7 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
       list.push_back(merged);
     for (std::size_t k = 0; k < list.size(); ++k)
       set_next(list[k].last_in, list[(k + 1) % list.size()].first_out);
-    v_halfedge_[v.idx()] = list.empty() ? dart(face_halfedges[ip]) : list.front().last_in;
+    v_halfedge_[vs[i].idx()] = list.empty() ? dart(face_halfedges[ip]) : list.front().last_in;
   }
   return f;
 }
