@@ -174,12 +174,24 @@ std::size_t polygon_soup_to_mobius_mesh(const PointRange& points, const PolygonR
   const std::size_t n_points = std::size(points);
   internal::check_soup_points(points, point_map);
   internal::Face_list flat = internal::flatten_soup_polygons(polygons, n_points);
-  using Item = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
-  std::vector<const Item*> item; // random access to any range
-  item.reserve(n_points);
-  for (const auto& x : points)
-    item.push_back(&x);
-  auto point_of = [&](std::uint32_t i) { return get(point_map, *item[i]); };
+  // Random access to the points: directly where the range has it, else
+  // through a table of addresses (not built for vectors: on a large soup
+  // its pages would cost more than the rest of the import's first touch).
+  using Iterator = decltype(std::begin(points));
+  constexpr bool random_access = std::is_base_of_v<std::random_access_iterator_tag,
+                                                   typename std::iterator_traits<Iterator>::iterator_category>;
+  std::vector<const typename std::iterator_traits<Iterator>::value_type*> item;
+  if constexpr (!random_access) {
+    item.reserve(n_points);
+    for (const auto& x : points)
+      item.push_back(&x);
+  }
+  auto point_of = [&](std::uint32_t i) {
+    if constexpr (random_access)
+      return get(point_map, std::begin(points)[i]);
+    else
+      return get(point_map, *item[i]);
+  };
 
   // 2. Merge close points, if asked: vertex v of the mesh is soup point
   //    representative[v].
