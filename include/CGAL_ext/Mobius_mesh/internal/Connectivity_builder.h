@@ -73,7 +73,9 @@ struct Split_vertex
 /// can size the output), `build()` writes the links. Two faces that share an
 /// edge are connected whichever way they run along it; running the same way
 /// makes a Möbius edge. Input that is not a 2-manifold throws `Soup_error`
-/// naming the faces and vertices at fault, before anything is written.
+/// naming the faces and vertices at fault: a repeated vertex or an edge of
+/// three faces from the constructor, before anything is written; a
+/// non-manifold vertex from `build()`, whose output the caller then drops.
 class Connectivity_builder
 {
 public:
@@ -93,9 +95,9 @@ public:
 
   /// Writes the links into `out`: arrays in the mesh's layout (see
   /// `Connectivity_arrays`), sized by the caller for the counts above. A
-  /// non-manifold vertex throws unless
-  /// `split_non_manifold_vertices`; then its further fans get new vertices
-  /// (returned; their halfedges' targets are already set to the copies).
+  /// non-manifold vertex throws unless `split_non_manifold_vertices`; then
+  /// its further fans get new vertices (returned; their halfedges' targets
+  /// are already set to the copies).
   std::vector<Split_vertex> build(const Connectivity_arrays& out, bool split_non_manifold_vertices)
   {
     out_ = out;
