@@ -21,10 +21,8 @@
 #include <CGAL/Kernel_traits.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <numeric>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -78,25 +76,20 @@ Mobius_mesh<P> rebuild_glued(const Mobius_mesh<P>& work, const std::vector<std::
   // The faces in one flat array of corners: a vector per face would cost
   // one allocation per face, a third of the whole merge.
   const std::size_t nf = work.number_of_faces();
-  std::vector<std::uint32_t> corners, start;
-  corners.reserve(work.number_of_halfedges());
-  start.reserve(nf + extra.size() + 1);
-  start.push_back(0);
+  Face_list faces;
+  faces.vertex.reserve(work.number_of_halfedges());
+  faces.offset.reserve(nf + extra.size() + 1);
   for (Face_index f : work.faces()) {
     for (Dart d : CGAL_ext::halfedges_around_face(work.halfedge(f), work))
-      corners.push_back(cls[work.source(d).idx()]);
-    start.push_back(std::uint32_t(corners.size()));
+      faces.vertex.push_back(cls[work.source(d).idx()]);
+    faces.offset.push_back(std::uint32_t(faces.vertex.size()));
   }
-  for (const std::vector<std::uint32_t>& polygon : extra) {
-    corners.insert(corners.end(), polygon.begin(), polygon.end());
-    start.push_back(std::uint32_t(corners.size()));
-  }
-  const Face_lists faces{std::uint32_t(position.size()), std::uint32_t(start.size() - 1), start.data(),
-                         corners.data()};
+  for (const std::vector<std::uint32_t>& polygon : extra)
+    faces.add(polygon.begin(), polygon.end());
 
   Mobius_mesh<P> out;
   try {
-    build_mesh_from_faces(faces, [&position](std::uint32_t v) { return position[v]; }, false, out);
+    build_mesh_from_faces(faces.view(std::uint32_t(position.size())), [&position](std::uint32_t v) { return position[v]; }, false, out);
   } catch (const Soup_error& e) {
     std::vector<std::size_t> vs;
     for (std::size_t c : e.vertices())

@@ -22,8 +22,6 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
-#include <numeric>
-#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
