@@ -126,55 +126,72 @@ private:
 
 namespace internal {
 
-// Random-access iterator over the indices [0, n) of one element kind.
+// Iterator over the indices [0, n) of one element kind that skips removed
+// elements. `removed` flags them (null while nothing is removed), one flag per
+// `2^shift` indices: halfedges are removed with their edge.
 template <class I>
 class Index_iterator
 {
 public:
-  using iterator_category = std::random_access_iterator_tag;
+  using iterator_category = std::bidirectional_iterator_tag;
   using value_type = I;
   using difference_type = std::ptrdiff_t;
   using pointer = const I*;
   using reference = I;
+  using size_type = typename I::size_type;
 
   Index_iterator() = default;
-  explicit Index_iterator(typename I::size_type i) : i_(i) {}
+  Index_iterator(size_type i, size_type end, const Property_array<bool>* removed = nullptr, unsigned shift = 0)
+    : i_(i), end_(end), removed_(removed), shift_(shift)
+  {
+    skip_forward();
+  }
 
   I operator*() const { return I(i_); }
-  I operator[](difference_type n) const { return I(typename I::size_type(i_ + n)); }
-  Index_iterator& operator++() { ++i_; return *this; }
-  Index_iterator operator++(int) { Index_iterator t = *this; ++i_; return t; }
-  Index_iterator& operator--() { --i_; return *this; }
-  Index_iterator operator--(int) { Index_iterator t = *this; --i_; return t; }
-  Index_iterator& operator+=(difference_type n) { i_ = typename I::size_type(i_ + n); return *this; }
-  Index_iterator& operator-=(difference_type n) { i_ = typename I::size_type(i_ - n); return *this; }
-  friend Index_iterator operator+(Index_iterator it, difference_type n) { return it += n; }
-  friend Index_iterator operator+(difference_type n, Index_iterator it) { return it += n; }
-  friend Index_iterator operator-(Index_iterator it, difference_type n) { return it -= n; }
-  friend difference_type operator-(Index_iterator a, Index_iterator b)
+  Index_iterator& operator++()
   {
-    return difference_type(a.i_) - difference_type(b.i_);
+    ++i_;
+    skip_forward();
+    return *this;
   }
-  bool operator==(Index_iterator o) const { return i_ == o.i_; }
-  bool operator!=(Index_iterator o) const { return i_ != o.i_; }
-  bool operator<(Index_iterator o) const { return i_ < o.i_; }
+  Index_iterator operator++(int) { Index_iterator t = *this; ++*this; return t; }
+  Index_iterator& operator--()
+  {
+    do
+      --i_;
+    while (is_removed(i_));
+    return *this;
+  }
+  Index_iterator operator--(int) { Index_iterator t = *this; --*this; return t; }
+  bool operator==(const Index_iterator& o) const { return i_ == o.i_; }
+  bool operator!=(const Index_iterator& o) const { return i_ != o.i_; }
 
 private:
-  typename I::size_type i_ = 0;
+  bool is_removed(size_type i) const { return removed_ != nullptr && removed_->data()[i >> shift_].value; }
+  void skip_forward()
+  {
+    while (i_ < end_ && is_removed(i_))
+      ++i_;
+  }
+
+  size_type i_ = 0, end_ = 0;
+  const Property_array<bool>* removed_ = nullptr;
+  unsigned shift_ = 0;
 };
 
 template <class It>
 class Iterator_range
 {
 public:
-  Iterator_range(It b, It e) : b_(b), e_(e) {}
+  Iterator_range(It b, It e, std::size_t n) : b_(b), e_(e), n_(n) {}
   It begin() const { return b_; }
   It end() const { return e_; }
-  std::size_t size() const { return std::size_t(std::distance(b_, e_)); }
-  bool empty() const { return b_ == e_; }
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
 
 private:
   It b_, e_;
+  std::size_t n_;
 };
 
 } // namespace internal
@@ -233,6 +250,7 @@ public:
       eprops_ = o.eprops_;
       fprops_ = o.fprops_;
       points_ = Property_map<Vertex_index, Point>(vprops_.template get<Point>("v:point"));
+      find_removal_marks(o.removed_vertices_.count, o.removed_edges_.count, o.removed_faces_.count);
     }
     return *this;
   }
@@ -251,6 +269,9 @@ public:
       eprops_ = std::move(o.eprops_);
       fprops_ = std::move(o.fprops_);
       points_ = o.points_;
+      removed_vertices_ = o.removed_vertices_;
+      removed_edges_ = o.removed_edges_;
+      removed_faces_ = o.removed_faces_;
       o.clear();
     }
     return *this;
@@ -270,6 +291,7 @@ public:
     hprops_.clear();
     eprops_.clear();
     fprops_.clear();
+    removed_vertices_ = removed_edges_ = removed_faces_ = Removal_marks();
     init_points();
   }
 
@@ -307,16 +329,26 @@ public:
 
   // ---------------------------------------------------------------- counts and ranges
 
-  size_type number_of_vertices() const { return size_type(v_halfedge_.size()); }
-  size_type number_of_halfedges() const { return size_type(h_target_.size()); }
-  size_type number_of_edges() const { return size_type(e_mobius_.size()); }
-  size_type number_of_faces() const { return size_type(f_halfedge_.size()); }
+  /// The numbers of elements, removed ones not counted (as in `Surface_mesh`).
+  size_type number_of_vertices() const { return num_vertices() - removed_vertices_.count; }
+  size_type number_of_halfedges() const { return num_halfedges() - 2 * removed_edges_.count; }
+  size_type number_of_edges() const { return num_edges() - removed_edges_.count; }
+  size_type number_of_faces() const { return num_faces() - removed_faces_.count; }
   bool is_empty() const { return number_of_vertices() == 0; }
 
-  Vertex_range vertices() const { return range<Vertex_index>(number_of_vertices()); }
-  Halfedge_range halfedges() const { return range<Halfedge_index>(number_of_halfedges()); }
-  Edge_range edges() const { return range<Edge_index>(number_of_edges()); }
-  Face_range faces() const { return range<Face_index>(number_of_faces()); }
+  /// The numbers of element slots, removed elements included: every index of
+  /// the mesh is below them. Equal to the `number_of_*()` functions unless
+  /// `has_garbage()`.
+  size_type num_vertices() const { return size_type(v_halfedge_.size()); }
+  size_type num_halfedges() const { return size_type(h_target_.size()); }
+  size_type num_edges() const { return size_type(e_mobius_.size()); }
+  size_type num_faces() const { return size_type(f_halfedge_.size()); }
+
+  /// The elements, in index order, removed ones skipped.
+  Vertex_range vertices() const { return range<Vertex_index>(num_vertices(), removed_vertices_, 0); }
+  Halfedge_range halfedges() const { return range<Halfedge_index>(num_halfedges(), removed_edges_, 1); }
+  Edge_range edges() const { return range<Edge_index>(num_edges(), removed_edges_, 0); }
+  Face_range faces() const { return range<Face_index>(num_faces(), removed_faces_, 0); }
 
   static constexpr Vertex_index null_vertex() { return Vertex_index(); }
   static constexpr Halfedge_index null_halfedge() { return Halfedge_index(); }
@@ -324,10 +356,11 @@ public:
   static constexpr Face_index null_face() { return Face_index(); }
   static constexpr Dart null_dart() { return Dart(); }
 
-  bool is_valid(Vertex_index v) const { return v.idx() < number_of_vertices(); }
-  bool is_valid(Halfedge_index h) const { return h.idx() < number_of_halfedges(); }
-  bool is_valid(Edge_index e) const { return e.idx() < number_of_edges(); }
-  bool is_valid(Face_index f) const { return f.idx() < number_of_faces(); }
+  /// True if the index names a slot of the mesh (removed or not).
+  bool is_valid(Vertex_index v) const { return v.idx() < num_vertices(); }
+  bool is_valid(Halfedge_index h) const { return h.idx() < num_halfedges(); }
+  bool is_valid(Edge_index e) const { return e.idx() < num_edges(); }
+  bool is_valid(Face_index f) const { return f.idx() < num_faces(); }
   bool is_valid(Dart d) const { return d.is_valid() && is_valid(d.halfedge()); }
 
   // ---------------------------------------------------------------- darts
@@ -440,7 +473,8 @@ public:
   template <class I, class T>
   bool remove_property_map(Property_map<I, T>& map)
   {
-    if (!map || static_cast<const void*>(map.array()) == static_cast<const void*>(points_.array()))
+    if (!map || static_cast<const void*>(map.array()) == static_cast<const void*>(points_.array()) ||
+        is_removal_mark(map.array()))
       return false;
     const bool removed = container<I>().remove(map.array());
     map = Property_map<I, T>();
@@ -564,14 +598,127 @@ public:
     return report.empty();
   }
 
+  // ---------------------------------------------------------------- removal and garbage collection
+
+  /// \name Removal and garbage collection
+  /// As in `Surface_mesh`, the low-level `remove_*()` functions only mark an
+  /// element removed: they change no link, so the caller (an Euler operation,
+  /// usually) keeps the rest of the mesh consistent. Removed elements are
+  /// skipped by the ranges and not counted by `number_of_*()`, but keep their
+  /// indices until `collect_garbage()` compacts every array and every property
+  /// map. Elements added later are appended: removed slots are not reused, so
+  /// indices handed out stay unique until the garbage is collected.
+  /// @{
+
+  /// Marks `v` removed.
+  void remove_vertex(Vertex_index v) { mark(vprops_, "v:removed", removed_vertices_, v.idx()); }
+  /// Marks `e` and its two halfedges removed.
+  void remove_edge(Edge_index e) { mark(eprops_, "e:removed", removed_edges_, e.idx()); }
+  /// Marks `f` removed.
+  void remove_face(Face_index f) { mark(fprops_, "f:removed", removed_faces_, f.idx()); }
+
+  bool is_removed(Vertex_index v) const { return removed_vertices_.is_marked(v.idx()); }
+  bool is_removed(Halfedge_index h) const { return removed_edges_.is_marked(h.idx() / 2); }
+  bool is_removed(Edge_index e) const { return removed_edges_.is_marked(e.idx()); }
+  bool is_removed(Face_index f) const { return removed_faces_.is_marked(f.idx()); }
+
+  size_type number_of_removed_vertices() const { return removed_vertices_.count; }
+  size_type number_of_removed_halfedges() const { return 2 * removed_edges_.count; }
+  size_type number_of_removed_edges() const { return removed_edges_.count; }
+  size_type number_of_removed_faces() const { return removed_faces_.count; }
+  bool has_garbage() const
+  {
+    return removed_vertices_.count != 0 || removed_edges_.count != 0 || removed_faces_.count != 0;
+  }
+
+  /// Where `collect_garbage()` moved each element: `maps(x)` is the new index
+  /// of the old index (or dart) `x`, null for a removed element.
+  struct Garbage_collection_maps
+  {
+    std::vector<Vertex_index> vertices;
+    std::vector<Edge_index> edges;
+    std::vector<Face_index> faces;
+
+    Vertex_index operator()(Vertex_index v) const { return v.is_valid() ? vertices[v.idx()] : v; }
+    Edge_index operator()(Edge_index e) const { return e.is_valid() ? edges[e.idx()] : e; }
+    Face_index operator()(Face_index f) const { return f.is_valid() ? faces[f.idx()] : f; }
+    Halfedge_index operator()(Halfedge_index h) const
+    {
+      const Edge_index e = (*this)(Edge_index(internal::dart_encoding::edge_of_halfedge(h.idx())));
+      return e.is_valid() ? Halfedge_index(internal::dart_encoding::halfedge_of_edge(e.idx(), h.idx() & 1u))
+                          : Halfedge_index();
+    }
+    Dart operator()(Dart d) const
+    {
+      return d.is_valid() ? Dart((*this)(d.halfedge()), d.is_flipped()) : d;
+    }
+  };
+
+  /// Removes the removed elements for good: every connectivity array and
+  /// every property map is compacted, keeping the order of the elements that
+  /// stay; their indices change (the optional `maps` say how).
+  void collect_garbage()
+  {
+    Garbage_collection_maps maps;
+    collect_garbage(maps);
+  }
+  void collect_garbage(Garbage_collection_maps& maps);
+  /// @}
+
 private:
   // Subdivision writes whole arrays, copies carry property arrays of any type.
   friend struct internal::Connectivity_access;
 
-  template <class I>
-  static internal::Iterator_range<internal::Index_iterator<I>> range(size_type n)
+  // The removed elements of one kind: their flags, a property array created
+  // at the first removal (so a mesh that never removes pays nothing), and
+  // their number.
+  struct Removal_marks
   {
-    return {internal::Index_iterator<I>(0), internal::Index_iterator<I>(n)};
+    internal::Property_array<bool>* flags = nullptr;
+    size_type count = 0;
+    bool is_marked(size_type i) const { return flags != nullptr && flags->data()[i].value; }
+  };
+
+  static void mark(internal::Property_container& props, const char* name, Removal_marks& marks, size_type i)
+  {
+    if (marks.flags == nullptr)
+      marks.flags = props.template add<bool>(name, false).first;
+    bool& flag = (*marks.flags)[i];
+    if (!flag) {
+      flag = true;
+      ++marks.count;
+    }
+  }
+  bool is_removal_mark(const void* array) const
+  {
+    for (const Removal_marks* m : {&removed_vertices_, &removed_edges_, &removed_faces_})
+      if (m->flags != nullptr && static_cast<const void*>(m->flags) == array)
+        return true;
+    return false;
+  }
+  // After the property containers were copied or appended: the flag arrays
+  // are found again by name, with the numbers of removed elements given.
+  void find_removal_marks(size_type nv, size_type ne, size_type nf)
+  {
+    removed_vertices_ = {vprops_.template get<bool>("v:removed"), nv};
+    removed_edges_ = {eprops_.template get<bool>("e:removed"), ne};
+    removed_faces_ = {fprops_.template get<bool>("f:removed"), nf};
+  }
+  // Forgets every removal (the arrays are replaced or compacted).
+  void drop_removal_marks()
+  {
+    vprops_.remove(removed_vertices_.flags);
+    eprops_.remove(removed_edges_.flags);
+    fprops_.remove(removed_faces_.flags);
+    removed_vertices_ = removed_edges_ = removed_faces_ = Removal_marks();
+  }
+
+  template <class I>
+  static internal::Iterator_range<internal::Index_iterator<I>> range(size_type n, const Removal_marks& marks,
+                                                                     unsigned shift)
+  {
+    using It = internal::Index_iterator<I>;
+    return {It(0, n, marks.flags, shift), It(n, n), std::size_t(n - (marks.count << shift))};
   }
 
   // Border edges are never Möbius, so the source of a halfedge is the target
@@ -612,6 +759,12 @@ private:
   }
 
   void reverse_border_halfedge(Halfedge_index g);
+
+  // validity_report() in parts.
+  std::string check_sizes() const;
+  std::string check_halfedge_links() const;
+  std::string check_face_cycles() const;
+  std::string check_vertex_fans() const;
 
   // add_face() in three steps: what the face meets at its vertices (or why it
   // is refused), its halfedges, and the border links around its vertices.
@@ -665,6 +818,7 @@ private:
 
   internal::Property_container vprops_, hprops_, eprops_, fprops_;
   Property_map<Vertex_index, Point> points_;
+  Removal_marks removed_vertices_, removed_edges_, removed_faces_;
 };
 
 // ============================================================================
@@ -1025,7 +1179,7 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
 template <class P>
 typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
 {
-  const Join_offsets off{number_of_vertices(), number_of_edges(), number_of_faces()};
+  const Join_offsets off{num_vertices(), num_edges(), num_faces()};
   const size_type hoff = 2 * off.edges;
   auto shift_dart = [hoff](Dart d) {
     return d.is_valid() ? Dart::from_bits(d.bits() + 2 * hoff) : d;
@@ -1048,6 +1202,8 @@ typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
   eprops_.append(o.eprops_);
   fprops_.append(o.fprops_);
   points_ = Property_map<Vertex_index, Point>(vprops_.template get<Point>("v:point"));
+  find_removal_marks(removed_vertices_.count + o.removed_vertices_.count,
+                     removed_edges_.count + o.removed_edges_.count, removed_faces_.count + o.removed_faces_.count);
   return off;
 }
 
@@ -1099,35 +1255,108 @@ void Mobius_mesh<P>::reverse_face_orientation(Face_index f)
 }
 
 template <class P>
+void Mobius_mesh<P>::collect_garbage(Garbage_collection_maps& maps)
+{
+  // New indices in order of the old: kept[i] is the old index of element i.
+  auto renumber = [](size_type n, const Removal_marks& marks, auto& new_of_old) {
+    using I = typename std::decay_t<decltype(new_of_old)>::value_type;
+    std::vector<std::uint32_t> kept;
+    kept.reserve(n - marks.count);
+    new_of_old.assign(n, I());
+    for (size_type i = 0; i < n; ++i)
+      if (!marks.is_marked(i)) {
+        new_of_old[i] = I(size_type(kept.size()));
+        kept.push_back(i);
+      }
+    return kept;
+  };
+  const std::vector<std::uint32_t> kept_v = renumber(num_vertices(), removed_vertices_, maps.vertices);
+  const std::vector<std::uint32_t> kept_e = renumber(num_edges(), removed_edges_, maps.edges);
+  const std::vector<std::uint32_t> kept_f = renumber(num_faces(), removed_faces_, maps.faces);
+  drop_removal_marks();
+
+  // Every element moves to a lower or equal index, so the arrays compact in place.
+  std::vector<std::uint32_t> kept_h(2 * kept_e.size());
+  for (std::size_t e = 0; e < kept_e.size(); ++e)
+    for (unsigned k = 0; k < 2; ++k) {
+      const size_type from = internal::dart_encoding::halfedge_of_edge(kept_e[e], k);
+      const size_type to = internal::dart_encoding::halfedge_of_edge(size_type(e), k);
+      kept_h[to] = from;
+      h_target_[to] = maps(h_target_[from]);
+      h_next_[to] = maps(h_next_[from]);
+      h_prev_[to] = maps(h_prev_[from]);
+      h_face_[to] = maps(h_face_[from]);
+    }
+  for (std::size_t e = 0; e < kept_e.size(); ++e)
+    e_mobius_[e] = e_mobius_[kept_e[e]];
+  for (std::size_t v = 0; v < kept_v.size(); ++v)
+    v_halfedge_[v] = maps(v_halfedge_[kept_v[v]]);
+  for (std::size_t f = 0; f < kept_f.size(); ++f)
+    f_halfedge_[f] = maps(f_halfedge_[kept_f[f]]);
+
+  v_halfedge_.resize(kept_v.size());
+  h_target_.resize(kept_h.size());
+  h_next_.resize(kept_h.size());
+  h_prev_.resize(kept_h.size());
+  h_face_.resize(kept_h.size());
+  e_mobius_.resize(kept_e.size());
+  f_halfedge_.resize(kept_f.size());
+  vprops_.compact(kept_v);
+  hprops_.compact(kept_h);
+  eprops_.compact(kept_e);
+  fprops_.compact(kept_f);
+}
+
+template <class P>
 std::string Mobius_mesh<P>::validity_report() const
 {
-  std::ostringstream out;
-  const size_type nv = number_of_vertices(), nh = number_of_halfedges(), nf = number_of_faces();
+  std::string report = check_sizes();
+  if (report.empty())
+    report = check_halfedge_links();
+  if (report.empty())
+    report = check_face_cycles();
+  if (report.empty())
+    report = check_vertex_fans();
+  return report;
+}
+
+template <class P>
+std::string Mobius_mesh<P>::check_sizes() const
+{
+  const size_type nh = num_halfedges();
   if (h_next_.size() != nh || h_prev_.size() != nh || h_face_.size() != nh || nh != 2 * e_mobius_.size())
     return "connectivity arrays have inconsistent sizes";
-  if (vprops_.size() != nv || hprops_.size() != nh || eprops_.size() != number_of_edges() ||
-      fprops_.size() != nf)
+  if (vprops_.size() != num_vertices() || hprops_.size() != nh || eprops_.size() != num_edges() ||
+      fprops_.size() != num_faces())
     return "property arrays have inconsistent sizes";
+  return std::string();
+}
 
-  for (size_type i = 0; i < nh; ++i) {
-    const Halfedge_index h(i);
-    if (!is_valid(h_target_[i]))
-      return (out << h << " has an invalid target", out.str());
-    if (!is_valid(h_next_[i]) || !is_valid(h_prev_[i]))
-      return (out << h << " has an invalid next or prev link", out.str());
-    if (h_face_[i].is_valid() && !is_valid(h_face_[i]))
-      return (out << h << " has an invalid face", out.str());
+// Every link of a live halfedge names a live element, and the dart identities hold.
+template <class P>
+std::string Mobius_mesh<P>::check_halfedge_links() const
+{
+  std::ostringstream out;
+  auto live = [this](auto x) { return is_valid(x) && !is_removed(x); };
+  for (Halfedge_index h : halfedges()) {
+    const size_type i = h.idx();
+    if (!live(h_target_[i]))
+      return (out << h << " has an invalid or removed target", out.str());
+    if (!live(h_next_[i].halfedge()) || !live(h_prev_[i].halfedge()))
+      return (out << h << " has an invalid or removed next or prev link", out.str());
+    if (h_face_[i].is_valid() && !live(h_face_[i]))
+      return (out << h << " has an invalid or removed face", out.str());
   }
-  for (size_type e = 0; e < number_of_edges(); ++e) {
-    const Halfedge_index h0 = halfedge(Edge_index(e), 0), h1 = halfedge(Edge_index(e), 1);
+  for (Edge_index e : edges()) {
+    const Halfedge_index h0 = halfedge(e, 0), h1 = halfedge(e, 1);
     if (is_border(h0) && is_border(h1))
-      return (out << Edge_index(e) << " has no face", out.str());
-    if (is_mobius(Edge_index(e)) && (is_border(h0) || is_border(h1)))
-      return (out << "border " << Edge_index(e) << " is marked Möbius", out.str());
+      return (out << e << " has no face", out.str());
+    if (is_mobius(e) && (is_border(h0) || is_border(h1)))
+      return (out << "border " << e << " is marked Möbius", out.str());
   }
-  for (size_type i = 0; i < nh; ++i) {
+  for (Halfedge_index h : halfedges()) {
     for (bool flipped : {false, true}) {
-      const Dart d(Halfedge_index(i), flipped);
+      const Dart d(h, flipped);
       if (next(prev(d)) != d)
         return (out << "next(prev(" << d << ")) != " << d, out.str());
       if (prev(next(d)) != d)
@@ -1146,43 +1375,57 @@ std::string Mobius_mesh<P>::validity_report() const
         return (out << "the cycle of face " << face(d) << " mixes orientations at " << d, out.str());
     }
   }
-  // Face cycles: each face's halfedges are exactly those whose face it is.
-  std::vector<size_type> face_size(nf, 0);
-  for (size_type i = 0; i < nh; ++i)
-    if (h_face_[i].is_valid())
-      ++face_size[h_face_[i].idx()];
-  for (size_type f = 0; f < nf; ++f) {
-    const Halfedge_index h = f_halfedge_[f];
-    if (!is_valid(h) || face(h) != Face_index(f))
-      return (out << Face_index(f) << " has a halfedge of another face", out.str());
+  return std::string();
+}
+
+// Each face's cycle holds exactly the halfedges that name it.
+template <class P>
+std::string Mobius_mesh<P>::check_face_cycles() const
+{
+  std::ostringstream out;
+  std::vector<size_type> face_size(num_faces(), 0);
+  for (Halfedge_index h : halfedges())
+    if (h_face_[h.idx()].is_valid())
+      ++face_size[h_face_[h.idx()].idx()];
+  for (Face_index f : faces()) {
+    const Halfedge_index h = f_halfedge_[f.idx()];
+    if (!is_valid(h) || is_removed(h) || face(h) != f)
+      return (out << f << " has a halfedge of another face", out.str());
     size_type k = 0;
     for (Dart d : CGAL_ext::halfedges_around_face(dart(h), *this)) {
       (void)d;
-      if (++k > face_size[f])
+      if (++k > face_size[f.idx()])
         break;
     }
-    if (k != face_size[f])
-      return (out << "the cycle of " << Face_index(f) << " has " << k << " halfedges, but " << face_size[f]
+    if (k != face_size[f.idx()])
+      return (out << "the cycle of " << f << " has " << k << " halfedges, but " << face_size[f.idx()]
                   << " halfedges name it",
               out.str());
     if (k < 3)
-      return (out << Face_index(f) << " has fewer than three sides", out.str());
+      return (out << f << " has fewer than three sides", out.str());
   }
-  // Vertices: one fan each, seen from the stored dart; border vertices store a border dart.
-  std::vector<size_type> incident(nv, 0);
-  for (size_type e = 0; e < number_of_edges(); ++e) {
-    ++incident[vertex(Edge_index(e), 0).idx()];
-    ++incident[vertex(Edge_index(e), 1).idx()];
+  return std::string();
+}
+
+// One fan per vertex, seen from its stored dart; border vertices store a border dart.
+template <class P>
+std::string Mobius_mesh<P>::check_vertex_fans() const
+{
+  std::ostringstream out;
+  std::vector<size_type> incident(num_vertices(), 0);
+  for (Edge_index e : edges()) {
+    ++incident[vertex(e, 0).idx()];
+    ++incident[vertex(e, 1).idx()];
   }
-  for (size_type i = 0; i < nv; ++i) {
-    const Vertex_index v(i);
+  for (Vertex_index v : vertices()) {
+    const size_type i = v.idx();
     const Dart d = v_halfedge_[i];
     if (!d.is_valid()) {
       if (incident[i] != 0)
         return (out << v << " has edges but no halfedge", out.str());
       continue;
     }
-    if (!is_valid(d) || target(d) != v)
+    if (!is_valid(d) || is_removed(d.halfedge()) || target(d) != v)
       return (out << "halfedge(" << v << ") does not end at it", out.str());
     size_type k = 0, border = 0;
     for (Dart c : CGAL_ext::halfedges_around_target(d, *this)) {

@@ -129,6 +129,15 @@ public:
   using Error::Error;
 };
 
+/// An Euler operation refused because it would not leave a valid 2-manifold
+/// mesh (the matching `can_*()` function or the link condition said no); the
+/// mesh is unchanged.
+class Euler_error : public Error
+{
+public:
+  using Error::Error;
+};
+
 } // namespace CGAL_ext
 
 #endif // CGAL_EXT_EXCEPTIONS_H

@@ -1,15 +1,182 @@
 // Copyright (c) 2026 CGAL_ext contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Euler operations on a Mobius_mesh.
+// Euler operations on a Mobius_mesh, named and specified as CGAL::Euler's.
 
 #ifndef CGAL_EXT_MOBIUS_MESH_EULER_OPERATIONS_H
 #define CGAL_EXT_MOBIUS_MESH_EULER_OPERATIONS_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Euler_support.h>
+#include <CGAL_ext/exceptions.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+/// \defgroup PkgMobiusMeshEuler Euler operations
+/// The operations of `CGAL::Euler`, on darts. Their contracts are CGAL's (the
+/// orientable case), with these additions, which hold for every operation:
+///
+/// - They work on any `Mobius_mesh`: across Möbius edges, at vertices on the
+///   Möbius seam, on borders whose loops pass a Möbius connection. To do so an
+///   operation may first reverse faces around the place it edits, so that
+///   they agree with the darts it was given (the surface is the same; only
+///   which edges are Möbius moves). The result is the same mesh, up to the
+///   orientation of faces, whichever way the input's faces were oriented; the
+///   darts returned walk the way the darts given did.
+/// - Each one that could break the 2-manifold has a `can_*()` check (for
+///   `collapse_edge()`, `does_satisfy_link_condition()`), and refuses with an
+///   `Euler_error` when it says no, leaving the mesh unchanged.
+/// - Elements are removed as `Mobius_mesh::remove_*()` does: marked, skipped
+///   by the ranges, gone for good at `collect_garbage()`. New elements get
+///   the default values of every property map (new vertices the origin).
 
 namespace CGAL_ext {
 namespace Euler {
+
+namespace internal {
+
+using CGAL_ext::internal::Walk;
+using CGAL_ext::internal::dart_of;
+using CGAL_ext::internal::walk_of;
+
+template <class P>
+bool are_adjacent(Vertex_index a, Vertex_index b, const Mobius_mesh<P>& m)
+{
+  if (m.is_isolated(a))
+    return false;
+  for (Vertex_index w : CGAL_ext::vertices_around_target(m.halfedge(a), m))
+    if (w == b)
+      return true;
+  return false;
+}
+
+template <class P>
+std::vector<Vertex_index> face_vertices(Face_index f, const Mobius_mesh<P>& m)
+{
+  std::vector<Vertex_index> vs;
+  for (Vertex_index v : CGAL_ext::vertices_around_face(f, m))
+    vs.push_back(v);
+  std::sort(vs.begin(), vs.end());
+  return vs;
+}
+
+template <class P>
+std::size_t border_loop_length(Dart d, const Mobius_mesh<P>& m)
+{
+  return CGAL_ext::halfedges_around_face(d, m).size();
+}
+
+// Throws an Euler_error naming the operation if `why` is not empty.
+inline void refuse_unless_empty(const char* operation, const std::string& why)
+{
+  if (!why.empty())
+    throw Euler_error(std::string("Euler::") + operation + ": " + why);
+}
+
+template <class P>
+std::string why_not_join_face(Dart d, const Mobius_mesh<P>& m)
+{
+  const Dart o = m.opposite(d);
+  if (m.is_border(d) || m.is_border(o))
+    return "the edge is on the border";
+  if (m.face(d) == m.face(o))
+    return "the edge has the same face on both sides";
+  if (m.degree(m.source(d)) < 3 || m.degree(m.target(d)) < 3)
+    return "an end of the edge would be left with one edge";
+  std::vector<Vertex_index> a = face_vertices(m.face(d), m), b = face_vertices(m.face(o), m), common;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+  if (common.size() != 2)
+    return "the two faces share a vertex besides the edge's ends";
+  return std::string();
+}
+
+template <class P>
+std::string why_not_split_face(Dart h, Dart g, const Mobius_mesh<P>& m)
+{
+  if (m.is_border(h) || m.face(h) != m.face(g))
+    return "the darts are not in one face";
+  if (h.is_flipped() != g.is_flipped())
+    return "the darts walk the face in opposite directions";
+  if (h == g || m.next(h) == g || m.next(g) == h)
+    return "the new edge would join adjacent corners";
+  if (are_adjacent(m.target(h), m.target(g), m))
+    return "the corners are already joined by an edge";
+  return std::string();
+}
+
+template <class P>
+std::string why_not_join_vertex(Dart d, const Mobius_mesh<P>& m)
+{
+  const Dart o = m.opposite(d);
+  for (Dart side : {d, o})
+    if ((m.is_border(side) ? border_loop_length(side, m) : m.degree(m.face(side))) < 4)
+      return "a face or border loop of the edge has fewer than four sides";
+  const Vertex_index s = m.source(d), t = m.target(d);
+  if (m.is_border(s) && m.is_border(t) && !m.is_border(m.edge(d)))
+    return "both ends are on the border but the edge is not";
+  std::vector<Vertex_index> ns, nt, common;
+  for (Vertex_index w : CGAL_ext::vertices_around_target(d.flipped(), m)) ns.push_back(w);
+  for (Vertex_index w : CGAL_ext::vertices_around_target(d, m)) nt.push_back(w);
+  std::sort(ns.begin(), ns.end());
+  std::sort(nt.begin(), nt.end());
+  std::set_intersection(ns.begin(), ns.end(), nt.begin(), nt.end(), std::back_inserter(common));
+  if (!common.empty())
+    return "the ends have a common neighbour";
+  for (Face_index f : CGAL_ext::faces_around_target(d.flipped(), m)) {
+    if (!f.is_valid() || f == m.face(d) || f == m.face(o))
+      continue;
+    const std::vector<Vertex_index> vs = face_vertices(f, m);
+    if (std::binary_search(vs.begin(), vs.end(), t))
+      return "another face holds both ends";
+  }
+  return std::string();
+}
+
+template <class P>
+std::string why_not_detach_face(Dart d, const Mobius_mesh<P>& m, bool keep_edges)
+{
+  if (m.is_border(d))
+    return "the dart is on the border";
+  for (Dart c : CGAL_ext::halfedges_around_face(d, m)) {
+    const bool in_border = m.is_border(m.opposite(c)), out_border = m.is_border(m.opposite(m.next(c)));
+    if (keep_edges && in_border)
+      return "the face has a border edge";
+    if (!in_border && !out_border && m.is_border(m.target(c)))
+      return "a corner of the face is already on the border (it would be pinched)";
+  }
+  return std::string();
+}
+
+template <class P>
+std::string why_not_add_face_to_border(Dart h1, Dart h2, const Mobius_mesh<P>& m)
+{
+  if (!m.is_border(h1) || !m.is_border(h2))
+    return "the darts are not border darts";
+  if (h1 == h2 || m.next(h1) == h2)
+    return "the new face would have fewer than three sides";
+  bool found = false;
+  for (Dart c : CGAL_ext::halfedges_around_face(h1, m))
+    if (c == h2)
+      found = true;
+  if (!found)
+    return "the darts are not on one border loop, walked one way";
+  if (are_adjacent(m.target(h2), m.target(h1), m))
+    return "the new edge already exists";
+  return std::string();
+}
+
+// The operations without their checks, for collapse_edge(), which checks once.
+template <class P>
+Dart join_face_unchecked(Dart d, Mobius_mesh<P>& mesh);
+template <class P>
+Dart join_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh);
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMeshEuler
+/// @{
 
 /// Tells whether `flip_edge(d, mesh)` can be done: the edge of `d` has two
 /// triangles, and their far vertices are distinct and not yet adjacent.
@@ -22,26 +189,18 @@ bool can_flip_edge(Dart d, const Mobius_mesh<P>& mesh)
   if (mesh.degree(mesh.face(d)) != 3 || mesh.degree(mesh.face(o)) != 3 || mesh.face(d) == mesh.face(o))
     return false;
   const Vertex_index c = mesh.target(mesh.next(d)), e = mesh.target(mesh.next(o));
-  if (c == e)
-    return false;
-  for (Vertex_index w : CGAL_ext::vertices_around_target(mesh.halfedge(c), mesh))
-    if (w == e)
-      return false;
-  return true;
+  return c != e && !internal::are_adjacent(c, e, mesh);
 }
 
 /// Replaces the diagonal of the two triangles on the edge of `d` by the other
-/// diagonal, keeping the edge's index. Across a Möbius edge the second
-/// triangle is first reversed (the surface is the same; its Möbius edges
-/// move), so that the flip is the orientable one.
-/// \pre `can_flip_edge(d, mesh)`
-/// \returns the unflipped dart of the new diagonal in the face of `d`.
+/// diagonal, keeping the edge's index.
+/// \returns the dart of the new diagonal in the face of `d`, unflipped.
 template <class P>
 Dart flip_edge(Dart d, Mobius_mesh<P>& mesh)
 {
-  CGAL_precondition(can_flip_edge(d, mesh));
-  if (mesh.is_mobius(mesh.edge(d)))
-    mesh.reverse_face_orientation(mesh.face(mesh.opposite(d)));
+  if (!can_flip_edge(d, mesh))
+    throw Euler_error("Euler::flip_edge: the edge is not the diagonal of two triangles that can turn");
+  CGAL_ext::internal::make_edge_orientable(d, mesh);
 
   // Work on the unflipped darts of both triangles: a0 = (a->b) in fa, b0 = (b->a) in fb.
   const Dart a0(d.halfedge(), false);
@@ -71,6 +230,519 @@ Dart flip_edge(Dart d, Mobius_mesh<P>& mesh)
     mesh.set_halfedge(va, a2);
   return a0;
 }
+
+/// Splits the edge of `d` in two with a new vertex (at the origin: set its
+/// point): afterwards `d` runs from the new vertex to `target(d)`.
+/// \returns the new dart `n` from `source(d)` to the new vertex, with `next(n) == d`.
+template <class P>
+Dart split_edge(Dart d, Mobius_mesh<P>& mesh)
+{
+  const internal::Walk wd = internal::walk_of(d, mesh);
+  CGAL_ext::internal::unflip(d, mesh);
+  d = internal::dart_of(wd, mesh);
+  CGAL_ext::internal::make_edge_orientable(d, mesh);
+  d = internal::dart_of(wd, mesh);
+  const Halfedge_index h = d.halfedge(), o = Mobius_mesh<P>::opposite_halfedge(h);
+  const Dart od(o, false);
+  const Vertex_index a = mesh.source(d);
+  const Dart before = mesh.prev(d), after = mesh.next(od);
+
+  const Vertex_index w = mesh.add_vertex();
+  const Edge_index e = mesh.add_edge(w, a);
+  const Halfedge_index h1 = Mobius_mesh<P>::halfedge(e, 0), o1 = Mobius_mesh<P>::halfedge(e, 1);
+  mesh.set_target(o, w);
+  mesh.set_face(h1, mesh.face(h));
+  mesh.set_face(o1, mesh.face(o));
+  mesh.set_next(before, Dart(h1, false));
+  mesh.set_next(Dart(h1, false), d);
+  mesh.set_next(od, Dart(o1, false));
+  mesh.set_next(Dart(o1, false), after);
+  mesh.set_halfedge(w, mesh.is_border(o) ? od : Dart(h1, false));
+  // a's stored dart, if on the split edge, moves to the new edge on the same side.
+  if (mesh.halfedge(a).halfedge() == h)
+    mesh.set_halfedge(a, Dart(h1, true));
+  else if (mesh.halfedge(a).halfedge() == o)
+    mesh.set_halfedge(a, Dart(o1, false));
+  return Dart(h1, false);
+}
+
+/// Tells whether `join_face(d, mesh)` can be done: the edge of `d` has two
+/// distinct faces, which share no vertex but its ends, and both ends keep at
+/// least two edges.
+template <class P>
+bool can_join_face(Dart d, const Mobius_mesh<P>& mesh)
+{
+  return internal::why_not_join_face(d, mesh).empty();
+}
+
+/// Removes the edge of `d`, merging its two faces into the face of `d`.
+/// \returns `prev(d)`, now in the merged face.
+template <class P>
+Dart join_face(Dart d, Mobius_mesh<P>& mesh)
+{
+  internal::refuse_unless_empty("join_face", internal::why_not_join_face(d, mesh));
+  return internal::join_face_unchecked(d, mesh);
+}
+
+namespace internal {
+
+template <class P>
+Dart join_face_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  const internal::Walk wd = internal::walk_of(d, mesh);
+  d = CGAL_ext::internal::unflip(d, mesh);
+  CGAL_ext::internal::make_edge_orientable(d, mesh);
+  d = internal::dart_of(wd, mesh);
+  const Dart od(Mobius_mesh<P>::opposite_halfedge(d.halfedge()), false);
+  const Face_index f = mesh.face(d), g = mesh.face(od);
+  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
+  for (Dart c = on; c != od; c = mesh.next(c))
+    mesh.set_face(c.halfedge(), f);
+  mesh.set_next(dp, on);
+  mesh.set_next(op, dn);
+  mesh.set_halfedge(f, dp.halfedge());
+  for (const Dart& end : {dp, op}) {
+    const Vertex_index v = mesh.target(end);
+    const Halfedge_index stored = mesh.halfedge(v).halfedge();
+    if (stored == d.halfedge() || stored == od.halfedge())
+      mesh.set_halfedge(v, end);
+  }
+  mesh.remove_edge(mesh.edge(d));
+  mesh.remove_face(g);
+  return dp;
+}
+
+} // namespace internal
+
+/// Tells whether `split_face(h, g, mesh)` can be done: `h` and `g` walk one
+/// face the same way, and their targets are neither adjacent corners nor
+/// joined by an edge already.
+template <class P>
+bool can_split_face(Dart h, Dart g, const Mobius_mesh<P>& mesh)
+{
+  return internal::why_not_split_face(h, g, mesh).empty();
+}
+
+/// Splits the face of `h` and `g` with a new edge from `target(h)` to
+/// `target(g)`; `g` goes to the new face.
+/// \returns the new dart `n` with `next(h) == n` and `target(n) == target(g)`.
+template <class P>
+Dart split_face(Dart h, Dart g, Mobius_mesh<P>& mesh)
+{
+  internal::refuse_unless_empty("split_face", internal::why_not_split_face(h, g, mesh));
+  const internal::Walk wg = internal::walk_of(g, mesh);
+  h = CGAL_ext::internal::unflip(h, mesh);
+  g = internal::dart_of(wg, mesh);
+  const Face_index f = mesh.face(h);
+  const Dart hn = mesh.next(h), gn = mesh.next(g);
+  const Edge_index e = mesh.add_edge(mesh.target(g), mesh.target(h));
+  const Dart x(Mobius_mesh<P>::halfedge(e, 0), false), y(Mobius_mesh<P>::halfedge(e, 1), false);
+  const Face_index fn = mesh.add_face_record(g.halfedge());
+  mesh.set_next(h, x);
+  mesh.set_next(x, gn);
+  mesh.set_next(g, y);
+  mesh.set_next(y, hn);
+  mesh.set_face(x.halfedge(), f);
+  for (Dart c = y; c != g; c = mesh.next(c))
+    mesh.set_face(c.halfedge(), fn);
+  mesh.set_face(g.halfedge(), fn);
+  mesh.set_halfedge(f, h.halfedge());
+  return x;
+}
+
+/// Tells whether `join_vertex(d, mesh)` can be done: the faces (or border
+/// loops) on both sides of the edge of `d` keep at least three sides, its
+/// ends have no common neighbour and no other common face, and they are not
+/// both on the border unless the edge is.
+template <class P>
+bool can_join_vertex(Dart d, const Mobius_mesh<P>& mesh)
+{
+  return internal::why_not_join_vertex(d, mesh).empty();
+}
+
+/// Joins `source(d)` into `target(d)`, removing the edge of `d` and
+/// `source(d)`.
+/// \returns `prev(opposite(d))`, a dart into the kept vertex.
+template <class P>
+Dart join_vertex(Dart d, Mobius_mesh<P>& mesh)
+{
+  internal::refuse_unless_empty("join_vertex", internal::why_not_join_vertex(d, mesh));
+  return internal::join_vertex_unchecked(d, mesh);
+}
+
+namespace internal {
+
+template <class P>
+Dart join_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  const internal::Walk wd = internal::walk_of(d, mesh);
+  // Orient the star of source(d) so that opposite(d), and with it d, is unflipped.
+  CGAL_ext::internal::orient_star(mesh.opposite(d), mesh);
+  d = internal::dart_of(wd, mesh);
+  CGAL_assertion(!d.is_flipped());
+  const Dart od = mesh.opposite(d);
+  const Vertex_index s = mesh.source(d), t = mesh.target(d);
+  std::vector<Dart> into_s;
+  for (Dart c : CGAL_ext::halfedges_around_target(od, mesh))
+    if (c != od)
+      into_s.push_back(c);
+  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
+  for (Dart c : into_s)
+    mesh.set_target(c.halfedge(), t);
+  mesh.set_next(dp, dn);
+  mesh.set_next(op, on);
+  for (const Dart& side : {d, od}) {
+    const Face_index f = mesh.face(side);
+    if (f.is_valid() && mesh.halfedge(f).halfedge() == side.halfedge())
+      mesh.set_halfedge(f, (side == d ? dp : op).halfedge());
+  }
+  mesh.remove_edge(mesh.edge(d));
+  mesh.remove_vertex(s);
+  CGAL_ext::internal::reset_vertex_halfedge(t, op, mesh);
+  return op;
+}
+
+} // namespace internal
+
+/// Splits `target(h1)` (which is `target(h2)`) in two joined by a new edge:
+/// the darts into it from `opposite(next(h1))` round to `h2` go to the new
+/// vertex (at the origin: set its point), those from `opposite(next(h2))`
+/// round to `h1` stay. The faces of `h1` and `h2` gain a side each.
+/// \returns the new dart into the old vertex, in the face of `h2`.
+template <class P>
+Dart split_vertex(Dart h1, Dart h2, Mobius_mesh<P>& mesh)
+{
+  if (h1 == h2 || mesh.target(h1) != mesh.target(h2))
+    throw Euler_error("Euler::split_vertex: the darts are not two distinct darts into one vertex");
+  const internal::Walk w2 = internal::walk_of(h2, mesh);
+  h1 = CGAL_ext::internal::orient_star(h1, mesh);
+  h2 = internal::dart_of(w2, mesh);
+  const Vertex_index v = mesh.target(h1);
+  std::vector<Dart> moving; // opposite(next(h1)) .. h2
+  for (Dart c = mesh.opposite(mesh.next(h1));; c = mesh.opposite(mesh.next(c))) {
+    moving.push_back(c);
+    if (c == h2)
+      break;
+  }
+  const Dart n1 = mesh.next(h1), n2 = mesh.next(h2);
+  const Vertex_index w = mesh.add_vertex();
+  const Edge_index e = mesh.add_edge(v, w);
+  const Dart x(Mobius_mesh<P>::halfedge(e, 0), false), y(Mobius_mesh<P>::halfedge(e, 1), false);
+  for (Dart c : moving)
+    mesh.set_target(c.halfedge(), w);
+  mesh.set_face(x.halfedge(), mesh.face(h2));
+  mesh.set_face(y.halfedge(), mesh.face(h1));
+  mesh.set_next(h2, x);
+  mesh.set_next(x, n2);
+  mesh.set_next(h1, y);
+  mesh.set_next(y, n1);
+  CGAL_ext::internal::reset_vertex_halfedge(v, x, mesh);
+  CGAL_ext::internal::reset_vertex_halfedge(w, y, mesh);
+  return x;
+}
+
+/// Adds a vertex (at the origin: set its point) inside the face of `d`,
+/// joined to each of its corners: the face becomes a fan of triangles, the
+/// one on `d` keeping the face's index.
+/// \returns `next(d)` afterwards, a dart into the new vertex.
+template <class P>
+Dart add_center_vertex(Dart d, Mobius_mesh<P>& mesh)
+{
+  if (mesh.is_border(d))
+    throw Euler_error("Euler::add_center_vertex: the dart is on the border");
+  d = CGAL_ext::internal::unflip(d, mesh);
+  std::vector<Dart> sides;
+  for (Dart c : CGAL_ext::halfedges_around_face(d, mesh))
+    sides.push_back(c);
+  const std::size_t k = sides.size();
+  const Vertex_index center = mesh.add_vertex();
+  std::vector<Dart> in(k), out(k); // in[i]: target(sides[i]) -> center; out[i]: back
+  for (std::size_t i = 0; i < k; ++i) {
+    const Edge_index e = mesh.add_edge(center, mesh.target(sides[i]));
+    in[i] = Dart(Mobius_mesh<P>::halfedge(e, 0), false);
+    out[i] = Dart(Mobius_mesh<P>::halfedge(e, 1), false);
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    const Dart back = out[(i + k - 1) % k]; // center -> source(sides[i])
+    const Face_index f = i == 0 ? mesh.face(d) : mesh.add_face_record(sides[i].halfedge());
+    mesh.set_next(sides[i], in[i]);
+    mesh.set_next(in[i], back);
+    mesh.set_next(back, sides[i]);
+    for (const Dart& c : {sides[i], in[i], back})
+      mesh.set_face(c.halfedge(), f);
+  }
+  mesh.set_halfedge(mesh.face(d), d.halfedge());
+  mesh.set_halfedge(center, in[0]);
+  return in[0];
+}
+
+/// Tells whether `remove_center_vertex(d, mesh)` can be done: `target(d)` is
+/// not on the border, the merged face would visit no vertex twice, and it
+/// would not lie on a single face (as at a corner of a tetrahedron, where the
+/// volume would fold into two faces glued together).
+template <class P>
+bool can_remove_center_vertex(Dart d, const Mobius_mesh<P>& mesh)
+{
+  const Vertex_index v = mesh.target(d);
+  if (mesh.is_border(v))
+    return false;
+  std::vector<Vertex_index> rim;
+  std::vector<Face_index> beyond;
+  for (Dart c : CGAL_ext::halfedges_around_target(d, mesh))
+    for (Dart r = mesh.next(mesh.next(c)); r != c; r = mesh.next(r)) {
+      rim.push_back(mesh.source(r));
+      beyond.push_back(mesh.face(mesh.opposite(r)));
+    }
+  std::sort(rim.begin(), rim.end());
+  std::sort(beyond.begin(), beyond.end());
+  return rim.size() >= 3 && std::adjacent_find(rim.begin(), rim.end()) == rim.end() &&
+         std::unique(beyond.begin(), beyond.end()) - beyond.begin() >= 2;
+}
+
+/// Removes `target(d)` and its edges, merging its faces into the face of `d`.
+/// \returns `prev(d)` (before the operation), now a dart of the merged face.
+template <class P>
+Dart remove_center_vertex(Dart d, Mobius_mesh<P>& mesh)
+{
+  if (!can_remove_center_vertex(d, mesh))
+    throw Euler_error("Euler::remove_center_vertex: the vertex is on the border, or its faces would merge "
+                      "into a face that visits a vertex twice");
+  d = CGAL_ext::internal::orient_star(d, mesh);
+  const Vertex_index v = mesh.target(d);
+  const Face_index kept = mesh.face(d);
+  std::vector<Dart> into;
+  for (Dart c : CGAL_ext::halfedges_around_target(d, mesh))
+    into.push_back(c);
+  const Dart result = mesh.prev(d);
+  // Around v the rim chains run against the circulation: chain i+1 ends where chain i starts.
+  const std::size_t k = into.size();
+  std::vector<Dart> first(k), last(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    first[i] = mesh.next(mesh.next(into[i]));
+    last[i] = mesh.prev(into[i]);
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    for (Dart r = first[i];; r = mesh.next(r)) {
+      mesh.set_face(r.halfedge(), kept);
+      if (r == last[i])
+        break;
+    }
+    mesh.set_next(last[(i + 1) % k], first[i]);
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vertex_index r = mesh.target(last[i]);
+    const Halfedge_index stored = mesh.halfedge(r).halfedge();
+    if (Mobius_mesh<P>::edge(stored) == mesh.edge(into[i]) ||
+        Mobius_mesh<P>::edge(stored) == mesh.edge(mesh.next(into[i])))
+      mesh.set_halfedge(r, last[i]);
+    mesh.remove_edge(mesh.edge(into[i]));
+    if (mesh.face(into[i]) != kept)
+      mesh.remove_face(mesh.face(into[i]));
+  }
+  mesh.set_halfedge(kept, result.halfedge());
+  mesh.remove_vertex(v);
+  return result;
+}
+
+/// Tells whether `remove_face(d, mesh)` can be done: `d` is in a face, and no
+/// corner of it on the border already would be pinched (get a second gap).
+template <class P>
+bool can_remove_face(Dart d, const Mobius_mesh<P>& mesh)
+{
+  return internal::why_not_detach_face(d, mesh, false).empty();
+}
+
+/// Removes the face of `d`: its sides become border, edges and vertices left
+/// without a face are removed.
+template <class P>
+void remove_face(Dart d, Mobius_mesh<P>& mesh)
+{
+  internal::refuse_unless_empty("remove_face", internal::why_not_detach_face(d, mesh, false));
+  CGAL_ext::internal::detach_face(mesh.face(d), mesh, true);
+}
+
+/// Tells whether `make_hole(d, mesh)` can be done: as `can_remove_face()`, and
+/// no side of the face is on the border.
+template <class P>
+bool can_make_hole(Dart d, const Mobius_mesh<P>& mesh)
+{
+  return internal::why_not_detach_face(d, mesh, true).empty();
+}
+
+/// Removes the face of `d`, leaving a hole whose border is its sides.
+/// \returns the dart of the border that makes the walk of `d`.
+template <class P>
+Dart make_hole(Dart d, Mobius_mesh<P>& mesh)
+{
+  internal::refuse_unless_empty("make_hole", internal::why_not_detach_face(d, mesh, true));
+  const internal::Walk wd = internal::walk_of(d, mesh);
+  CGAL_ext::internal::detach_face(mesh.face(d), mesh, false);
+  return internal::dart_of(wd, mesh);
+}
+
+/// Fills the border loop of `d` with one face. A loop that passes a Möbius
+/// connection (a loop of a Möbius strip) gives a face with Möbius edges:
+/// filling the border of a Möbius strip makes a projective plane.
+/// \returns the new face.
+template <class P>
+Face_index fill_hole(Dart d, Mobius_mesh<P>& mesh)
+{
+  if (!mesh.is_border(d))
+    throw Euler_error("Euler::fill_hole: the dart is not on the border");
+  std::vector<Dart> cycle;
+  for (Dart c : CGAL_ext::halfedges_around_face(d, mesh))
+    cycle.push_back(c);
+  if (cycle.size() < 3)
+    throw Euler_error("Euler::fill_hole: the border loop has fewer than three sides");
+  const Face_index f = CGAL_ext::internal::make_face_of_border_chain(cycle, mesh);
+  for (const Dart& c : cycle)
+    mesh.set_halfedge(mesh.target(Dart(c.halfedge(), false)), Dart(c.halfedge(), false));
+  return f;
+}
+
+/// Tells whether `add_face_to_border(h1, h2, mesh)` can be done: `h2` follows
+/// `h1` on one border loop, not next to it, and `target(h1)` and `target(h2)`
+/// are not adjacent yet.
+template <class P>
+bool can_add_face_to_border(Dart h1, Dart h2, const Mobius_mesh<P>& mesh)
+{
+  return internal::why_not_add_face_to_border(h1, h2, mesh).empty();
+}
+
+/// Adds a face whose sides are the border darts after `h1` up to `h2` and a
+/// new edge from `target(h2)` to `target(h1)`; `h1` stays on the border.
+/// \returns the dart of the new edge in the new face.
+template <class P>
+Dart add_face_to_border(Dart h1, Dart h2, Mobius_mesh<P>& mesh)
+{
+  internal::refuse_unless_empty("add_face_to_border", internal::why_not_add_face_to_border(h1, h2, mesh));
+  std::vector<Dart> cycle;
+  for (Dart c = mesh.next(h1);; c = mesh.next(c)) {
+    cycle.push_back(c);
+    if (c == h2)
+      break;
+  }
+  const Dart before = h1, after = mesh.next(h2);
+  const Vertex_index a = mesh.target(h1), b = mesh.target(h2);
+  const Edge_index e = mesh.add_edge(a, b);
+  const Dart inner(Mobius_mesh<P>::halfedge(e, 0), false), outer(Mobius_mesh<P>::halfedge(e, 1), false);
+  mesh.set_next(before, outer);
+  mesh.set_next(outer, after);
+  cycle.push_back(inner);
+  CGAL_ext::internal::make_face_of_border_chain(cycle, mesh);
+  for (std::size_t i = 0; i + 2 < cycle.size(); ++i)
+    mesh.set_halfedge(mesh.target(Dart(cycle[i].halfedge(), false)), Dart(cycle[i].halfedge(), false));
+  mesh.set_halfedge(a, before);
+  mesh.set_halfedge(b, outer);
+  return inner;
+}
+
+namespace internal {
+
+template <class P>
+bool some_face_holds(Vertex_index a, Vertex_index b, Vertex_index c, const Mobius_mesh<P>& m)
+{
+  for (Face_index f : CGAL_ext::faces_around_target(m.halfedge(a), m)) {
+    if (!f.is_valid())
+      continue;
+    const std::vector<Vertex_index> vs = face_vertices(f, m);
+    if (std::binary_search(vs.begin(), vs.end(), b) && std::binary_search(vs.begin(), vs.end(), c))
+      return true;
+  }
+  return false;
+}
+
+template <class P>
+std::string why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
+{
+  const Dart o = m.opposite(d);
+  const Vertex_index p = m.source(d), q = m.target(d);
+  std::vector<Vertex_index> apexes;
+  for (Dart side : {d, o}) {
+    if (m.is_border(side)) {
+      if (border_loop_length(side, m) < 4)
+        return "the edge is on a border loop of three sides";
+      continue;
+    }
+    if (m.degree(m.face(side)) != 3)
+      continue;
+    apexes.push_back(m.target(m.next(side)));
+    if (m.is_border(m.opposite(m.next(side))) && m.is_border(m.opposite(m.prev(side))))
+      return "a triangle of the edge has its two other sides on the border";
+    const Dart other = side == d ? o : d;
+    if (!m.is_border(other)) {
+      const std::vector<Vertex_index> vs = face_vertices(m.face(other), m);
+      if (std::binary_search(vs.begin(), vs.end(), apexes.back()))
+        return "the faces of the edge meet again at the far corner of a triangle";
+    }
+  }
+  if (m.is_border(p) && m.is_border(q) && !m.is_border(m.edge(d)))
+    return "both ends are on the border but the edge is not";
+  if (m.degree(q) < 3)
+    return "the kept end would vanish with the triangle of the edge";
+  for (Vertex_index k : CGAL_ext::vertices_around_target(d, m))
+    if (k != p && are_adjacent(k, p, m) && std::find(apexes.begin(), apexes.end(), k) == apexes.end())
+      return "the link condition fails: the ends have a common neighbour that is not across a triangle of the edge";
+  for (Face_index f : CGAL_ext::faces_around_target(o, m)) {
+    if (!f.is_valid() || f == m.face(d) || f == m.face(o))
+      continue;
+    const std::vector<Vertex_index> vs = face_vertices(f, m);
+    if (std::binary_search(vs.begin(), vs.end(), q))
+      return "another face holds both ends";
+  }
+  if (apexes.size() == 2 && some_face_holds(p, apexes[0], apexes[1], m) &&
+      some_face_holds(q, apexes[0], apexes[1], m))
+    return "two triangles would become one (the mesh is too small around the edge)";
+  return std::string();
+}
+
+} // namespace internal
+
+/// Tells whether `collapse_edge(d, mesh)` keeps the mesh a 2-manifold without
+/// degenerate faces: the link condition (every common neighbour of the ends
+/// is the far corner of a triangle of the edge), no other face holds both
+/// ends, the ends are not both on the border unless the edge is, and nothing
+/// around the edge is so small that it would fold up (a border loop of three
+/// sides, a triangle with two border sides, two triangles that would become one).
+template <class P>
+bool does_satisfy_link_condition(Dart d, const Mobius_mesh<P>& mesh)
+{
+  return internal::why_not_collapse_edge(d, mesh).empty();
+}
+
+/// Collapses the edge of `d`: `source(d)` is joined into `target(d)`, and a
+/// triangle on either side of the edge goes with it: as in CGAL, the side of
+/// the triangle before the edge (walking with `d` on one side, with
+/// `opposite(d)` on the other) is removed by joining the triangle with the
+/// face across it, or the triangle is removed if that side is on the border.
+/// \returns the kept vertex, `target(d)`.
+template <class P>
+Vertex_index collapse_edge(Dart d, Mobius_mesh<P>& mesh)
+{
+  internal::refuse_unless_empty("collapse_edge", internal::why_not_collapse_edge(d, mesh));
+  const internal::Walk wd = internal::walk_of(d, mesh);
+  const Vertex_index p = mesh.source(d), q = mesh.target(d);
+  for (bool first_side : {true, false}) {
+    d = internal::dart_of(wd, mesh);
+    const Dart side = first_side ? d : mesh.opposite(d);
+    if (mesh.is_border(side) || mesh.degree(mesh.face(side)) != 3)
+      continue;
+    // The triangle's side that ends at its first corner (at p on one side, at
+    // q on the other) goes: the other side becomes the merged edge.
+    const Dart gone = mesh.prev(side);
+    if (!mesh.is_border(mesh.opposite(gone))) {
+      internal::join_face_unchecked(gone, mesh);
+    } else {
+      CGAL_ext::internal::detach_face(mesh.face(side), mesh, true);
+      if (mesh.is_removed(p))
+        return q; // p had no other face
+    }
+  }
+  internal::join_vertex_unchecked(internal::dart_of(wd, mesh), mesh);
+  return q;
+}
+
+/// @}
 
 } // namespace Euler
 } // namespace CGAL_ext

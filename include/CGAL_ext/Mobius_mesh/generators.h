@@ -111,8 +111,8 @@ Dart make_periodic_grid(Mobius_mesh<P>& mesh, const Periodic_grid& grid, bool qu
       points.push_back(make_generator_point<P>(c[0], c[1], c[2]));
     }
   const std::size_t rows = grid.wrap_v ? grid.nvv : grid.nvv - 1;
-  const Vertex_index first_vertex(mesh.number_of_vertices());
-  const Face_index first_face(mesh.number_of_faces());
+  const Vertex_index first_vertex(mesh.num_vertices());
+  const Face_index first_face(mesh.num_faces());
   auto v = [&grid](std::size_t i, std::size_t j) { return std::uint32_t(grid(i, j)); };
   Face_list faces;
   faces.offset.reserve((quads ? 1 : 2) * grid.nu * rows + 1);
@@ -193,7 +193,7 @@ Dart make_mobius_strip(Mobius_mesh<P>& mesh, std::size_t n_around, std::size_t n
   internal::check_resolution(fn, "n_across", n_across, 1);
   internal::check_length(fn, "radius", radius);
   internal::check_length(fn, "width", width);
-  internal::check_edge_count(fn, mesh.number_of_edges(), n_around, n_across + 1, quads ? 2 : 3);
+  internal::check_edge_count(fn, mesh.num_edges(), n_around, n_across + 1, quads ? 2 : 3);
   const internal::Periodic_grid grid{n_around, n_across + 1, false, half_twists % 2 != 0};
   return internal::make_periodic_grid(mesh, grid, quads, [&](std::size_t i, std::size_t j) {
     const double u = 2 * internal::generator_pi * double(i) / double(n_around);
@@ -234,7 +234,7 @@ Dart make_klein_bottle(Mobius_mesh<P>& mesh, std::size_t nu, std::size_t nv, dou
   internal::check_resolution(fn, "nu", nu, 3);
   internal::check_resolution(fn, "nv", nv, 3);
   internal::check_length(fn, "radius", radius);
-  internal::check_edge_count(fn, mesh.number_of_edges(), nu, nv, 2);
+  internal::check_edge_count(fn, mesh.num_edges(), nu, nv, 2);
   const internal::Periodic_grid grid{nu, nv, true, true};
   return internal::make_periodic_grid(mesh, grid, true, [&](std::size_t i, std::size_t j) {
     const double u = 2 * internal::generator_pi * double(i) / double(nu);
@@ -269,7 +269,7 @@ Dart make_torus(Mobius_mesh<P>& mesh, std::size_t nu, std::size_t nv, double R =
   internal::check_resolution(fn, "nv", nv, 3);
   internal::check_length(fn, "R", R);
   internal::check_length(fn, "r", r);
-  internal::check_edge_count(fn, mesh.number_of_edges(), nu, nv, 2);
+  internal::check_edge_count(fn, mesh.num_edges(), nu, nv, 2);
   const internal::Periodic_grid grid{nu, nv, true, false};
   return internal::make_periodic_grid(mesh, grid, true, [&](std::size_t i, std::size_t j) {
     const double u = 2 * internal::generator_pi * double(i) / double(nu);
@@ -307,7 +307,7 @@ Dart make_projective_plane(Mobius_mesh<P>& mesh, std::size_t k)
 {
   const char* fn = "make_projective_plane";
   internal::check_resolution(fn, "k", k, 1);
-  internal::check_edge_count(fn, mesh.number_of_edges(), k, k, 6);
+  internal::check_edge_count(fn, mesh.num_edges(), k, k, 6);
   using Complex = std::complex<double>;
   const double pi = internal::generator_pi;
 
@@ -368,7 +368,7 @@ Dart make_projective_plane(Mobius_mesh<P>& mesh, std::size_t k)
       for (std::size_t j = 0; j < k; ++j)
         faces.add({vertex(s, i, j), vertex(s, i + 1, j), vertex(s, i + 1, j + 1), vertex(s, i, j + 1)});
 
-  const Face_index first_face(mesh.number_of_faces());
+  const Face_index first_face(mesh.num_faces());
   internal::append_generated(mesh, points, faces);
   return mesh.halfedge(first_face);
 }

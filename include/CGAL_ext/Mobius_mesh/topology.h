@@ -23,7 +23,7 @@ template <class P>
 std::vector<Dart> border_cycles(const Mobius_mesh<P>& mesh)
 {
   std::vector<Dart> cycles;
-  std::vector<bool> seen(mesh.number_of_halfedges(), false);
+  std::vector<bool> seen(mesh.num_halfedges(), false);
   for (Halfedge_index h : mesh.halfedges()) {
     if (!mesh.is_border(h) || seen[h.idx()])
       continue;
@@ -68,8 +68,11 @@ std::size_t number_of_mobius_edges(const Mobius_mesh<P>& mesh)
 }
 
 /// Connected components (an isolated vertex is a component of its own).
+/// The vectors are indexed by vertex and face index; removed elements have
+/// no component (`no_component`).
 struct Mesh_components
 {
+  static constexpr std::uint32_t no_component = Vertex_index::null_value;
   std::size_t count = 0;
   std::vector<std::uint32_t> vertex_component; ///< component of each vertex
   std::vector<std::uint32_t> face_component;   ///< component of each face
@@ -78,15 +81,30 @@ struct Mesh_components
 template <class P>
 Mesh_components connected_components(const Mobius_mesh<P>& mesh)
 {
-  const std::size_t nv = mesh.number_of_vertices();
+  const std::size_t nv = mesh.num_vertices();
   internal::Union_find linked{std::uint32_t(nv)};
   for (Edge_index e : mesh.edges())
     linked.unite(mesh.vertex(e, 0).idx(), mesh.vertex(e, 1).idx());
   Mesh_components result;
   std::uint32_t count = 0;
   result.vertex_component = linked.classes(count);
+  if (mesh.number_of_removed_vertices() != 0) {
+    // Removed vertices are classes of their own: number the live classes again.
+    std::vector<std::uint32_t> renumbered(count, Mesh_components::no_component);
+    count = 0;
+    for (std::size_t v = 0; v < nv; ++v) {
+      std::uint32_t& c = result.vertex_component[v];
+      if (mesh.is_removed(Vertex_index(std::uint32_t(v)))) {
+        c = Mesh_components::no_component;
+        continue;
+      }
+      if (renumbered[c] == Mesh_components::no_component)
+        renumbered[c] = count++;
+      c = renumbered[c];
+    }
+  }
   result.count = count;
-  result.face_component.resize(mesh.number_of_faces());
+  result.face_component.assign(mesh.num_faces(), Mesh_components::no_component);
   for (Face_index f : mesh.faces())
     result.face_component[f.idx()] = result.vertex_component[mesh.target(mesh.halfedge(f)).idx()];
   return result;
@@ -101,14 +119,14 @@ void orientation_parities(const Mobius_mesh<P>& mesh, std::vector<std::uint8_t>&
                           std::vector<std::uint32_t>& face_component, std::vector<bool>& component_orientable,
                           Face_index first_root = Face_index(0u))
 {
-  const std::size_t nf = mesh.number_of_faces();
+  const std::size_t nf = mesh.num_faces();
   flip.assign(nf, 0);
   face_component.assign(nf, Face_index::null_value);
   component_orientable.clear();
   std::vector<Face_index> queue;
   queue.reserve(nf);
   std::vector<Face_index> roots;
-  if (first_root.idx() < nf)
+  if (first_root.idx() < nf && !mesh.is_removed(first_root))
     roots.push_back(first_root);
   roots.insert(roots.end(), mesh.faces().begin(), mesh.faces().end());
   for (Face_index root : roots) {
@@ -219,7 +237,7 @@ std::size_t orient(Mobius_mesh<P>& mesh, unsigned number_of_starts = 8)
   std::vector<std::uint32_t> component;
   std::vector<bool> orientable;
   internal::orientation_parities(mesh, bfs_flip, component, orientable);
-  const std::size_t nf = mesh.number_of_faces(), nc = orientable.size();
+  const std::size_t nf = mesh.num_faces(), nc = orientable.size();
 
   // Candidate 0: the faces as they are (improved locally).
   std::vector<std::uint8_t> best(nf, 0);

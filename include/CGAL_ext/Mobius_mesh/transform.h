@@ -76,11 +76,20 @@ struct Point_converter
 };
 
 // Copies the connectivity of `src` into the empty mesh `dst` (points are
-// left default); indices are kept.
+// left default); indices are kept, removed elements stay removed.
 template <class P1, class P2>
 void copy_connectivity(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst)
 {
-  dst.resize(src.number_of_vertices(), src.number_of_edges(), src.number_of_faces());
+  dst.resize(src.num_vertices(), src.num_edges(), src.num_faces());
+  for (std::uint32_t i = 0; i < src.num_vertices(); ++i)
+    if (src.is_removed(Vertex_index(i)))
+      dst.remove_vertex(Vertex_index(i));
+  for (std::uint32_t i = 0; i < src.num_edges(); ++i)
+    if (src.is_removed(Edge_index(i)))
+      dst.remove_edge(Edge_index(i));
+  for (std::uint32_t i = 0; i < src.num_faces(); ++i)
+    if (src.is_removed(Face_index(i)))
+      dst.remove_face(Face_index(i));
   for (Halfedge_index h : src.halfedges()) {
     const Dart d(h, false);
     dst.set_target(h, src.target(d));
@@ -179,10 +188,10 @@ typename Mobius_mesh<P2>::Join_offsets copy_mesh(const Mobius_mesh<P1>& src, Mob
     for (Vertex_index v : src.vertices())
       part.point(v) = convert(src.point(v));
     auto same = [](auto i) { return i; };
-    internal::transfer_properties<Vertex_index>(src, part, 0, src.number_of_vertices(), same);
-    internal::transfer_properties<Halfedge_index>(src, part, 0, src.number_of_halfedges(), same);
-    internal::transfer_properties<Edge_index>(src, part, 0, src.number_of_edges(), same);
-    internal::transfer_properties<Face_index>(src, part, 0, src.number_of_faces(), same);
+    internal::transfer_properties<Vertex_index>(src, part, 0, src.num_vertices(), same);
+    internal::transfer_properties<Halfedge_index>(src, part, 0, src.num_halfedges(), same);
+    internal::transfer_properties<Edge_index>(src, part, 0, src.num_edges(), same);
+    internal::transfer_properties<Face_index>(src, part, 0, src.num_faces(), same);
   }
   const auto off = internal::append_mesh(dst, std::move(part));
   internal::write_pairs(np, CGAL::internal_np::vertex_to_vertex_output_iterator, [&](auto out) {

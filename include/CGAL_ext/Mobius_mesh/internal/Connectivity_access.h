@@ -84,8 +84,7 @@ struct Connectivity_access
   template <class P>
   static void reset_property_maps(Mobius_mesh<P>& m)
   {
-    resize_property_maps(m, m.number_of_vertices(), m.number_of_halfedges(), m.number_of_edges(),
-                         m.number_of_faces());
+    resize_property_maps(m, m.num_vertices(), m.num_halfedges(), m.num_edges(), m.num_faces());
   }
 
   // The property arrays of element kind `I` (an index type) of `m`.
@@ -122,11 +121,13 @@ private:
     if (n)
       std::memcpy(target, source, sizeof(T) * n);
   }
-  // Every property array back to its default values, at the given sizes.
+  // Every property array back to its default values, at the given sizes;
+  // the arrays are new, so nothing in them is removed.
   template <class P>
   static void resize_property_maps(Mobius_mesh<P>& m, std::size_t nv, std::size_t nh, std::size_t ne,
                                    std::size_t nf)
   {
+    m.drop_removal_marks();
     for (auto* props : {&m.vprops_, &m.hprops_, &m.eprops_, &m.fprops_})
       props->resize(0);
     m.vprops_.resize(nv);

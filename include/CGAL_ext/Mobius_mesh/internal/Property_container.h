@@ -46,6 +46,9 @@ public:
   // type (as CGAL's Base_property_array::transfer): the array knows its own
   // type, so copies between meshes need no list of value types.
   virtual bool transfer(const Base_property_array& source, const Transfer_sources& sources) = 0;
+  // Keeps the elements `kept[0], kept[1], ...` (increasing), in that order,
+  // as elements 0, 1, ...: garbage collection, in place.
+  virtual void compact(const std::vector<std::uint32_t>& kept) = 0;
   virtual std::unique_ptr<Base_property_array> clone() const = 0;
   virtual std::unique_ptr<Base_property_array> empty_clone() const = 0;
   virtual const std::type_info& value_type() const = 0;
@@ -95,6 +98,14 @@ public:
       if (sources.source_of[i] != Transfer_sources::no_source)
         data_[sources.first + i] = from[sources.source_of[i]];
     return true;
+  }
+  void compact(const std::vector<std::uint32_t>& kept) override
+  {
+    // kept[i] >= i, so moving forward never overwrites a value still to move.
+    for (std::size_t i = 0; i < kept.size(); ++i)
+      if (kept[i] != i)
+        data_[i] = std::move(data_[kept[i]]);
+    data_.resize(kept.size(), Stored(default_));
   }
   std::unique_ptr<Base_property_array> clone() const override
   {
@@ -215,6 +226,14 @@ public:
         a->resize(old_size + other.size_);
     }
     size_ = old_size + other.size_;
+  }
+
+  // Keeps the elements listed in `kept` (increasing) of every array.
+  void compact(const std::vector<std::uint32_t>& kept)
+  {
+    for (auto& a : arrays_)
+      a->compact(kept);
+    size_ = kept.size();
   }
 
   template <class T>

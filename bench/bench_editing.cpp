@@ -1,0 +1,214 @@
+// Editing, against CGAL::Euler on Surface_mesh: random rounds of Euler
+// operations on a triangulated torus (the same kind of round in both), and
+// garbage collection after many removals.
+//
+// A round splits a random edge, splits its two quads back into triangles,
+// flips one of the new edges (and back) and collapses the new vertex into an
+// end of the split edge: seven Euler operations (and their checks) that leave
+// the mesh as large as it was. Surface_mesh reuses the slots of removed
+// elements; Mobius_mesh appends, so its rounds collect the garbage every
+// 2^16 rounds, inside the timing.
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/Euler_operations.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace {
+
+using K = CGAL::Simple_cartesian<double>;
+using Point = K::Point_3;
+using Mesh = CGAL_ext::Mobius_mesh<Point>;
+using SM = CGAL::Surface_mesh<Point>;
+
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+// An n x n torus, each quad split along one diagonal.
+Soup torus(std::size_t n)
+{
+  Soup s;
+  const double pi = std::acos(-1.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double u = 2 * pi * double(i) / double(n), v = 2 * pi * double(j) / double(n);
+      s.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
+    }
+  auto at = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      s.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      s.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return s;
+}
+
+Mesh ours(const Soup& s)
+{
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.triangles, m);
+  return m;
+}
+
+SM theirs(const Soup& s)
+{
+  SM sm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(s.points, s.triangles, sm);
+  return sm;
+}
+
+// One round on Mobius_mesh; returns the number of operations done.
+int round(Mesh& m, std::mt19937& rng)
+{
+  namespace E = CGAL_ext::Euler;
+  CGAL_ext::Halfedge_index h;
+  do
+    h = CGAL_ext::Halfedge_index(std::uint32_t(rng() % m.num_halfedges()));
+  while (m.is_removed(h));
+  const CGAL_ext::Dart d(h, false);
+  const CGAL_ext::Dart n = E::split_edge(d, m); // a -> w, then d: w -> b
+  const CGAL_ext::Dart x = E::split_face(n, m.next(m.next(n)), m);
+  const CGAL_ext::Dart od = m.opposite(d);
+  E::split_face(od, m.next(m.next(od)), m);
+  int ops = 3;
+  if (E::can_flip_edge(x, m)) {
+    E::flip_edge(E::flip_edge(x, m), m);
+    ops += 2;
+  }
+  const CGAL_ext::Dart back = m.opposite(n); // w -> a
+  if (E::does_satisfy_link_condition(back, m)) {
+    E::collapse_edge(back, m);
+    ++ops;
+  }
+  return ops;
+}
+
+int round(SM& sm, std::mt19937& rng)
+{
+  namespace E = CGAL::Euler;
+  SM::Halfedge_index h;
+  do
+    h = SM::Halfedge_index(SM::size_type(rng() % sm.num_halfedges()));
+  while (sm.is_removed(h));
+  const auto n = E::split_edge(h, sm);
+  const auto x = E::split_face(n, sm.next(sm.next(n)), sm);
+  const auto oh = sm.opposite(h);
+  E::split_face(oh, sm.next(sm.next(oh)), sm);
+  int ops = 3;
+  // Surface_mesh has no can_flip_edge: the quad of x is convex here, and
+  // the far corners are not adjacent on a torus of this size.
+  E::flip_edge(E::flip_edge(x, sm), sm);
+  ops += 2;
+  const auto back = sm.edge(sm.opposite(n));
+  if (E::does_satisfy_link_condition(back, sm)) {
+    // CGAL keeps the target of halfedge(e): make it the old vertex.
+    E::collapse_edge(back, sm);
+    ++ops;
+  }
+  return ops;
+}
+
+template <class M, class Collect>
+void random_rounds(benchmark::State& state, M mesh, Collect collect)
+{
+  std::mt19937 rng(1);
+  std::int64_t ops = 0, rounds = 0;
+  for (auto _ : state) {
+    ops += round(mesh, rng);
+    if ((++rounds & 0xffff) == 0)
+      collect(mesh);
+  }
+  state.SetItemsProcessed(ops);
+  state.counters["ops_per_round"] = double(ops) / double(rounds);
+}
+
+void Euler_random_rounds_CGAL_ext(benchmark::State& state)
+{
+  random_rounds(state, ours(torus(std::size_t(state.range(0)))), [](Mesh& m) { m.collect_garbage(); });
+}
+void Euler_random_rounds_CGAL(benchmark::State& state)
+{
+  random_rounds(state, theirs(torus(std::size_t(state.range(0)))), [](SM&) {});
+}
+
+// Removes about a tenth of the elements by collapses, then times the compaction.
+template <class M, class Collapse, class Collect>
+void garbage(benchmark::State& state, M prepared, Collapse collapse, Collect collect)
+{
+  std::mt19937 rng(2);
+  const std::size_t target = prepared.number_of_faces() / 20; // two faces per collapse
+  for (std::size_t k = 0; k < target;)
+    k += collapse(prepared, rng) ? 1 : 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    M m = prepared;
+    state.ResumeTiming();
+    collect(m);
+    benchmark::DoNotOptimize(m.number_of_faces());
+  }
+}
+
+void Collect_garbage_CGAL_ext(benchmark::State& state)
+{
+  garbage(
+    state, ours(torus(std::size_t(state.range(0)))),
+    [](Mesh& m, std::mt19937& rng) {
+      const CGAL_ext::Halfedge_index h(std::uint32_t(rng() % m.num_halfedges()));
+      if (m.is_removed(h) || !CGAL_ext::Euler::does_satisfy_link_condition(CGAL_ext::Dart(h), m))
+        return false;
+      CGAL_ext::Euler::collapse_edge(CGAL_ext::Dart(h), m);
+      return true;
+    },
+    [](Mesh& m) { m.collect_garbage(); });
+}
+void Collect_garbage_CGAL(benchmark::State& state)
+{
+  SM sm = theirs(torus(std::size_t(state.range(0))));
+  sm.set_recycle_garbage(false);
+  garbage(
+    state, sm,
+    [](SM& m, std::mt19937& rng) {
+      const SM::Halfedge_index h(SM::size_type(rng() % m.num_halfedges()));
+      if (m.is_removed(h) || !CGAL::Euler::does_satisfy_link_condition(m.edge(h), m))
+        return false;
+      CGAL::Euler::collapse_edge(m.edge(h), m);
+      return true;
+    },
+    [](SM& m) { m.collect_garbage(); });
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  // Names are group/case/implementation, as scripts/bench.sh pairs them.
+  auto add = [](const char* name, void (*f)(benchmark::State&), std::int64_t n, benchmark::TimeUnit unit) {
+    benchmark::RegisterBenchmark(name, f)->Arg(n)->Unit(unit);
+  };
+  add("euler/random_rounds/torus_256x256/CGAL_ext", Euler_random_rounds_CGAL_ext, 256, benchmark::kMicrosecond);
+  add("euler/random_rounds/torus_256x256/CGAL_Surface_mesh", Euler_random_rounds_CGAL, 256, benchmark::kMicrosecond);
+  add("collect_garbage/torus_512x512_tenth_collapsed/CGAL_ext", Collect_garbage_CGAL_ext, 512,
+      benchmark::kMillisecond);
+  add("collect_garbage/torus_512x512_tenth_collapsed/CGAL_Surface_mesh", Collect_garbage_CGAL, 512,
+      benchmark::kMillisecond);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}
