@@ -1,5 +1,5 @@
-// Editing a Mobius_mesh: removal and garbage collection, and the Euler
-// operations on darts. References: the counts each operation's contract gives
+// Editing a Mobius_mesh: removal and garbage collection, the Euler
+// operations on darts, and offsets. References: the counts each operation's contract gives
 // (vertices, edges, faces, border loops), Euler characteristic and
 // orientability (which no Euler operation changes, and filling or punching a
 // hole changes by a known amount), and CGAL::Euler on Surface_mesh, run on the
@@ -11,8 +11,15 @@
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/offset_mesh.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
@@ -789,4 +796,171 @@ TEST(EulerStress, KleinBottleAndBoysSurfaceEpeck)
   CGAL_ext::make_projective_plane(boy, 2);
   stress(klein, 500, 5);
   stress(boy, 500, 6);
+}
+
+// ---------------------------------------------------------------- offsets
+
+namespace {
+
+using Triangle = test::Kd::Triangle_3;
+using Aabb_tree = CGAL::AABB_tree<CGAL::AABB_traits<test::Kd, CGAL::AABB_triangle_primitive<test::Kd, std::vector<Triangle>::const_iterator>>>;
+
+// The faces of `m`, fanned into triangles, in double.
+template <class P>
+std::vector<Triangle> triangles_of(const CGAL_ext::Mobius_mesh<P>& m)
+{
+  std::vector<Triangle> ts;
+  auto to_double = [&](Vertex_index v) {
+    const Key k = key_of(m.point(v));
+    return Point(std::get<0>(k), std::get<1>(k), std::get<2>(k));
+  };
+  for (Face_index f : m.faces()) {
+    std::vector<Point> c;
+    for (Vertex_index v : CGAL_ext::vertices_around_face(f, m))
+      c.push_back(to_double(v));
+    for (std::size_t i = 1; i + 1 < c.size(); ++i)
+      ts.emplace_back(c[0], c[i], c[i + 1]);
+  }
+  return ts;
+}
+
+CGAL::Surface_mesh<Point> triangulated_surface_mesh(const std::vector<Triangle>& ts)
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> faces;
+  std::map<Key, std::size_t> index;
+  for (const Triangle& t : ts) {
+    std::array<std::size_t, 3> f;
+    for (int i = 0; i < 3; ++i) {
+      const auto [it, fresh] = index.emplace(key_of(t[i]), points.size());
+      if (fresh)
+        points.push_back(t[i]);
+      f[i] = it->second;
+    }
+    faces.push_back(f);
+  }
+  CGAL::Surface_mesh<Point> sm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, sm);
+  return sm;
+}
+
+double area_of(const std::vector<Triangle>& ts)
+{
+  double a = 0;
+  for (const Triangle& t : ts)
+    a += std::sqrt(t.squared_area());
+  return a;
+}
+
+// The checks every offset must pass, measured on the output itself: valid,
+// every vertex at `distance` from the input (nearest point on the input's
+// faces by an AABB tree, not the normal it moved along) within `tolerance`
+// relative, no self-intersection, and for a closed output a positive volume
+// of about 2 * distance * area (the thickened surface).
+template <class P>
+void check_offset(const CGAL_ext::Mobius_mesh<P>& input, const CGAL_ext::Mobius_mesh<P>& out,
+                  const CGAL_ext::Offset_result& r, double distance, double tolerance)
+{
+  ASSERT_TRUE(out.is_valid(true));
+  EXPECT_EQ(r.faces, out.number_of_faces());
+  const std::vector<Triangle> input_triangles = triangles_of(input);
+  Aabb_tree tree(input_triangles.begin(), input_triangles.end());
+  double worst = 0;
+  for (Vertex_index v : out.vertices()) {
+    const Key k = key_of(out.point(v));
+    const double d = std::sqrt(tree.squared_distance(Point(std::get<0>(k), std::get<1>(k), std::get<2>(k))));
+    worst = (std::max)(worst, std::abs(d - distance) / distance);
+  }
+  EXPECT_LE(worst, tolerance);
+  const std::vector<Triangle> out_triangles = triangles_of(out);
+  const auto sm = triangulated_surface_mesh(out_triangles);
+  EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(sm));
+  if (r.closed) {
+    const double volume = CGAL::Polygon_mesh_processing::volume(sm);
+    EXPECT_GT(volume, 0);
+    EXPECT_NEAR(volume / (2 * distance * area_of(input_triangles)), 1.0, tolerance);
+  }
+}
+
+} // namespace
+
+TEST(Offset, ThickenedMobiusStripIsOneClosedOrientableSurfaceOfGenusOne)
+{
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 48, 6);
+  Mesh out;
+  const auto r = CGAL_ext::offset_mesh(strip, 0.01, out);
+  EXPECT_TRUE(r.closed);
+  EXPECT_TRUE(r.orientable);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.euler_characteristic, 0); // genus 1
+  // The double cover has every face twice; the one border loop of 2 x 48
+  // edges gets one rim quad per edge.
+  EXPECT_EQ(r.rim_faces, 96u);
+  EXPECT_EQ(r.faces, 2 * strip.number_of_faces() + 96);
+  EXPECT_EQ(r.vertices, 2 * strip.number_of_vertices());
+  check_offset(strip, out, r, 0.01, 0.05);
+}
+
+TEST(Offset, KleinBottleAndBoysSurfaceGiveTheirOrientationDoubleCovers)
+{
+  Mesh klein, boy, out;
+  CGAL_ext::make_klein_bottle(klein, 48, 24);
+  auto r = CGAL_ext::offset_mesh(klein, 0.005, out);
+  EXPECT_TRUE(r.closed && r.orientable);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.euler_characteristic, 0); // a torus
+  EXPECT_EQ(r.faces, 2 * klein.number_of_faces());
+  ASSERT_TRUE(out.is_valid(true));
+
+  CGAL_ext::make_projective_plane(boy, 6);
+  r = CGAL_ext::offset_mesh(boy, 0.002, out);
+  EXPECT_TRUE(r.closed && r.orientable);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.euler_characteristic, 2); // a sphere
+  ASSERT_TRUE(out.is_valid(true));
+  // Both immerse with self-intersections, so only validity and topology here.
+}
+
+TEST(Offset, OrientableSurfacesGiveOneShellOrASolid)
+{
+  Mesh disk = hexagon_fan(), out;
+  auto r = CGAL_ext::offset_mesh(disk, 0.1, out);
+  EXPECT_FALSE(r.closed);
+  EXPECT_EQ(r.faces, 6u);
+  EXPECT_EQ(r.euler_characteristic, 1);
+  // The one shell lies on the side the faces' normals point to (+z here).
+  for (Vertex_index v : out.vertices())
+    EXPECT_NEAR(out.point(v).z(), 0.1, 1e-12);
+  check_offset(disk, out, r, 0.1, 1e-9);
+
+  r = CGAL_ext::offset_mesh(disk, 0.1, out, CGAL_ext::parameters::solid(true));
+  EXPECT_TRUE(r.closed && r.orientable);
+  EXPECT_EQ(r.euler_characteristic, 2); // a flat box: a sphere
+  EXPECT_EQ(r.rim_faces, 6u);
+  check_offset(disk, out, r, 0.1, 1e-9);
+
+  Mesh torus;
+  CGAL_ext::make_torus(torus, 32, 16);
+  r = CGAL_ext::offset_mesh(torus, 0.01, out, CGAL_ext::parameters::solid(true));
+  EXPECT_EQ(r.components, 2u); // inner and outer skin
+  EXPECT_EQ(r.euler_characteristic, 0);
+  check_offset(torus, out, r, 0.01, 0.05);
+}
+
+TEST(Offset, ExactKernelAndBadDistances)
+{
+  CGAL_ext::Mobius_mesh<test::Epeck::Point_3> strip, out;
+  CGAL_ext::make_mobius_strip(strip, 24, 3);
+  const auto r = CGAL_ext::offset_mesh(strip, 0.01, out);
+  EXPECT_TRUE(r.closed && r.orientable);
+  EXPECT_EQ(r.euler_characteristic, 0);
+  check_offset(strip, out, r, 0.01, 0.05);
+
+  Mesh m = hexagon_fan(), kept;
+  CGAL_ext::make_torus(kept, 3, 3);
+  const auto before = face_signature(kept);
+  for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL})
+    EXPECT_THROW(CGAL_ext::offset_mesh(m, bad, kept), CGAL_ext::Parameter_error);
+  EXPECT_EQ(face_signature(kept), before);
 }

@@ -1,0 +1,227 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Offsets of one- and two-sided surfaces: the vertices moved along their
+// normals to both sides. On a one-sided surface the two sides are one, and
+// the offset is the orientation double cover, displaced.
+
+#ifndef CGAL_EXT_OFFSET_MESH_H
+#define CGAL_EXT_OFFSET_MESH_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/normals.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgMobiusMeshOperations
+/// What `offset_mesh()` made.
+struct Offset_result
+{
+  std::size_t vertices = 0, edges = 0, faces = 0;
+  std::size_t rim_faces = 0;       ///< faces joining the two sides along the input's border
+  std::size_t components = 0;      ///< connected components of the output
+  long long euler_characteristic = 0;
+  bool closed = false, orientable = false;
+};
+
+namespace internal {
+
+// Which side of each face each corner's lift takes: the input's sides are
+// chosen per vertex (the side of a face dart into it), and a corner takes
+// the vertex's side if its face, walked along its own orientation, agrees
+// with that dart, the other side if not. Indexed by halfedge: the corner at
+// target(h) of face(h).
+template <class P>
+std::vector<std::uint8_t> corner_agrees(const Mobius_mesh<P>& m, std::vector<Dart>& side_dart)
+{
+  std::vector<std::uint8_t> agrees(m.num_halfedges(), 0);
+  side_dart.assign(m.num_vertices(), Dart());
+  for (Vertex_index v : m.vertices()) {
+    if (m.is_isolated(v))
+      continue;
+    Dart r;
+    for (Dart c : CGAL_ext::halfedges_around_target(m.halfedge(v), m))
+      if (!m.is_border(c)) {
+        r = c;
+        break;
+      }
+    side_dart[v.idx()] = r;
+    // Circulation carries the walk's orientation across every edge, Möbius or
+    // not: a dart reached with the same flip bit as r runs its face as r does.
+    for (Dart c : CGAL_ext::halfedges_around_target(r, m)) {
+      if (m.is_border(c))
+        continue;
+      const Dart along = c.is_flipped() ? m.next(c).flipped() : c; // the face's own dart into v
+      agrees[along.halfedge().idx()] = c.is_flipped() == r.is_flipped();
+    }
+  }
+  return agrees;
+}
+
+// Unit normal times `distance`, in the kernel's number type. The square root
+// is the only rounded step: on an exact kernel the rest is exact.
+template <class Vector>
+Vector scaled_unit(const Vector& n, double distance)
+{
+  const double length = std::sqrt(CGAL::to_double(n.squared_length()));
+  if (!(length > 0))
+    return n; // the zero vector: a vertex whose faces cancel out stays put
+  return n * (typename CGAL::Kernel_traits<Vector>::Kernel::FT(distance) /
+              typename CGAL::Kernel_traits<Vector>::Kernel::FT(length));
+}
+
+// Builds `out` from the polygons, with only the points they use.
+template <class P>
+void build_from_used_points(const std::vector<P>& points, std::vector<std::vector<std::size_t>>& polygons,
+                            Mobius_mesh<P>& out)
+{
+  constexpr std::size_t unused = std::size_t(-1);
+  std::vector<std::size_t> renumbered(points.size(), unused);
+  std::vector<P> used;
+  for (auto& polygon : polygons)
+    for (std::size_t& i : polygon) {
+      if (renumbered[i] == unused) {
+        renumbered[i] = used.size();
+        used.push_back(points[i]);
+      }
+      i = renumbered[i];
+    }
+  polygon_soup_to_mobius_mesh(used, polygons, out);
+}
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMeshOperations
+///
+/// Offsets `mesh` by `distance` to both sides and writes the result into `out`
+/// (replacing its content): every vertex moves along its unit vertex normal
+/// by `+distance` and by `-distance`.
+///
+/// - On a **one-sided** (non-orientable) component the two offsets are one
+///   surface: the orientation double cover of the component, displaced, and,
+///   if the component has a border, closed along it by rim quads. A Möbius
+///   strip gives one closed orientable surface of genus 1 (the skin of the
+///   thickened strip), a Klein bottle a torus, a projective plane a sphere.
+/// - On an **orientable** component, with `solid(true)` both shells, joined
+///   along the border by rim quads (a closed surface bounding the thickened
+///   component); otherwise the one shell on the side its faces' normals point
+///   to (after `orient()`), with no rim.
+///
+/// The output is oriented outward: the copy of a face on the side its normal
+/// points to keeps its orientation, the copy on the other side is reversed,
+/// and the rims follow; so a closed output bounds a positive volume. Normals are those of
+/// `vertex_normal()` with the weighting given (area by default), each taken on
+/// the side of a face dart into its vertex; the corners of the double cover
+/// follow that side across Möbius edges. The offset points are those
+/// positions exactly, up to the rounding of the one square root that makes a
+/// normal a unit vector.
+///
+/// \param np optional named parameters: `solid` (bool, default `false`),
+///   `vertex_normal_weighting` (default `Vertex_normal_weighting::area`).
+/// \throws Parameter_error if `distance` is not finite and positive, or the
+///   mesh has removed elements; `out` is then unchanged.
+template <class P, class NP = parameters::Default_named_parameters>
+Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_mesh<P>& out,
+                          const NP& np = parameters::default_values())
+{
+  if (!(std::isfinite(distance) && distance > 0))
+    throw Parameter_error("offset_mesh: the distance must be finite and positive, not " + std::to_string(distance));
+  if (mesh.has_garbage())
+    throw Parameter_error("offset_mesh: the mesh has removed elements; call collect_garbage() first");
+  const bool solid = parameters::choose_parameter(parameters::get_parameter(np, internal_np::solid), false);
+  const auto weighting = parameters::choose_parameter(
+    parameters::get_parameter(np, internal_np::vertex_normal_weighting), Vertex_normal_weighting::area);
+
+  // Orientable components get consistent orientations, so that one shell is one side.
+  Mobius_mesh<P> m = mesh;
+  CGAL_ext::orient(m);
+  std::vector<std::uint32_t> face_component;
+  std::vector<bool> orientable;
+  {
+    std::vector<std::uint8_t> flip;
+    internal::orientation_parities(m, flip, face_component, orientable);
+  }
+
+  std::vector<Dart> side_dart;
+  const std::vector<std::uint8_t> agrees = internal::corner_agrees(m, side_dart);
+  // Lift 2v is v on the side of its side dart, 2v + 1 on the other side.
+  std::vector<P> lifts(2 * std::size_t(m.num_vertices()));
+  for (Vertex_index v : m.vertices()) {
+    const P& p = m.point(v);
+    if (!side_dart[v.idx()].is_valid()) {
+      lifts[2 * v.idx()] = lifts[2 * v.idx() + 1] = p;
+      continue;
+    }
+    const auto offset = internal::scaled_unit(
+      CGAL_ext::vertex_normal(side_dart[v.idx()], m, parameters::vertex_normal_weighting(weighting)), distance);
+    lifts[2 * v.idx()] = p + offset;
+    lifts[2 * v.idx() + 1] = p - offset;
+  }
+
+  // Each face twice (once reversed), or once on an orientable component
+  // without `solid`; a rim quad along each border edge where both sides are kept.
+  std::vector<std::vector<std::size_t>> polygons;
+  auto lift = [&](Halfedge_index corner, bool upper) {
+    const Vertex_index v = m.target(Dart(corner, false));
+    return 2 * std::size_t(v.idx()) + ((agrees[corner.idx()] != 0) == upper ? 0 : 1);
+  };
+  auto both_sides = [&](Face_index f) { return solid || !orientable[face_component[f.idx()]]; };
+  for (Face_index f : m.faces()) {
+    std::vector<std::size_t> upper, lower;
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      upper.push_back(lift(d.halfedge(), true));
+      lower.push_back(lift(d.halfedge(), false));
+    }
+    polygons.push_back(upper);
+    if (both_sides(f)) {
+      std::reverse(lower.begin(), lower.end());
+      polygons.push_back(lower);
+    }
+  }
+  std::size_t rim_faces = 0;
+  for (Halfedge_index b : m.halfedges()) {
+    if (!m.is_border(b))
+      continue;
+    const Dart inner = m.opposite(Dart(b, false)); // the face's dart along this border edge
+    const Face_index f = m.face(inner);
+    if (!both_sides(f))
+      continue;
+    const Dart in_face = inner.is_flipped() ? inner.flipped() : inner;
+    const Halfedge_index at_target = in_face.halfedge(), at_source = m.prev(in_face).halfedge();
+    // The upper copy runs source -> target along the edge: the rim runs back.
+    polygons.push_back({lift(at_target, true), lift(at_source, true), lift(at_source, false),
+                        lift(at_target, false)});
+    ++rim_faces;
+  }
+
+  Mobius_mesh<P> result;
+  internal::build_from_used_points(lifts, polygons, result);
+
+  Offset_result r;
+  r.vertices = result.number_of_vertices();
+  r.edges = result.number_of_edges();
+  r.faces = result.number_of_faces();
+  r.rim_faces = rim_faces;
+  r.components = CGAL_ext::connected_components(result).count;
+  r.euler_characteristic = CGAL_ext::euler_characteristic(result);
+  r.closed = CGAL_ext::is_closed(result);
+  r.orientable = CGAL_ext::is_orientable(result);
+  out = std::move(result);
+  return r;
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_OFFSET_MESH_H
