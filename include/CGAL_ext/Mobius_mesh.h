@@ -7,6 +7,7 @@
 #ifndef CGAL_EXT_MOBIUS_MESH_H
 #define CGAL_EXT_MOBIUS_MESH_H
 
+#include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
@@ -1004,6 +1005,20 @@ template <class P>
 auto edges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::edges_around_target(m.halfedge(v), m); }
 
 /// @}
+
+namespace internal {
+
+// Algorithms that lay out arrays by element index (subdivision, conversion,
+// writing, merging) need indices without gaps: they refuse a mesh with
+// removed elements rather than carry its garbage.
+template <class P>
+void require_no_garbage(const Mobius_mesh<P>& m, const char* function)
+{
+  if (m.has_garbage())
+    throw Parameter_error(std::string(function) + ": the mesh has removed elements; call collect_garbage() first");
+}
+
+} // namespace internal
 
 // ============================================================================
 // Out-of-line members
