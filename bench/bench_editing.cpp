@@ -87,7 +87,7 @@ int round(Mesh& m, std::mt19937& rng)
   E::split_face(od, m.next(m.next(od)), m);
   int ops = 3;
   if (E::can_flip_edge(x, m)) {
-    E::flip_edge(E::flip_edge(x, m), m);
+    E::flip_edge(E::flip_edge(x, m), m); // the same edge, back again
     ops += 2;
   }
   const CGAL_ext::Dart back = m.opposite(n); // w -> a
@@ -112,7 +112,8 @@ int round(SM& sm, std::mt19937& rng)
   int ops = 3;
   // Surface_mesh has no can_flip_edge: the quad of x is convex here, and
   // the far corners are not adjacent on a torus of this size.
-  E::flip_edge(E::flip_edge(x, sm), sm);
+  E::flip_edge(x, sm); // CGAL flips in place: the same halfedge, back again
+  E::flip_edge(x, sm);
   ops += 2;
   const auto back = sm.edge(sm.opposite(n));
   if (E::does_satisfy_link_condition(back, sm)) {

@@ -7,8 +7,12 @@
 #define CGAL_EXT_MOBIUS_MESH_EULER_OPERATIONS_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+
+#include <CGAL/assertions.h>
 #include <CGAL_ext/Mobius_mesh/internal/Euler_support.h>
 #include <CGAL_ext/exceptions.h>
+
+#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <string>
@@ -52,15 +56,28 @@ bool are_adjacent(Vertex_index a, Vertex_index b, const Mobius_mesh<P>& m)
   return false;
 }
 
+// The checks run on every operation: no allocation for the usual small fans and faces.
+using Vertex_list = boost::container::small_vector<Vertex_index, 16>;
+
 template <class P>
-std::vector<Vertex_index> face_vertices(Face_index f, const Mobius_mesh<P>& m)
+Vertex_list face_vertices(Face_index f, const Mobius_mesh<P>& m)
 {
-  std::vector<Vertex_index> vs;
+  Vertex_list vs;
   for (Vertex_index v : CGAL_ext::vertices_around_face(f, m))
     vs.push_back(v);
-  std::sort(vs.begin(), vs.end());
   return vs;
 }
+
+template <class P>
+Vertex_list neighbours(Dart into, const Mobius_mesh<P>& m)
+{
+  Vertex_list vs;
+  for (Vertex_index v : CGAL_ext::vertices_around_target(into, m))
+    vs.push_back(v);
+  return vs;
+}
+
+inline bool holds(const Vertex_list& vs, Vertex_index v) { return std::find(vs.begin(), vs.end(), v) != vs.end(); }
 
 template <class P>
 std::size_t border_loop_length(Dart d, const Mobius_mesh<P>& m)
@@ -85,9 +102,8 @@ std::string why_not_join_face(Dart d, const Mobius_mesh<P>& m)
     return "the edge has the same face on both sides";
   if (m.degree(m.source(d)) < 3 || m.degree(m.target(d)) < 3)
     return "an end of the edge would be left with one edge";
-  std::vector<Vertex_index> a = face_vertices(m.face(d), m), b = face_vertices(m.face(o), m), common;
-  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
-  if (common.size() != 2)
+  const Vertex_list a = face_vertices(m.face(d), m), b = face_vertices(m.face(o), m);
+  if (std::count_if(a.begin(), a.end(), [&b](Vertex_index v) { return holds(b, v); }) != 2)
     return "the two faces share a vertex besides the edge's ends";
   return std::string();
 }
@@ -116,19 +132,14 @@ std::string why_not_join_vertex(Dart d, const Mobius_mesh<P>& m)
   const Vertex_index s = m.source(d), t = m.target(d);
   if (m.is_border(s) && m.is_border(t) && !m.is_border(m.edge(d)))
     return "both ends are on the border but the edge is not";
-  std::vector<Vertex_index> ns, nt, common;
-  for (Vertex_index w : CGAL_ext::vertices_around_target(d.flipped(), m)) ns.push_back(w);
-  for (Vertex_index w : CGAL_ext::vertices_around_target(d, m)) nt.push_back(w);
-  std::sort(ns.begin(), ns.end());
-  std::sort(nt.begin(), nt.end());
-  std::set_intersection(ns.begin(), ns.end(), nt.begin(), nt.end(), std::back_inserter(common));
-  if (!common.empty())
-    return "the ends have a common neighbour";
+  const Vertex_list ns = neighbours(d.flipped(), m), nt = neighbours(d, m);
+  for (Vertex_index w : ns)
+    if (holds(nt, w))
+      return "the ends have a common neighbour";
   for (Face_index f : CGAL_ext::faces_around_target(d.flipped(), m)) {
     if (!f.is_valid() || f == m.face(d) || f == m.face(o))
       continue;
-    const std::vector<Vertex_index> vs = face_vertices(f, m);
-    if (std::binary_search(vs.begin(), vs.end(), t))
+    if (holds(face_vertices(f, m), t))
       return "another face holds both ends";
   }
   return std::string();
@@ -382,7 +393,7 @@ Dart join_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh)
   CGAL_assertion(!d.is_flipped());
   const Dart od = mesh.opposite(d);
   const Vertex_index s = mesh.source(d), t = mesh.target(d);
-  std::vector<Dart> into_s;
+  boost::container::small_vector<Dart, 16> into_s;
   for (Dart c : CGAL_ext::halfedges_around_target(od, mesh))
     if (c != od)
       into_s.push_back(c);
@@ -645,8 +656,8 @@ bool some_face_holds(Vertex_index a, Vertex_index b, Vertex_index c, const Mobiu
   for (Face_index f : CGAL_ext::faces_around_target(m.halfedge(a), m)) {
     if (!f.is_valid())
       continue;
-    const std::vector<Vertex_index> vs = face_vertices(f, m);
-    if (std::binary_search(vs.begin(), vs.end(), b) && std::binary_search(vs.begin(), vs.end(), c))
+    const Vertex_list vs = face_vertices(f, m);
+    if (holds(vs, b) && holds(vs, c))
       return true;
   }
   return false;
@@ -657,7 +668,7 @@ std::string why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
 {
   const Dart o = m.opposite(d);
   const Vertex_index p = m.source(d), q = m.target(d);
-  std::vector<Vertex_index> apexes;
+  boost::container::small_vector<Vertex_index, 2> apexes;
   for (Dart side : {d, o}) {
     if (m.is_border(side)) {
       if (border_loop_length(side, m) < 4)
@@ -670,24 +681,21 @@ std::string why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
     if (m.is_border(m.opposite(m.next(side))) && m.is_border(m.opposite(m.prev(side))))
       return "a triangle of the edge has its two other sides on the border";
     const Dart other = side == d ? o : d;
-    if (!m.is_border(other)) {
-      const std::vector<Vertex_index> vs = face_vertices(m.face(other), m);
-      if (std::binary_search(vs.begin(), vs.end(), apexes.back()))
-        return "the faces of the edge meet again at the far corner of a triangle";
-    }
+    if (!m.is_border(other) && holds(face_vertices(m.face(other), m), apexes.back()))
+      return "the faces of the edge meet again at the far corner of a triangle";
   }
   if (m.is_border(p) && m.is_border(q) && !m.is_border(m.edge(d)))
     return "both ends are on the border but the edge is not";
   if (m.degree(q) < 3)
     return "the kept end would vanish with the triangle of the edge";
+  const Vertex_list np = neighbours(o, m);
   for (Vertex_index k : CGAL_ext::vertices_around_target(d, m))
-    if (k != p && are_adjacent(k, p, m) && std::find(apexes.begin(), apexes.end(), k) == apexes.end())
+    if (k != p && holds(np, k) && std::find(apexes.begin(), apexes.end(), k) == apexes.end())
       return "the link condition fails: the ends have a common neighbour that is not across a triangle of the edge";
   for (Face_index f : CGAL_ext::faces_around_target(o, m)) {
     if (!f.is_valid() || f == m.face(d) || f == m.face(o))
       continue;
-    const std::vector<Vertex_index> vs = face_vertices(f, m);
-    if (std::binary_search(vs.begin(), vs.end(), q))
+    if (holds(face_vertices(f, m), q))
       return "another face holds both ends";
   }
   if (apexes.size() == 2 && some_face_holds(p, apexes[0], apexes[1], m) &&

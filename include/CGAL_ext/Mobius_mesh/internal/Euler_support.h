@@ -12,6 +12,8 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <vector>
 
@@ -91,7 +93,9 @@ Dart orient_star(Dart d, Mobius_mesh<P>& m)
   // Walk the fan from a face dart, turning each next face to agree with the last.
   Dart c = m.is_border(d) ? m.opposite(m.next(d)) : d; // a face dart into v
   Dart start = c;
-  const std::size_t n = star_faces(d, m).size();
+  std::size_t n = 0; // faces around v
+  for (Dart x : CGAL_ext::halfedges_around_target(d, m))
+    n += m.is_border(x) ? 0 : 1;
   for (std::size_t k = 1; k < n; ++k) {
     const Dart out = m.next(c);
     const Dart across = m.opposite(out);
