@@ -6,7 +6,7 @@
 // default the Surface_mesh is converted back (gluing the seam) and OUT is the
 // round trip, which has the input's topology; with --cut, OUT is the
 // Surface_mesh's oriented cut mesh. Prints the counts of what is written as
-// one line of JSON:
+// one line of JSON (Möbius edges counted once oriented, as every tool does):
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"mobius_edges":M,
 //    "orientable":true|false,"closed":true|false,"components":C,
 //    "euler_characteristic":X,"valid":true|false}
@@ -23,43 +23,45 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <algorithm>
-#include <exception>
-#include <iostream>
 #include <string>
 
 namespace {
 
-int fail(const std::string& what) { return examples::fail("convert", what); }
+const examples::Tool_usage usage{
+  "convert", "convert IN OUT [--cut]",
+  "Reads a polygon mesh (.obj, .off, .ply) and converts it to a CGAL::Surface_mesh: orientable\n"
+  "meshes as they are, non-orientable ones cut along their Möbius edges with the cut recorded in\n"
+  "a seam map. OUT is the round trip back (the seam glued), with the input's topology, or with\n"
+  "  --cut   the Surface_mesh's oriented cut mesh as it is.\n"
+  "Prints the counts of what is written as one line of JSON, as mesh_info does (Möbius edges\n"
+  "counted once a copy is oriented).\n"};
 
-} // namespace
-
-int main(int argc, char* argv[])
+int convert(int argc, char** argv)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
-  const bool cut = argc == 4 && std::string(argv[3]) == "--cut";
-  if (argc != 3 && !cut)
-    return fail("usage: convert IN OUT [--cut] (.obj, .off or .ply polygon meshes)");
-  try {
-    Mesh mesh;
-    CGAL_ext::IO::read_polygon_mesh(argv[1], mesh);
-    CGAL::Surface_mesh<Kernel::Point_3> sm;
-    CGAL_ext::to_surface_mesh(mesh, sm);
-    if (cut) {
-      // The cut mesh as it is: drop the records, so nothing is glued back.
-      if (auto seam = sm.property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name);
-          seam.second)
-        sm.remove_property_map(seam.first);
-      if (auto flag = sm.property_map<CGAL::SM_Face_index, bool>(CGAL_ext::reversed_faces_map_name); flag.second)
-        sm.remove_property_map(flag.first);
-    }
-    Mesh out;
-    CGAL_ext::from_surface_mesh(sm, out);
-    CGAL_ext::IO::write_polygon_mesh(argv[2], out);
-    examples::print_mesh_summary(out);
-  } catch (const std::exception& e) {
-    return fail(e.what());
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {}, {"--cut"});
+  if (args.positional.size() != 2)
+    throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
+  Mesh mesh;
+  CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  CGAL::Surface_mesh<Kernel::Point_3> sm;
+  CGAL_ext::to_surface_mesh(mesh, sm);
+  if (args.has("--cut")) {
+    // The cut mesh as it is: drop the records, so nothing is glued back.
+    if (auto seam = sm.property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name);
+        seam.second)
+      sm.remove_property_map(seam.first);
+    if (auto flag = sm.property_map<CGAL::SM_Face_index, bool>(CGAL_ext::reversed_faces_map_name); flag.second)
+      sm.remove_property_map(flag.first);
   }
+  Mesh out;
+  CGAL_ext::from_surface_mesh(sm, out);
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], out);
+  examples::print_mesh_summary(out);
   return 0;
 }
+
+} // namespace
+
+int main(int argc, char* argv[]) { return examples::run_tool(usage, argc, argv, [&] { return convert(argc, argv); }); }

@@ -25,10 +25,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <iostream>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 
 namespace S = CGAL_ext::Subdivision;
@@ -57,58 +55,59 @@ struct Warren_loop_mask
   }
 };
 
-int main(int argc, char** argv)
+namespace {
+
+const examples::Tool_usage usage{
+  "custom_mask", "custom_mask [OUT] [--levels N]",
+  "Loop subdivision with Warren's vertex weights, a user-defined mask: subdivides a triangulated\n"
+  "Boy's surface N times (0 to 10, default 3) with it and with the built-in Loop mask, writes the\n"
+  "result to OUT if given (.obj, .off, .ply) and prints one JSON line: the result's counts and\n"
+  "the largest distance between the two results.\n"};
+
+int custom_mask(int argc, char** argv)
 {
   using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
-  try {
-    std::string out;
-    unsigned levels = 3;
-    for (int i = 1; i < argc; ++i) {
-      const std::string a = argv[i];
-      if (a == "--levels" && i + 1 < argc) {
-        char* end = nullptr;
-        const long n = std::strtol(argv[++i], &end, 10);
-        if (*end != '\0' || n < 0 || n > 10)
-          throw std::invalid_argument("bad value for --levels (0 to 10)");
-        levels = unsigned(n);
-      } else if (a.rfind("--", 0) != 0 && out.empty()) {
-        out = a;
-      } else {
-        throw std::invalid_argument("usage: custom_mask [OUT] [--levels N]");
-      }
-    }
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--levels"});
+  if (args.positional.size() > 1)
+    throw examples::Usage_error("expected at most one file name, got " + std::to_string(args.positional.size()));
+  const std::string out = args.positional.empty() ? "" : args.positional[0];
+  const unsigned levels = unsigned(examples::integer_argument("--levels", args.value("--levels", "3"), 0, 10));
 
-    // Boy's surface of quads, each cut into two triangles.
-    CGAL_ext::Mobius_mesh<Point> quads;
-    CGAL_ext::make_projective_plane(quads, 4);
-    std::vector<std::array<std::size_t, 3>> triangles;
-    for (CGAL_ext::Face_index f : quads.faces()) {
-      std::vector<std::size_t> vs;
-      for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, quads))
-        vs.push_back(v.idx());
-      for (std::size_t i = 1; i + 1 < vs.size(); ++i)
-        triangles.push_back({vs[0], vs[i], vs[i + 1]});
-    }
-    CGAL_ext::Mobius_mesh<Point> warren;
-    CGAL_ext::polygon_soup_to_mobius_mesh(quads.points().data(), triangles, warren);
-    CGAL_ext::Mobius_mesh<Point> loop = warren;
-
-    const auto np = CGAL_ext::parameters::number_of_iterations(levels);
-    S::subdivide(warren, Warren_loop_mask(), np);
-    S::loop(loop, np);
-
-    double largest = 0;
-    for (CGAL_ext::Vertex_index v : warren.vertices())
-      largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(warren.point(v), loop.point(v))));
-    if (!out.empty())
-      CGAL_ext::IO::write_polygon_mesh(out, warren);
-
-    std::cout << "{\"mask\":\"warren_loop\",\"levels\":" << levels << ",\"distance_to_loop\":" << largest << ",";
-    std::ostringstream summary;
-    examples::print_mesh_summary(warren, summary);
-    std::cout << summary.str().substr(1); // the summary's fields, in the same object
-  } catch (const std::exception& e) {
-    return examples::fail("custom_mask", e.what());
+  // Boy's surface of quads, each cut into two triangles.
+  CGAL_ext::Mobius_mesh<Point> quads;
+  CGAL_ext::make_projective_plane(quads, 4);
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for (CGAL_ext::Face_index f : quads.faces()) {
+    std::vector<std::size_t> vs;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, quads))
+      vs.push_back(v.idx());
+    for (std::size_t i = 1; i + 1 < vs.size(); ++i)
+      triangles.push_back({vs[0], vs[i], vs[i + 1]});
   }
+  CGAL_ext::Mobius_mesh<Point> warren;
+  CGAL_ext::polygon_soup_to_mobius_mesh(quads.points().data(), triangles, warren);
+  CGAL_ext::Mobius_mesh<Point> loop = warren;
+
+  const auto np = CGAL_ext::parameters::number_of_iterations(levels);
+  S::subdivide(warren, Warren_loop_mask(), np);
+  S::loop(loop, np);
+
+  double largest = 0;
+  for (CGAL_ext::Vertex_index v : warren.vertices())
+    largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(warren.point(v), loop.point(v))));
+  if (!out.empty())
+    CGAL_ext::IO::write_polygon_mesh(out, warren);
+
+  std::cout << "{\"mask\":\"warren_loop\",\"levels\":" << levels << ",\"distance_to_loop\":" << largest << ",";
+  std::ostringstream summary;
+  examples::print_mesh_summary(warren, summary);
+  std::cout << summary.str().substr(1); // the summary's fields, in the same object
   return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  return examples::run_tool(usage, argc, argv, [&] { return custom_mask(argc, argv); });
 }

@@ -1,20 +1,9 @@
-// merge A B OUT [--tolerance T] [--strategy auto|keep-first|keep-second|average|bridge]
+// merge A B OUT [--tolerance T] [--strategy auto|keep-first|keep-second|average|bridge] [--loops I,J]
 //
-// Reads two polygon meshes (OBJ, OFF or PLY) and merges B's borders into A's:
-// * auto (the default): border vertices within T (default 0: exact
-//   coincidence) are glued, following the borders as far as they run
-//   together; border edges that run the same way become Möbius edges;
-// * keep-first, keep-second, average, bridge: the first border loop of A is
-//   glued to the border loop of B that comes nearest to it, starting at the
-//   B vertex nearest to the loop's first vertex and walking B's loop the way
-//   that keeps the two walks together. Vertices keep A's positions, take B's,
-//   move to the midpoints, or stay put with new faces bridging the gap.
-// Writes the result to OUT and prints its counts as one line of JSON:
-//   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"mobius_edges":M,
-//    "orientable":true|false,"closed":true|false,"components":C,
-//    "euler_characteristic":X,"valid":true|false}
-// On bad input or usage it prints one line "merge: <what>" on stderr and
-// exits with status 2.
+// Reads two polygon meshes (OBJ, OFF or PLY), merges B's borders into A's,
+// writes the result to OUT and prints its counts as one line of JSON (see
+// the description below). On bad input or usage it prints one line
+// "merge: <what>" on stderr and exits with status 2.
 
 #include "mesh_summary.h"
 
@@ -25,11 +14,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <algorithm>
-#include <cstdlib>
-#include <exception>
-#include <iostream>
-#include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,88 +23,77 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 
-int fail(const std::string& what) { return examples::fail("merge", what); }
+const examples::Tool_usage usage{
+  "merge", "merge A B OUT [--tolerance T] [--strategy auto|keep-first|keep-second|average|bridge] [--loops I,J]",
+  "Reads two polygon meshes (.obj, .off, .ply), merges the borders of B into those of A and\n"
+  "writes the result to OUT (format by extension).\n"
+  "  --strategy auto         (the default) glue border vertices within the tolerance of each\n"
+  "                          other, following the borders as far as they run together\n"
+  "  --tolerance T           the largest distance glued by auto (default 0: coincident only)\n"
+  "  --strategy keep-first, keep-second, average, bridge\n"
+  "                          glue the borders that face each other, wherever they are: the two\n"
+  "                          loops with the nearest two border vertices, their mutually\n"
+  "                          nearest parts (the whole loops of two tubes end to end, the facing\n"
+  "                          ends of two strip halves), paired from their nearest vertices the\n"
+  "                          way that does not twist; vertices keep A's positions, take B's,\n"
+  "                          move to the midpoints, or stay put with quads and triangles\n"
+  "                          bridging the gap\n"
+  "  --loops I,J             with those strategies: glue the whole border loops I of A and J of\n"
+  "                          B instead (numbered from 0, as CGAL_ext::border_cycles lists them)\n"
+  "Prints the counts of the result as one line of JSON: vertices, edges, faces, border_loops,\n"
+  "mobius_edges (left once oriented), orientable, closed, components, euler_characteristic,\n"
+  "valid.\n"};
 
-// The border darts of B's loops that pair with A's first loop: the dart into
-// the B vertex nearest to the loop's first vertex, walking either way round,
-// whichever puts the next vertex nearer to A's next vertex.
-std::pair<CGAL_ext::Dart, CGAL_ext::Dart> choose_loops(const Mesh& a, const Mesh& b)
+const std::map<std::string, CGAL_ext::Merge_strategy> manual_strategies = {
+  {"keep-first", CGAL_ext::Merge_strategy::keep_first},
+  {"keep-second", CGAL_ext::Merge_strategy::keep_second},
+  {"average", CGAL_ext::Merge_strategy::average},
+  {"bridge", CGAL_ext::Merge_strategy::bridge}};
+
+// The border loop numbered `text` of `mesh` ("A" or "B").
+CGAL_ext::Dart loop_numbered(const Mesh& mesh, const std::string& text, const char* which)
 {
-  const std::vector<CGAL_ext::Dart> loops_a = CGAL_ext::border_cycles(a), loops_b = CGAL_ext::border_cycles(b);
-  if (loops_a.empty() || loops_b.empty())
-    throw CGAL_ext::Merge_error(CGAL_ext::Merge_error::Kind::not_a_border,
-                                std::string(loops_a.empty() ? "A" : "B") + " has no border to merge", {});
-  const CGAL_ext::Dart da = loops_a.front();
-  const auto& p = a.point(a.target(da));
-  const auto& p_next = a.point(a.target(a.next(da)));
-  CGAL_ext::Dart best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (CGAL_ext::Dart loop : loops_b)
-    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(loop, b)) {
-      const double dist = CGAL::to_double(CGAL::squared_distance(p, b.point(b.target(d))));
-      if (dist < best_distance) {
-        best_distance = dist;
-        best = d;
-      }
-    }
-  // The other way round: the dart into the same vertex from its other neighbour.
-  const CGAL_ext::Dart other = b.next(best).flipped();
-  const double forward = CGAL::to_double(CGAL::squared_distance(p_next, b.point(b.target(b.next(best)))));
-  const double backward = CGAL::to_double(CGAL::squared_distance(p_next, b.point(b.target(b.next(other)))));
-  return {da, backward < forward ? other : best};
+  const std::vector<CGAL_ext::Dart> loops = CGAL_ext::border_cycles(mesh);
+  if (loops.empty())
+    throw examples::Usage_error(std::string("--loops: ") + which + " has no border loop");
+  const long max = long(loops.size()) - 1;
+  return loops[std::size_t(examples::integer_argument(std::string("--loops: the loop of ") + which, text, 0, max))];
+}
+
+int merge(int argc, char** argv)
+{
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--tolerance", "--strategy", "--loops"});
+  if (args.positional.size() != 3)
+    throw examples::Usage_error("expected three file names, got " + std::to_string(args.positional.size()));
+  const double tolerance = examples::real_argument("the tolerance", args.value("--tolerance", "0"));
+  const std::string strategy = args.value("--strategy", "auto");
+  const auto manual = manual_strategies.find(strategy);
+  if (strategy != "auto" && manual == manual_strategies.end())
+    throw examples::Usage_error("unknown strategy '" + strategy + "'");
+  if (strategy == "auto" && args.has("--loops"))
+    throw examples::Usage_error("--loops needs a manual strategy");
+  std::string loops = args.value("--loops", "");
+  const std::size_t comma = loops.find(',');
+  if (args.has("--loops") && comma == std::string::npos)
+    throw examples::Usage_error("--loops takes two numbers I,J, not '" + loops + "'");
+
+  Mesh a, b;
+  CGAL_ext::IO::read_polygon_mesh(args.positional[0], a);
+  CGAL_ext::IO::read_polygon_mesh(args.positional[1], b);
+  if (strategy == "auto") {
+    CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(tolerance));
+  } else {
+    const CGAL_ext::Border_pairing pairing =
+      args.has("--loops") ? CGAL_ext::aligned_border_loops(a, loop_numbered(a, loops.substr(0, comma), "A"), b,
+                                                           loop_numbered(b, loops.substr(comma + 1), "B"))
+                          : CGAL_ext::facing_borders(a, b);
+    CGAL_ext::merge_borders(a, b, pairing, manual->second);
+  }
+  CGAL_ext::IO::write_polygon_mesh(args.positional[2], a);
+  examples::print_mesh_summary(a);
+  return 0;
 }
 
 } // namespace
 
-int main(int argc, char* argv[])
-{
-  const std::string usage =
-    "usage: merge A B OUT [--tolerance T] [--strategy auto|keep-first|keep-second|average|bridge]";
-  if (argc < 4)
-    return fail(usage);
-  double tolerance = 0;
-  std::string strategy = "auto";
-  for (int i = 4; i < argc; ++i) {
-    const std::string option = argv[i];
-    if (i + 1 >= argc)
-      return fail("option " + option + " needs a value; " + usage);
-    const std::string value = argv[++i];
-    if (option == "--tolerance") {
-      char* end = nullptr;
-      tolerance = std::strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0')
-        return fail("the tolerance '" + value + "' is not a number");
-    } else if (option == "--strategy") {
-      strategy = value;
-    } else {
-      return fail("unknown option " + option + "; " + usage);
-    }
-  }
-  try {
-    Mesh a, b;
-    CGAL_ext::IO::read_polygon_mesh(argv[1], a);
-    CGAL_ext::IO::read_polygon_mesh(argv[2], b);
-    if (strategy == "auto") {
-      CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(tolerance));
-    } else {
-      CGAL_ext::Merge_strategy s;
-      if (strategy == "keep-first")
-        s = CGAL_ext::Merge_strategy::keep_first;
-      else if (strategy == "keep-second")
-        s = CGAL_ext::Merge_strategy::keep_second;
-      else if (strategy == "average")
-        s = CGAL_ext::Merge_strategy::average;
-      else if (strategy == "bridge")
-        s = CGAL_ext::Merge_strategy::bridge;
-      else
-        return fail("unknown strategy '" + strategy + "'; " + usage);
-      const auto [da, db] = choose_loops(a, b);
-      CGAL_ext::merge_borders(a, da, b, db, s);
-    }
-    CGAL_ext::IO::write_polygon_mesh(argv[3], a);
-    examples::print_mesh_summary(a);
-  } catch (const std::exception& e) {
-    return fail(e.what());
-  }
-  return 0;
-}
+int main(int argc, char* argv[]) { return examples::run_tool(usage, argc, argv, [&] { return merge(argc, argv); }); }

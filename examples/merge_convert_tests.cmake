@@ -31,6 +31,10 @@ foreach(_file ${_files})
   add_test(NAME convert.cut.${_name} COMMAND convert ${_file} ${_out}/cut_${_name}.obj --cut)
   set_tests_properties(convert.cut.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
     "^{\"vertices\":[0-9]+,\"edges\":[0-9]+,\"faces\":${CMAKE_MATCH_3},\"border_loops\":[0-9]+,\"mobius_edges\":0,\"orientable\":true,.*\"valid\":true}\n$")
+  # One rule for the Möbius edge count: convert and mesh_info agree.
+  add_test(NAME convert.same_mobius_count.${_name}
+    COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:mesh_info> -DCONVERT=$<TARGET_FILE:convert> -DFILE=${_file}
+            -DOUT=${_out}/count_${_name}.obj -P ${CMAKE_CURRENT_SOURCE_DIR}/same_mobius_count.cmake)
 endforeach()
 # A Möbius strip cut along a transversal arc is a disc (chi 1, one border loop).
 add_test(NAME convert.cut.mobius_is_a_disc COMMAND convert ${_data}/mobius_20x4_quads.obj ${_out}/cut_disc.obj --cut)
@@ -39,7 +43,8 @@ set_tests_properties(convert.cut.mobius_is_a_disc PROPERTIES PASS_REGULAR_EXPRES
 add_test(NAME convert.fails.missing_file COMMAND convert ${_data}/no_such_file.obj ${_out}/x.obj)
 set_tests_properties(convert.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION "${_fails}")
 add_test(NAME convert.fails.usage COMMAND convert)
-set_tests_properties(convert.fails.usage PROPERTIES PASS_REGULAR_EXPRESSION "^convert: usage")
+set_tests_properties(convert.fails.usage PROPERTIES PASS_REGULAR_EXPRESSION
+  "^convert: expected two file names, got 0; usage: convert IN OUT \\[--cut\\]\n$")
 
 # merge: two copies of a Möbius strip (100 V, 180 E, 80 F, a 40-edge border)
 # glued along their borders are a Klein bottle: 160 V, 320 E, 160 F, closed, chi 0.
@@ -63,8 +68,58 @@ add_test(NAME merge.fails.negative_tolerance COMMAND merge ${_data}/mobius_20x4_
          ${_data}/mobius_20x4_quads.obj ${_out}/x.obj --tolerance -1)
 set_tests_properties(merge.fails.negative_tolerance PROPERTIES PASS_REGULAR_EXPRESSION "^merge: [^\n]*tolerance[^\n]*\n$")
 add_test(NAME merge.fails.unequal_loops COMMAND merge ${_data}/mobius_20x4_quads.obj
-         ${_data}/mobius_min_5tris.obj ${_out}/x.obj --strategy average)
-set_tests_properties(merge.fails.unequal_loops PROPERTIES PASS_REGULAR_EXPRESSION "^merge: [^\n]*40 and 5 edges[^\n]*\n$")
+         ${_data}/mobius_min_5tris.obj ${_out}/x.obj --strategy average --loops 0,0)
+set_tests_properties(merge.fails.unequal_loops PROPERTIES PASS_REGULAR_EXPRESSION
+  "^merge: [^\n]*40 \\(a whole loop\\) and 5 \\(a whole loop\\) edges[^\n]*\n$")
+
+# The manual strategies glue the borders that face each other. Two tubes of
+# 8 quads end to end (z 0..1 and 1.5..2.5): A's upper loop meets B's lower
+# one, the tube grows to 24 V, 16 F, chi 0, 2 loops, and the glued ring lies
+# at z 1, 1.5 or their midpoint 1.25; bridging adds 8 quads (32 V, 24 F).
+# Two halves of a square strip (x 0..1 and 1.5..2.5, 2x2 quads each): their
+# facing sides (3 vertices) are glued, not whole loops: a disc of
+# 9 + 9 - 3 = 15 V, 8 F, chi 1, one loop; bridging adds 2 quads (18 V, 10 F).
+set(_merge_data ${PROJECT_SOURCE_DIR}/test/data/merge)
+set(_check ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+foreach(_case "tube;z;0\\;1.25\\;2.5;average" "tube;z;0\\;1\\;2.5;keep-first" "tube;z;0\\;1.5\\;2.5;keep-second"
+              "tube;z;0\\;1\\;1.5\\;2.5;bridge"
+              "strip;x;0\\;0.5\\;1.25\\;2\\;2.5;average" "strip;x;0\\;0.5\\;1\\;2\\;2.5;keep-first"
+              "strip;x;0\\;0.5\\;1.5\\;2\\;2.5;keep-second" "strip;x;0\\;0.5\\;1\\;1.5\\;2\\;2.5;bridge")
+  list(GET _case 0 _shape)
+  list(GET _case 1 _axis)
+  list(GET _case -1 _strategy)
+  list(SUBLIST _case 2 -1 _levels)
+  list(REMOVE_AT _levels -1)
+  if(_shape STREQUAL "tube")
+    set(_a ${_merge_data}/tube_z0_z1.obj)
+    set(_b ${_merge_data}/tube_z1.5_z2.5.obj)
+    set(_counts "\"vertices\":24,\"edges\":40,\"faces\":16,\"border_loops\":2,\"mobius_edges\":0,\"orientable\":true,\"closed\":false,\"components\":1,\"euler_characteristic\":0")
+    if(_strategy STREQUAL "bridge")
+      set(_counts "\"vertices\":32,\"edges\":56,\"faces\":24,\"border_loops\":2,\"mobius_edges\":0,\"orientable\":true,\"closed\":false,\"components\":1,\"euler_characteristic\":0")
+    endif()
+  else()
+    set(_a ${_merge_data}/strip_x0_x1.obj)
+    set(_b ${_merge_data}/strip_x1.5_x2.5.obj)
+    set(_counts "\"vertices\":15,\"edges\":22,\"faces\":8,\"border_loops\":1,\"mobius_edges\":0,\"orientable\":true,\"closed\":false,\"components\":1,\"euler_characteristic\":1")
+    if(_strategy STREQUAL "bridge")
+      set(_counts "\"vertices\":18,\"edges\":27,\"faces\":10,\"border_loops\":1,\"mobius_edges\":0,\"orientable\":true,\"closed\":false,\"components\":1,\"euler_characteristic\":1")
+    endif()
+  endif()
+  add_test(NAME merge.facing.${_shape}.${_strategy}
+    COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:merge>
+            "-DARGS=${_a};${_b};${_out}/facing_${_shape}_${_strategy}.obj;--strategy;${_strategy}"
+            "-DSTDOUT=^{${_counts},\"valid\":true}\n$" -DOUTPUT=${_out}/facing_${_shape}_${_strategy}.obj
+            -DAXIS=${_axis} "-DLEVELS=${_levels}" -P ${_check})
+endforeach()
+# --loops chooses whole loops: the two strip halves' loops glued whole close into a sphere (10 V, 8 F).
+add_test(NAME merge.loops.strip_sphere COMMAND merge ${_merge_data}/strip_x0_x1.obj ${_merge_data}/strip_x1.5_x2.5.obj
+         ${_out}/strip_sphere.obj --strategy average --loops 0,0)
+set_tests_properties(merge.loops.strip_sphere PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":10,\"edges\":16,\"faces\":8,\"border_loops\":0,\"mobius_edges\":0,\"orientable\":true,\"closed\":true,\"components\":1,\"euler_characteristic\":2,\"valid\":true}\n$")
+add_test(NAME merge.fails.loop_out_of_range COMMAND merge ${_merge_data}/tube_z0_z1.obj
+         ${_merge_data}/tube_z1.5_z2.5.obj ${_out}/x.obj --strategy average --loops 0,2)
+set_tests_properties(merge.fails.loop_out_of_range PROPERTIES PASS_REGULAR_EXPRESSION
+  "^merge: --loops: the loop of B '2' is not an integer from 0 to 1; usage: merge [^\n]*\n$")
 add_test(NAME merge.fails.missing_file COMMAND merge ${_data}/no_such_file.obj ${_data}/mobius_20x4_quads.obj ${_out}/x.obj)
 set_tests_properties(merge.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION "${_fails}")
 

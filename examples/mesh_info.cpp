@@ -1,7 +1,7 @@
 // mesh_info FILE
 //
-// Reads an OBJ, OFF or PLY file into a Mobius_mesh, orients it (fewest
-// Möbius edges), and prints its topology as one line of JSON:
+// Reads an OBJ, OFF or PLY file into a Mobius_mesh and prints its topology
+// as one line of JSON (Möbius edges counted once oriented, as every tool does):
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"mobius_edges":M,
 //    "orientable":true|false,"closed":true|false,"components":C,
 //    "euler_characteristic":X,"valid":true|false}
@@ -16,30 +16,32 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <algorithm>
-#include <exception>
-#include <iostream>
 #include <string>
 
 namespace {
 
-int fail(const std::string& what) { return examples::fail("mesh_info", what); }
+const examples::Tool_usage usage{
+  "mesh_info", "mesh_info FILE",
+  "Reads a polygon mesh (.obj with OpenSubdiv's tags, .off, .ply) and prints its topology as one\n"
+  "line of JSON: vertices, edges, faces, border_loops, mobius_edges, orientable, closed,\n"
+  "components, euler_characteristic, valid. mobius_edges counts the Möbius edges left once a\n"
+  "copy is oriented with CGAL_ext::orient() (as few as it finds), as every tool counts them.\n"};
+
+int mesh_info(int argc, char** argv)
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {});
+  if (args.positional.size() != 1)
+    throw examples::Usage_error("expected one file name, got " + std::to_string(args.positional.size()));
+  CGAL_ext::Mobius_mesh<Kernel::Point_3> mesh;
+  CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  examples::print_mesh_summary(mesh);
+  return 0;
+}
 
 } // namespace
 
 int main(int argc, char* argv[])
 {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
-  if (argc != 2)
-    return fail("usage: mesh_info FILE (an .obj, .off or .ply polygon mesh)");
-  try {
-    Mesh mesh;
-    CGAL_ext::IO::read_polygon_mesh(argv[1], mesh);
-    CGAL_ext::orient(mesh);
-    examples::print_mesh_summary(mesh);
-  } catch (const std::exception& e) {
-    return fail(e.what());
-  }
-  return 0;
+  return examples::run_tool(usage, argc, argv, [&] { return mesh_info(argc, argv); });
 }

@@ -4,13 +4,15 @@
 //
 // Usage: mobius_walk [n_around n_across]
 
+#include "arguments.h"
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 
-#include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <string>
 
 using Kernel = CGAL::Simple_cartesian<double>;
@@ -55,25 +57,25 @@ void walk_around(const Mesh& m, Vertex_index v)
   std::cout << "\n  back at the start: " << faces << " faces, " << m.degree(v) << " edges.\n";
 }
 
-} // namespace
+const examples::Tool_usage usage{
+  "mobius_walk", "mobius_walk [N_AROUND N_ACROSS]",
+  "Builds a Möbius strip of N_AROUND x N_ACROSS quads (default 12 x 2; N_AROUND at least 3,\n"
+  "N_ACROSS at least 1) and walks around vertices on its seam, printing each step in the words\n"
+  "of the source design (Y. Wang, 2015): sibling and Möbius sibling links, successor and\n"
+  "predecessor links, boundary and Möbius boundary links; then the one border loop.\n"};
 
-int main(int argc, char** argv)
+int walk(int argc, char** argv)
 {
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {});
   std::size_t n_around = 12, n_across = 2;
-  if (argc == 3) {
-    n_around = std::strtoul(argv[1], nullptr, 10);
-    n_across = std::strtoul(argv[2], nullptr, 10);
-  } else if (argc != 1) {
-    std::cerr << "mobius_walk: usage: mobius_walk [n_around n_across]\n";
-    return 2;
+  if (args.positional.size() == 2) {
+    n_around = std::size_t(examples::integer_argument("N_AROUND", args.positional[0], 3, std::numeric_limits<int>::max()));
+    n_across = std::size_t(examples::integer_argument("N_ACROSS", args.positional[1], 1, std::numeric_limits<int>::max()));
+  } else if (!args.positional.empty()) {
+    throw examples::Usage_error("expected no number or two, got " + std::to_string(args.positional.size()));
   }
   Mesh m;
-  try {
-    CGAL_ext::make_mobius_strip(m, n_around, n_across);
-  } catch (const std::exception& e) {
-    std::cerr << "mobius_walk: " << e.what() << "\n";
-    return 2;
-  }
+  CGAL_ext::make_mobius_strip(m, n_around, n_across);
   CGAL_ext::orient(m);
   std::cout << "Möbius strip of " << n_around << " x " << n_across << " quads with one half-twist: "
             << m.number_of_vertices() << " vertices, " << m.number_of_edges() << " edges, "
@@ -106,3 +108,7 @@ int main(int argc, char** argv)
             << " Möbius boundary links.\n";
   return 0;
 }
+
+} // namespace
+
+int main(int argc, char** argv) { return examples::run_tool(usage, argc, argv, [&] { return walk(argc, argv); }); }

@@ -7,6 +7,8 @@
 // surface has the same topology as the input: the same Euler characteristic,
 // border loops and orientability.
 
+#include "arguments.h"
+
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -23,48 +25,63 @@
 
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-int main(int argc, char* argv[])
+namespace {
+
+const examples::Tool_usage usage{
+  "pmp_on_mobius", "pmp_on_mobius [FILE]",
+  "Runs CGAL's Polygon Mesh Processing on a non-orientable surface: the mesh in FILE (.obj,\n"
+  ".off, .ply; by default a Möbius strip of 20 x 4 quads) is oriented, cut along its Möbius\n"
+  "edges into a CGAL::Surface_mesh, triangulated and measured there by CGAL, and glued back\n"
+  "along the recorded seam. Prints each step; exits 1 if the topology changed.\n"};
+
+int pmp_on_mobius(int argc, char** argv)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
-  const std::string file = argc > 1 ? argv[1] : CGAL_EXT_EXAMPLE_DATA_DIR "/mobius_20x4_quads.obj";
-  try {
-    Mesh mesh;
-    CGAL_ext::IO::read_polygon_mesh(file, mesh);
-    // Fewest Möbius edges first: they are where the surface is cut.
-    const std::size_t seam = CGAL_ext::orient(mesh);
-    std::cout << "input: " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces()
-              << " faces, chi = " << CGAL_ext::euler_characteristic(mesh) << ", "
-              << (CGAL_ext::is_orientable(mesh) ? "orientable" : "non-orientable") << ", " << seam
-              << " Möbius edges\n";
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {});
+  if (args.positional.size() > 1)
+    throw examples::Usage_error("expected at most one file name, got " + std::to_string(args.positional.size()));
+  const std::string file = args.positional.empty() ? CGAL_EXT_EXAMPLE_DATA_DIR "/mobius_20x4_quads.obj"
+                                                   : args.positional[0];
+  Mesh mesh;
+  CGAL_ext::IO::read_polygon_mesh(file, mesh);
+  // Fewest Möbius edges first: they are where the surface is cut.
+  const std::size_t seam = CGAL_ext::orient(mesh);
+  std::cout << "input: " << mesh.number_of_vertices() << " vertices, " << mesh.number_of_faces()
+            << " faces, chi = " << CGAL_ext::euler_characteristic(mesh) << ", "
+            << (CGAL_ext::is_orientable(mesh) ? "orientable" : "non-orientable") << ", " << seam
+            << " Möbius edges\n";
 
-    CGAL::Surface_mesh<Kernel::Point_3> sm;
-    const auto cut = CGAL_ext::to_surface_mesh(mesh, sm);
-    std::cout << "cut into a Surface_mesh: " << sm.number_of_vertices() << " vertices (" << cut.added_vertices
-              << " seam copies), " << cut.seam_edges << " edges cut, "
-              << (CGAL::is_valid_polygon_mesh(sm) ? "valid" : "INVALID") << "\n";
+  CGAL::Surface_mesh<Kernel::Point_3> sm;
+  const auto cut = CGAL_ext::to_surface_mesh(mesh, sm);
+  std::cout << "cut into a Surface_mesh: " << sm.number_of_vertices() << " vertices (" << cut.added_vertices
+            << " seam copies), " << cut.seam_edges << " edges cut, "
+            << (CGAL::is_valid_polygon_mesh(sm) ? "valid" : "INVALID") << "\n";
 
-    // CGAL algorithms on the oriented cut mesh. Triangulation adds diagonals
-    // inside faces only, so the seam's border halfedges keep their indices
-    // and the seam map stays true.
-    PMP::triangulate_faces(sm);
-    std::cout << "CGAL triangulated it: " << sm.number_of_faces() << " triangles, area " << PMP::area(sm)
-              << " (PMP::area needs triangles)\n";
+  // CGAL algorithms on the oriented cut mesh. Triangulation adds diagonals
+  // inside faces only, so the seam's border halfedges keep their indices
+  // and the seam map stays true.
+  PMP::triangulate_faces(sm);
+  std::cout << "CGAL triangulated it: " << sm.number_of_faces() << " triangles, area " << PMP::area(sm)
+            << " (PMP::area needs triangles)\n";
 
-    Mesh back;
-    CGAL_ext::from_surface_mesh(sm, back);
-    const bool same_topology = CGAL_ext::euler_characteristic(back) == CGAL_ext::euler_characteristic(mesh) &&
-                               CGAL_ext::number_of_border_cycles(back) == CGAL_ext::number_of_border_cycles(mesh) &&
-                               CGAL_ext::is_orientable(back) == CGAL_ext::is_orientable(mesh) && back.is_valid();
-    std::cout << "glued back: " << back.number_of_vertices() << " vertices, " << back.number_of_edges() << " edges, "
-              << back.number_of_faces() << " faces, chi = " << CGAL_ext::euler_characteristic(back) << ", "
-              << CGAL_ext::number_of_border_cycles(back) << " border loop(s), "
-              << (CGAL_ext::is_orientable(back) ? "orientable" : "non-orientable") << ", "
-              << CGAL_ext::number_of_mobius_edges(back) << " Möbius edges: "
-              << (same_topology ? "same topology" : "TOPOLOGY CHANGED") << std::endl;
-    return same_topology ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::cerr << "pmp_on_mobius: " << e.what() << std::endl;
-    return 2;
-  }
+  Mesh back;
+  CGAL_ext::from_surface_mesh(sm, back);
+  const bool same_topology = CGAL_ext::euler_characteristic(back) == CGAL_ext::euler_characteristic(mesh) &&
+                             CGAL_ext::number_of_border_cycles(back) == CGAL_ext::number_of_border_cycles(mesh) &&
+                             CGAL_ext::is_orientable(back) == CGAL_ext::is_orientable(mesh) && back.is_valid();
+  std::cout << "glued back: " << back.number_of_vertices() << " vertices, " << back.number_of_edges() << " edges, "
+            << back.number_of_faces() << " faces, chi = " << CGAL_ext::euler_characteristic(back) << ", "
+            << CGAL_ext::number_of_border_cycles(back) << " border loop(s), "
+            << (CGAL_ext::is_orientable(back) ? "orientable" : "non-orientable") << ", "
+            << CGAL_ext::number_of_mobius_edges(back) << " Möbius edges: "
+            << (same_topology ? "same topology" : "TOPOLOGY CHANGED") << std::endl;
+  return same_topology ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  return examples::run_tool(usage, argc, argv, [&] { return pmp_on_mobius(argc, argv); });
 }

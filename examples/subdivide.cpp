@@ -1,12 +1,10 @@
 // subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N]
 //   [--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner]
-//   [--crease-method uniform|chaikin] [--kernel double|epick|epeck]
+//   [--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck]
 //
 // Reads a mesh (OBJ with OpenSubdiv's tags, OFF, PLY), subdivides it and
-// writes the result (format by extension). The OBJ tags give the defaults of
-// --boundary and --crease-method; flags override them. Prints one JSON line
-// with the result's counts and the subdivision time (without I/O). Bad input
-// or options: one line on stderr, exit status 2.
+// writes the result (format by extension); see the usage text below. Bad
+// input or options: one line on stderr, exit status 2.
 
 #include "mesh_summary.h"
 
@@ -18,20 +16,34 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <iostream>
 #include <map>
-#include <stdexcept>
+#include <optional>
 #include <string>
 
 namespace {
 
 namespace S = CGAL_ext::Subdivision;
 
-struct Usage_error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+const examples::Tool_usage usage{
+  "subdivide",
+  "subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N] "
+  "[--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner] "
+  "[--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck]",
+  "Reads a mesh (.obj with OpenSubdiv's tags, .off, .ply), subdivides it and writes the result to\n"
+  "OUT (format by extension; an OBJ keeps the tags).\n"
+  "  --scheme          catmull-clark (the default), loop, linear, doo-sabin or sqrt3\n"
+  "  --levels N        subdivision steps, 0 to 15 (default 1)\n"
+  "  --vertex-rule     standard, or edge-points (the smooth vertex rule averages the new edge\n"
+  "                    points instead of the old neighbours)\n"
+  "  --boundary        border rule: none, edge-only, edge-and-corner\n"
+  "  --crease-method   uniform or chaikin (semi-sharp creases)\n"
+  "  --triangles       catmark, or smooth: OpenSubdiv's smooth-triangle rule, a smoother\n"
+  "                    Catmull-Clark edge rule next to triangles (OBJ tag 't smoothtriangles')\n"
+  "  --kernel          double (the default), epick or epeck\n"
+  "The OBJ tags give the defaults of --boundary (else edge-only), --crease-method (else uniform)\n"
+  "and --triangles (else catmark); flags override them. Prints one JSON line with the result's\n"
+  "counts and the subdivision time (without I/O).\n"};
 
 struct Settings
 {
@@ -40,63 +52,56 @@ struct Settings
   S::Vertex_rule vertex_rule = S::Vertex_rule::standard;
   std::optional<CGAL_ext::Boundary_interpolation> boundary;
   std::optional<CGAL_ext::Crease_method> crease_method;
+  std::optional<CGAL_ext::Triangle_subdivision> triangles;
 };
 
+// The value of `option` among `choices`, if given.
 template <class T>
-T pick(const std::map<std::string, T>& choices, const std::string& option, const std::string& value)
+std::optional<T> pick(const examples::Arguments& args, const std::string& option,
+                      const std::map<std::string, T>& choices)
 {
+  if (!args.has(option))
+    return std::nullopt;
+  const std::string value = args.value(option, "");
   const auto it = choices.find(value);
   if (it == choices.end())
-    throw Usage_error("bad value '" + value + "' for " + option);
+    throw examples::Usage_error("bad value '" + value + "' for " + option);
   return it->second;
 }
 
 Settings parse(int argc, char** argv)
 {
+  const examples::Arguments args = examples::parse_arguments(
+    argc, argv,
+    {"--scheme", "--levels", "--vertex-rule", "--boundary", "--crease-method", "--triangles", "--kernel"});
+  if (args.positional.size() != 2)
+    throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   Settings s;
-  int positional = 0;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a.rfind("--", 0) != 0) {
-      (positional++ == 0 ? s.in : s.out) = a;
-      if (positional > 2)
-        throw Usage_error("too many file names");
-      continue;
-    }
-    if (i + 1 >= argc)
-      throw Usage_error("missing value for " + a);
-    const std::string v = argv[++i];
-    if (a == "--scheme")
-      s.scheme = pick<std::string>({{"catmull-clark", "catmull-clark"}, {"loop", "loop"}, {"linear", "linear"},
-                                    {"doo-sabin", "doo-sabin"}, {"sqrt3", "sqrt3"}},
-                                   a, v);
-    else if (a == "--levels") {
-      char* end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || v.empty() || n < 0 || n > 15)
-        throw Usage_error("bad value '" + v + "' for --levels (0 to 15)");
-      s.levels = unsigned(n);
-    } else if (a == "--vertex-rule")
-      s.vertex_rule = pick<S::Vertex_rule>(
-        {{"standard", S::Vertex_rule::standard}, {"edge-points", S::Vertex_rule::edge_points}}, a, v);
-    else if (a == "--boundary")
-      s.boundary = pick<CGAL_ext::Boundary_interpolation>(
-        {{"none", CGAL_ext::Boundary_interpolation::none},
-         {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
-         {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}},
-        a, v);
-    else if (a == "--crease-method")
-      s.crease_method = pick<CGAL_ext::Crease_method>(
-        {{"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}}, a, v);
-    else if (a == "--kernel")
-      s.kernel = pick<std::string>({{"double", "double"}, {"epick", "epick"}, {"epeck", "epeck"}}, a, v);
-    else
-      throw Usage_error("unknown option " + a);
-  }
-  if (positional != 2)
-    throw Usage_error("usage: subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N] "
-                      "[--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner] "
-                      "[--crease-method uniform|chaikin] [--kernel double|epick|epeck]");
+  s.in = args.positional[0];
+  s.out = args.positional[1];
+  const std::map<std::string, std::string> schemes = {{"catmull-clark", "catmull-clark"}, {"loop", "loop"},
+                                                      {"linear", "linear"}, {"doo-sabin", "doo-sabin"},
+                                                      {"sqrt3", "sqrt3"}};
+  s.scheme = pick(args, "--scheme", schemes).value_or(s.scheme);
+  s.kernel = pick<std::string>(args, "--kernel", {{"double", "double"}, {"epick", "epick"}, {"epeck", "epeck"}})
+               .value_or(s.kernel);
+  if (args.has("--levels"))
+    s.levels = unsigned(examples::integer_argument("--levels", args.value("--levels", ""), 0, 15));
+  s.vertex_rule = pick<S::Vertex_rule>(args, "--vertex-rule",
+                                       {{"standard", S::Vertex_rule::standard},
+                                        {"edge-points", S::Vertex_rule::edge_points}})
+                    .value_or(s.vertex_rule);
+  s.boundary = pick<CGAL_ext::Boundary_interpolation>(
+    args, "--boundary",
+    {{"none", CGAL_ext::Boundary_interpolation::none},
+     {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
+     {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}});
+  s.crease_method = pick<CGAL_ext::Crease_method>(
+    args, "--crease-method",
+    {{"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}});
+  s.triangles = pick<CGAL_ext::Triangle_subdivision>(
+    args, "--triangles",
+    {{"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}});
   return s;
 }
 
@@ -117,7 +122,8 @@ void run(const Settings& s)
   const auto boundary =
     s.boundary ? *s.boundary : tags.boundary_interpolation.value_or(CGAL_ext::Boundary_interpolation::edge_only);
   const auto crease = s.crease_method ? *s.crease_method : tags.crease_method.value_or(CGAL_ext::Crease_method::uniform);
-  const auto triangles = tags.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark);
+  const auto triangles =
+    s.triangles ? *s.triangles : tags.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark);
   const auto np = CGAL_ext::parameters::number_of_iterations(s.levels)
                     .boundary_interpolation(boundary)
                     .crease_method(crease)
@@ -142,26 +148,28 @@ void run(const Settings& s)
   CGAL_ext::Sharp_feature_options out_tags = tags;
   out_tags.boundary_interpolation = boundary;
   out_tags.crease_method = crease;
+  out_tags.triangle_subdivision = triangles;
   CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
   std::cout << "{\"scheme\":\"" << s.scheme << "\",\"kernel\":\"" << s.kernel << "\",\"levels\":" << s.levels
             << ",\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
             << ",\"faces\":" << mesh.number_of_faces() << ",\"seconds\":" << seconds << "}" << std::endl;
 }
 
+int subdivide(int argc, char** argv)
+{
+  const Settings s = parse(argc, argv);
+  if (s.kernel == "epick")
+    run<CGAL::Exact_predicates_inexact_constructions_kernel>(s);
+  else if (s.kernel == "epeck")
+    run<CGAL::Exact_predicates_exact_constructions_kernel>(s);
+  else
+    run<CGAL::Simple_cartesian<double>>(s);
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  try {
-    const Settings s = parse(argc, argv);
-    if (s.kernel == "epick")
-      run<CGAL::Exact_predicates_inexact_constructions_kernel>(s);
-    else if (s.kernel == "epeck")
-      run<CGAL::Exact_predicates_exact_constructions_kernel>(s);
-    else
-      run<CGAL::Simple_cartesian<double>>(s);
-  } catch (const std::exception& e) {
-    return examples::fail("subdivide", e.what());
-  }
-  return 0;
+  return examples::run_tool(usage, argc, argv, [&] { return subdivide(argc, argv); });
 }

@@ -4,7 +4,8 @@
 # the cube: a vertex per corner, a face per face, edge and vertex, 24/48/26;
 # sqrt3 of the 160-triangle strip, 1 step: 3 triangles per face, border
 # edges kept; linear: each triangle into four, each quad into four: 26/48/24
-# on the cube), and bad options or input exit with status 2.
+# on the cube), --triangles does what the OBJ tag does, and bad options or
+# input exit with status 2.
 if(CGAL_EXT_BUILD_TESTS)
   set(_data ${PROJECT_SOURCE_DIR}/test/data)
   add_test(NAME example.subdivide.cube
@@ -40,6 +41,21 @@ if(CGAL_EXT_BUILD_TESTS)
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --levels x)
   add_test(NAME example.subdivide.loop_on_quads
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme loop)
+  # --triangles smooth does what the OBJ tag 't smoothtriangles 0/0/1 smooth' does: OpenSubdiv's
+  # shape with the tag, and the same shape without it but with the flag, give the same file
+  # (points and tags); without either, Catmull-Clark's own triangle rule gives another.
+  file(STRINGS ${_data}/opensubdiv/catmark_smoothtris1.obj _lines)
+  list(FILTER _lines EXCLUDE REGEX "^t smoothtriangles")
+  list(JOIN _lines "\n" _untagged)
+  set(_plain ${CMAKE_CURRENT_BINARY_DIR}/smoothtris_untagged.obj)
+  file(WRITE ${_plain} "${_untagged}\n")
+  set(_o ${CMAKE_CURRENT_BINARY_DIR}/smoothtris)
+  add_test(NAME example.subdivide.triangles_flag_as_tag
+           COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:subdivide>
+                   "-DFIRST=${_data}/opensubdiv/catmark_smoothtris1.obj;${_o}_tag.obj;--levels;2" -DFIRST_OUT=${_o}_tag.obj
+                   "-DSECOND=${_plain};${_o}_flag.obj;--levels;2;--triangles;smooth" -DSECOND_OUT=${_o}_flag.obj
+                   "-DDIFFERENT=${_plain};${_o}_catmark.obj;--levels;2" -DDIFFERENT_OUT=${_o}_catmark.obj
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/same_output.cmake)
   set_tests_properties(example.subdivide.sqrt3_on_quads example.subdivide.bad_option
                        example.subdivide.loop_on_quads PROPERTIES WILL_FAIL TRUE)
 endif()

@@ -10,10 +10,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -598,6 +600,226 @@ TEST(MergeManual, MismatchedChainsAndBadDartsAreRefused)
     EXPECT_EQ(e.kind(), CGAL_ext::Merge_error::Kind::not_a_border);
   }
   expect_same(lower, lower0);
+}
+
+// ---------------------------------------------------------------------------- facing borders
+
+// An open tube around the z axis from z0 to z1, one ring of quads facing
+// outward. With `square` the cross-section is the unit square [0,1]² with
+// `n` / 4 vertices per side (exact coordinates); otherwise the regular
+// n-gon of radius 1.
+template <class P>
+Mesh<P> tube(int n, double z0, double z1, bool square, bool reversed = false)
+{
+  using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
+  std::vector<std::pair<FT, FT>> ring;
+  const double pi = std::acos(-1.0);
+  const double corners[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+  for (int i = 0; i < n; ++i) {
+    if (square) {
+      const int side = i / (n / 4), s = i % (n / 4);
+      const double* a = corners[side];
+      const double* b = corners[side + 1];
+      ring.emplace_back(FT(a[0]) + (FT(b[0]) - FT(a[0])) * s / (n / 4), FT(a[1]) + (FT(b[1]) - FT(a[1])) * s / (n / 4));
+    } else {
+      ring.emplace_back(std::cos(2 * pi * i / n), std::sin(2 * pi * i / n));
+    }
+  }
+  std::vector<P> points;
+  for (double z : {z0, z1})
+    for (const auto& [x, y] : ring)
+      points.emplace_back(x, y, FT(z));
+  std::vector<std::vector<std::size_t>> quads;
+  for (std::size_t i = 0, un = std::size_t(n); i < un; ++i) {
+    std::vector<std::size_t> q = {i, (i + 1) % un, un + (i + 1) % un, un + i};
+    if (reversed)
+      std::reverse(q.begin(), q.end());
+    quads.push_back(q);
+  }
+  return from_soup(points, quads);
+}
+
+// The square [x0, x0 + 1] x [0, 1] at z = 0 in columns x rows quads.
+template <class P>
+Mesh<P> strip_half(double x0, int columns, int rows)
+{
+  using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
+  std::vector<P> points;
+  for (int i = 0; i <= columns; ++i)
+    for (int r = 0; r <= rows; ++r)
+      points.emplace_back(FT(x0) + FT(i) / columns, FT(r) / rows, FT(0));
+  std::vector<std::vector<std::size_t>> quads;
+  auto id = [rows](int i, int r) { return std::size_t(i * (rows + 1) + r); };
+  for (int i = 0; i < columns; ++i)
+    for (int r = 0; r < rows; ++r)
+      quads.push_back({id(i, r), id(i + 1, r), id(i + 1, r + 1), id(i, r + 1)});
+  return from_soup(points, quads);
+}
+
+template <class P>
+std::set<std::string> distinct(const Mesh<P>& m, int coordinate)
+{
+  std::set<std::string> values;
+  for (auto v : m.vertices()) {
+    std::ostringstream s;
+    s << CGAL::to_double(m.point(v)[coordinate]);
+    values.insert(s.str());
+  }
+  return values;
+}
+
+// Two tubes end to end (z 0..1 and 1.5..2.5): the loops that face each other
+// are A's upper one and B's lower one, whichever way B's faces turn, and the
+// pairing neither twists nor shifts: every glued vertex stays above the
+// square's own points.
+TEST(MergeFacing, TubesEndToEndEpeck)
+{
+  using P = Epeck::Point_3;
+  using FT = Epeck::FT;
+  const int n = 8;
+  const Mesh<P> a = tube<P>(n, 0, 1, true);
+  for (bool reversed : {false, true}) {
+    SCOPED_TRACE(reversed ? "B's faces reversed" : "both facing outward");
+    const Mesh<P> b = tube<P>(n, 1.5, 2.5, true, reversed);
+    const CGAL_ext::Border_pairing pairing = CGAL_ext::facing_borders(a, b);
+    EXPECT_EQ(pairing.first_edges, std::size_t(n));
+    EXPECT_EQ(pairing.second_edges, std::size_t(n));
+    EXPECT_EQ(a.point(a.source(pairing.first)).z(), FT(1));
+    EXPECT_EQ(b.point(b.source(pairing.second)).z(), FT(3) / 2);
+    const std::pair<CGAL_ext::Merge_strategy, FT> cases[] = {{CGAL_ext::Merge_strategy::keep_first, FT(1)},
+                                                             {CGAL_ext::Merge_strategy::keep_second, FT(3) / 2},
+                                                             {CGAL_ext::Merge_strategy::average, FT(5) / 4}};
+    for (const auto& [strategy, z] : cases) {
+      SCOPED_TRACE("strategy " + std::to_string(int(strategy)));
+      Mesh<P> m = a;
+      const auto r = CGAL_ext::merge_borders(m, b, pairing, strategy);
+      ASSERT_TRUE(m.is_valid(true));
+      EXPECT_EQ(r.glued_edges, std::size_t(n));
+      // Faces reversed on one side: the glued edges run the same way.
+      EXPECT_EQ(r.mobius_edges, reversed ? std::size_t(n) : 0u);
+      EXPECT_EQ(m.number_of_vertices(), std::size_t(3 * n));
+      EXPECT_EQ(m.number_of_faces(), std::size_t(2 * n));
+      EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+      EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 2u);
+      EXPECT_TRUE(CGAL_ext::is_orientable(m));
+      std::set<FT> levels;
+      for (auto v : m.vertices())
+        levels.insert(m.point(v).z());
+      EXPECT_EQ(levels, (std::set<FT>{FT(0), z, FT(5) / 2}));
+      EXPECT_EQ(distinct(m, 0), distinct(a, 0));
+      EXPECT_EQ(distinct(m, 1), distinct(a, 1));
+    }
+  }
+}
+
+// Two halves of a strip side by side (x 0..1 and 1.5..2.5): every strategy
+// glues the facing sides, not the whole loops (which would close a sphere).
+TEST(MergeFacing, StripHalvesGlueTheirFacingSides)
+{
+  using P = Epeck::Point_3;
+  using FT = Epeck::FT;
+  const int columns = 2, rows = 3;
+  const Mesh<P> a = strip_half<P>(0, columns, rows), b = strip_half<P>(1.5, columns, rows);
+  const CGAL_ext::Border_pairing pairing = CGAL_ext::facing_borders(a, b);
+  EXPECT_EQ(pairing.first_edges, std::size_t(rows));
+  EXPECT_EQ(pairing.second_edges, std::size_t(rows));
+  const std::size_t v_half = (columns + 1) * (rows + 1), f_half = columns * rows;
+  const std::pair<CGAL_ext::Merge_strategy, FT> cases[] = {{CGAL_ext::Merge_strategy::keep_first, FT(1)},
+                                                           {CGAL_ext::Merge_strategy::keep_second, FT(3) / 2},
+                                                           {CGAL_ext::Merge_strategy::average, FT(5) / 4},
+                                                           {CGAL_ext::Merge_strategy::bridge, FT(1)}};
+  for (const auto& [strategy, x] : cases) {
+    SCOPED_TRACE("strategy " + std::to_string(int(strategy)));
+    const bool bridge = strategy == CGAL_ext::Merge_strategy::bridge;
+    Mesh<P> m = a;
+    const auto r = CGAL_ext::merge_borders(m, b, pairing, strategy);
+    ASSERT_TRUE(m.is_valid(true));
+    // A disc: the rows + 1 facing vertices glued, or rows quads bridging.
+    EXPECT_EQ(m.number_of_vertices(), 2 * v_half - (bridge ? 0 : rows + 1));
+    EXPECT_EQ(m.number_of_faces(), 2 * f_half + (bridge ? rows : 0));
+    EXPECT_EQ(r.new_faces, bridge ? std::size_t(rows) : 0u);
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), 1);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 1u);
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 0u);
+    std::size_t on_the_seam = 0;
+    for (auto v : m.vertices())
+      on_the_seam += m.point(v).x() == x ? 1 : 0;
+    EXPECT_EQ(on_the_seam, std::size_t(rows + 1));
+  }
+}
+
+// The bridge rule: chains of n and m edges get max(n, m) faces, min(n, m)
+// quads and |n - m| triangles; here regular 6-, 8- and 8-gon tubes (whole
+// loops) and strip sides of 2 and 3 edges (open chains).
+TEST(MergeFacing, BridgeQuadsAndTrianglesFollowTheRule)
+{
+  using P = Kd::Point_3;
+  struct Case
+  {
+    int n, m;
+  };
+  for (const Case c : {Case{6, 8}, Case{8, 6}, Case{8, 8}, Case{3, 8}}) {
+    SCOPED_TRACE(std::to_string(c.n) + " and " + std::to_string(c.m) + " edges");
+    Mesh<P> m = tube<P>(c.n, 0, 1, false);
+    const Mesh<P> b = tube<P>(c.m, 1.5, 2.5, false);
+    const CGAL_ext::Border_pairing pairing = CGAL_ext::facing_borders(m, b);
+    ASSERT_EQ(pairing.first_edges, std::size_t(c.n));
+    ASSERT_EQ(pairing.second_edges, std::size_t(c.m));
+    const auto r = CGAL_ext::merge_borders(m, b, pairing, CGAL_ext::Merge_strategy::bridge);
+    ASSERT_TRUE(m.is_valid(true));
+    const std::size_t shortest = std::size_t(std::min(c.n, c.m)), longest = std::size_t(std::max(c.n, c.m));
+    EXPECT_EQ(r.new_faces, longest);
+    std::size_t quads = 0, triangles = 0;
+    for (auto f : m.faces())
+      (m.degree(f) == 4 ? quads : triangles) += 1;
+    EXPECT_EQ(quads, std::size_t(c.n + c.m) + shortest);
+    EXPECT_EQ(triangles, longest - shortest);
+    EXPECT_EQ(m.number_of_vertices(), std::size_t(2 * (c.n + c.m)));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 2u);
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 0u);
+  }
+  // Open chains: the sides x = 1 (2 edges) and x = 1.5 (3 edges).
+  Mesh<P> m = strip_half<P>(0, 2, 2);
+  const Mesh<P> b = strip_half<P>(1.5, 2, 3);
+  const CGAL_ext::Border_pairing pairing = CGAL_ext::facing_borders(m, b);
+  ASSERT_EQ(pairing.first_edges, 2u);
+  ASSERT_EQ(pairing.second_edges, 3u);
+  const Mesh<P> m0 = m;
+  EXPECT_THROW(CGAL_ext::merge_borders(m, b, pairing, CGAL_ext::Merge_strategy::average), CGAL_ext::Merge_error);
+  expect_same(m, m0);
+  const auto r = CGAL_ext::merge_borders(m, b, pairing, CGAL_ext::Merge_strategy::bridge);
+  ASSERT_TRUE(m.is_valid(true));
+  EXPECT_EQ(r.new_faces, 3u);
+  std::size_t triangles = 0;
+  for (auto f : m.faces())
+    triangles += m.degree(f) == 3 ? 1 : 0;
+  EXPECT_EQ(triangles, 1u);
+  EXPECT_EQ(m.number_of_vertices(), 9u + 12u);
+  EXPECT_EQ(m.number_of_faces(), 4u + 6u + 3u);
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 1);
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 1u);
+}
+
+// aligned_border_loops: whole loops of one's choice, paired without a twist.
+TEST(MergeFacing, ChosenLoopsAreAlignedWhole)
+{
+  using P = Epeck::Point_3;
+  const Mesh<P> a = strip_half<P>(0, 2, 2), b = strip_half<P>(1.5, 2, 2);
+  const CGAL_ext::Border_pairing pairing =
+    CGAL_ext::aligned_border_loops(a, CGAL_ext::border_cycles(a)[0], b, CGAL_ext::border_cycles(b)[0]);
+  EXPECT_EQ(pairing.first_edges, 8u);
+  EXPECT_EQ(pairing.second_edges, 8u);
+  Mesh<P> m = a;
+  CGAL_ext::merge_borders(m, b, pairing, CGAL_ext::Merge_strategy::keep_first);
+  ASSERT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_vertices(), 10u); // the two squares' borders as one: a sphere
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 2);
+  EXPECT_TRUE(CGAL_ext::is_closed(m));
+  // A closed mesh has no border to face anything.
+  EXPECT_THROW(CGAL_ext::facing_borders(a, from_soup<P>({P(0, 0, 5), P(1, 0, 5), P(0, 1, 5), P(0, 0, 6)},
+                                                         {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}})),
+               CGAL_ext::Merge_error);
 }
 
 } // namespace

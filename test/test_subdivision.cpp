@@ -889,6 +889,30 @@ TEST(SubdivisionApi, BadInputLeavesMeshUnchanged)
     EXPECT_EQ(m.point(v), before.point(v));
 }
 
+// A negative sharpness means nothing (OpenSubdiv's sharpness is a number of
+// levels): refused as NaN is, naming the edge or vertex, not taken as smooth.
+TEST(SubdivisionApi, NegativeSharpnessIsRefused)
+{
+  for (bool on_edge : {true, false}) {
+    SCOPED_TRACE(on_edge ? "edge" : "vertex");
+    Mesh m = load("opensubdiv/catmark_cube.obj");
+    if (on_edge)
+      CGAL_ext::edge_sharpness_map(m)[CGAL_ext::Edge_index(2)] = -1.0f;
+    else
+      CGAL_ext::vertex_sharpness_map(m)[CGAL_ext::Vertex_index(3)] = -0.5f;
+    const Mesh before = m;
+    for (int scheme = 0; scheme < 2; ++scheme) {
+      try {
+        scheme == 0 ? S::catmull_clark(m) : S::doo_sabin(m);
+        ADD_FAILURE() << "a negative sharpness was accepted";
+      } catch (const CGAL_ext::Parameter_error& e) {
+        EXPECT_NE(std::string(e.what()).find(on_edge ? "edge e2 " : "vertex v3 "), std::string::npos) << e.what();
+      }
+      EXPECT_EQ(m.number_of_faces(), before.number_of_faces());
+    }
+  }
+}
+
 TEST(SubdivisionApi, EdgePointsVertexRule)
 {
   // On the cube, the variant rule at a corner of valence 3:

@@ -16,6 +16,7 @@
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
 #include <CGAL_ext/internal/Close_points.h>
+#include <CGAL_ext/internal/Nearest_points.h>
 #include <CGAL_ext/internal/Union_find.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -58,6 +60,20 @@ enum class Merge_strategy {
   keep_second, ///< glued vertices take the second mesh's positions
   average,     ///< glued vertices move to the midpoint
   bridge       ///< nothing moves: new faces fill the gap (quads, triangles where the chains differ)
+};
+
+/// \ingroup PkgMobiusMeshMerge
+/// Two border chains for the manual `merge_borders()`: each starts with its
+/// dart and is walked with `next()` (a flipped dart walks its loop the other
+/// way), the k-th edges of the two walks corresponding. A chain of as many
+/// edges as its border loop is the whole loop. `facing_borders()` and
+/// `aligned_border_loops()` find one.
+struct Border_pairing
+{
+  Dart first;                   ///< a border dart of the first mesh, the first edge of its chain
+  Dart second;                  ///< a border dart of the second mesh, the first edge of its chain
+  std::size_t first_edges = 0;  ///< the number of edges of the first chain
+  std::size_t second_edges = 0; ///< the number of edges of the second chain
 };
 
 namespace internal {
@@ -330,17 +346,205 @@ Merge_result merge_borders_impl(Mobius_mesh<P>& target, const Mobius_mesh<P>& wo
   return result;
 }
 
-// The border loop of dart `d` as a vertex chain (targets, walking next from d).
 template <class P>
-std::vector<std::uint32_t> border_chain(const Mobius_mesh<P>& m, Dart d, const char* which)
+void check_border_dart(const Mobius_mesh<P>& m, Dart d, const char* which)
 {
   if (!m.is_valid(d) || !m.is_border(d))
     throw Merge_error(Merge_error::Kind::not_a_border,
                       std::string("the dart given for the ") + which + " mesh is not a border dart", {});
-  std::vector<std::uint32_t> chain;
-  for (Dart c : CGAL_ext::halfedges_around_face(d, m))
-    chain.push_back(m.target(c).idx());
+}
+
+// The number of edges of the border loop of `d`.
+template <class P>
+std::size_t loop_length(const Mobius_mesh<P>& m, Dart d)
+{
+  std::size_t n = 0;
+  for (Dart c : CGAL_ext::halfedges_around_face(d, m)) {
+    (void)c;
+    ++n;
+  }
+  return n;
+}
+
+// A chain of border edges to glue: its vertices (one more than its darts; on
+// a whole loop the last is the first again) and its darts.
+struct Border_chain
+{
+  std::vector<std::uint32_t> vertices;
+  std::vector<Dart> darts;
+  bool whole_loop = false;
+  std::size_t edges() const { return darts.size(); }
+};
+
+// The chain of `edges` edges walked with next() from `d`, vertex indices shifted by `offset`.
+template <class P>
+Border_chain border_chain(const Mobius_mesh<P>& m, Dart d, std::size_t edges, std::uint32_t offset, const char* which)
+{
+  check_border_dart(m, d, which);
+  const std::size_t loop_length = internal::loop_length(m, d);
+  if (edges == 0 || edges > loop_length)
+    throw Merge_error(Merge_error::Kind::mismatched_chains,
+                      std::string("the ") + which + " chain has " + std::to_string(edges) +
+                        " edges; its border loop has " + std::to_string(loop_length) + " (at least 1 needed)",
+                      {m.source(d).idx() + std::size_t(offset)});
+  Border_chain chain;
+  chain.whole_loop = edges == loop_length;
+  chain.vertices.push_back(m.source(d).idx() + offset);
+  for (Dart c = d; chain.darts.size() < edges; c = m.next(c)) {
+    chain.darts.push_back(c);
+    chain.vertices.push_back(m.target(c).idx() + offset);
+  }
   return chain;
+}
+
+// The faces bridging chains of n and m edges (vertex lists of n + 1 and
+// m + 1): max(n, m) faces. Each face advances the longer chain by one edge;
+// the shorter chain advances on min(n, m) of them, spread evenly (the k-th
+// face advances it iff floor((k + 1) min / max) > floor(k min / max)). So
+// min(n, m) quads, where both advance, and |n - m| triangles.
+inline std::vector<std::vector<std::uint32_t>> bridge_faces(const std::vector<std::uint32_t>& a,
+                                                            const std::vector<std::uint32_t>& b)
+{
+  const std::size_t n = a.size() - 1, m = b.size() - 1;
+  const std::size_t longest = (std::max)(n, m), shortest = (std::min)(n, m);
+  std::vector<std::vector<std::uint32_t>> faces;
+  std::size_t i = 0, j = 0;
+  for (std::size_t k = 0; k < longest; ++k) {
+    const bool shorter_advances = (k + 1) * shortest / longest > k * shortest / longest;
+    const bool a_advances = n >= m || shorter_advances, b_advances = m >= n || shorter_advances;
+    if (a_advances && b_advances)
+      faces.push_back({a[i], a[i + 1], b[j + 1], b[j]});
+    else if (a_advances)
+      faces.push_back({a[i], a[i + 1], b[j]});
+    else
+      faces.push_back({a[i], b[j + 1], b[j]});
+    i += a_advances ? 1 : 0;
+    j += b_advances ? 1 : 0;
+  }
+  return faces;
+}
+
+// A border loop walked with next() from one of its darts: darts[i] runs
+// into the i-th vertex, whose point (rounded to doubles) is points[i].
+struct Border_walk
+{
+  std::vector<Dart> darts;
+  std::vector<Nearest_points::Point> points;
+  std::size_t size() const { return darts.size(); }
+  // The dart leaving the i-th vertex, walking on (next) or back (flipped).
+  Dart leaving(std::size_t i, bool back) const { return back ? darts[i].flipped() : darts[(i + 1) % size()]; }
+};
+
+template <class P>
+Border_walk border_walk(const Mobius_mesh<P>& m, Dart d)
+{
+  Border_walk w;
+  for (Dart c : CGAL_ext::halfedges_around_face(d, m)) {
+    w.darts.push_back(c);
+    w.points.push_back(Nearest_points::rounded(m.point(m.target(c))));
+  }
+  return w;
+}
+
+// Squared distances compared with a relative slack: vertices placed
+// symmetrically tie only up to rounding.
+inline bool no_farther(double d2, double nearest_d2) { return d2 <= nearest_d2 * (1 + 1e-9); }
+
+// The sum of squared distances of the pairing of two whole loops from their
+// vertices i0 and j0, b walked on or back: the k-th vertex of a (of n) with
+// the floor(k m / n)-th of b (of m).
+inline double pairing_cost(const Border_walk& a, std::size_t i0, const Border_walk& b, std::size_t j0, bool back)
+{
+  const std::size_t n = a.size(), m = b.size();
+  double cost = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t step = k * m / n;
+    cost += CGAL::squared_distance(a.points[(i0 + k) % n], b.points[back ? (j0 + m - step) % m : (j0 + step) % m]);
+  }
+  return cost;
+}
+
+// Whole loops from the vertices i0 of a and j0 of b, b walked the way that
+// keeps the two walks nearer: the pairing twists only where the loops do.
+inline Border_pairing whole_loops(const Border_walk& a, std::size_t i0, const Border_walk& b, std::size_t j0)
+{
+  const bool back = pairing_cost(a, i0, b, j0, true) < pairing_cost(a, i0, b, j0, false);
+  return {a.leaving(i0, false), b.leaving(j0, back), a.size(), b.size()};
+}
+
+// For each vertex of `from`: whether it is (up to ties) the vertex of `from`
+// nearest to its own nearest vertex of `to`.
+inline std::vector<bool> mutually_nearest(const Border_walk& from, const Border_walk& to)
+{
+  const Nearest_points near_from(from.points), near_to(to.points);
+  std::vector<bool> mutual(from.size());
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    const auto [j, d2] = near_to.nearest(from.points[i]);
+    mutual[i] = no_farther(d2, near_from.nearest(to.points[j]).second);
+  }
+  return mutual;
+}
+
+// The run of consecutive `true`s around position s of a cyclic sequence:
+// its first position and its length (the whole loop: every position).
+inline std::pair<std::size_t, std::size_t> run_around(const std::vector<bool>& in_run, std::size_t s)
+{
+  const std::size_t n = in_run.size();
+  std::size_t before = 0, after = 0;
+  while (after + 1 < n && in_run[(s + after + 1) % n])
+    ++after;
+  while (before + after + 1 < n && in_run[(s + n - before - 1) % n])
+    ++before;
+  return {(s + n - before) % n, before + after + 1};
+}
+
+// The parts of two border loops that face each other, from a nearest pair
+// of their vertices (i0 of a, j0 of b): the runs of mutually nearest
+// vertices around them, or the whole loops if either run is a whole loop.
+inline Border_pairing facing_parts(const Border_walk& a, std::size_t i0, const Border_walk& b, std::size_t j0)
+{
+  const auto [first_a, length_a] = run_around(mutually_nearest(a, b), i0);
+  const auto [first_b, length_b] = run_around(mutually_nearest(b, a), j0);
+  if (length_a == a.size() || length_b == b.size())
+    return whole_loops(a, i0, b, j0);
+  const std::size_t last_a = (first_a + length_a - 1) % a.size(), last_b = (first_b + length_b - 1) % b.size();
+  // b's chain starts at the end nearer to the start of a's.
+  const auto d2 = [](const Nearest_points::Point& p, const Nearest_points::Point& q) {
+    return CGAL::squared_distance(p, q);
+  };
+  const bool back = d2(a.points[first_a], b.points[last_b]) + d2(a.points[last_a], b.points[first_b]) <
+                    d2(a.points[first_a], b.points[first_b]) + d2(a.points[last_a], b.points[last_b]);
+  return {a.leaving(first_a, false), b.leaving(back ? last_b : first_b, back), length_a - 1, length_b - 1};
+}
+
+// The vertex of `walks_a` nearest to a vertex of `walks_b` (a loop and a
+// position in each); the first such pair on ties.
+struct Nearest_pair
+{
+  std::size_t loop_a = 0, i = 0, loop_b = 0, j = 0;
+};
+
+inline Nearest_pair nearest_pair(const std::vector<Border_walk>& walks_a, const std::vector<Border_walk>& walks_b)
+{
+  std::vector<Nearest_points::Point> points;
+  std::vector<std::pair<std::size_t, std::size_t>> where;
+  for (std::size_t k = 0; k < walks_b.size(); ++k)
+    for (std::size_t j = 0; j < walks_b[k].size(); ++j) {
+      points.push_back(walks_b[k].points[j]);
+      where.emplace_back(k, j);
+    }
+  const Nearest_points near_b(std::move(points));
+  Nearest_pair best;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < walks_a.size(); ++k)
+    for (std::size_t i = 0; i < walks_a[k].size(); ++i) {
+      const auto [at, d2] = near_b.nearest(walks_a[k].points[i]);
+      if (d2 < best_d2) {
+        best_d2 = d2;
+        best = {k, i, where[at].first, where[at].second};
+      }
+    }
+  return best;
 }
 
 } // namespace internal
@@ -419,21 +623,79 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = par
 
 /// \ingroup PkgMobiusMeshMerge
 ///
-/// Glues the border loop of `border_b` in `mesh_b` to the border loop of
-/// `border_a` in `mesh_a`, whatever the distance between them, and puts the
-/// result in `mesh_a`. The loops are walked with `next()` from the two darts,
-/// in step: the i-th vertex of one corresponds to the i-th vertex of the
-/// other, starting with the targets of `border_a` and `border_b`. Pass a
-/// flipped dart to walk a loop the other way. If the two loops are walked
-/// against the orientation of their faces in opposite senses (one dart
-/// flipped, one not), the glue is orientable; otherwise the glued edges are
-/// Möbius edges.
+/// The border parts of `mesh_a` and `mesh_b` that face each other, for the
+/// manual `merge_borders()`:
+/// 1. the two border loops that hold the nearest two border vertices (one of
+///    each mesh);
+/// 2. on them, the runs of *mutually nearest* vertices around that pair (a
+///    vertex is in the run if it is the vertex of its loop nearest to its own
+///    nearest vertex of the other loop, ties allowed): the ends of two strip
+///    halves facing each other, or, if either run is its whole loop, the
+///    whole loops (the facing ends of two tubes);
+/// 3. the correspondence: whole loops start at the nearest pair and the
+///    second loop is walked the way that keeps the pairing nearer (the sum of
+///    squared distances of corresponding vertices), so that the glue twists
+///    only where the geometry does; open chains start at the nearer pairing of
+///    their ends.
+///
+/// Distances are measured on the points rounded to doubles (a choice of what
+/// to glue, not a geometric decision). The chains may differ in length:
+/// only `Merge_strategy::bridge` joins those.
+/// \throws Merge_error `not_a_border` if a mesh has no border.
+template <class P>
+Border_pairing facing_borders(const Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b)
+{
+  const std::vector<Dart> loops_a = CGAL_ext::border_cycles(mesh_a), loops_b = CGAL_ext::border_cycles(mesh_b);
+  if (loops_a.empty() || loops_b.empty())
+    throw Merge_error(Merge_error::Kind::not_a_border,
+                      std::string("the ") + (loops_a.empty() ? "first" : "second") + " mesh has no border", {});
+  std::vector<internal::Border_walk> walks_a, walks_b;
+  for (Dart d : loops_a)
+    walks_a.push_back(internal::border_walk(mesh_a, d));
+  for (Dart d : loops_b)
+    walks_b.push_back(internal::border_walk(mesh_b, d));
+  const internal::Nearest_pair p = internal::nearest_pair(walks_a, walks_b);
+  return internal::facing_parts(walks_a[p.loop_a], p.i, walks_b[p.loop_b], p.j);
+}
+
+/// \ingroup PkgMobiusMeshMerge
+///
+/// The whole border loops of `loop_a` in `mesh_a` and `loop_b` in `mesh_b`
+/// (any of their border darts), paired as `facing_borders()` pairs whole
+/// loops: from their nearest two vertices, the second loop walked the way
+/// that keeps the pairing nearer.
+/// \throws Merge_error `not_a_border` if a dart is not a border dart.
+template <class P>
+Border_pairing aligned_border_loops(const Mobius_mesh<P>& mesh_a, Dart loop_a, const Mobius_mesh<P>& mesh_b,
+                                    Dart loop_b)
+{
+  internal::check_border_dart(mesh_a, loop_a, "first");
+  internal::check_border_dart(mesh_b, loop_b, "second");
+  const std::vector<internal::Border_walk> walk_a{internal::border_walk(mesh_a, loop_a)},
+    walk_b{internal::border_walk(mesh_b, loop_b)};
+  const internal::Nearest_pair p = internal::nearest_pair(walk_a, walk_b);
+  return internal::whole_loops(walk_a[0], p.i, walk_b[0], p.j);
+}
+
+/// \ingroup PkgMobiusMeshMerge
+///
+/// Glues the border chain `pairing.second` of `mesh_b` to the chain
+/// `pairing.first` of `mesh_a`, whatever the distance between them, and puts
+/// the result in `mesh_a`. The chains are walked with `next()` from their
+/// darts, in step: the k-th edges correspond, and so do the k-th vertices
+/// (the darts' sources first). If the two chains are walked against the
+/// orientation of their faces in opposite senses (one dart flipped, one
+/// not), the glue is orientable; otherwise the glued edges are Möbius edges.
 ///
 /// - `Merge_strategy::keep_first`, `keep_second`, `average`: corresponding
 ///   vertices are identified at `mesh_a`'s position, `mesh_b`'s, or their
-///   midpoint (exact with an exact kernel). The loops must have the same length.
-/// - `Merge_strategy::bridge`: nothing moves; new faces join the loops, quads
-///   where both advance together, triangles where one loop is longer.
+///   midpoint (exact with an exact kernel). The chains must have the same
+///   number of edges and be both whole loops or both open.
+/// - `Merge_strategy::bridge`: nothing moves; chains of n and m edges are
+///   joined by max(n, m) new faces, each advancing the longer chain by one
+///   edge: min(n, m) quads, where the shorter chain advances too, spread
+///   evenly (the k-th face advances it iff floor((k+1) min / max) >
+///   floor(k min / max)), and |n - m| triangles.
 ///
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
@@ -445,22 +707,22 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = par
 /// \cgalNamedParamsEnd
 /// \returns what was glued (vertex pairs in the numbering of `Merge_result`).
 /// \throws Merge_error `not_a_border` if a dart is not a border dart,
-///   `mismatched_chains` if the loops differ in length (not with `bridge`),
+///   `mismatched_chains` if a chain has no edge or more than its loop, or
+///   (not with `bridge`) the chains differ in length or in being whole loops,
 ///   or the kinds of the automatic merge if the result is not a 2-manifold;
 ///   both meshes are then left unchanged.
 template <class P, class NamedParameters = parameters::Default_named_parameters>
-Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_mesh<P>& mesh_b, Dart border_b,
+Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b, const Border_pairing& pairing,
                            Merge_strategy strategy, const NamedParameters& np = parameters::default_values())
 {
   using Default_traits = typename CGAL::Kernel_traits<P>::Kernel;
   const auto traits =
     parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::geom_traits), Default_traits());
   const auto midpoint = traits.construct_midpoint_3_object();
-  const std::vector<std::uint32_t> chain_a = internal::border_chain(mesh_a, border_a, "first");
-  std::vector<std::uint32_t> chain_b = internal::border_chain(mesh_b, border_b, "second");
   const std::uint32_t na = mesh_a.number_of_vertices();
-  for (std::uint32_t& v : chain_b)
-    v += na;
+  const internal::Border_chain chain_a = internal::border_chain(mesh_a, pairing.first, pairing.first_edges, 0, "first");
+  const internal::Border_chain chain_b =
+    internal::border_chain(mesh_b, pairing.second, pairing.second_edges, na, "second");
   Mobius_mesh<P> work = mesh_a;
   work.join(mesh_b);
   const std::size_t nv = work.number_of_vertices();
@@ -468,52 +730,32 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_m
 
   internal::Union_find glued{std::uint32_t(nv)};
   std::vector<std::vector<std::uint32_t>> extra;
-  if (strategy != Merge_strategy::bridge) {
-    if (chain_a.size() != chain_b.size()) {
-      std::vector<std::size_t> vs = {chain_a.front(), chain_b.front()};
+  if (strategy == Merge_strategy::bridge) {
+    extra = internal::bridge_faces(chain_a.vertices, chain_b.vertices);
+  } else {
+    if (chain_a.edges() != chain_b.edges() || chain_a.whole_loop != chain_b.whole_loop) {
+      auto describe = [](const internal::Border_chain& c) {
+        return std::to_string(c.edges()) + (c.whole_loop ? " (a whole loop)" : " (an open chain)");
+      };
       throw Merge_error(Merge_error::Kind::mismatched_chains,
-                        "the border loops have " + std::to_string(chain_a.size()) + " and " +
-                          std::to_string(chain_b.size()) +
-                          " edges; only Merge_strategy::bridge joins loops of different lengths",
-                        vs);
+                        "the border chains have " + describe(chain_a) + " and " + describe(chain_b) +
+                          " edges; only Merge_strategy::bridge joins chains that differ",
+                        {chain_a.vertices.front(), chain_b.vertices.front()});
     }
-    for (std::size_t i = 0; i < chain_a.size(); ++i) {
-      glued.unite(chain_a[i], chain_b[i]);
-      result.vertex_pairs.emplace_back(chain_a[i], chain_b[i]);
+    // A whole loop's last vertex is its first again.
+    const std::size_t n_pairs = chain_a.vertices.size() - (chain_a.whole_loop ? 1 : 0);
+    for (std::size_t i = 0; i < n_pairs; ++i) {
+      glued.unite(chain_a.vertices[i], chain_b.vertices[i]);
+      result.vertex_pairs.emplace_back(chain_a.vertices[i], chain_b.vertices[i]);
     }
-    // The i-th edges of the two walks are glued: the border halfedges under
-    // the darts from chain[i-1] to chain[i].
-    Dart da = border_a, db = border_b;
-    for (std::size_t i = 0; i < chain_a.size(); ++i) {
+    for (std::size_t k = 0; k < chain_a.edges(); ++k) {
+      const Dart da = chain_a.darts[k], db = chain_b.darts[k];
       result.halfedge_pairs.emplace_back(da.halfedge().idx(), db.halfedge().idx() + mesh_a.number_of_halfedges());
       // Darts that both run with (or both against) their halfedges: the two
       // faces then run the same way along the glued edge.
       result.mobius_edges += da.is_flipped() == db.is_flipped() ? 1 : 0;
-      da = mesh_a.next(da);
-      db = mesh_b.next(db);
     }
-    result.glued_edges = chain_a.size();
-  } else {
-    const std::size_t n = chain_a.size(), m = chain_b.size();
-    // Walk both loops from their starts; at each step advance the one that
-    // is behind in proportion (i/n against j/m), or both at once: a quad.
-    std::size_t i = 0, j = 0;
-    while (i < n || j < m) {
-      const std::uint32_t a0 = chain_a[i % n], a1 = chain_a[(i + 1) % n];
-      const std::uint32_t b0 = chain_b[j % m], b1 = chain_b[(j + 1) % m];
-      const std::size_t lhs = (i + 1) * m, rhs = (j + 1) * n; // compare (i+1)/n with (j+1)/m
-      if (i < n && j < m && lhs == rhs) {
-        extra.push_back({a0, a1, b1, b0});
-        ++i;
-        ++j;
-      } else if (j >= m || (i < n && lhs < rhs)) {
-        extra.push_back({a0, a1, b0});
-        ++i;
-      } else {
-        extra.push_back({a0, b1, b0});
-        ++j;
-      }
-    }
+    result.glued_edges = chain_a.edges();
   }
   std::uint32_t n_classes = 0;
   const std::vector<std::uint32_t> cls = glued.classes(n_classes);
@@ -521,16 +763,35 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_m
   for (std::size_t v = nv; v-- > 0;) // the lowest member (the first mesh's) wins
     position[cls[v]] = work.point(Vertex_index(v));
   if (strategy == Merge_strategy::keep_second || strategy == Merge_strategy::average)
-    for (std::size_t i = 0; i < chain_a.size(); ++i) {
-      const P& pa = work.point(Vertex_index(chain_a[i]));
-      const P& pb = work.point(Vertex_index(chain_b[i]));
-      position[cls[chain_a[i]]] = strategy == Merge_strategy::keep_second ? pb : midpoint(pa, pb);
+    for (const auto& [va, vb] : result.vertex_pairs) {
+      const P& pa = work.point(Vertex_index(std::uint32_t(va)));
+      const P& pb = work.point(Vertex_index(std::uint32_t(vb)));
+      position[cls[va]] = strategy == Merge_strategy::keep_second ? pb : midpoint(pa, pb);
     }
   Mobius_mesh<P> out = internal::rebuild_glued(work, cls, position, extra, result);
   if (strategy == Merge_strategy::bridge)
     result.mobius_edges = number_of_mobius_edges(out) - number_of_mobius_edges(work);
   mesh_a = std::move(out);
   return result;
+}
+
+/// \ingroup PkgMobiusMeshMerge
+///
+/// Glues the whole border loop of `border_b` in `mesh_b` to the whole border
+/// loop of `border_a` in `mesh_a`: the pairing overload with chains that are
+/// the two loops walked from the two darts (the i-th vertices correspond,
+/// starting with the darts' sources). Pass a flipped dart to walk a loop the
+/// other way; `aligned_border_loops()` chooses the start and the way from
+/// the geometry.
+template <class P, class NamedParameters = parameters::Default_named_parameters>
+Merge_result merge_borders(Mobius_mesh<P>& mesh_a, Dart border_a, const Mobius_mesh<P>& mesh_b, Dart border_b,
+                           Merge_strategy strategy, const NamedParameters& np = parameters::default_values())
+{
+  internal::check_border_dart(mesh_a, border_a, "first");
+  internal::check_border_dart(mesh_b, border_b, "second");
+  const Border_pairing whole{border_a, border_b, internal::loop_length(mesh_a, border_a),
+                             internal::loop_length(mesh_b, border_b)};
+  return merge_borders(mesh_a, mesh_b, whole, strategy, np);
 }
 
 } // namespace CGAL_ext

@@ -208,7 +208,7 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 /// `"v:sharpness"` with the decayed sharpness, so that subdividing it again
 /// continues the same surface.
 ///
-/// \throws Parameter_error if a sharpness is NaN; `mesh` is then unchanged.
+/// \throws Parameter_error if a sharpness is NaN or negative; `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -229,7 +229,7 @@ void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters:
 /// `[vertex points | edge points]`. Named parameters as `catmull_clark()`,
 /// without `vertex_rule` and `triangle_subdivision`.
 ///
-/// \throws Parameter_error if a face is not a triangle or a sharpness is NaN;
+/// \throws Parameter_error if a face is not a triangle or a sharpness is NaN or negative;
 /// `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>

@@ -88,7 +88,7 @@ public:
   /// gets the incidence tables of the parallel interpolation: only then does
   /// `interpolate<CGAL::Parallel_tag>()` run in parallel (without them it is
   /// serial, with the same result).
-  /// \throws Parameter_error if a sharpness is NaN, or if the mask splits
+  /// \throws Parameter_error if a sharpness is NaN or negative, or if the mask splits
   /// triangles and `mesh` has a face that is not a triangle.
   template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
   void refine(const Mobius_mesh<P>& mesh, unsigned levels, const std::vector<float>& edge_sharpness = {},
@@ -397,16 +397,18 @@ void Refiner<Mask, W>::build_base(const Mobius_mesh<P>& m, const std::vector<flo
   const u32 nv = L.nv, ne = L.ne, nf = L.nf;
   for (u32 e = 0; e < ne; ++e) {
     float s = es.empty() ? 0.0f : es[e];
-    if (std::isnan(s))
-      throw Parameter_error("subdivision: the sharpness of edge e" + std::to_string(e) + " is NaN");
+    if (!(s >= 0)) // a number of levels: NaN or negative means nothing
+      throw Parameter_error("subdivision: the sharpness of edge e" + std::to_string(e) + " is " +
+                            std::to_string(s) + " (NaN or negative; 0 is smooth)");
     if (L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32)
       s = infinitely_sharp; // border edges are infinitely sharp, as in OpenSubdiv
     L.e_sharp[e] = s;
   }
   for (u32 v = 0; v < nv; ++v) {
     const float s = vs.empty() ? 0.0f : vs[v];
-    if (std::isnan(s))
-      throw Parameter_error("subdivision: the sharpness of vertex v" + std::to_string(v) + " is NaN");
+    if (!(s >= 0))
+      throw Parameter_error("subdivision: the sharpness of vertex v" + std::to_string(v) + " is " +
+                            std::to_string(s) + " (NaN or negative; 0 is smooth)");
     L.v_sharp[v] = s;
   }
   if constexpr (Mask::split == Split::triangle || Mask::split == Split::sqrt3) {
