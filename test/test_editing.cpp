@@ -951,7 +951,7 @@ TEST(Offset, OrientableSurfacesGiveOneShellOrASolid)
 TEST(Offset, ExactKernelAndBadDistances)
 {
   CGAL_ext::Mobius_mesh<test::Epeck::Point_3> strip, out;
-  CGAL_ext::make_mobius_strip(strip, 24, 3);
+  CGAL_ext::make_mobius_strip(strip, 48, 6);
   const auto r = CGAL_ext::offset_mesh(strip, 0.01, out);
   EXPECT_TRUE(r.closed && r.orientable);
   EXPECT_EQ(r.euler_characteristic, 0);

@@ -39,9 +39,9 @@ struct Offset_result
 namespace internal {
 
 // Which side of each face each corner's lift takes: the input's sides are
-// chosen per vertex (the side of a face dart into it), and a corner takes
-// the vertex's side if its face, walked along its own orientation, agrees
-// with that dart, the other side if not. Indexed by halfedge: the corner at
+// chosen per vertex (the side of the walk of a face dart into it, on which
+// vertex_normal() of that dart lies), and a corner takes the vertex's side
+// if its face's own orientation agrees with that walk, the other if not. Indexed by halfedge: the corner at
 // target(h) of face(h).
 template <class P>
 std::vector<std::uint8_t> corner_agrees(const Mobius_mesh<P>& m, std::vector<Dart>& side_dart)
@@ -58,13 +58,14 @@ std::vector<std::uint8_t> corner_agrees(const Mobius_mesh<P>& m, std::vector<Dar
         break;
       }
     side_dart[v.idx()] = r;
-    // Circulation carries the walk's orientation across every edge, Möbius or
-    // not: a dart reached with the same flip bit as r runs its face as r does.
+    // Circulation carries the walk of r across every edge, Möbius or not (the
+    // fan is a disk): a dart reached unflipped runs its face the way the
+    // walk goes, so that face's own normal is on the walk's side.
     for (Dart c : CGAL_ext::halfedges_around_target(r, m)) {
       if (m.is_border(c))
         continue;
       const Dart along = c.is_flipped() ? m.next(c).flipped() : c; // the face's own dart into v
-      agrees[along.halfedge().idx()] = c.is_flipped() == r.is_flipped();
+      agrees[along.halfedge().idx()] = !c.is_flipped();
     }
   }
   return agrees;

@@ -1,0 +1,44 @@
+# CTest tests of the offset tool (included from examples/CMakeLists.txt).
+# With --solid the output is the displaced orientation double cover of the
+# input closed along its border by a rim, whatever the input: a closed
+# orientable surface with twice the input's Euler characteristic (the rim
+# annuli add nothing), one component for a one-sided input, two (the two
+# skins) for a two-sided one. Expected values come from each file's first line.
+if(NOT CGAL_EXT_BUILD_TESTS)
+  return()
+endif()
+
+set(_data ${PROJECT_SOURCE_DIR}/test/data/nonorientable)
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/tool_output)
+file(MAKE_DIRECTORY ${_out})
+
+file(GLOB _files ${_data}/*.obj)
+foreach(_file ${_files})
+  get_filename_component(_name ${_file} NAME_WE)
+  file(STRINGS ${_file} _header LIMIT_COUNT 1)
+  string(REGEX MATCH "chi=(-?[0-9]+) orientable=(True|False)" _match "${_header}")
+  math(EXPR _chi "2 * ${CMAKE_MATCH_1}")
+  if(CMAKE_MATCH_2 STREQUAL "True")
+    set(_components 2)
+  else()
+    set(_components 1)
+  endif()
+  add_test(NAME offset.${_name} COMMAND offset ${_file} ${_out}/offset_${_name}.obj --distance 0.002 --solid)
+  set_tests_properties(offset.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"closed\":true,\"orientable\":true,\"components\":${_components},\"euler_characteristic\":${_chi},\"seconds\":")
+endforeach()
+
+# The hemi-icosahedron (6 vertices, 10 triangles) is covered twice by the icosahedron.
+add_test(NAME offset.hemi_icosahedron_counts COMMAND offset ${_data}/rp2_hemi_icosahedron.obj
+         ${_out}/offset_icosahedron.obj --distance 0.01)
+set_tests_properties(offset.hemi_icosahedron_counts PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":12,\"edges\":30,\"faces\":20,\"rim_faces\":0,")
+
+# A file that is not there, and a distance that is not a number: one line, exit 2.
+add_test(NAME offset.fails.missing_file
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:offset> "-DARGS=${_out}/no_such.obj;${_out}/x.obj;--distance;1"
+          -DSTATUS=2 "-DSTDERR=^offset: [^\n]+\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+add_test(NAME offset.fails.distance
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:offset> "-DARGS=${_data}/mobius_min_5tris.obj;${_out}/x.obj;--distance;-1"
+          -DSTATUS=2 "-DSTDERR=^offset: --distance '-1' is not positive; usage: [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
