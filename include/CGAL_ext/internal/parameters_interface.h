@@ -16,3 +16,6 @@ CGAL_EXT_add_named_parameter(boundary_interpolation_t, boundary_interpolation, b
 CGAL_EXT_add_named_parameter(crease_method_t, crease_method, crease_method)
 CGAL_EXT_add_named_parameter(vertex_rule_t, vertex_rule, vertex_rule)
 CGAL_EXT_add_named_parameter(triangle_subdivision_t, triangle_subdivision, triangle_subdivision)
+// normals
+CGAL_EXT_add_named_parameter(normalize_t, normalize, normalize)
+CGAL_EXT_add_named_parameter(vertex_normal_weighting_t, vertex_normal_weighting, vertex_normal_weighting)
