@@ -18,3 +18,6 @@ CGAL_EXT_add_named_parameter(vertex_rule_t, vertex_rule, vertex_rule)
 CGAL_EXT_add_named_parameter(triangle_subdivision_t, triangle_subdivision, triangle_subdivision)
 // offsets
 CGAL_EXT_add_named_parameter(solid_t, solid, solid)
+// normals
+CGAL_EXT_add_named_parameter(normalize_t, normalize, normalize)
+CGAL_EXT_add_named_parameter(vertex_normal_weighting_t, vertex_normal_weighting, vertex_normal_weighting)
