@@ -1,12 +1,14 @@
 // subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N]
 //   [--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner]
-//   [--crease-method uniform|chaikin] [--kernel double|epick|epeck]
+//   [--crease-method uniform|chaikin] [--kernel double|epick|epeck] [--max-memory BYTES]
 //
 // Reads a mesh (OBJ with OpenSubdiv's tags, OFF, PLY), subdivides it and
 // writes the result (format by extension). The OBJ tags give the defaults of
 // --boundary and --crease-method; flags override them. Prints one JSON line
-// with the result's counts and the subdivision time (without I/O). Bad input
-// or options: one line on stderr, exit status 2.
+// with the result's counts and the subdivision time (without I/O). Before it
+// starts, it estimates the memory the result needs and refuses (naming the
+// bytes) beyond --max-memory, by default the machine's physical memory. Bad
+// input or options: one line on stderr, exit status 2.
 
 #include "mesh_summary.h"
 
@@ -18,11 +20,15 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <map>
 #include <stdexcept>
 #include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -33,6 +39,12 @@ struct Usage_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+double physical_memory()
+{
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : HUGE_VAL;
+}
+
 struct Settings
 {
   std::string in, out, scheme = "catmull-clark", kernel = "double";
@@ -40,6 +52,7 @@ struct Settings
   S::Vertex_rule vertex_rule = S::Vertex_rule::standard;
   std::optional<CGAL_ext::Boundary_interpolation> boundary;
   std::optional<CGAL_ext::Crease_method> crease_method;
+  double max_memory = physical_memory();
 };
 
 template <class T>
@@ -88,7 +101,12 @@ Settings parse(int argc, char** argv)
     else if (a == "--crease-method")
       s.crease_method = pick<CGAL_ext::Crease_method>(
         {{"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}}, a, v);
-    else if (a == "--kernel")
+    else if (a == "--max-memory") {
+      char* end = nullptr;
+      s.max_memory = std::strtod(v.c_str(), &end);
+      if (*end != '\0' || v.empty() || !(s.max_memory > 0) || !std::isfinite(s.max_memory))
+        throw Usage_error("bad value '" + v + "' for --max-memory (a number of bytes)");
+    } else if (a == "--kernel")
       s.kernel = pick<std::string>({{"double", "double"}, {"epick", "epick"}, {"epeck", "epeck"}}, a, v);
     else
       throw Usage_error("unknown option " + a);
@@ -96,7 +114,7 @@ Settings parse(int argc, char** argv)
   if (positional != 2)
     throw Usage_error("usage: subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N] "
                       "[--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner] "
-                      "[--crease-method uniform|chaikin] [--kernel double|epick|epeck]");
+                      "[--crease-method uniform|chaikin] [--kernel double|epick|epeck] [--max-memory BYTES]");
   return s;
 }
 
@@ -107,6 +125,46 @@ bool is_triangle_mesh(const Mesh& mesh)
     if (mesh.degree(f) != 3)
       return false;
   return true;
+}
+
+// The faces after `levels` steps of `scheme`: exact for the schemes that split
+// every face alike, a lower bound for Doo-Sabin (each step at least triples).
+template <class Mesh>
+double output_faces(const Mesh& mesh, const std::string& scheme, unsigned levels)
+{
+  if (levels == 0)
+    return double(mesh.number_of_faces());
+  const double f = double(mesh.number_of_faces());
+  double corners = 0;
+  for (auto face : mesh.faces())
+    corners += double(mesh.degree(face));
+  const bool triangles = is_triangle_mesh(mesh);
+  if (scheme == "sqrt3")
+    return f * std::pow(3.0, levels);
+  if (scheme == "doo-sabin")
+    return f * std::pow(3.0, levels);
+  if (scheme == "loop" || (scheme == "linear" && triangles))
+    return f * std::pow(4.0, levels);
+  return corners * std::pow(4.0, levels - 1); // an n-gon into n quads, then quads into four
+}
+
+// Bytes per output face: the subdivision's peak of about 123 bytes per quad
+// (doc/benchmarks.md) and the soup that writing copies the result into (a
+// vector of indices per face and a point per vertex, about 70 bytes per quad).
+constexpr double bytes_per_output_face = 190;
+
+template <class Mesh>
+void check_memory(const Mesh& mesh, const Settings& s)
+{
+  const double faces = output_faces(mesh, s.scheme, s.levels);
+  const double bytes = faces * bytes_per_output_face;
+  if (bytes > s.max_memory) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "%u levels of %s make %.0f faces, which need about %.3g bytes; the limit is %.3g (--max-memory)",
+                  s.levels, s.scheme.c_str(), faces, bytes, s.max_memory);
+    throw Usage_error(text);
+  }
 }
 
 template <class K>
@@ -124,6 +182,7 @@ void run(const Settings& s)
                     .vertex_rule(s.vertex_rule)
                     .triangle_subdivision(triangles);
 
+  check_memory(mesh, s);
   const auto start = std::chrono::steady_clock::now();
   if (s.scheme == "loop")
     S::loop(mesh, np);
@@ -139,9 +198,14 @@ void run(const Settings& s)
     S::catmull_clark(mesh, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  // The output carries the options the input or the flags set, and no
+  // others: a tag line makes the file unreadable to CGAL's OBJ reader, so one
+  // is written only where it tells something.
   CGAL_ext::Sharp_feature_options out_tags = tags;
-  out_tags.boundary_interpolation = boundary;
-  out_tags.crease_method = crease;
+  if (s.boundary)
+    out_tags.boundary_interpolation = s.boundary;
+  if (s.crease_method)
+    out_tags.crease_method = s.crease_method;
   CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
   std::cout << "{\"scheme\":\"" << s.scheme << "\",\"kernel\":\"" << s.kernel << "\",\"levels\":" << s.levels
             << ",\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
