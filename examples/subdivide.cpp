@@ -1,6 +1,7 @@
 // subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N]
 //   [--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner]
 //   [--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck]
+//   [--max-memory BYTES]
 //
 // Reads a mesh (OBJ with OpenSubdiv's tags, OFF, PLY), subdivides it and
 // writes the result (format by extension); see the usage text below. Bad
@@ -16,10 +17,15 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -29,7 +35,8 @@ const examples::Tool_usage usage{
   "subdivide",
   "subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N] "
   "[--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner] "
-  "[--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck]",
+  "[--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck] "
+  "[--max-memory BYTES]",
   "Reads a mesh (.obj with OpenSubdiv's tags, .off, .ply), subdivides it and writes the result to\n"
   "OUT (format by extension; an OBJ keeps the tags).\n"
   "  --scheme          catmull-clark (the default), loop, linear, doo-sabin or sqrt3\n"
@@ -41,9 +48,18 @@ const examples::Tool_usage usage{
   "  --triangles       catmark, or smooth: OpenSubdiv's smooth-triangle rule, a smoother\n"
   "                    Catmull-Clark edge rule next to triangles (OBJ tag 't smoothtriangles')\n"
   "  --kernel          double (the default), epick or epeck\n"
+  "  --max-memory      refuse before starting if the result would need more bytes (estimated\n"
+  "                    at about 190 per output face; default: the machine's physical memory)\n"
   "The OBJ tags give the defaults of --boundary (else edge-only), --crease-method (else uniform)\n"
-  "and --triangles (else catmark); flags override them. Prints one JSON line with the result's\n"
-  "counts and the subdivision time (without I/O).\n"};
+  "and --triangles (else catmark); flags override them. The output carries the tags its input\n"
+  "had or its flags set, and no others. Prints one JSON line with the result's counts and the\n"
+  "subdivision time (without I/O).\n"};
+
+double physical_memory()
+{
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : HUGE_VAL;
+}
 
 struct Settings
 {
@@ -53,6 +69,7 @@ struct Settings
   std::optional<CGAL_ext::Boundary_interpolation> boundary;
   std::optional<CGAL_ext::Crease_method> crease_method;
   std::optional<CGAL_ext::Triangle_subdivision> triangles;
+  double max_memory = physical_memory();
 };
 
 // The value of `option` among `choices`, if given.
@@ -73,7 +90,8 @@ Settings parse(int argc, char** argv)
 {
   const examples::Arguments args = examples::parse_arguments(
     argc, argv,
-    {"--scheme", "--levels", "--vertex-rule", "--boundary", "--crease-method", "--triangles", "--kernel"});
+    {"--scheme", "--levels", "--vertex-rule", "--boundary", "--crease-method", "--triangles", "--kernel",
+     "--max-memory"});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   Settings s;
@@ -102,6 +120,11 @@ Settings parse(int argc, char** argv)
   s.triangles = pick<CGAL_ext::Triangle_subdivision>(
     args, "--triangles",
     {{"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}});
+  if (args.has("--max-memory")) {
+    s.max_memory = examples::real_argument("--max-memory", args.value("--max-memory", ""));
+    if (!(s.max_memory > 0))
+      throw examples::Usage_error("--max-memory '" + args.value("--max-memory", "") + "' is not positive");
+  }
   return s;
 }
 
@@ -112,6 +135,43 @@ bool is_triangle_mesh(const Mesh& mesh)
     if (mesh.degree(f) != 3)
       return false;
   return true;
+}
+
+// The faces after `levels` steps of `scheme`: exact for the schemes that split
+// every face alike, a lower bound for Doo-Sabin (each step at least triples).
+template <class Mesh>
+double output_faces(const Mesh& mesh, const std::string& scheme, unsigned levels)
+{
+  const double f = double(mesh.number_of_faces());
+  if (levels == 0)
+    return f;
+  double corners = 0;
+  for (auto face : mesh.faces())
+    corners += double(mesh.degree(face));
+  if (scheme == "sqrt3" || scheme == "doo-sabin")
+    return f * std::pow(3.0, levels);
+  if (scheme == "loop" || (scheme == "linear" && is_triangle_mesh(mesh)))
+    return f * std::pow(4.0, levels);
+  return corners * std::pow(4.0, levels - 1); // an n-gon into n quads, then quads into four
+}
+
+// Bytes per output face: the subdivision's peak of about 123 bytes per quad
+// (doc/benchmarks.md) and the soup that writing copies the result into (a
+// vector of indices per face and a point per vertex, about 70 bytes per quad).
+constexpr double bytes_per_output_face = 190;
+
+template <class Mesh>
+void check_memory(const Mesh& mesh, const Settings& s)
+{
+  const double faces = output_faces(mesh, s.scheme, s.levels);
+  const double bytes = faces * bytes_per_output_face;
+  if (bytes > s.max_memory) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "%u levels of %s make %.0f faces, which need about %.3g bytes; the limit is %.3g (--max-memory)",
+                  s.levels, s.scheme.c_str(), faces, bytes, s.max_memory);
+    throw std::runtime_error(text);
+  }
 }
 
 template <class K>
@@ -130,6 +190,7 @@ void run(const Settings& s)
                     .vertex_rule(s.vertex_rule)
                     .triangle_subdivision(triangles);
 
+  check_memory(mesh, s);
   const auto start = std::chrono::steady_clock::now();
   if (s.scheme == "loop")
     S::loop(mesh, np);
@@ -145,10 +206,16 @@ void run(const Settings& s)
     S::catmull_clark(mesh, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  // The output carries the options the input or the flags set, and no
+  // others: a tag line makes the file unreadable to CGAL's OBJ reader, so one
+  // is written only where it tells something.
   CGAL_ext::Sharp_feature_options out_tags = tags;
-  out_tags.boundary_interpolation = boundary;
-  out_tags.crease_method = crease;
-  out_tags.triangle_subdivision = triangles;
+  if (s.boundary)
+    out_tags.boundary_interpolation = s.boundary;
+  if (s.crease_method)
+    out_tags.crease_method = s.crease_method;
+  if (s.triangles)
+    out_tags.triangle_subdivision = s.triangles;
   CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
   std::cout << "{\"scheme\":\"" << s.scheme << "\",\"kernel\":\"" << s.kernel << "\",\"levels\":" << s.levels
             << ",\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()

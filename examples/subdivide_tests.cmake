@@ -56,6 +56,28 @@ if(CGAL_EXT_BUILD_TESTS)
                    "-DSECOND=${_plain};${_o}_flag.obj;--levels;2;--triangles;smooth" -DSECOND_OUT=${_o}_flag.obj
                    "-DDIFFERENT=${_plain};${_o}_catmark.obj;--levels;2" -DDIFFERENT_OUT=${_o}_catmark.obj
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/same_output.cmake)
+  # Tag lines in the output: none from a file without tags, the options a
+  # flag or the input set otherwise (catmark_edgecorner: interpolateboundary 1).
+  set(_tags_script ${CMAKE_CURRENT_SOURCE_DIR}/subdivide_expect_tags.cmake)
+  add_test(NAME example.subdivide.no_needless_tags
+           COMMAND ${CMAKE_COMMAND} -DSUBDIVIDE=$<TARGET_FILE:subdivide> -DIN=${_data}/opensubdiv/catmark_cube.obj
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cube_no_tags.obj -P ${_tags_script})
+  add_test(NAME example.subdivide.tags_of_flags_and_input
+           COMMAND ${CMAKE_COMMAND} -DSUBDIVIDE=$<TARGET_FILE:subdivide>
+                   -DIN=${_data}/opensubdiv/catmark_edgecorner.obj -DOUT=${CMAKE_CURRENT_BINARY_DIR}/edgecorner.obj
+                   "-DARGS=--crease-method;chaikin"
+                   "-DTAGS=t interpolateboundary 1/0/0 1;t creasemethod 0/0/1 chaikin" -P ${_tags_script})
+  # Refused up front: the cube's 6 quads at level 12 are 6 * 4^12 = 100663296
+  # faces; level 2 (96 faces) under a limit of 1000 bytes.
+  add_test(NAME example.subdivide.too_large_for_memory
+           COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
+                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--levels;12;--max-memory;1e9"
+                   -DNAME=subdivide "-DEXPECT=make 100663296 faces, which need about [0-9.e+]+ bytes; the limit is 1e\\+09"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+  add_test(NAME example.subdivide.over_a_given_limit
+           COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
+                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--levels;2;--max-memory;1000"
+                   -DNAME=subdivide "-DEXPECT=make 96 faces" -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
   set_tests_properties(example.subdivide.sqrt3_on_quads example.subdivide.bad_option
                        example.subdivide.loop_on_quads PROPERTIES WILL_FAIL TRUE)
 endif()

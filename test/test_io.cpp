@@ -10,20 +10,31 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/subdivision.h>
 
 #include "test_util.h"
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
@@ -790,5 +801,441 @@ TEST(IO_errors, bad_ply_is_an_error_not_a_crash)
     EXPECT_EQ(e.soup_kind(), Soup_error::Kind::index_out_of_range) << e.what();
   }
   expect_untouched(mesh);
+  fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------- hostile input
+//
+// Hand-made files of every hostile kind: each gives the right mesh or one
+// IO_error naming the file (and the line where there is one), never a crash,
+// a silent misread or an allocation beyond what the file can hold.
+
+namespace {
+
+// The vertices of face `f`, in order.
+std::vector<std::size_t> face_vertices(const Mesh_d& mesh, CGAL_ext::Face_index f)
+{
+  std::vector<std::size_t> vertices;
+  for (Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh))
+    vertices.push_back(v.idx());
+  return vertices;
+}
+
+// Reads `file`, which must hold the triangle (0,0,0) (1,0,0) (0,1,0).
+void expect_unit_triangle(const fs::path& file)
+{
+  SCOPED_TRACE(file.filename().string());
+  Mesh_d mesh;
+  try {
+    read_polygon_mesh(file.string(), mesh);
+  } catch (const IO_error& e) {
+    ADD_FAILURE() << e.what();
+    return;
+  }
+  ASSERT_EQ(mesh.number_of_vertices(), 3u);
+  ASSERT_EQ(mesh.number_of_faces(), 1u);
+  EXPECT_EQ(mesh.point(Vertex_index(0u)), test::Kd::Point_3(0, 0, 0));
+  EXPECT_EQ(mesh.point(Vertex_index(1u)), test::Kd::Point_3(1, 0, 0));
+  EXPECT_EQ(mesh.point(Vertex_index(2u)), test::Kd::Point_3(0, 1, 0));
+  EXPECT_EQ(face_vertices(mesh, CGAL_ext::Face_index(0u)).size(), 3u);
+}
+
+// Reading `file` must fail with an IO_error at `line` (0: none) whose
+// message contains `words`, is one printable line, and leaves the mesh alone.
+void expect_read_error(const fs::path& file, std::size_t line, const std::string& words)
+{
+  SCOPED_TRACE(file.filename().string());
+  Mesh_d mesh = prefilled_mesh();
+  try {
+    read_polygon_mesh(file.string(), mesh);
+    ADD_FAILURE() << "no error";
+  } catch (const IO_error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.file(), file.string());
+    EXPECT_EQ(e.line(), line) << what;
+    EXPECT_NE(what.find(words), std::string::npos) << what;
+    EXPECT_TRUE(std::all_of(what.begin(), what.end(), [](char c) { return c >= 0x20 && c < 0x7f; })) << what;
+    EXPECT_LT(what.size(), 400u);
+  }
+  expect_untouched(mesh);
+}
+
+const std::string unit_triangle_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+const std::string unit_triangle_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
+std::string replace_all(std::string s, const std::string& from, const std::string& to)
+{
+  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+    s.replace(at, from.size(), to);
+  return s;
+}
+
+// Binary values in a given byte order, appended to a string.
+struct Bytes
+{
+  bool big_endian;
+  std::string data;
+  template <class T>
+  Bytes& put(T value)
+  {
+    char b[sizeof(T)];
+    std::memcpy(b, &value, sizeof(T));
+    const std::uint16_t probe = 1;
+    if ((*reinterpret_cast<const char*>(&probe) == 0) != big_endian)
+      std::reverse(b, b + sizeof(T));
+    data.append(b, sizeof(T));
+    return *this;
+  }
+  Bytes& text(const std::string& s)
+  {
+    data += s;
+    return *this;
+  }
+};
+
+// The unit triangle as binary OFF (Geomview: big-endian int32 and float32).
+std::string binary_off_triangle(const std::string& keyword, int floats_per_vertex, int face_colours)
+{
+  Bytes b{true, {}};
+  b.text(keyword + " BINARY\n").put<std::int32_t>(3).put<std::int32_t>(1).put<std::int32_t>(3);
+  const float xyz[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  for (const auto& p : xyz) {
+    for (float c : p)
+      b.put<float>(c);
+    for (int extra = 3; extra < floats_per_vertex; ++extra)
+      b.put<float>(0.5f);
+  }
+  b.put<std::int32_t>(3).put<std::int32_t>(0).put<std::int32_t>(1).put<std::int32_t>(2);
+  b.put<std::int32_t>(face_colours);
+  for (int c = 0; c < face_colours; ++c)
+    b.put<float>(0.25f);
+  return b.data;
+}
+
+std::string ply_header(const std::string& format, const std::string& vertex_count, const std::string& face_count,
+                       const std::string& list_types)
+{
+  return "ply\nformat " + format + " 1.0\ncomment hand-made\nelement vertex " + vertex_count +
+         "\nproperty float x\nproperty float y\nproperty float z\nproperty float nx\nelement face " + face_count +
+         "\nproperty list " + list_types + " vertex_indices\nproperty uchar flags\nelement edge 1\n"
+         "property int vertex1\nproperty int vertex2\nend_header\n";
+}
+
+// The unit triangle as binary PLY with the index list types `Count` and `Index`.
+template <class Count, class Index>
+std::string binary_ply_triangle(bool big_endian, const std::string& list_types)
+{
+  Bytes b{big_endian, {}};
+  b.text(ply_header(big_endian ? "binary_big_endian" : "binary_little_endian", "3", "1", list_types));
+  const float xyz[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  for (const auto& p : xyz)
+    b.put<float>(p[0]).put<float>(p[1]).put<float>(p[2]).put<float>(-1.0f);
+  b.put<Count>(3);
+  for (Index i : {0, 1, 2})
+    b.put<Index>(i);
+  b.put<std::uint8_t>(7);
+  b.put<std::int32_t>(0).put<std::int32_t>(1);
+  return b.data;
+}
+
+} // namespace
+
+TEST(IO_hostile, obj_corner_with_a_long_texture_index_is_read_as_its_triangle)
+{
+  // A reader that skips only 256 characters of a corner read this as the quad 1 4 2 3.
+  const fs::path dir = scratch_directory();
+  write_text(dir / "zeros.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1/" + std::string(260, '0') + "4 2 3\n");
+  Mesh_d mesh;
+  read_polygon_mesh((dir / "zeros.obj").string(), mesh);
+  ASSERT_EQ(mesh.number_of_faces(), 1u);
+  std::vector<std::size_t> corners = face_vertices(mesh, CGAL_ext::Face_index(0u));
+  std::sort(corners.begin(), corners.end());
+  EXPECT_EQ(corners, (std::vector<std::size_t>{0, 1, 2}));
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, line_ends_byte_order_mark_and_comments)
+{
+  const fs::path dir = scratch_directory();
+  const std::string bom = "\xEF\xBB\xBF";
+  const std::string obj = "# a triangle\nv 0 0 0\nv 1 0 0 # after a vertex\nv 0 1 0\nf 1 2 3 # after a face\n";
+  const std::string off = "OFF # keyword\n3 1 0 # counts\n0 0 0\n1 0 0 # a vertex\n\n0 1 0\n3 0 1 2 # a face\n";
+  for (const auto& [name, text] : {std::pair{std::string("a.obj"), obj}, std::pair{std::string("a.off"), off}}) {
+    write_text(dir / ("lf_" + name), text);
+    write_text(dir / ("crlf_" + name), replace_all(text, "\n", "\r\n"));
+    write_text(dir / ("cr_" + name), replace_all(text, "\n", "\r"));
+    write_text(dir / ("bom_" + name), bom + text);
+    write_text(dir / ("bom_cr_" + name), bom + replace_all(text, "\n", "\r"));
+    write_text(dir / ("no_last_end_" + name), text.substr(0, text.size() - 1));
+    for (const char* prefix : {"lf_", "crlf_", "cr_", "bom_", "bom_cr_", "no_last_end_"})
+      expect_unit_triangle(dir / (prefix + name));
+  }
+  // Lines are counted the same whatever ends them.
+  write_text(dir / "cr_bad.obj", "v 0 0 0\rv 1 0 0\rv 0 x 0\rf 1 2 3\r");
+  expect_read_error(dir / "cr_bad.obj", 3, "'x'");
+  write_text(dir / "crlf_bad.obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 x 0\r\nf 1 2 3\r\n");
+  expect_read_error(dir / "crlf_bad.obj", 3, "'x'");
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, numbers_after_the_coordinates_and_words_after_them)
+{
+  const fs::path dir = scratch_directory();
+  // A weight or a colour after x y z is read over; a word is refused.
+  write_text(dir / "colour.obj", "v 0 0 0 1 0.5 0\nv 1 0 0 1\nv 0 1 0 0 0 1\nf 1 2 3\n");
+  expect_unit_triangle(dir / "colour.obj");
+  write_text(dir / "word.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0 red\nf 1 2 3\n");
+  expect_read_error(dir / "word.obj", 3, "unexpected 'red' after the vertex coordinates");
+  write_text(dir / "word_face.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 red\n");
+  expect_read_error(dir / "word_face.obj", 4, "'red'");
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, numbers_with_leading_zeros_or_a_hundred_thousand_digits)
+{
+  const fs::path dir = scratch_directory();
+  const std::string zeros(100000, '0');
+  write_text(dir / "zeros.obj", "v 0000.0 00 -0\nv " + zeros + "1 0 0\nv 0 0" + zeros + "1.0 " + zeros +
+                                  "e5\nf 0001 " + zeros + "2 -" + zeros + "1\n");
+  expect_unit_triangle(dir / "zeros.obj");
+  write_text(dir / "zeros.off", "OFF\n0003 " + zeros + "1 0\n0 0 0\n1 0 0\n0 1 0\n3 " + zeros + " 01 002\n");
+  expect_unit_triangle(dir / "zeros.off");
+  // 10^100000 is no finite double; the message shows the start of the number only.
+  write_text(dir / "huge.obj", "v 0 0 0\nv 1" + zeros + " 0 0\nv 0 1 0\nf 1 2 3\n");
+  expect_read_error(dir / "huge.obj", 2, "is not a finite number");
+  write_text(dir / "huge_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 1" + zeros + "\n");
+  expect_read_error(dir / "huge_index.obj", 4, "is not a vertex index");
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, extreme_indices_are_named_by_their_text)
+{
+  const fs::path dir = scratch_directory();
+  const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  write_text(dir / "min.obj", points + "f 1 -9223372036854775808 3\n");
+  expect_read_error(dir / "min.obj", 4, "'-9223372036854775808' counts back past the first vertex");
+  write_text(dir / "below_min.obj", points + "f 1 2 -9223372036854775809\n");
+  expect_read_error(dir / "below_min.obj", 4, "'-9223372036854775809' is not a vertex index");
+  write_text(dir / "max.obj", points + "f 1 2 9223372036854775807\n");
+  expect_read_error(dir / "max.obj", 4, "face names vertex 9223372036854775807, but the file has only 3 vertices");
+  write_text(dir / "max.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9223372036854775807\n");
+  expect_read_error(dir / "max.off", 6, "face names vertex 9223372036854775807");
+  write_text(dir / "negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
+  expect_read_error(dir / "negative.off", 6, "face names vertex -1");
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, coordinates_must_be_finite_denormals_are_kept)
+{
+  const fs::path dir = scratch_directory();
+  for (const char* bad : {"nan", "NaN", "-nan", "inf", "-inf", "infinity", "1e309", "-1e400", "0x1p3", "1.0.0"}) {
+    SCOPED_TRACE(bad);
+    write_text(dir / "bad.obj", "v 0 0 0\nv 1 " + std::string(bad) + " 0\nv 0 1 0\nf 1 2 3\n");
+    expect_read_error(dir / "bad.obj", 2, "is not a finite number");
+    write_text(dir / "bad.off", "OFF\n3 1 0\n0 0 0\n1 0 " + std::string(bad) + "\n0 1 0\n3 0 1 2\n");
+    expect_read_error(dir / "bad.off", 4, "is not a finite number");
+  }
+  write_text(dir / "denormal.obj", "v 4.9406564584124654e-324 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  Mesh_d mesh;
+  read_polygon_mesh((dir / "denormal.obj").string(), mesh);
+  EXPECT_EQ(mesh.point(Vertex_index(0u)).x(), std::numeric_limits<double>::denorm_min());
+  // A homogeneous OFF vertex with w = 0 lies at infinity.
+  write_text(dir / "w0.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 0\n0 1 0 1\n3 0 1 2\n");
+  expect_read_error(dir / "w0.off", 4, "has no finite position");
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, unprintable_bytes_are_escaped_in_messages)
+{
+  const fs::path dir = scratch_directory();
+  write_text(dir / "nul.obj", std::string("v 0 0 0\nv 1 0\0 0\nv 0 1 0\nf 1 2 3\n", 34));
+  expect_read_error(dir / "nul.obj", 2, "'0\\x00' is not a finite number");
+  write_text(dir / "control.obj", std::string("v 0 0 0\n\x01\x00\xFF\x1B[2J 1\n", 18));
+  expect_read_error(dir / "control.obj", 2, "unknown OBJ statement '\\x01\\x00\\xFF\\x1B[2J'");
+  write_text(dir / "control.off", std::string("\x7F" "OFF\n3 1 0\n", 11));
+  expect_read_error(dir / "control.off", 1, "the file starts with '\\x7FOFF'");
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, off_variants_are_read)
+{
+  const fs::path dir = scratch_directory();
+  const std::pair<std::string, std::string> variants[] = {
+    {"OFF\n3 1 0\n", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+    {"OFF 3 1 0\n", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+    {"OFF\n3 1\n", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+    {"COFF\n3 1 0\n", "0 0 0 255 0 0 255\n1 0 0 0 1 0 1\n0 1 0 0 0 1 1\n3 0 1 2 0.5 0.5 0.5 1\n"},
+    {"NOFF\n3 1 0\n", "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n"},
+    {"STOFF\n3 1 0\n", "0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n"},
+    {"STCNOFF\n3 1 0\n", "0 0 0 0 0 1 1 1 1 0 0 1\n1 0 0 0 0 1 1 1 1 1 0 1\n0 1 0 0 0 1 1 1 1 0 1\n3 0 1 2 7\n"},
+    {"4OFF\n3 1 0\n", "0 0 0 2\n2 0 0 2\n0 -2 0 -2\n3 0 1 2\n"},
+    {"nOFF\n3\n3 1 0\n", "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"},
+  };
+  int k = 0;
+  for (const auto& [header, rest] : variants) {
+    const fs::path file = dir / ("variant" + std::to_string(k++) + ".off");
+    write_text(file, header + rest);
+    expect_unit_triangle(file);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, binary_off_is_read_and_every_truncation_refused)
+{
+  const fs::path dir = scratch_directory();
+  const std::string plain = binary_off_triangle("OFF", 3, 0);
+  const std::string coloured = binary_off_triangle("COFF", 7, 4);
+  write_text(dir / "plain.off", plain);
+  write_text(dir / "coloured.off", coloured);
+  write_text(dir / "normals_texture.off", binary_off_triangle("STNOFF", 8, 3));
+  expect_unit_triangle(dir / "plain.off");
+  expect_unit_triangle(dir / "coloured.off");
+  expect_unit_triangle(dir / "normals_texture.off");
+  const std::size_t header = std::string("OFF BINARY\n").size();
+  for (std::size_t size = header; size < plain.size(); ++size) {
+    write_text(dir / "cut.off", plain.substr(0, size));
+    SCOPED_TRACE(size);
+    Mesh_d mesh;
+    EXPECT_THROW(read_polygon_mesh((dir / "cut.off").string(), mesh), IO_error);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, binary_off_counts_are_believed_only_as_far_as_the_file_holds)
+{
+  const fs::path dir = scratch_directory();
+  auto off = [](std::int32_t vertices, std::int32_t faces) {
+    return Bytes{true, {}}.text("OFF BINARY\n").put(vertices).put(faces).put<std::int32_t>(0);
+  };
+  // 23 bytes that claim 200 million faces (and then 2^31 - 1 vertices).
+  write_text(dir / "faces.off", off(0, 200000000).data);
+  expect_read_error(dir / "faces.off", 0, "announces 200000000 faces");
+  write_text(dir / "vertices.off", off(2147483647, 0).data);
+  expect_read_error(dir / "vertices.off", 0, "announces 2147483647 vertices");
+  write_text(dir / "negative.off", off(-1, 1).data);
+  expect_read_error(dir / "negative.off", 0, "negative");
+  // A face of 2^31 - 1 corners in a file of a few dozen bytes.
+  Bytes corners = off(3, 1);
+  for (int i = 0; i < 9; ++i)
+    corners.put<float>(0);
+  corners.put<std::int32_t>(2147483647).put<std::int32_t>(0).put<std::int32_t>(1);
+  write_text(dir / "corners.off", corners.data);
+  expect_read_error(dir / "corners.off", 0, "announces 2147483647 corners in face 0");
+  // The same in text OFF.
+  write_text(dir / "faces_text.off", "OFF\n3 200000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expect_read_error(dir / "faces_text.off", 2, "announces 200000000 faces");
+  write_text(dir / "more_vertices.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expect_read_error(dir / "more_vertices.off", 6, "the file ends after 0 of 1 faces");
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, ply_index_lists_of_any_integer_type_and_byte_order)
+{
+  const fs::path dir = scratch_directory();
+  write_text(dir / "ascii_uint8.ply",
+             ply_header("ascii", "3", "1", "uchar uchar") + "0 0 0 -1\n1 0 0 -1\n0 1 0 -1\n3 0 1 2 7\n0 1\n");
+  write_text(dir / "ascii_int.ply",
+             ply_header("ascii", "3", "1", "uint8 int32") + "0 0 0 nan\n1 0 0 inf\n0 1 0 1e3\n3 0 1 2 0\n0 1\n");
+  write_text(dir / "le_uint8.ply", binary_ply_triangle<std::uint8_t, std::uint8_t>(false, "uchar uchar"));
+  write_text(dir / "le_ushort.ply", binary_ply_triangle<std::uint16_t, std::uint16_t>(false, "ushort ushort"));
+  write_text(dir / "be_int.ply", binary_ply_triangle<std::uint8_t, std::int32_t>(true, "uchar int"));
+  write_text(dir / "be_uint.ply", binary_ply_triangle<std::int32_t, std::uint32_t>(true, "int uint"));
+  for (const char* name : {"ascii_uint8.ply", "ascii_int.ply", "le_uint8.ply", "le_ushort.ply", "be_int.ply",
+                           "be_uint.ply"})
+    expect_unit_triangle(dir / name);
+  fs::remove_all(dir);
+}
+
+TEST(IO_hostile, ply_truncated_oversized_or_not_ply_is_refused)
+{
+  const fs::path dir = scratch_directory();
+  const std::string whole = binary_ply_triangle<std::uint8_t, std::int32_t>(false, "uchar int");
+  const std::size_t header = whole.find("end_header\n") + 11;
+  for (std::size_t size = header; size < whole.size(); ++size) {
+    write_text(dir / "cut.ply", whole.substr(0, size));
+    SCOPED_TRACE(size);
+    Mesh_d mesh;
+    EXPECT_THROW(read_polygon_mesh((dir / "cut.ply").string(), mesh), IO_error);
+  }
+  // A header of a few hundred bytes that claims 300 million vertices.
+  write_text(dir / "vertices.ply", ply_header("binary_little_endian", "300000000", "200000000", "uchar int"));
+  expect_read_error(dir / "vertices.ply", 4, "announces 300000000 'vertex' elements");
+  write_text(dir / "faces.ply", ply_header("ascii", "3", "200000000", "uchar int") + "0 0 0 0\n1 0 0 0\n0 1 0 0\n");
+  expect_read_error(dir / "faces.ply", 9, "announces 200000000 'face' elements");
+  // A list of 2^32 - 1 items.
+  Bytes list{false, ply_header("binary_little_endian", "0", "1", "uint int")};
+  list.put<std::uint32_t>(4294967295u);
+  for (int i = 0; i < 4; ++i)
+    list.put<std::int32_t>(0); // enough bytes for the face, not for its list
+  write_text(dir / "list.ply", list.data);
+  expect_read_error(dir / "list.ply", 0, "announces 4294967295 items in the list 'vertex_indices' of 'face' 0");
+  // A megabyte of zeros, a header that never ends, a NaN coordinate, a negative index.
+  write_text(dir / "zeros.ply", std::string(1 << 20, '\0'));
+  expect_read_error(dir / "zeros.ply", 1, "not a PLY file");
+  write_text(dir / "endless.ply", "ply\nformat ascii 1.0\n" + std::string(1 << 16, '\n'));
+  expect_read_error(dir / "endless.ply", 0, "no 'end_header'");
+  write_text(dir / "nan.ply", ply_header("ascii", "3", "1", "uchar int") + "0 0 0 0\n1 nan 0 0\n0 1 0 0\n3 0 1 2 0\n0 1\n");
+  expect_read_error(dir / "nan.ply", 17, "vertex 1 has a coordinate that is not a finite number");
+  write_text(dir / "negative.ply",
+             ply_header("ascii", "3", "1", "uchar int") + "0 0 0 0\n1 0 0 0\n0 1 0 0\n3 0 -1 2 0\n0 1\n");
+  expect_read_error(dir / "negative.ply", 19, "face 0 names vertex -1");
+  write_text(dir / "too_big_for_uchar.ply",
+             ply_header("ascii", "3", "1", "uchar uchar") + "0 0 0 0\n1 0 0 0\n0 1 0 0\n3 0 1 256 0\n0 1\n");
+  expect_read_error(dir / "too_big_for_uchar.ply", 19, "is not a value of its type");
+  fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------- readable by others
+
+TEST(IO_round_trip, output_without_sharpness_is_read_by_cgal)
+{
+  // Catmull-Clark twice on the cube: 8 + 12 + 6 = 26 vertices and 24 quads,
+  // then 26 + 48 + 24 = 98 vertices and 96 quads. An all-zero sharpness map
+  // and no options carry nothing, so no tag line is written, and CGAL's
+  // polygon soup readers (which refuse tag lines) read every format back.
+  const fs::path dir = scratch_directory();
+  Mesh_d mesh;
+  read_polygon_mesh(test::data("opensubdiv/catmark_cube.obj"), mesh);
+  CGAL_ext::Subdivision::catmull_clark(mesh, CGAL_ext::parameters::number_of_iterations(2));
+  CGAL_ext::edge_sharpness_map(mesh);
+  CGAL_ext::vertex_sharpness_map(mesh);
+  for (const char* name : {"cube.obj", "cube.off", "cube.ply"}) {
+    SCOPED_TRACE(name);
+    const std::string file = (dir / name).string();
+    write_polygon_mesh(file, mesh);
+    std::ifstream in(file, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("\nt "), std::string::npos);
+    std::vector<test::Kd::Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    ASSERT_TRUE(CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false)));
+    CGAL::Surface_mesh<test::Kd::Point_3> cgal_mesh;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, cgal_mesh);
+    EXPECT_EQ(cgal_mesh.number_of_vertices(), 98u);
+    EXPECT_EQ(cgal_mesh.number_of_faces(), 96u);
+    EXPECT_TRUE(CGAL::is_closed(cgal_mesh));
+  }
+  fs::remove_all(dir);
+}
+
+TEST(IO_errors, non_finite_coordinates_are_not_written)
+{
+  const fs::path dir = scratch_directory();
+  for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Mesh_d mesh = prefilled_mesh();
+    mesh.point(Vertex_index(3u)) = test::Kd::Point_3(0, bad, 0);
+    for (const char* name : {"x.obj", "x.off", "x.ply"}) {
+      const fs::path file = dir / name;
+      try {
+        write_polygon_mesh(file.string(), mesh);
+        ADD_FAILURE() << "no error";
+      } catch (const IO_error& e) {
+        EXPECT_NE(std::string(e.what()).find("vertex 3 has a coordinate that is not a finite double"),
+                  std::string::npos)
+          << e.what();
+      }
+      EXPECT_FALSE(fs::exists(file));
+    }
+  }
   fs::remove_all(dir);
 }

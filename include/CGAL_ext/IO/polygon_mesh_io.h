@@ -7,6 +7,9 @@
 #ifndef CGAL_EXT_IO_POLYGON_MESH_IO_H
 #define CGAL_EXT_IO_POLYGON_MESH_IO_H
 
+#include <CGAL_ext/IO/internal/OFF_reader.h>
+#include <CGAL_ext/IO/internal/PLY_reader.h>
+#include <CGAL_ext/IO/internal/Text_scanning.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
@@ -16,6 +19,7 @@
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Simple_cartesian.h>
 
@@ -68,130 +72,6 @@ inline Mesh_format format_of(const std::string& filename)
                               : "unknown file extension '." + ext + "'") +
                    "; expected .obj, .off or .ply");
 }
-
-inline std::string system_reason()
-{
-  return errno != 0 ? std::string(": ") + std::strerror(errno) : std::string();
-}
-
-inline std::string read_whole_file(const std::string& filename)
-{
-  std::error_code ec;
-  if (std::filesystem::is_directory(filename, ec))
-    throw IO_error(filename, 0, "is a directory, not a file");
-  errno = 0;
-  std::ifstream in(filename, std::ios::binary);
-  if (!in)
-    throw IO_error(filename, 0, "cannot open the file for reading" + system_reason());
-  // One bulk read of the whole file, far faster than stream iteration.
-  std::string text;
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  if (size > 0) {
-    text.resize(std::size_t(size));
-    in.read(&text[0], size);
-  } else if (size < 0) { // not seekable (a pipe): copy it through
-    in.clear();
-    std::ostringstream buffer;
-    if (in.peek() != std::ifstream::traits_type::eof())
-      buffer << in.rdbuf();
-    text = std::move(buffer).str();
-  }
-  if (in.bad())
-    throw IO_error(filename, 0, "cannot read the file" + system_reason());
-  return text;
-}
-
-// Splits the text into lines (without their end-of-line characters) and each
-// line into whitespace-separated tokens; '\r' counts as whitespace so that
-// files with Windows line ends read the same.
-class Line_reader
-{
-public:
-  explicit Line_reader(const std::string& text) : text_(text) {}
-
-  // Moves to the next line; false at the end of the text.
-  bool next()
-  {
-    if (pos_ > text_.size() || (pos_ == text_.size() && (pos_ == 0 || text_[pos_ - 1] == '\n')))
-      return false;
-    const std::string::size_type end = text_.find('\n', pos_);
-    const std::string::size_type stop = end == std::string::npos ? text_.size() : end;
-    line_.assign(text_, pos_, stop - pos_);
-    pos_ = stop + 1;
-    ++number_;
-    tokens_.clear();
-    std::string::size_type i = 0;
-    while (i < line_.size()) {
-      while (i < line_.size() && is_space(line_[i]))
-        ++i;
-      std::string::size_type j = i;
-      while (j < line_.size() && !is_space(line_[j]))
-        ++j;
-      if (j > i)
-        tokens_.push_back(line_.substr(i, j - i));
-      i = j;
-    }
-    return true;
-  }
-  const std::string& line() const { return line_; }
-  std::size_t number() const { return number_; }
-  const std::vector<std::string>& tokens() const { return tokens_; }
-
-private:
-  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-  const std::string& text_;
-  std::string::size_type pos_ = 0;
-  std::size_t number_ = 0;
-  std::string line_;
-  std::vector<std::string> tokens_;
-};
-
-// A decimal number as `operator>>(double&)` reads it (the way CGAL's readers
-// read coordinates): no "nan", "inf" or hexadecimal forms, and finite.
-inline bool parse_real(const std::string& token, double& value)
-{
-  if (token.empty())
-    return false;
-  for (char c : token)
-    if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E'))
-      return false;
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtod(token.c_str(), &end);
-  return end == token.c_str() + token.size() && std::isfinite(value);
-}
-
-// A float rounded from its decimal text, as OpenSubdiv's `sscanf("%f")` does.
-inline bool parse_float(const std::string& token, float& value)
-{
-  double check = 0;
-  if (!parse_real(token, check))
-    return false;
-  char* end = nullptr;
-  value = std::strtof(token.c_str(), &end);
-  return std::isfinite(value);
-}
-
-inline bool parse_integer(const std::string& token, long long& value)
-{
-  if (token.empty())
-    return false;
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtoll(token.c_str(), &end, 10);
-  return end == token.c_str() + token.size() && errno == 0 && !std::isspace(static_cast<unsigned char>(token[0]));
-}
-
-// Where each soup point and polygon came from in the file (1-based lines);
-// empty where the format has no lines (PLY, binary OFF).
-struct Soup_lines
-{
-  std::vector<std::size_t> point_lines;
-  std::vector<std::size_t> polygon_lines;
-};
 
 struct Crease_tag
 {
@@ -262,7 +142,7 @@ inline void scan_obj_tag(const std::string& filename, std::size_t line, const st
       start = slash + 1;
     }
     if (k != 3)
-      fail("tag '" + name + "': '" + c + "' is not an argument count 'nint/nfloat/nstring'");
+      fail("tag '" + name + "': '" + printable(c) + "' is not an argument count 'nint/nfloat/nstring'");
   }
   const std::size_t n_int = std::size_t(counts[0]), n_float = std::size_t(counts[1]),
                     n_string = std::size_t(counts[2]);
@@ -273,11 +153,11 @@ inline void scan_obj_tag(const std::string& filename, std::size_t line, const st
   std::vector<long long> ints(n_int);
   for (std::size_t i = 0; i < n_int; ++i)
     if (!parse_integer(tok[3 + i], ints[i]))
-      fail("tag '" + name + "': '" + tok[3 + i] + "' is not an integer");
+      fail("tag '" + name + "': '" + printable(tok[3 + i]) + "' is not an integer");
   std::vector<float> floats(n_float);
   for (std::size_t i = 0; i < n_float; ++i) {
     if (!parse_float(tok[3 + n_int + i], floats[i]))
-      fail("tag '" + name + "': '" + tok[3 + n_int + i] + "' is not a finite number");
+      fail("tag '" + name + "': '" + printable(tok[3 + n_int + i]) + "' is not a finite number");
     if (floats[i] < 0)
       fail("tag '" + name + "': sharpness " + tok[3 + n_int + i] + " is negative");
   }
@@ -352,104 +232,6 @@ inline void check_obj_indices(const std::string& filename, long long largest_ind
                        std::to_string(n - 1));
 }
 
-// A token of an OBJ line: [begin, end) in the file's text.
-struct Token
-{
-  const char* begin;
-  const char* end;
-  bool empty() const { return begin == end; }
-  std::string str() const { return std::string(begin, end); }
-  bool operator==(const char* s) const
-  {
-    const std::size_t n = std::strlen(s);
-    return std::size_t(end - begin) == n && std::memcmp(begin, s, n) == 0;
-  }
-};
-
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-// The whitespace-separated tokens of [begin, end), into `tokens`.
-inline void split_tokens(const char* begin, const char* end, std::vector<Token>& tokens)
-{
-  tokens.clear();
-  while (true) {
-    while (begin != end && is_blank(*begin))
-      ++begin;
-    if (begin == end)
-      return;
-    const char* stop = begin;
-    while (stop != end && !is_blank(*stop))
-      ++stop;
-    tokens.push_back(Token{begin, stop});
-    begin = stop;
-  }
-}
-
-// `parse_integer()` on a token, without making a string of it.
-inline bool parse_integer(Token t, long long& value)
-{
-  const char* p = t.begin;
-  const bool negative = p != t.end && *p == '-';
-  if (p != t.end && (*p == '-' || *p == '+'))
-    ++p;
-  if (p == t.end)
-    return false;
-  unsigned long long magnitude = 0;
-  const unsigned long long limit = negative ? 9223372036854775808ull : 9223372036854775807ull;
-  for (; p != t.end; ++p) {
-    if (*p < '0' || *p > '9')
-      return false;
-    const unsigned digit = unsigned(*p - '0');
-    if (magnitude > (limit - digit) / 10)
-      return false; // out of range, as strtoll's ERANGE
-    magnitude = magnitude * 10 + digit;
-  }
-  value = negative ? (magnitude == limit ? (std::numeric_limits<long long>::min)() : -(long long)magnitude)
-                   : (long long)magnitude;
-  return true;
-}
-
-// `parse_real()` on a token: from_chars where it can, strtod (which takes a
-// leading '+' and reads underflows as 0 or denormals) otherwise.
-inline bool parse_real(Token t, double& value)
-{
-  if (t.empty())
-    return false;
-  for (const char* p = t.begin; p != t.end; ++p)
-    if (!(std::isdigit(static_cast<unsigned char>(*p)) || *p == '+' || *p == '-' || *p == '.' || *p == 'e' ||
-          *p == 'E'))
-      return false;
-  if (*t.begin != '+') {
-    const auto [stop, error] = std::from_chars(t.begin, t.end, value);
-    if (error == std::errc() && stop == t.end)
-      return std::isfinite(value);
-    if (error != std::errc::result_out_of_range)
-      return false;
-  }
-  return parse_real(t.str(), value);
-}
-
-// A point from three coordinate tokens read as CGAL's reader reads them:
-// a `double` FT takes the correctly rounded value (as `operator>>(double&)`
-// gives); other number types read the text through their own `operator>>`
-// (exact kernels read decimals exactly; a `float` is rounded once).
-template <class P>
-P point_from_tokens(const Token* coordinates, const double* values)
-{
-  using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
-  if constexpr (std::is_same_v<FT, double>) {
-    (void)coordinates;
-    return P(FT(values[0]), FT(values[1]), FT(values[2]));
-  } else {
-    (void)values;
-    std::istringstream in(std::string(coordinates[0].begin, coordinates[2].end));
-    CGAL::IO::set_ascii_mode(in);
-    P p;
-    in >> p;
-    return p;
-  }
-}
-
 // The vertex index of one face corner (v, v/vt, v//vn or v/vt/vn).
 inline bool parse_face_corner(Token t, long long& index)
 {
@@ -478,17 +260,12 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
   std::vector<Token> tok;
   std::vector<std::string> tag_tokens;
   long long largest_index = 0; // checked at the end: faces may name vertices defined further down
-  const char* const text_end = text.data() + text.size();
-  std::size_t line = 0;
-  for (const char* begin = text.data(); begin != text_end;) {
-    const char* end = static_cast<const char*>(std::memchr(begin, '\n', std::size_t(text_end - begin)));
-    if (end == nullptr)
-      end = text_end;
-    ++line;
-    split_tokens(begin, end, tok);
-    begin = end == text_end ? end : end + 1;
+  Text_lines lines(text.data(), text.data() + text.size());
+  while (lines.next()) {
+    const std::size_t line = lines.number();
+    split_tokens(lines.line().begin, lines.line().end, tok);
     auto fail = [&](const std::string& what) { throw IO_error(filename, line, what); };
-    if (tok.empty() || *tok[0].begin == '#')
+    if (tok.empty())
       continue;
     const Token s = tok[0];
     if (s == "v") {
@@ -497,7 +274,12 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
       double xyz[3];
       for (std::size_t i = 1; i < 4; ++i)
         if (!parse_real(tok[i], xyz[i - 1]))
-          fail("vertex coordinate '" + tok[i].str() + "' is not a finite number");
+          fail("vertex coordinate '" + printable(tok[i]) + "' is not a finite number");
+      // Numbers may follow x y z (a weight w, a colour r g b), nothing else.
+      double extra = 0;
+      for (std::size_t i = 4; i < tok.size(); ++i)
+        if (!parse_real(tok[i], extra))
+          fail("unexpected '" + printable(tok[i]) + "' after the vertex coordinates");
       points.push_back(point_from_tokens<P>(&tok[1], xyz));
       scan.lines.point_lines.push_back(line);
     } else if (s == "f") {
@@ -507,11 +289,12 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
       for (std::size_t i = 1; i < tok.size(); ++i) {
         long long index = 0;
         if (!parse_face_corner(tok[i], index))
-          fail("face corner '" + tok[i].str() + "' is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
+          fail("face corner '" + printable(tok[i]) + "' is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
         if (index == 0)
-          fail("face corner '" + tok[i].str() + "': OBJ vertex indices start at 1");
+          fail("face corner '" + printable(tok[i]) + "': OBJ vertex indices start at 1");
+        // The token, not -index, in the message: -index overflows for the least long long.
         if (index < 0 && n_points + index < 0)
-          fail("face corner '" + tok[i].str() + "' refers " + std::to_string(-index) + " vertices back, but only " +
+          fail("face corner '" + printable(tok[i]) + "' counts back past the first vertex: only " +
                std::to_string(n_points) + " vertices precede it");
         largest_index = (std::max)(largest_index, index);
         polygon.push_back(std::size_t(index < 0 ? n_points + index : index - 1));
@@ -524,104 +307,12 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
         tag_tokens.push_back(t.str());
       scan_obj_tag(filename, line, tag_tokens, scan);
     } else if (!is_statement_cgal_skips(s)) {
-      fail("unknown OBJ statement '" + s.str() + "'");
+      fail("unknown OBJ statement '" + printable(s) + "'");
     }
   }
   check_obj_indices(filename, largest_index, points.size(), polygons, scan);
   return scan;
 }
-// A light line scan of an ASCII OFF file: checks the header, the vertex
-// lines and the face lines, and remembers the line of each vertex and face.
-// Binary OFF is left to CGAL's reader alone.
-inline Soup_lines scan_off(const std::string& filename, const std::string& text)
-{
-  Soup_lines lines;
-  Line_reader reader(text);
-  // Records are the lines with something left once comments are cut.
-  auto next_record = [&](std::vector<std::string>& tok) {
-    while (reader.next()) {
-      tok.clear();
-      for (const std::string& t : reader.tokens()) {
-        const std::size_t hash = t.find('#');
-        if (hash != 0)
-          tok.push_back(t.substr(0, hash));
-        if (hash != std::string::npos)
-          break;
-      }
-      if (!tok.empty())
-        return true;
-    }
-    return false;
-  };
-  std::vector<std::string> tok;
-  if (!next_record(tok))
-    throw IO_error(filename, reader.number(), "the file is empty: no OFF header");
-  const std::string& keyword = tok[0];
-  const std::size_t k = keyword.size();
-  std::size_t j = 0;
-  if (keyword.compare(0, 2, "ST") == 0)
-    j += 2;
-  if (j < k && keyword[j] == 'C')
-    ++j;
-  if (j < k && keyword[j] == 'N')
-    ++j;
-  const bool homogeneous = j < k && keyword[j] == '4';
-  if (homogeneous)
-    ++j;
-  if (keyword.compare(j, std::string::npos, "OFF") != 0)
-    throw IO_error(filename, reader.number(), "missing OFF header: the file starts with '" + keyword + "'");
-  std::size_t first = 1;
-  if (tok.size() > 1 && tok[1] == "BINARY")
-    return lines;
-  if (tok.size() == 1) {
-    if (!next_record(tok))
-      throw IO_error(filename, reader.number(), "the file ends before the vertex and face counts");
-    first = 0;
-  }
-  long long n_vertices = -1, n_faces = -1;
-  if (tok.size() < first + 2 || !parse_integer(tok[first], n_vertices) || !parse_integer(tok[first + 1], n_faces) ||
-      n_vertices < 0 || n_faces < 0)
-    throw IO_error(filename, reader.number(), "expected the counts 'vertices faces edges'");
-  const std::size_t dimension = homogeneous ? 4 : 3;
-  for (long long i = 0; i < n_vertices; ++i) {
-    if (!next_record(tok))
-      throw IO_error(filename, reader.number(),
-                     "the file ends after " + std::to_string(i) + " of " + std::to_string(n_vertices) + " vertices");
-    double x;
-    if (tok.size() < dimension)
-      throw IO_error(filename, reader.number(),
-                     "a vertex needs " + std::to_string(dimension) + " coordinates, this line has " +
-                       std::to_string(tok.size()));
-    for (std::size_t c = 0; c < dimension; ++c)
-      if (!parse_real(tok[c], x))
-        throw IO_error(filename, reader.number(), "vertex coordinate '" + tok[c] + "' is not a finite number");
-    lines.point_lines.push_back(reader.number());
-  }
-  for (long long i = 0; i < n_faces; ++i) {
-    if (!next_record(tok))
-      throw IO_error(filename, reader.number(),
-                     "the file ends after " + std::to_string(i) + " of " + std::to_string(n_faces) + " faces");
-    long long size = 0;
-    if (!parse_integer(tok[0], size) || size < 0)
-      throw IO_error(filename, reader.number(), "a face starts with its number of vertices, not '" + tok[0] + "'");
-    if (tok.size() < std::size_t(size) + 1)
-      throw IO_error(filename, reader.number(),
-                     "the face announces " + std::to_string(size) + " vertices but lists " +
-                       std::to_string(tok.size() - 1));
-    for (long long c = 1; c <= size; ++c) {
-      long long index = 0;
-      if (!parse_integer(tok[std::size_t(c)], index))
-        throw IO_error(filename, reader.number(), "face vertex '" + tok[std::size_t(c)] + "' is not an index");
-      if (index < 0 || index >= n_vertices)
-        throw IO_error(filename, reader.number(),
-                       "face names vertex " + std::to_string(index) + ", but vertex indices run from 0 to " +
-                         std::to_string(n_vertices - 1));
-    }
-    lines.polygon_lines.push_back(reader.number());
-  }
-  return lines;
-}
-
 [[noreturn]] inline void throw_soup_error_in_file(const Soup_error& e, const std::string& filename,
                                                   const Soup_lines& lines)
 {
@@ -742,15 +433,50 @@ void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const std:
     write_corner_tags(out, mesh, *sharpness);
 }
 
+// read_polygon_mesh() without its translation of foreign exceptions.
+template <class P, class NP>
+Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format format, Mobius_mesh<P>& mesh,
+                                        const NP& np)
+{
+  const std::string text = read_whole_file(filename);
+  std::vector<P> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  Obj_scan obj;
+  if (format == Mesh_format::obj)
+    obj = read_obj_text(filename, text, points, polygons);
+  else if (format == Mesh_format::off)
+    obj.lines = read_off(filename, text, points, polygons);
+  else
+    obj.lines = read_ply(filename, text, points, polygons);
+  if (polygons.empty())
+    throw IO_error(filename, 0, "the file has no faces");
+
+  Mobius_mesh<P> result;
+  try {
+    polygon_soup_to_mobius_mesh(points, polygons, result, np);
+  } catch (const Soup_error& e) {
+    throw_soup_error_in_file(e, filename, obj.lines);
+  }
+  if (format == Mesh_format::obj)
+    apply_obj_tags(obj, filename, polygons, points.size(), result, np);
+  mesh = std::move(result);
+  return obj.options;
+}
+
 } // namespace internal
 
 /// \ingroup PkgMobiusMeshIO
 ///
 /// Reads a polygon mesh from an OBJ, OFF or PLY file (chosen by the file
 /// name's extension, in any letter case) into `mesh`, replacing its content.
-/// OBJ text is read in one pass (vertices, faces as `v`, `v/vt`, `v//vn` or
-/// `v/vt/vn` with negative indices counting back, and tags); OFF and PLY go
-/// through CGAL's polygon soup readers. The polygons then go through
+/// Each format is read in one pass by the library's own reader: OBJ
+/// (vertices, faces as `v`, `v/vt`, `v//vn` or `v/vt/vn` with negative
+/// indices counting back, and tags), OFF (text or binary, with Geomview's
+/// `[ST][C][N][4][n]OFF` variants; the dimension must be 3) and PLY (ASCII or
+/// binary, index lists of any integer type). Lines may end in "\n", "\r\n"
+/// or "\r"; a UTF-8 byte order mark is skipped; in OBJ and OFF a `#` starts a
+/// comment anywhere on a line. Counts in a header are believed only as far as
+/// the rest of the file can hold them. The polygons then go through
 /// `polygon_soup_to_mobius_mesh()`, so non-orientable surfaces are read with
 /// their Möbius connections; faces keep the file's orientation.
 ///
@@ -783,7 +509,8 @@ void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const std:
 ///
 /// \returns the mesh-level options the file's tags set (unset where it has none).
 /// \throws IO_error, naming the file and (where there is one) the line, if the
-///   file cannot be read, has an unknown extension, has a malformed line or tag,
+///   file cannot be read, has an unknown extension, has a malformed line or tag
+///   (a coordinate that is not a finite number, a count its file cannot hold),
 ///   a tag names a vertex that does not exist or a crease names two vertices
 ///   that share no edge, or if its polygons do not form a 2-manifold (then
 ///   `IO_error::soup_kind()` tells which `Soup_error` it was, and the line is
@@ -794,51 +521,19 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mobius_mesh
                                         const NP& np = parameters::default_values())
 {
   const internal::Mesh_format format = internal::format_of(filename);
-  std::vector<P> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  internal::Obj_scan obj;
-  internal::Soup_lines off_lines;
-  const internal::Soup_lines* lines = &off_lines;
-  bool read = false;
-  if (format == internal::Mesh_format::ply) {
-    {
-      std::error_code ec;
-      if (std::filesystem::is_directory(filename, ec))
-        throw IO_error(filename, 0, "is a directory, not a file");
-      errno = 0;
-      std::ifstream probe(filename, std::ios::binary);
-      if (!probe)
-        throw IO_error(filename, 0, "cannot open the file for reading" + internal::system_reason());
-    }
-    read = CGAL::IO::read_PLY(filename, points, polygons, CGAL::parameters::verbose(false));
-  } else {
-    const std::string text = internal::read_whole_file(filename);
-    if (format == internal::Mesh_format::obj) {
-      obj = internal::read_obj_text(filename, text, points, polygons);
-      lines = &obj.lines;
-      // What CGAL's reader refused, which the file errors above leave: no points.
-      read = !points.empty() && !polygons.empty();
-    } else {
-      off_lines = internal::scan_off(filename, text);
-      std::istringstream in(text, std::ios::in | std::ios::binary);
-      read = CGAL::IO::read_OFF(in, points, polygons, CGAL::parameters::verbose(false));
-    }
-  }
-  if (polygons.empty() && (read || format != internal::Mesh_format::ply))
-    throw IO_error(filename, 0, "the file has no faces");
-  if (!read)
-    throw IO_error(filename, 0, "CGAL's reader could not read the file's polygons");
-
-  Mobius_mesh<P> result;
+  // What the standard library or CGAL throw leaves here as an IO_error with
+  // the file's name, so that a caller needs to catch one type for bad files.
   try {
-    polygon_soup_to_mobius_mesh(points, polygons, result, np);
-  } catch (const Soup_error& e) {
-    internal::throw_soup_error_in_file(e, filename, *lines);
+    return internal::read_polygon_mesh(filename, format, mesh, np);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw IO_error(filename, 0, "out of memory while reading the file");
+  } catch (const std::length_error& e) {
+    throw IO_error(filename, 0, std::string("too large to read (") + e.what() + ")");
+  } catch (const CGAL::Failure_exception& e) {
+    throw IO_error(filename, 0, std::string("reading failed: ") + e.what());
   }
-  if (format == internal::Mesh_format::obj)
-    internal::apply_obj_tags(obj, filename, polygons, points.size(), result, np);
-  mesh = std::move(result);
-  return obj.options;
 }
 
 /// \ingroup PkgMobiusMeshIO
@@ -854,7 +549,9 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mobius_mesh
 ///
 /// To OBJ files, OpenSubdiv's tags are written too: `t crease 2/1/0 v0 v1 s`
 /// for each edge and `t corner 1/1/0 v s` for each vertex whose sharpness is
-/// not 0, and the options that are set in `options`.
+/// not 0, and the options that are set in `options`. A mesh without sharpness
+/// and without options gets no tag line, so that readers which do not know
+/// OpenSubdiv's tags (CGAL's OBJ reader refuses any) read the file.
 ///
 /// \param filename the file to write
 /// \param mesh the mesh
@@ -883,7 +580,9 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mobius_mesh
 /// \cgalNamedParamsEnd
 /// \param options mesh-level subdivision options, written as OBJ tags
 ///
-/// \throws IO_error if the extension is unknown or the file cannot be written.
+/// \throws IO_error if the extension is unknown, a coordinate is not a finite
+///   double (NaN, infinite, or beyond the doubles' range in an exact kernel),
+///   or the file cannot be written; the file is not created in the first two cases.
 template <class P, class NP = parameters::Default_named_parameters>
 void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
                         const NP& np = parameters::default_values(), const Sharp_feature_options& options = {})
@@ -898,6 +597,12 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   for (Vertex_index v : mesh.vertices()) {
     const P& p = mesh.point(v);
     points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    // Written, a NaN or an infinity makes a file that no reader takes back.
+    const Double_point& q = points.back();
+    if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()))
+      throw IO_error(filename, 0,
+                     "vertex " + std::to_string(v.idx()) + " has a coordinate that is not a finite double; "
+                     "nothing was written");
   }
   std::vector<std::vector<std::size_t>> polygons;
   polygons.reserve(mesh.number_of_faces());
