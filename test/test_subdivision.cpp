@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <random>
 #include <set>
@@ -1083,3 +1084,95 @@ TEST(SubdivisionMobius, DooSabinKeepsFewMobiusEdges)
 }
 
 } // namespace
+
+// ----------------------------------------------------------------- sizes
+
+namespace {
+
+CGAL_ext::Mesh_size counts(const Mesh& m)
+{
+  CGAL_ext::Mesh_size s{m.number_of_vertices(), m.number_of_edges(), m.number_of_faces(), 0};
+  for (auto e : m.edges())
+    s.border_edges += m.is_border(e) ? 1 : 0;
+  return s;
+}
+
+} // namespace
+
+// The limit, from the dart encoding by hand: the flipped dart of the last
+// halfedge of edge e is 4e + 3, which must stay below the null dart 2^32 - 1.
+TEST(MeshSize, EdgeLimitIsTheLastEdgeWithDarts)
+{
+  namespace X = CGAL_ext;
+  const unsigned long long last = X::internal::max_edges - 1; // the last edge index
+  EXPECT_EQ(X::internal::max_edges, (1ull << 30) - 1);
+  EXPECT_LT(4 * last + 3, 0xFFFFFFFFull);
+  EXPECT_EQ(4 * (last + 1) + 3, 0xFFFFFFFFull); // one edge more: its dart is the null dart
+  EXPECT_NE(X::Dart(X::Halfedge_index(std::uint32_t(2 * last + 1)), true), X::Dart());
+  X::Mesh_size most, one_more, vertices;
+  most.edges = X::internal::max_edges;
+  one_more.edges = X::internal::max_edges + 1;
+  vertices.vertices = 1ull << 32;
+  EXPECT_NO_THROW(X::internal::check_mesh_size("test", most));
+  EXPECT_THROW(X::internal::check_mesh_size("test", one_more), X::Size_error);
+  EXPECT_THROW(X::internal::check_mesh_size("test", vertices), X::Size_error);
+}
+
+// Twelve levels of a strip of 80 quads need about 2.7e9 edges, past the
+// 2^30 - 1 that darts index: refused, from counts computed by closed forms,
+// before anything is allocated (under ASan, allocating them would abort).
+TEST(MeshSize, SubdivisionPastTheLimitIsRefusedBeforeAllocating)
+{
+  Mesh quads;
+  CGAL_ext::make_mobius_strip(quads, 40, 2);
+  const CGAL_ext::Mesh_size q0 = counts(quads);
+  ASSERT_EQ(q0.faces, 80u);
+  const unsigned long long c0 = 4 * q0.faces; // corners
+  const long long chi = CGAL_ext::euler_characteristic(quads);
+  // Catmull–Clark: all faces quads after one step, F_k = c0 4^(k-1),
+  // E_k = 2^k E0 + c0 (4^k - 2^k) / 2, the border doubles, chi is kept.
+  for (unsigned k : {1u, 2u, 7u, 11u, 12u}) {
+    const auto s = S::refined_size(S::Split::quad, q0, k);
+    const unsigned long long p2 = 1ull << k, p4 = 1ull << (2 * k);
+    EXPECT_EQ(s.faces, c0 * p4 / 4) << k;
+    EXPECT_EQ(s.edges, p2 * q0.edges + c0 * (p4 - p2) / 2) << k;
+    EXPECT_EQ(s.border_edges, p2 * q0.border_edges) << k;
+    EXPECT_EQ((long long)(s.vertices + s.faces) - (long long)s.edges, chi) << k;
+  }
+  const unsigned long long e12 = 4096 * q0.edges + c0 * ((1ull << 24) - 4096) / 2;
+  EXPECT_GT(e12, 2'600'000'000ull);
+  // One level in the real refinement against the closed form.
+  Mesh once = quads;
+  S::catmull_clark(once);
+  EXPECT_EQ(once.number_of_edges(), 2 * q0.edges + c0);
+  EXPECT_EQ(once.number_of_vertices(), S::refined_size(S::Split::quad, q0, 1).vertices);
+
+  S::Refiner<S::Catmull_clark_mask> refiner;
+  try {
+    refiner.refine(quads, 12);
+    ADD_FAILURE() << "no Size_error";
+  } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.element(), "edges");
+    EXPECT_EQ(e.count(), e12);
+    EXPECT_EQ(e.limit(), (1ull << 30) - 1);
+    EXPECT_NE(std::string(e.what()).find(std::to_string(e12)), std::string::npos) << e.what();
+  }
+  const Mesh before = quads;
+  EXPECT_THROW(S::catmull_clark(quads, CGAL_ext::parameters::number_of_iterations(12)), CGAL_ext::Size_error);
+  EXPECT_EQ(quads.number_of_edges(), before.number_of_edges());
+  // A thousand levels: the estimate stops at the first level past the limit, nothing wraps.
+  EXPECT_THROW(S::catmull_clark(quads, CGAL_ext::parameters::number_of_iterations(1000)), CGAL_ext::Size_error);
+
+  // Loop on 160 triangles: F_k = 4^k F0, E_k = 2^k E0 + 3 F0 (4^k - 2^k) / 2.
+  Mesh triangles;
+  CGAL_ext::make_mobius_strip(triangles, 40, 2, 1, 1.0, 0.5, false);
+  const CGAL_ext::Mesh_size t0 = counts(triangles);
+  ASSERT_EQ(t0.faces, 160u);
+  const auto t12 = S::refined_size(S::Split::triangle, t0, 12);
+  EXPECT_EQ(t12.faces, (1ull << 24) * t0.faces);
+  EXPECT_EQ(t12.edges, 4096 * t0.edges + 3 * t0.faces * ((1ull << 24) - 4096) / 2);
+  EXPECT_THROW(S::loop(triangles, CGAL_ext::parameters::number_of_iterations(12)), CGAL_ext::Size_error);
+  // Doo–Sabin and √3: upper bounds, refused alike.
+  EXPECT_THROW(S::doo_sabin(quads, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
+  EXPECT_THROW(S::sqrt3(triangles, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
+}
