@@ -1176,3 +1176,129 @@ TEST(MeshSize, SubdivisionPastTheLimitIsRefusedBeforeAllocating)
   EXPECT_THROW(S::doo_sabin(quads, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
   EXPECT_THROW(S::sqrt3(triangles, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
 }
+
+// ----------------------------------------------------------------- property maps
+
+// Every rule's weights sum to one, and the maps take the points' weights: a
+// map that is an affine function of the points is, after subdivision, that
+// function of the new points (at borders and creases too). Checked against
+// the function evaluated on the result's points.
+TEST(SubdivisionMaps, VertexMapsFollowTheirAffineFunctionOfThePoints)
+{
+  auto scalar = [](const Point& p) { return 2 * p.x() - 3 * p.y() + 0.5 * p.z() + 1; };
+  auto colour = [](const Point& p) {
+    return std::array<double, 3>{0.5 + 0.1 * p.x(), 0.5 + 0.1 * (p.y() + p.z()), 1 - 0.2 * p.z()};
+  };
+  auto with_maps = [&](Mesh m) {
+    auto s = m.add_property_map<CGAL_ext::Vertex_index, double>("v:scalar").first;
+    auto c = m.add_property_map<CGAL_ext::Vertex_index, std::array<double, 3>>("v:colour").first;
+    auto rest = m.add_property_map<CGAL_ext::Vertex_index, Point>("v:rest", CGAL::ORIGIN).first;
+    auto id = m.add_property_map<CGAL_ext::Vertex_index, int>("v:id").first;
+    for (auto v : m.vertices()) {
+      s[v] = scalar(m.point(v));
+      c[v] = colour(m.point(v));
+      rest[v] = m.point(v);
+      id[v] = int(v.idx());
+    }
+    return m;
+  };
+  auto check = [&](const Mesh& m, const std::string& what) {
+    const auto s = m.property_map<CGAL_ext::Vertex_index, double>("v:scalar");
+    const auto c = m.property_map<CGAL_ext::Vertex_index, std::array<double, 3>>("v:colour");
+    const auto rest = m.property_map<CGAL_ext::Vertex_index, Point>("v:rest");
+    ASSERT_TRUE(s && c && rest) << what;
+    double worst = 0;
+    for (auto v : m.vertices()) {
+      const Point& p = m.point(v);
+      worst = std::max(worst, std::abs((*s)[v] - scalar(p)));
+      for (int i = 0; i < 3; ++i)
+        worst = std::max(worst, std::abs((*c)[v][i] - colour(p)[i]));
+      worst = std::max(worst, std::sqrt(CGAL::squared_distance((*rest)[v], p)));
+    }
+    EXPECT_LE(worst, 1e-12) << what;
+    // Integers have no linear combination: the map is dropped.
+    EXPECT_FALSE((m.property_map<CGAL_ext::Vertex_index, int>("v:id"))) << what;
+  };
+  Mesh klein;
+  CGAL_ext::make_klein_bottle(klein, 8, 6);
+  Mesh cc = with_maps(klein);
+  S::catmull_clark(cc, CGAL_ext::parameters::number_of_iterations(2));
+  ASSERT_EQ(cc.number_of_faces(), 16 * klein.number_of_faces());
+  check(cc, "Catmull-Clark, Klein bottle");
+
+  Mesh strip; // triangles, with a border and a crease
+  CGAL_ext::make_mobius_strip(strip, 12, 3, 1, 1.0, 0.5, false);
+  Mesh lp = with_maps(strip);
+  auto sharp = lp.add_property_map<CGAL_ext::Edge_index, float>("e:sharpness", 0.0f).first;
+  sharp[CGAL_ext::Edge_index(std::uint32_t(5))] = 2.0f;
+  S::loop(lp, CGAL_ext::parameters::number_of_iterations(2));
+  ASSERT_EQ(lp.number_of_faces(), 16 * strip.number_of_faces());
+  check(lp, "Loop, Möbius strip with a crease");
+}
+
+// Each child face takes the value of the face it lies in. The parent is
+// read off the result's vertices by the documented layout: Catmull–Clark
+// gives face f the vertex nv + ne + f, one per child face; a Loop child face
+// has two edge points (nv + e) of two edges of its parent.
+TEST(SubdivisionMaps, FaceMapsGoToTheChildFaces)
+{
+  auto label = [](std::size_t f) { return int(7 * f + 1); };
+  auto with_maps = [&](Mesh m) {
+    auto l = m.add_property_map<CGAL_ext::Face_index, int>("f:label").first;
+    auto n = m.add_property_map<CGAL_ext::Face_index, std::string>("f:name").first;
+    for (auto f : m.faces()) {
+      l[f] = label(f.idx());
+      n[f] = "face " + std::to_string(f.idx());
+    }
+    return m;
+  };
+  {
+    Mesh torus;
+    CGAL_ext::make_torus(torus, 5, 4);
+    const std::size_t nv = torus.number_of_vertices(), ne = torus.number_of_edges();
+    Mesh m = with_maps(torus);
+    S::catmull_clark(m);
+    const auto l = m.property_map<CGAL_ext::Face_index, int>("f:label");
+    const auto n = m.property_map<CGAL_ext::Face_index, std::string>("f:name");
+    ASSERT_TRUE(l && n);
+    for (auto g : m.faces()) {
+      std::vector<std::size_t> face_points;
+      for (auto v : CGAL_ext::vertices_around_face(m.halfedge(g), m))
+        if (v.idx() >= nv + ne)
+          face_points.push_back(v.idx() - nv - ne);
+      ASSERT_EQ(face_points.size(), 1u);
+      EXPECT_EQ((*l)[g], label(face_points[0]));
+      EXPECT_EQ((*n)[g], "face " + std::to_string(face_points[0]));
+    }
+  }
+  {
+    Mesh strip;
+    CGAL_ext::make_mobius_strip(strip, 6, 2, 1, 1.0, 0.5, false);
+    const std::size_t nv = strip.number_of_vertices();
+    auto faces_of_edge = [&](std::size_t e) {
+      std::set<std::size_t> faces;
+      for (int i : {0, 1}) {
+        const auto f = strip.face(Mesh::halfedge(CGAL_ext::Edge_index(std::uint32_t(e)), i));
+        if (f.is_valid())
+          faces.insert(f.idx());
+      }
+      return faces;
+    };
+    Mesh m = with_maps(strip);
+    S::loop(m);
+    const auto l = m.property_map<CGAL_ext::Face_index, int>("f:label");
+    ASSERT_TRUE(l);
+    for (auto g : m.faces()) {
+      std::vector<std::size_t> edges;
+      for (auto v : CGAL_ext::vertices_around_face(m.halfedge(g), m))
+        if (v.idx() >= nv)
+          edges.push_back(v.idx() - nv);
+      ASSERT_GE(edges.size(), 2u);
+      const auto a = faces_of_edge(edges[0]), b = faces_of_edge(edges[1]);
+      std::vector<std::size_t> common;
+      std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+      ASSERT_EQ(common.size(), 1u);
+      EXPECT_EQ((*l)[g], label(common[0]));
+    }
+  }
+}

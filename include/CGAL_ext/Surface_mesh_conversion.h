@@ -106,12 +106,6 @@ bool is_surface_mesh_internal_property(const std::string& name)
          name == reversed_faces_map_name;
 }
 
-template <class T>
-struct Type_tag
-{
-  using type = T;
-};
-
 // The value types whose property maps the conversions carry. Surface_mesh
 // makes a property array only through `add_property_map<I, T>()`, with `T`
 // named at compile time, so a list is needed here (copies between

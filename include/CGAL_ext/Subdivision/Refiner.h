@@ -280,6 +280,31 @@ public:
     interpolate<ConcurrencyTag>(base, result, scratch);
   }
 
+  /// For each face of the last level, the face of the base mesh it lies in
+  /// (quad and triangle splits, whose child faces each lie in one parent
+  /// face; the dual and √3 splits make faces across several).
+  std::vector<u32> base_faces() const
+  {
+    static_assert(!uses_stencils, "the faces of the dual and sqrt(3) splits have no single parent face");
+    std::vector<u32> origin(levels_.empty() ? 0 : levels_[0].nf), next;
+    for (u32 f = 0; f < origin.size(); ++f)
+      origin[f] = f;
+    for (unsigned k = 0; k + 1 < levels_.size(); ++k) {
+      // The split's layout (Level.h): child face c is the one at parent
+      // corner c, and the triangle split's centre triangles follow the corners.
+      const Level& p = levels_[k];
+      next.resize(levels_[k + 1].nf);
+      for (u32 f = 0; f < p.nf; ++f) {
+        for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+          next[c] = origin[f];
+        if constexpr (Mask::split == Split::triangle)
+          next[p.nc + f] = origin[f];
+      }
+      origin.swap(next);
+    }
+    return origin;
+  }
+
   /// Replaces the connectivity of `out` with that of the last level. If
   /// `write_sharpness`, the property maps "e:sharpness" and "v:sharpness" get
   /// the sharpness of the last level (border edges: 0, as they are sharp by
