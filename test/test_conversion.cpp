@@ -1,6 +1,7 @@
 // Conversion between Mobius_mesh and CGAL::Surface_mesh, copy and transform.
 #include "test_util.h"
 
+#include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Sharp_features.h>
@@ -11,8 +12,10 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
@@ -470,16 +473,45 @@ CGAL::SM_Halfedge_index end_border(const CGAL::Surface_mesh<Kd::Point_3>& sm, do
   return CGAL::SM_Halfedge_index();
 }
 
+// A band of n quads round a circle of radius 2, cut open at angle 0: with
+// `twisted`, a Möbius band (its cross-section turns half round), else an
+// annulus. The two end edges lie on each other: the border halfedge `first`
+// at the start and `last` at the end, glued source to source when twisted
+// (the half-turn swaps the ends of the cross-section), source to target if not.
+struct Cut_band
+{
+  CGAL::Surface_mesh<Kd::Point_3> sm;
+  CGAL::SM_Halfedge_index first, last;
+};
+Cut_band cut_band(int n, bool twisted)
+{
+  const double pi = std::acos(-1.0);
+  Cut_band band;
+  std::vector<CGAL::SM_Vertex_index> bottom, top;
+  for (int i = 0; i <= n; ++i) {
+    auto at = [&](double s) {
+      const double u = 2 * pi * (i % n) / n, t = twisted ? u / 2 : 0, r = 2 + s * std::cos(t);
+      return Kd::Point_3(r * std::cos(u), r * std::sin(u), s * std::sin(t));
+    };
+    // At the end the half-turn has swapped the cross-section's ends: the
+    // points are written as the start's, exactly.
+    const bool swapped = twisted && i == n;
+    bottom.push_back(band.sm.add_vertex(at(swapped ? 0.5 : -0.5)));
+    top.push_back(band.sm.add_vertex(at(swapped ? -0.5 : 0.5)));
+  }
+  for (int i = 0; i < n; ++i)
+    band.sm.add_face(bottom[i], bottom[i + 1], top[i + 1], top[i]);
+  band.first = band.sm.halfedge(bottom[0], top[0]);
+  band.last = band.sm.halfedge(top[n], bottom[n]);
+  return band;
+}
+
 TEST(Conversion, HandMadeSeamMakesMobiusStripOrAnnulus)
 {
   for (bool twisted : {true, false}) {
-    auto sm = strip(4);
-    const auto a = end_border(sm, 0), b = end_border(sm, 4);
-    ASSERT_NE(a, CGAL::SM_Halfedge_index());
-    ASSERT_NE(b, CGAL::SM_Halfedge_index());
-    // Border halfedges of the strip's ends run in opposite directions (y up at
-    // one end, down at the other); gluing them "twisted" means source to
-    // source, i.e. (0,1) to (4,0): the half-twist.
+    auto [sm, a, b] = cut_band(4, twisted);
+    ASSERT_TRUE(sm.is_border(a));
+    ASSERT_TRUE(sm.is_border(b));
     auto seam = sm.add_property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
     seam[a] = {b, twisted};
     seam[b] = {a, twisted};
@@ -500,8 +532,14 @@ TEST(Conversion, BadSeamMapsThrowAndLeaveTheMeshAlone)
   const Soup soup = read_obj("nonorientable/mobius_min_5tris.obj");
   auto target = mesh_of<Kd::Point_3>(soup);
   const auto cycles = face_cycles(target);
-  auto expect_error = [&](CGAL::Surface_mesh<Kd::Point_3>& sm, const std::string& what) {
-    EXPECT_THROW(CGAL_ext::from_surface_mesh(sm, target), CGAL_ext::Seam_error) << what;
+  // `what` is the case, `says` a fragment of the message that names it.
+  auto expect_error = [&](CGAL::Surface_mesh<Kd::Point_3>& sm, const std::string& what, const std::string& says) {
+    try {
+      CGAL_ext::from_surface_mesh(sm, target);
+      ADD_FAILURE() << what << ": no Seam_error";
+    } catch (const CGAL_ext::Seam_error& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << what << ": " << e.what();
+    }
     EXPECT_EQ(target.number_of_vertices(), 5u) << what;
     EXPECT_EQ(face_cycles(target), cycles) << what;
   };
@@ -512,24 +550,154 @@ TEST(Conversion, BadSeamMapsThrowAndLeaveTheMeshAlone)
     const auto inner = sm.opposite(a); // a face halfedge
     seam[a] = {inner, true};
     seam[inner] = {a, true};
-    expect_error(sm, "not a border halfedge");
+    expect_error(sm, "not a border halfedge", "not a border halfedge");
   }
   {
     auto sm = strip(3);
     auto seam = sm.add_property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
     seam[end_border(sm, 0)] = {end_border(sm, 3), true}; // one-sided
-    expect_error(sm, "asymmetric");
+    expect_error(sm, "asymmetric", "is not matched by");
   }
   {
     // Gluing the two end edges of a single quad with a twist identifies its
-    // diagonal corners: the quad would visit a vertex twice.
+    // diagonal corners: the quad would visit a vertex twice. (Its far corners
+    // are put on the near ones, swapped, so that the ends are copies.)
     auto sm = strip(1);
     auto seam = sm.add_property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
     const auto a = end_border(sm, 0), b = end_border(sm, 1);
+    sm.point(sm.source(b)) = sm.point(sm.source(a));
+    sm.point(sm.target(b)) = sm.point(sm.target(a));
     seam[a] = {b, true};
     seam[b] = {a, true};
-    expect_error(sm, "collapsing a face");
+    expect_error(sm, "collapsing a face", "does not give a 2-manifold");
   }
+  {
+    // The end edges of a flat strip: equal lengths, but four units apart.
+    auto sm = strip(4);
+    auto seam = sm.add_property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
+    const auto a = end_border(sm, 0), b = end_border(sm, 4);
+    seam[a] = {b, false};
+    seam[b] = {a, false};
+    expect_error(sm, "copies apart", "which lie apart");
+  }
+  {
+    // One end of a band stretched: the linked edges differ in length.
+    auto [sm, a, b] = cut_band(4, true);
+    auto seam = sm.add_property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
+    seam[a] = {b, true};
+    seam[b] = {a, true};
+    sm.point(sm.target(b)) = sm.point(sm.target(b)) + Kd::Vector_3(0, 0, 0.25);
+    expect_error(sm, "lengths differ", "differ in length");
+  }
+  {
+    // A link to a removed halfedge (an edit without collect_garbage()).
+    auto [sm, a, b] = cut_band(4, true);
+    auto seam = sm.add_property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
+    seam[a] = {b, true};
+    seam[b] = {a, true};
+    CGAL::Euler::remove_face(sm.opposite(b), sm);
+    expect_error(sm, "removed partner", "has been removed");
+  }
+}
+
+TEST(Conversion, SeamSplitOnBothSidesIsRefused)
+{
+  // An annulus of 4 quads cut open, whose two end edges were both split at
+  // their midpoints (the end faces are pentagons): only the lower halves are
+  // linked, the upper halves would stay a slit.
+  const double pi = std::acos(-1.0);
+  CGAL::Surface_mesh<Kd::Point_3> sm;
+  std::vector<CGAL::SM_Vertex_index> bottom, top;
+  for (int i = 0; i <= 4; ++i) {
+    const double u = pi / 2 * (i % 4);
+    bottom.push_back(sm.add_vertex(Kd::Point_3(2 * std::cos(u), 2 * std::sin(u), 0)));
+    top.push_back(sm.add_vertex(Kd::Point_3(2 * std::cos(u), 2 * std::sin(u), 1)));
+  }
+  const auto mid_first = sm.add_vertex(Kd::Point_3(2, 0, 0.5)), mid_last = sm.add_vertex(Kd::Point_3(2, 0, 0.5));
+  sm.add_face(std::vector<CGAL::SM_Vertex_index>{bottom[0], bottom[1], top[1], top[0], mid_first});
+  for (int i = 1; i < 3; ++i)
+    sm.add_face(bottom[i], bottom[i + 1], top[i + 1], top[i]);
+  sm.add_face(std::vector<CGAL::SM_Vertex_index>{bottom[3], bottom[4], mid_last, top[4], top[3]});
+  const auto lower_first = sm.halfedge(bottom[0], mid_first), lower_last = sm.halfedge(mid_last, bottom[4]);
+  ASSERT_TRUE(sm.is_border(lower_first));
+  ASSERT_TRUE(sm.is_border(lower_last));
+  auto seam = sm.add_property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
+  seam[lower_first] = {lower_last, false};
+  seam[lower_last] = {lower_first, false};
+  CGAL_ext::Mobius_mesh<Kd::Point_3> m;
+  EXPECT_THROW(CGAL_ext::from_surface_mesh(sm, m), CGAL_ext::Seam_error);
+  EXPECT_EQ(m.number_of_vertices(), 0u);
+  // Linking the upper halves as well makes it whole: a closed-up annulus.
+  const auto upper_first = sm.halfedge(mid_first, top[0]), upper_last = sm.halfedge(top[4], mid_last);
+  seam[upper_first] = {upper_last, false};
+  seam[upper_last] = {upper_first, false};
+  CGAL_ext::from_surface_mesh(sm, m);
+  EXPECT_EQ(m.number_of_vertices(), 9u);
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 2u);
+  EXPECT_TRUE(CGAL_ext::is_orientable(m));
+}
+
+// The Klein bottle cut open and triangulated (triangulate_faces() keeps the
+// seam: it adds diagonals inside faces only), and the length of its longest
+// seam edge.
+std::pair<CGAL::Surface_mesh<Kd::Point_3>, double> cut_klein_bottle()
+{
+  CGAL_ext::Mobius_mesh<Kd::Point_3> klein;
+  CGAL_ext::make_klein_bottle(klein, 12, 8);
+  CGAL::Surface_mesh<Kd::Point_3> sm;
+  CGAL_ext::to_surface_mesh(klein, sm);
+  CGAL::Polygon_mesh_processing::triangulate_faces(sm);
+  const auto seam = sm.property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
+  double longest = 0;
+  for (auto h : sm.halfedges())
+    if (seam[h].partner != CGAL::SM_Halfedge_index())
+      longest = std::max(longest, std::sqrt(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h)))));
+  return {std::move(sm), longest};
+}
+
+TEST(Conversion, RemeshingAcrossTheSeamIsRefused)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  for (double scale : {0.5, 1.0})
+    for (bool collect_garbage : {false, true}) {
+      auto [sm, longest] = cut_klein_bottle();
+      PMP::isotropic_remeshing(faces(sm), scale * longest, sm);
+      if (collect_garbage)
+        sm.collect_garbage();
+      CGAL_ext::Mobius_mesh<Kd::Point_3> target;
+      CGAL_ext::make_mobius_strip(target, 3, 1);
+      const auto cycles = face_cycles(target);
+      EXPECT_THROW(CGAL_ext::from_surface_mesh(sm, target), CGAL_ext::Seam_error)
+        << "target length " << scale << " x longest seam edge, collect_garbage " << collect_garbage;
+      EXPECT_EQ(target.number_of_vertices(), 6u); // 3 around x 2 across
+      EXPECT_EQ(face_cycles(target), cycles);
+    }
+}
+
+TEST(Conversion, RemeshingWithTheSeamProtectedGluesBack)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  auto [sm, longest] = cut_klein_bottle();
+  const std::size_t faces_before = sm.number_of_faces();
+  // As doc/conversion_and_merging.md shows: the seam edges constrained.
+  const auto seam = sm.property_map<CGAL::SM_Halfedge_index, CGAL_ext::Seam_link>(CGAL_ext::seam_map_name).first;
+  auto on_seam = sm.add_property_map<CGAL::SM_Edge_index, bool>("e:on_seam", false).first;
+  for (auto h : sm.halfedges())
+    if (seam[h].partner != CGAL::SM_Halfedge_index())
+      on_seam[sm.edge(h)] = true;
+  PMP::isotropic_remeshing(faces(sm), longest, sm,
+                           CGAL::parameters::edge_is_constrained_map(on_seam).protect_constraints(true));
+  sm.remove_property_map(on_seam);
+  ASSERT_NE(sm.number_of_faces(), faces_before); // the remeshing did change the mesh
+  CGAL_ext::Mobius_mesh<Kd::Point_3> back;
+  const auto glued = CGAL_ext::from_surface_mesh(sm, back);
+  ASSERT_TRUE(back.is_valid(true));
+  EXPECT_EQ(glued.seam_edges, 8u); // the weld's 8 edges, as cut
+  EXPECT_EQ(CGAL_ext::euler_characteristic(back), 0);
+  EXPECT_TRUE(CGAL_ext::is_closed(back));
+  EXPECT_FALSE(CGAL_ext::is_orientable(back));
+  EXPECT_EQ(back.number_of_faces(), sm.number_of_faces());
 }
 
 // ---------------------------------------------------------------------------- copy, transform, union

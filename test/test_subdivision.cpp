@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <random>
 #include <set>
@@ -1107,3 +1108,221 @@ TEST(SubdivisionMobius, DooSabinKeepsFewMobiusEdges)
 }
 
 } // namespace
+
+// ----------------------------------------------------------------- sizes
+
+namespace {
+
+CGAL_ext::Mesh_size counts(const Mesh& m)
+{
+  CGAL_ext::Mesh_size s{m.number_of_vertices(), m.number_of_edges(), m.number_of_faces(), 0};
+  for (auto e : m.edges())
+    s.border_edges += m.is_border(e) ? 1 : 0;
+  return s;
+}
+
+} // namespace
+
+// The limit, from the dart encoding by hand: the flipped dart of the last
+// halfedge of edge e is 4e + 3, which must stay below the null dart 2^32 - 1.
+TEST(MeshSize, EdgeLimitIsTheLastEdgeWithDarts)
+{
+  namespace X = CGAL_ext;
+  const unsigned long long last = X::internal::max_edges - 1; // the last edge index
+  EXPECT_EQ(X::internal::max_edges, (1ull << 30) - 1);
+  EXPECT_LT(4 * last + 3, 0xFFFFFFFFull);
+  EXPECT_EQ(4 * (last + 1) + 3, 0xFFFFFFFFull); // one edge more: its dart is the null dart
+  EXPECT_NE(X::Dart(X::Halfedge_index(std::uint32_t(2 * last + 1)), true), X::Dart());
+  X::Mesh_size most, one_more, vertices;
+  most.edges = X::internal::max_edges;
+  one_more.edges = X::internal::max_edges + 1;
+  vertices.vertices = 1ull << 32;
+  EXPECT_NO_THROW(X::internal::check_mesh_size("test", most));
+  EXPECT_THROW(X::internal::check_mesh_size("test", one_more), X::Size_error);
+  EXPECT_THROW(X::internal::check_mesh_size("test", vertices), X::Size_error);
+}
+
+// Twelve levels of a strip of 80 quads need about 2.7e9 edges, past the
+// 2^30 - 1 that darts index: refused, from counts computed by closed forms,
+// before anything is allocated (under ASan, allocating them would abort).
+TEST(MeshSize, SubdivisionPastTheLimitIsRefusedBeforeAllocating)
+{
+  Mesh quads;
+  CGAL_ext::make_mobius_strip(quads, 40, 2);
+  const CGAL_ext::Mesh_size q0 = counts(quads);
+  ASSERT_EQ(q0.faces, 80u);
+  const unsigned long long c0 = 4 * q0.faces; // corners
+  const long long chi = CGAL_ext::euler_characteristic(quads);
+  // Catmull–Clark: all faces quads after one step, F_k = c0 4^(k-1),
+  // E_k = 2^k E0 + c0 (4^k - 2^k) / 2, the border doubles, chi is kept.
+  for (unsigned k : {1u, 2u, 7u, 11u, 12u}) {
+    const auto s = S::refined_size(S::Split::quad, q0, k);
+    const unsigned long long p2 = 1ull << k, p4 = 1ull << (2 * k);
+    EXPECT_EQ(s.faces, c0 * p4 / 4) << k;
+    EXPECT_EQ(s.edges, p2 * q0.edges + c0 * (p4 - p2) / 2) << k;
+    EXPECT_EQ(s.border_edges, p2 * q0.border_edges) << k;
+    EXPECT_EQ((long long)(s.vertices + s.faces) - (long long)s.edges, chi) << k;
+  }
+  const unsigned long long e12 = 4096 * q0.edges + c0 * ((1ull << 24) - 4096) / 2;
+  EXPECT_GT(e12, 2'600'000'000ull);
+  // One level in the real refinement against the closed form.
+  Mesh once = quads;
+  S::catmull_clark(once);
+  EXPECT_EQ(once.number_of_edges(), 2 * q0.edges + c0);
+  EXPECT_EQ(once.number_of_vertices(), S::refined_size(S::Split::quad, q0, 1).vertices);
+
+  S::Refiner<S::Catmull_clark_mask> refiner;
+  try {
+    refiner.refine(quads, 12);
+    ADD_FAILURE() << "no Size_error";
+  } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.element(), "edges");
+    EXPECT_EQ(e.count(), e12);
+    EXPECT_EQ(e.limit(), (1ull << 30) - 1);
+    EXPECT_NE(std::string(e.what()).find(std::to_string(e12)), std::string::npos) << e.what();
+  }
+  const Mesh before = quads;
+  EXPECT_THROW(S::catmull_clark(quads, CGAL_ext::parameters::number_of_iterations(12)), CGAL_ext::Size_error);
+  EXPECT_EQ(quads.number_of_edges(), before.number_of_edges());
+  // A thousand levels: the estimate stops at the first level past the limit, nothing wraps.
+  EXPECT_THROW(S::catmull_clark(quads, CGAL_ext::parameters::number_of_iterations(1000)), CGAL_ext::Size_error);
+
+  // Loop on 160 triangles: F_k = 4^k F0, E_k = 2^k E0 + 3 F0 (4^k - 2^k) / 2.
+  Mesh triangles;
+  CGAL_ext::make_mobius_strip(triangles, 40, 2, 1, 1.0, 0.5, false);
+  const CGAL_ext::Mesh_size t0 = counts(triangles);
+  ASSERT_EQ(t0.faces, 160u);
+  const auto t12 = S::refined_size(S::Split::triangle, t0, 12);
+  EXPECT_EQ(t12.faces, (1ull << 24) * t0.faces);
+  EXPECT_EQ(t12.edges, 4096 * t0.edges + 3 * t0.faces * ((1ull << 24) - 4096) / 2);
+  EXPECT_THROW(S::loop(triangles, CGAL_ext::parameters::number_of_iterations(12)), CGAL_ext::Size_error);
+  // Doo–Sabin and √3: upper bounds, refused alike.
+  EXPECT_THROW(S::doo_sabin(quads, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
+  EXPECT_THROW(S::sqrt3(triangles, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
+}
+
+// ----------------------------------------------------------------- property maps
+
+// Every rule's weights sum to one, and the maps take the points' weights: a
+// map that is an affine function of the points is, after subdivision, that
+// function of the new points (at borders and creases too). Checked against
+// the function evaluated on the result's points.
+TEST(SubdivisionMaps, VertexMapsFollowTheirAffineFunctionOfThePoints)
+{
+  auto scalar = [](const Point& p) { return 2 * p.x() - 3 * p.y() + 0.5 * p.z() + 1; };
+  auto colour = [](const Point& p) {
+    return std::array<double, 3>{0.5 + 0.1 * p.x(), 0.5 + 0.1 * (p.y() + p.z()), 1 - 0.2 * p.z()};
+  };
+  auto with_maps = [&](Mesh m) {
+    auto s = m.add_property_map<CGAL_ext::Vertex_index, double>("v:scalar").first;
+    auto c = m.add_property_map<CGAL_ext::Vertex_index, std::array<double, 3>>("v:colour").first;
+    auto rest = m.add_property_map<CGAL_ext::Vertex_index, Point>("v:rest", CGAL::ORIGIN).first;
+    auto id = m.add_property_map<CGAL_ext::Vertex_index, int>("v:id").first;
+    for (auto v : m.vertices()) {
+      s[v] = scalar(m.point(v));
+      c[v] = colour(m.point(v));
+      rest[v] = m.point(v);
+      id[v] = int(v.idx());
+    }
+    return m;
+  };
+  auto check = [&](const Mesh& m, const std::string& what) {
+    const auto s = m.property_map<CGAL_ext::Vertex_index, double>("v:scalar");
+    const auto c = m.property_map<CGAL_ext::Vertex_index, std::array<double, 3>>("v:colour");
+    const auto rest = m.property_map<CGAL_ext::Vertex_index, Point>("v:rest");
+    ASSERT_TRUE(s && c && rest) << what;
+    double worst = 0;
+    for (auto v : m.vertices()) {
+      const Point& p = m.point(v);
+      worst = std::max(worst, std::abs((*s)[v] - scalar(p)));
+      for (int i = 0; i < 3; ++i)
+        worst = std::max(worst, std::abs((*c)[v][i] - colour(p)[i]));
+      worst = std::max(worst, std::sqrt(CGAL::squared_distance((*rest)[v], p)));
+    }
+    EXPECT_LE(worst, 1e-12) << what;
+    // Integers have no linear combination: the map is dropped.
+    EXPECT_FALSE((m.property_map<CGAL_ext::Vertex_index, int>("v:id"))) << what;
+  };
+  Mesh klein;
+  CGAL_ext::make_klein_bottle(klein, 8, 6);
+  Mesh cc = with_maps(klein);
+  S::catmull_clark(cc, CGAL_ext::parameters::number_of_iterations(2));
+  ASSERT_EQ(cc.number_of_faces(), 16 * klein.number_of_faces());
+  check(cc, "Catmull-Clark, Klein bottle");
+
+  Mesh strip; // triangles, with a border and a crease
+  CGAL_ext::make_mobius_strip(strip, 12, 3, 1, 1.0, 0.5, false);
+  Mesh lp = with_maps(strip);
+  auto sharp = lp.add_property_map<CGAL_ext::Edge_index, float>("e:sharpness", 0.0f).first;
+  sharp[CGAL_ext::Edge_index(std::uint32_t(5))] = 2.0f;
+  S::loop(lp, CGAL_ext::parameters::number_of_iterations(2));
+  ASSERT_EQ(lp.number_of_faces(), 16 * strip.number_of_faces());
+  check(lp, "Loop, Möbius strip with a crease");
+}
+
+// Each child face takes the value of the face it lies in. The parent is
+// read off the result's vertices by the documented layout: Catmull–Clark
+// gives face f the vertex nv + ne + f, one per child face; a Loop child face
+// has two edge points (nv + e) of two edges of its parent.
+TEST(SubdivisionMaps, FaceMapsGoToTheChildFaces)
+{
+  auto label = [](std::size_t f) { return int(7 * f + 1); };
+  auto with_maps = [&](Mesh m) {
+    auto l = m.add_property_map<CGAL_ext::Face_index, int>("f:label").first;
+    auto n = m.add_property_map<CGAL_ext::Face_index, std::string>("f:name").first;
+    for (auto f : m.faces()) {
+      l[f] = label(f.idx());
+      n[f] = "face " + std::to_string(f.idx());
+    }
+    return m;
+  };
+  {
+    Mesh torus;
+    CGAL_ext::make_torus(torus, 5, 4);
+    const std::size_t nv = torus.number_of_vertices(), ne = torus.number_of_edges();
+    Mesh m = with_maps(torus);
+    S::catmull_clark(m);
+    const auto l = m.property_map<CGAL_ext::Face_index, int>("f:label");
+    const auto n = m.property_map<CGAL_ext::Face_index, std::string>("f:name");
+    ASSERT_TRUE(l && n);
+    for (auto g : m.faces()) {
+      std::vector<std::size_t> face_points;
+      for (auto v : CGAL_ext::vertices_around_face(m.halfedge(g), m))
+        if (v.idx() >= nv + ne)
+          face_points.push_back(v.idx() - nv - ne);
+      ASSERT_EQ(face_points.size(), 1u);
+      EXPECT_EQ((*l)[g], label(face_points[0]));
+      EXPECT_EQ((*n)[g], "face " + std::to_string(face_points[0]));
+    }
+  }
+  {
+    Mesh strip;
+    CGAL_ext::make_mobius_strip(strip, 6, 2, 1, 1.0, 0.5, false);
+    const std::size_t nv = strip.number_of_vertices();
+    auto faces_of_edge = [&](std::size_t e) {
+      std::set<std::size_t> faces;
+      for (int i : {0, 1}) {
+        const auto f = strip.face(Mesh::halfedge(CGAL_ext::Edge_index(std::uint32_t(e)), i));
+        if (f.is_valid())
+          faces.insert(f.idx());
+      }
+      return faces;
+    };
+    Mesh m = with_maps(strip);
+    S::loop(m);
+    const auto l = m.property_map<CGAL_ext::Face_index, int>("f:label");
+    ASSERT_TRUE(l);
+    for (auto g : m.faces()) {
+      std::vector<std::size_t> edges;
+      for (auto v : CGAL_ext::vertices_around_face(m.halfedge(g), m))
+        if (v.idx() >= nv)
+          edges.push_back(v.idx() - nv);
+      ASSERT_GE(edges.size(), 2u);
+      const auto a = faces_of_edge(edges[0]), b = faces_of_edge(edges[1]);
+      std::vector<std::size_t> common;
+      std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+      ASSERT_EQ(common.size(), 1u);
+      EXPECT_EQ((*l)[g], label(common[0]));
+    }
+  }
+}

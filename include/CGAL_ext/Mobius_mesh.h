@@ -11,6 +11,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
+#include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <CGAL/Origin.h>
@@ -529,6 +530,8 @@ public:
 
   Vertex_index add_vertex_record()
   {
+    if (v_halfedge_.size() >= internal::max_vertices)
+      internal::check_mesh_size("add_vertex()", grown_size(1, 0, 0));
     v_halfedge_.push_back(Dart());
     vprops_.resize(v_halfedge_.size());
     return Vertex_index(size_type(v_halfedge_.size() - 1));
@@ -536,6 +539,8 @@ public:
   /// Adds an edge with two unlinked halfedges `2e` (target `t0`) and `2e+1` (target `t1`).
   Edge_index add_edge(Vertex_index t0, Vertex_index t1, bool mobius = false)
   {
+    if (e_mobius_.size() >= internal::max_edges)
+      internal::check_mesh_size("add_edge()", grown_size(0, 1, 0));
     h_target_.push_back(t0);
     h_target_.push_back(t1);
     h_next_.resize(h_next_.size() + 2, Dart());
@@ -548,6 +553,8 @@ public:
   }
   Face_index add_face_record(Halfedge_index h = Halfedge_index())
   {
+    if (f_halfedge_.size() >= internal::max_faces)
+      internal::check_mesh_size("add_face()", grown_size(0, 0, 1));
     f_halfedge_.push_back(h);
     fprops_.resize(f_halfedge_.size());
     return Face_index(size_type(f_halfedge_.size() - 1));
@@ -555,6 +562,7 @@ public:
   /// Resizes all element arrays at once (new elements are unlinked).
   void resize(size_type nv, size_type ne, size_type nf)
   {
+    internal::check_mesh_size("resize()", Mesh_size{nv, ne, nf, 0});
     v_halfedge_.resize(nv, Dart());
     vprops_.resize(nv);
     h_target_.resize(2 * std::size_t(ne), Vertex_index());
@@ -566,6 +574,11 @@ public:
     eprops_.resize(ne);
     f_halfedge_.resize(nf, Halfedge_index());
     fprops_.resize(nf);
+  }
+  /// The counts of this mesh with `nv`, `ne`, `nf` more elements.
+  Mesh_size grown_size(std::size_t nv, std::size_t ne, std::size_t nf) const
+  {
+    return Mesh_size{v_halfedge_.size() + nv, e_mobius_.size() + ne, f_halfedge_.size() + nf, 0};
   }
   /// Links `a` to `b`: afterwards `next(a) == b` and `prev(b) == a`.
   void set_next(Dart a, Dart b)
@@ -1194,6 +1207,8 @@ Mobius_mesh<P>::add_face(const VertexRange& vertex_range, std::string* why)
 template <class P>
 typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
 {
+  internal::check_mesh_size("joining two meshes",
+                            grown_size(o.num_vertices(), o.num_edges(), o.num_faces()));
   const Join_offsets off{num_vertices(), num_edges(), num_faces()};
   const size_type hoff = 2 * off.edges;
   auto shift_dart = [hoff](Dart d) {

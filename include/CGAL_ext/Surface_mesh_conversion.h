@@ -19,13 +19,18 @@
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -100,12 +105,6 @@ bool is_surface_mesh_internal_property(const std::string& name)
          name == "v:removed" || name == "e:removed" || name == "f:removed" || name == seam_map_name ||
          name == reversed_faces_map_name;
 }
-
-template <class T>
-struct Type_tag
-{
-  using type = T;
-};
 
 // The value types whose property maps the conversions carry. Surface_mesh
 // makes a property array only through `add_property_map<I, T>()`, with `T`
@@ -584,6 +583,7 @@ struct Seam_gluing
         continue;
       const SH g = link.partner;
       check_link(seam, h, link);
+      check_link_geometry(h, link);
       glued[std::size_t(h)] = true;
       if (h < g) {
         ++seam_edges;
@@ -598,19 +598,94 @@ struct Seam_gluing
     return seam_edges;
   }
 
+  static std::string name(SH x) { return "h" + std::to_string(std::size_t(x)); }
+  static std::string name(SV x) { return "v" + std::to_string(std::size_t(x)); }
+  std::string where(SV v) const
+  {
+    const auto& p = sm.point(v);
+    return name(v) + " (" + std::to_string(CGAL::to_double(p.x())) + ", " + std::to_string(CGAL::to_double(p.y())) +
+           ", " + std::to_string(CGAL::to_double(p.z())) + ")";
+  }
+
   template <class SeamMap>
   void check_link(const SeamMap& seam, SH h, const Seam_link& link) const
   {
-    auto name = [](SH x) { return "h" + std::to_string(std::size_t(x)); };
     const SH g = link.partner;
     if (!sm.is_border(h))
       throw Seam_error("seam map: " + name(h) + " is glued but is not a border halfedge");
-    if (std::size_t(g) >= sm.number_of_halfedges() + sm.number_of_removed_halfedges() || sm.is_removed(g) ||
-        !sm.is_border(g))
+    if (std::size_t(g) >= sm.number_of_halfedges() + sm.number_of_removed_halfedges())
+      throw Seam_error("seam map: the partner " + name(g) + " of " + name(h) + " does not exist");
+    if (sm.is_removed(g))
+      throw Seam_error("seam map: the partner " + name(g) + " of " + name(h) +
+                       " has been removed (the mesh was edited across the seam after the cut)");
+    if (!sm.is_border(g))
       throw Seam_error("seam map: the partner " + name(g) + " of " + name(h) + " is not a border halfedge");
     if (g == h || seam[g].partner != h || seam[g].twisted != link.twisted)
       throw Seam_error("seam map: " + name(h) + " -> " + name(g) + " is not matched by " + name(g) + " -> " +
                        name(h) + " with the same twist");
+  }
+
+  // Two copies of one point: equal up to a relative rounding error of `scale`
+  // (a seam copied by to_surface_mesh() or kept by an edit is exact; a seam
+  // written by hand may be computed twice).
+  bool same_point(SV a, SV b, double scale) const
+  {
+    const double tolerance = 1e-9 * scale;
+    return CGAL::to_double(CGAL::squared_distance(sm.point(a), sm.point(b))) <= tolerance * tolerance;
+  }
+  double length(SH h) const
+  {
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(sm.point(sm.source(h)), sm.point(sm.target(h)))));
+  }
+
+  // A link describes the mesh only if the two halfedges are copies of one
+  // edge: same length, end points on each other. An edit that moved, split or
+  // collapsed one side of the seam (or both differently) fails this.
+  void check_link_geometry(SH h, const Seam_link& link) const
+  {
+    const SH g = link.partner;
+    const double lh = length(h), lg = length(g);
+    if (std::abs(lh - lg) > 1e-9 * std::max(lh, lg))
+      throw Seam_error("seam map: " + name(h) + " and its partner " + name(g) + " differ in length (" +
+                       std::to_string(lh) + " against " + std::to_string(lg) +
+                       "): the mesh was edited along the seam after the cut");
+    const SV hs = sm.source(h), ht = sm.target(h);
+    const SV gs = link.twisted ? sm.source(g) : sm.target(g), gt = link.twisted ? sm.target(g) : sm.source(g);
+    for (const auto& [a, b] : {std::make_pair(hs, gs), std::make_pair(ht, gt)})
+      if (!same_point(a, b, std::max(lh, lg)))
+        throw Seam_error("seam map: " + name(h) + " and its partner " + name(g) + " would glue " + where(a) +
+                         " to " + where(b) + ", which lie apart: the seam no longer describes the mesh");
+  }
+
+  // An edit that split both sides of a seam edge alike leaves links that
+  // check out and halves that are linked to nothing: two unglued border
+  // halfedges at one glued vertex side by side (their other ends on each
+  // other; in the same direction across a twisted seam, in opposite ones
+  // across a plain one), where the cut had a seam. Gluing would leave a slit.
+  void check_seam_is_whole() const
+  {
+    std::vector<std::uint32_t> class_size(n_classes, 0);
+    for (std::uint32_t c : class_index)
+      ++class_size[c];
+    // (glued vertex class, the other end's point) -> halfedge
+    std::map<std::tuple<std::uint32_t, double, double, double>, SH> side_by_side;
+    for (SH h : sm.halfedges()) {
+      if (!sm.is_border(h) || glued[std::size_t(h)])
+        continue;
+      for (bool at_source : {true, false}) {
+        const SV at = at_source ? sm.source(h) : sm.target(h), other = at_source ? sm.target(h) : sm.source(h);
+        const std::uint32_t c = class_index[dense[std::size_t(at)]];
+        if (class_size[c] < 2)
+          continue;
+        const auto& p = sm.point(other);
+        const auto [it, added] = side_by_side.emplace(
+          std::make_tuple(c, CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())), h);
+        if (!added)
+          throw Seam_error("seam map: border halfedges " + name(it->second) + " and " + name(h) +
+                           " run side by side from the glued vertex " + where(at) + " to " + where(other) +
+                           " but are not linked: the seam was split after the cut and its halves not relinked");
+      }
+    }
   }
 
   // One vertex per class, one face per face starting at the source of the
@@ -699,10 +774,10 @@ struct Seam_gluing
 /// differently). A `Surface_mesh` without these maps is copied as it is.
 ///
 /// The seam map `"h:mobius_seam"` (see `Seam_link`) may also be written by
-/// hand: each listed border halfedge is glued to its partner, twisted (a
-/// Möbius edge) or not. Gluing identifies the partners' end vertices; glued
-/// vertices take the point and vertex properties of the copy with the lowest
-/// index. Removed elements of `sm` are skipped; indices are then compacted.
+/// hand, between copies of one edge: each listed border halfedge is glued to
+/// its partner, twisted (a Möbius edge) or not. Gluing identifies the
+/// partners' end vertices, which must lie on each other; glued vertices take
+/// the point and vertex properties of the copy with the lowest index. Removed elements of `sm` are skipped; indices are then compacted.
 ///
 /// \param sm the `Surface_mesh` to convert
 /// \param mesh the mesh it is appended to; unchanged if an exception is thrown
@@ -720,8 +795,13 @@ struct Seam_gluing
 ///     \cgalParamDescription{receives `std::pair<SM_Face_index, Face_index>` per face}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \throws Seam_error if the seam map links a halfedge that is not a border
-///   halfedge, is not symmetric, or if the gluing is not a 2-manifold.
+/// \throws Seam_error if the seam map does not describe `sm`: a link on or to
+///   a halfedge that is not a live border halfedge, a link not matched the
+///   other way, linked halfedges of different lengths or whose glued ends
+///   lie apart, unlinked border halfedges side by side at a glued vertex (a
+///   seam split after the cut), or a gluing that is not a 2-manifold. The
+///   seam map stays valid through edits that leave the seam's border
+///   halfedges and their end points alone (doc/conversion_and_merging.md).
 template <class Q, class P, class NamedParameters = parameters::Default_named_parameters>
 Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh<P>& mesh,
                                     const NamedParameters& np = parameters::default_values())
@@ -734,6 +814,8 @@ Conversion_result from_surface_mesh(const CGAL::Surface_mesh<Q>& sm, Mobius_mesh
   result.added_vertices = gluing.vertex_of.size() - gluing.n_classes;
   Mobius_mesh<P> part;
   gluing.build(part);
+  if (result.seam_edges > 0)
+    gluing.check_seam_is_whole();
   const auto carried = gluing.carry_properties(
     part, internal::has_output<NamedParameters>(CGAL::internal_np::halfedge_to_halfedge_output_iterator));
   const auto& halfedge_pairs = carried.first;

@@ -46,6 +46,27 @@ public:
   using Error::Error;
 };
 
+/// A mesh, or a result, with more elements than the 32-bit indices of
+/// `Mobius_mesh` hold (see `internal::check_mesh_size()` for the limits).
+/// Thrown before the elements are allocated; `element()` is `"vertices"`,
+/// `"edges"` or `"faces"`, `count()` how many there would be (computed in
+/// 64 bits), `limit()` the most there may be.
+class Size_error : public Parameter_error
+{
+public:
+  Size_error(const std::string& message, std::string element, unsigned long long count, unsigned long long limit)
+    : Parameter_error(message), element_(std::move(element)), count_(count), limit_(limit)
+  {}
+  const std::string& element() const { return element_; }
+  unsigned long long count() const { return count_; }
+  unsigned long long limit() const { return limit_; }
+
+private:
+  std::string element_;
+  unsigned long long count_;
+  unsigned long long limit_;
+};
+
 /// A polygon soup that does not describe a 2-manifold polygon mesh.
 class Soup_error : public Error
 {

@@ -56,10 +56,11 @@ template <class PolygonRange>
 Face_list flatten_soup_polygons(const PolygonRange& polygons, std::size_t n_points)
 {
   using Kind = Soup_error::Kind;
-  constexpr std::size_t max_count = (std::numeric_limits<std::uint32_t>::max)() / 2;
-  if (n_points >= max_count || std::size(polygons) >= max_count)
-    throw Soup_error(Kind::index_out_of_range, "the soup has more points or polygons than 32-bit indices can hold", {},
-                     {});
+  check_mesh_size("the polygon soup", Mesh_size{n_points, 0, std::size(polygons), 0});
+  // Each edge has at most two corners: past twice the edge limit, the soup
+  // needs too many edges whatever it shares. (The exact edge count is checked
+  // when the polygons are paired.)
+  constexpr std::size_t max_corners = 2 * max_edges;
   Face_list flat;
   flat.offset.reserve(std::size(polygons) + 1);
   std::size_t p = 0;
@@ -81,8 +82,9 @@ Face_list flatten_soup_polygons(const PolygonRange& polygons, std::size_t n_poin
                          {p}, {});
       flat.vertex.push_back(std::uint32_t(index));
     }
-    if (flat.vertex.size() >= max_count)
-      throw Soup_error(Kind::index_out_of_range, "the soup has more corners than 32-bit indices can hold", {p}, {});
+    if (flat.vertex.size() > max_corners)
+      check_mesh_size("the polygon soup (whose corners give at least)",
+                      Mesh_size{0, (flat.vertex.size() + 1) / 2, 0, 0});
     flat.offset.push_back(std::uint32_t(flat.vertex.size()));
     ++p;
   }
@@ -154,6 +156,8 @@ std::vector<std::uint32_t> merge_soup_points(std::uint32_t n_points, PointOf poi
 ///   three vertices or a repeated vertex, an edge shared by three or more
 ///   polygons, a non-manifold vertex (unless split), a non-finite coordinate.
 /// \throws Parameter_error for a negative or NaN tolerance.
+/// \throws Size_error (a `Parameter_error`) for more points, polygons or
+///   edges than the mesh's 32-bit indices hold, before the mesh is allocated.
 template <class PointRange, class PolygonRange, class P, class NamedParameters = parameters::Default_named_parameters>
 std::size_t polygon_soup_to_mobius_mesh(const PointRange& points, const PolygonRange& polygons, Mobius_mesh<P>& mesh,
                                         const NamedParameters& np = parameters::default_values())

@@ -9,6 +9,7 @@
 #define CGAL_EXT_SUBDIVISION_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Masks.h>
@@ -19,6 +20,10 @@
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -61,6 +66,156 @@ struct Point_values<P, K, false>
   static P to(const Value& v) { return CGAL::ORIGIN + v; }
 };
 
+// ---- the property maps carried through subdivision
+
+// How a vertex value of type T is interpolated: as `Value`, which has
+// `Value + Value` and `W * Value`, the weights being of type W. Not defined
+// for types without a linear combination (integers, strings, colours of
+// bytes): their maps are dropped.
+template <class W, class K, class T, class = void>
+struct Linear_value
+{
+  static constexpr bool defined = false;
+};
+// Floating-point numbers, as the weights' number type (exact with an exact kernel).
+template <class W, class K, class T>
+struct Linear_value<W, K, T, std::enable_if_t<std::is_floating_point_v<T>>>
+{
+  static constexpr bool defined = true;
+  using Value = W;
+  static Value from(const T& t) { return W(t); }
+  static T to(const Value& v) { return T(CGAL::to_double(v)); }
+};
+// The kernel's points and vectors (when its number type is the weights').
+template <class W, class K>
+struct Linear_value<W, K, typename K::Point_3, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_3;
+  static Value from(const typename K::Point_3& p) { return p - CGAL::ORIGIN; }
+  static typename K::Point_3 to(const Value& v) { return CGAL::ORIGIN + v; }
+};
+template <class W, class K>
+struct Linear_value<W, K, typename K::Vector_3, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_3;
+  static Value from(const Value& v) { return v; }
+  static Value to(const Value& v) { return v; }
+};
+
+// A fixed-size array of interpolated values (colours, texture coordinates).
+template <class V, std::size_t N>
+struct Value_array
+{
+  std::array<V, N> a;
+};
+template <class V, std::size_t N>
+Value_array<V, N> operator+(const Value_array<V, N>& x, const Value_array<V, N>& y)
+{
+  Value_array<V, N> r = x;
+  for (std::size_t i = 0; i < N; ++i)
+    r.a[i] = r.a[i] + y.a[i];
+  return r;
+}
+template <class W, class V, std::size_t N>
+Value_array<V, N> operator*(const W& w, const Value_array<V, N>& x)
+{
+  Value_array<V, N> r = x;
+  for (std::size_t i = 0; i < N; ++i)
+    r.a[i] = w * r.a[i];
+  return r;
+}
+template <class W, class K, class E, std::size_t N>
+struct Linear_value<W, K, std::array<E, N>, std::enable_if_t<Linear_value<W, K, E>::defined>>
+{
+  static constexpr bool defined = true;
+  using Element = Linear_value<W, K, E>;
+  using Value = Value_array<typename Element::Value, N>;
+  static Value from(const std::array<E, N>& t)
+  {
+    Value v{};
+    for (std::size_t i = 0; i < N; ++i)
+      v.a[i] = Element::from(t[i]);
+    return v;
+  }
+  static std::array<E, N> to(const Value& v)
+  {
+    std::array<E, N> t{};
+    for (std::size_t i = 0; i < N; ++i)
+      t[i] = Element::to(v.a[i]);
+    return t;
+  }
+};
+
+// The vertex value types whose maps are interpolated: a list, as the maps'
+// types are known only at run time (by name and type_info).
+template <class K, class F>
+void for_each_interpolated_type(F&& f)
+{
+  using CGAL_ext::internal::Type_tag;
+  f(Type_tag<float>());
+  f(Type_tag<double>());
+  f(Type_tag<typename K::Point_3>());
+  f(Type_tag<typename K::Vector_3>());
+  f(Type_tag<std::array<float, 2>>());
+  f(Type_tag<std::array<float, 3>>());
+  f(Type_tag<std::array<float, 4>>());
+  f(Type_tag<std::array<double, 2>>());
+  f(Type_tag<std::array<double, 3>>());
+  f(Type_tag<std::array<double, 4>>());
+}
+
+// The maps of `mesh` that a subdivision carries: vertex maps of the types
+// above, face maps of any type (but the points, the sharpness and the hole
+// flags, which the subdivision writes itself).
+template <class P>
+bool has_carried_maps(const Mobius_mesh<P>& mesh)
+{
+  for (const std::string& name : mesh.template properties<Vertex_index>())
+    if (name != "v:point" && name != vertex_sharpness_name)
+      return true; // perhaps not of an interpolated type: then the maps are merely dropped
+  for (const std::string& name : mesh.template properties<Face_index>())
+    if (name != "f:hole")
+      return true;
+  return false;
+}
+
+// Interpolates the vertex maps of `mesh` through the levels of `refiner`
+// into new maps of `out`, and gives each face of `out` the face maps' values
+// of the base face it lies in (quad and triangle splits).
+template <class ConcurrencyTag, class W, class Mask, class P>
+void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mobius_mesh<P>& out)
+{
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  for (const std::string& name : mesh.template properties<Vertex_index>()) {
+    if (name == "v:point" || name == vertex_sharpness_name)
+      continue;
+    for_each_interpolated_type<K>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      using L = Linear_value<W, K, T>;
+      if constexpr (L::defined) {
+        const auto from = mesh.template property_map<Vertex_index, T>(name);
+        if (!from)
+          return;
+        std::vector<typename L::Value> base, result;
+        base.reserve(mesh.number_of_vertices());
+        for (Vertex_index v : mesh.vertices())
+          base.push_back(L::from((*from)[v]));
+        refiner.template interpolate<ConcurrencyTag>(base, result);
+        auto to = out.template add_property_map<Vertex_index, T>(name, from->array()->default_value()).first;
+        for (Vertex_index v : out.vertices())
+          to[v] = L::to(result[v.idx()]);
+      }
+    });
+  }
+  if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle) {
+    const std::vector<std::uint32_t> parent = refiner.base_faces();
+    CGAL_ext::internal::transfer_properties<Face_index>(
+      mesh, out, 0, out.number_of_faces(), [&](Face_index f) { return Face_index(parent[f.idx()]); }, "f:hole");
+  }
+}
+
 template <class Map, class Key>
 std::vector<float> gather_sharpness(const Map& map, std::size_t n)
 {
@@ -70,24 +225,13 @@ std::vector<float> gather_sharpness(const Map& map, std::size_t n)
   return s;
 }
 
-template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
-void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
+// The sharpness of `mesh`: the maps given, else its "e:sharpness" /
+// "v:sharpness". Returns whether there is any.
+template <class P, class NamedParameters>
+bool gather_sharpness(const Mobius_mesh<P>& mesh, const NamedParameters& np, std::vector<float>& es,
+                      std::vector<float>& vs)
 {
   namespace pm = CGAL_ext::parameters;
-  using Traits = Point_values<P>;
-  using Value = typename Traits::Value;
-
-  const unsigned levels =
-    unsigned(pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::number_of_iterations), 1));
-  auto vpm = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
-  Refinement_options options;
-  options.boundary_interpolation = pm::choose_parameter(
-    pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation), Boundary_interpolation::edge_only);
-  options.crease_method =
-    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
-
-  // Sharpness: the maps given, else the mesh's "e:sharpness" / "v:sharpness".
-  std::vector<float> es, vs;
   bool has_sharpness = false;
   const auto esm_param = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
   if constexpr (!pm::is_default_parameter<NamedParameters, CGAL_ext::internal_np::edge_sharpness_t>::value) {
@@ -105,25 +249,55 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     vs = m->data();
     has_sharpness = true;
   }
+  return has_sharpness;
+}
 
-  internal::Array<Value> values; // each level's points are written in full: no zero-fill
-  values.reserve(mesh.number_of_vertices());
-  for (Vertex_index v : mesh.vertices())
-    values.push_back(Traits::from(get(vpm, v)));
+template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
+void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
+{
+  namespace pm = CGAL_ext::parameters;
+  using Traits = Point_values<P>;
+  using Value = typename Traits::Value;
+  // Exact kernels stay serial: their lazy numbers share construction history
+  // between threads.
+  using Tag = std::conditional_t<std::is_same_v<Value, Vec3>, ConcurrencyTag, CGAL::Sequential_tag>;
+
+  const unsigned levels =
+    unsigned(pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::number_of_iterations), 1));
+  auto vpm = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
+  Refinement_options options;
+  options.boundary_interpolation = pm::choose_parameter(
+    pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation), Boundary_interpolation::edge_only);
+  options.crease_method =
+    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+  std::vector<float> es, vs;
+  const bool write_sharpness = gather_sharpness(mesh, np, es, vs) && Mask::creases;
+
   // Build the result aside: on failure the caller's mesh stays as it was.
   Mobius_mesh<P> out;
-  {
-    Refiner<Mask, typename Traits::Weight> refiner(mask, options);
-    const bool write_sharpness = has_sharpness && Mask::creases;
-    // Exact kernels stay serial: their lazy numbers share construction
-    // history between threads.
-    if constexpr (std::is_same_v<Value, Vec3>)
-      refiner.template refine_and_interpolate<ConcurrencyTag>(mesh, levels, values, out, es, vs, write_sharpness);
-    else
-      refiner.refine_and_interpolate(mesh, levels, values, out, es, vs, write_sharpness);
+  Refiner<Mask, typename Traits::Weight> refiner(mask, options);
+  if (!has_carried_maps(mesh)) {
+    // Points only: one pass, two levels alive at a time.
+    internal::Array<Value> values; // each level's points are written in full: no zero-fill
+    values.reserve(mesh.number_of_vertices());
+    for (Vertex_index v : mesh.vertices())
+      values.push_back(Traits::from(get(vpm, v)));
+    refiner.template refine_and_interpolate<Tag>(mesh, levels, values, out, es, vs, write_sharpness);
+    for (Vertex_index v : out.vertices())
+      out.point(v) = Traits::to(values[v.idx()]);
+  } else {
+    // Other maps too: every level is kept, and each map interpolated through them.
+    refiner.template refine<Tag>(mesh, levels, es, vs);
+    std::vector<Value> values, result;
+    values.reserve(mesh.number_of_vertices());
+    for (Vertex_index v : mesh.vertices())
+      values.push_back(Traits::from(get(vpm, v)));
+    refiner.template interpolate<Tag>(values, result);
+    refiner.build_mesh(out, write_sharpness);
+    for (Vertex_index v : out.vertices())
+      out.point(v) = Traits::to(result[v.idx()]);
+    carry_maps<Tag>(refiner, mesh, out);
   }
-  for (Vertex_index v : out.vertices())
-    out.point(v) = Traits::to(values[v.idx()]);
   mesh = std::move(out);
 }
 
@@ -133,8 +307,17 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
 ///
 /// Subdivides `mesh` with a `SubdivisionMask`: the general form of
 /// `catmull_clark()`, `loop()`, `bilinear()` and `linear()`, which document
-/// the named parameters. Property maps other than the points and sharpness are not
-/// carried over; use `Refiner` to interpolate other vertex data.
+/// the named parameters.
+///
+/// Property maps are carried to the result as follows (doc/subdivision.md):
+/// vertex maps of `float`, `double`, the kernel's `Point_3` and `Vector_3`,
+/// and `std::array`s of 2 to 4 `float`s or `double`s are interpolated with
+/// the points' weights; face maps of any type go to the child faces, each
+/// taking its parent face's value (quad and triangle splits: Catmull–Clark,
+/// Loop, bilinear, linear). Other maps are dropped: edge and halfedge maps
+/// (but the sharpness), vertex maps of types without a linear combination
+/// (integers, `bool`, strings, colours of bytes), and face maps of Doo–Sabin
+/// and √3, whose faces lie across several parent faces.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class Mask, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,

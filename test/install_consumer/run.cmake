@@ -1,5 +1,7 @@
 # Installs the project into a scratch prefix, then configures and builds the
-# consumer against it. Arguments: -DSOURCE_DIR -DBINARY_DIR -DWORK_DIR
+# consumer against it, and runs it. Arguments: -DSOURCE_DIR -DBINARY_DIR
+# -DWORK_DIR -DEXPECT_PARALLEL (the package was built with TBB: the consumer
+# must get parallel subdivision without asking for TBB itself)
 file(REMOVE_RECURSE "${WORK_DIR}")
 execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BINARY_DIR}" --prefix "${WORK_DIR}/prefix"
                 RESULT_VARIABLE rc OUTPUT_QUIET)
@@ -8,6 +10,7 @@ if(NOT rc EQUAL 0)
 endif()
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/test/install_consumer" -B "${WORK_DIR}/build"
                         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix" -DCMAKE_BUILD_TYPE=Release
+                        "-DEXPECT_PARALLEL=${EXPECT_PARALLEL}"
                 RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "find_package(CGAL_ext) from the install prefix failed")
@@ -18,5 +21,5 @@ if(NOT rc EQUAL 0)
 endif()
 execute_process(COMMAND "${WORK_DIR}/build/consumer" RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "the consumer failed")
+  message(FATAL_ERROR "the consumer failed (exit status ${rc})")
 endif()

@@ -15,6 +15,7 @@
 
 #include <CGAL/Kernel_traits.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <complex>
@@ -51,18 +52,17 @@ inline void check_length(const char* function, const char* name, double value)
                           ", but it must be a finite number > 0");
 }
 
-// Darts hold a halfedge index shifted by one bit: keep the halfedges of the
-// new part, and of the mesh it joins, below 2^31. `a` and `b` are factors of
-// the edge count, checked one by one first so that their product cannot wrap.
+// The edges of the new part and of the mesh it joins, checked by the one
+// rule of the mesh's size (Size_limits.h). `a` and `b` are factors of the
+// edge count, capped (past any mesh's size) so that the product cannot wrap.
 inline void check_edge_count(const char* function, std::size_t existing_edges, std::size_t a, std::size_t b,
                              std::size_t edges_per_cell)
 {
   using Wide = unsigned long long;
-  constexpr Wide limit = Wide(1) << 30;
-  if (a >= limit || b >= limit || Wide(a) * Wide(b) >= limit / edges_per_cell ||
-      Wide(existing_edges) + Wide(a) * Wide(b) * edges_per_cell >= limit)
-    throw Parameter_error(std::string(function) + ": the resolution " + std::to_string(a) + " x " +
-                          std::to_string(b) + " needs more elements than 32-bit indices can hold");
+  constexpr Wide cap = Wide(1) << 31;
+  const Wide edges = Wide(existing_edges) + (std::min)(Wide(a), cap) * (std::min)(Wide(b), cap) * edges_per_cell;
+  check_mesh_size(std::string(function) + ": the resolution " + std::to_string(a) + " x " + std::to_string(b),
+                  Mesh_size{0, edges, 0, 0});
 }
 
 // A grid of nu x nvv vertices (i, j). Column i = nu is column 0 again,

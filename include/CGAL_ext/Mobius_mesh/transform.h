@@ -26,19 +26,20 @@
 namespace CGAL_ext {
 namespace internal {
 
-// Copies every property map of element kind `I` (but the points) from `src`
-// to `dst`, whatever its value type: element `i` of `dst` in [begin, end)
-// takes the value of `src_of(i)` (skipped where that is invalid). A map of
-// `dst` with the same name and another value type is left alone.
+// Copies every property map of element kind `I` (but the points, and the
+// map named `skip`) from `src` to `dst`, whatever its value type: element
+// `i` of `dst` in [begin, end) takes the value of `src_of(i)` (skipped where
+// that is invalid). A map of `dst` with the same name and another value type
+// is left alone.
 template <class I, class P1, class P2, class SrcOf>
 void transfer_properties(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst, std::size_t begin, std::size_t end,
-                         SrcOf src_of)
+                         SrcOf src_of, const std::string& skip = std::string())
 {
   const Property_container& from = Connectivity_access::properties<I>(src);
   Property_container& to = Connectivity_access::properties<I>(dst);
   std::vector<std::uint32_t> source_of;
   for (const auto& array : from.arrays()) {
-    if (array->name() == "v:point")
+    if (array->name() == "v:point" || array->name() == skip)
       continue;
     if (source_of.empty() && begin < end) { // the correspondence, once for all maps of this kind
       source_of.resize(end - begin);

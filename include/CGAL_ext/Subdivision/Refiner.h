@@ -9,6 +9,7 @@
 #define CGAL_EXT_SUBDIVISION_REFINER_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/Subdivision/internal/Interpolation.h>
@@ -40,7 +41,55 @@ struct Refinement_options
   std::uint32_t parallel_min_vertices = 1u << 17;
 };
 
+/// \ingroup PkgSubdivision
+///
+/// The element counts after `levels` steps of a split of kind `split` from a
+/// mesh of counts `base`, computed in 64 bits without refining anything:
+/// exact for the quad and triangle splits, upper bounds for the dual and √3
+/// splits (whose growth depends on the border). Stops at the first level
+/// whose counts pass what a `Mobius_mesh` indexes and returns those, so
+/// that nothing wraps however many levels are asked for.
+inline Mesh_size refined_size(Split split, const Mesh_size& base, unsigned levels)
+{
+  auto indexable = [](const Mesh_size& s) {
+    return s.edges <= CGAL_ext::internal::max_edges && s.vertices <= CGAL_ext::internal::max_vertices &&
+           s.faces <= CGAL_ext::internal::max_faces;
+  };
+  Mesh_size s = base;
+  for (unsigned k = 0; k < levels && indexable(s); ++k) {
+    const unsigned long long V = s.vertices, E = s.edges, F = s.faces, B = s.border_edges;
+    const unsigned long long C = 2 * E - B; // corners: one per halfedge with a face
+    switch (split) {
+    case Split::quad: // a vertex per vertex, edge and face; an n-gon into n quads
+      s = Mesh_size{V + E + F, 2 * E + C, C, 2 * B};
+      break;
+    case Split::triangle: // a vertex per vertex and edge; a triangle into four
+      s = Mesh_size{V + E, 2 * E + C, F + C, 2 * B};
+      break;
+    case Split::dual: // a vertex per corner, of at most four edges; a face per face, edge and vertex
+      s = Mesh_size{C, 2 * C, F + E + V, 0};
+      break;
+    case Split::sqrt3: { // a vertex per face, two per border edge; each triangle into three
+      const unsigned long long faces = 3 * F + 2 * B, border = 3 * B;
+      s = Mesh_size{V + F + 2 * B, (3 * faces + border) / 2, faces, border};
+      break;
+    }
+    }
+  }
+  return s;
+}
+
 namespace internal {
+
+// The counts of `mesh` that refined_size() starts from.
+template <class P>
+Mesh_size size_of(const Mobius_mesh<P>& mesh)
+{
+  Mesh_size s{mesh.number_of_vertices(), mesh.number_of_edges(), mesh.number_of_faces(), 0};
+  for (Edge_index e : mesh.edges())
+    s.border_edges += mesh.is_border(e) ? 1 : 0;
+  return s;
+}
 
 template <class V>
 auto normalize_value(V& v, int) -> decltype(v.exact(), void())
@@ -90,10 +139,13 @@ public:
   /// serial, with the same result).
   /// \throws Parameter_error if a sharpness is NaN or negative, or if the mask splits
   /// triangles and `mesh` has a face that is not a triangle.
+  /// \throws Size_error, before anything is allocated, if the last level
+  /// would have more elements than a `Mobius_mesh` indexes (see `refined_size()`).
   template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
   void refine(const Mobius_mesh<P>& mesh, unsigned levels, const std::vector<float>& edge_sharpness = {},
               const std::vector<float>& vertex_sharpness = {})
   {
+    check_size(mesh, levels);
     levels_.resize(levels + 1);
     weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
@@ -112,12 +164,13 @@ public:
   /// `build_mesh()`. The refiner keeps no level afterwards
   /// (`number_of_levels()` is 0).
   /// `Values` is a `std::vector` of any value type and allocator.
-  /// \throws Parameter_error as `refine()`, before `out` is touched.
+  /// \throws Parameter_error or Size_error as `refine()`, before `out` is touched.
   template <class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values, class Q>
   void refine_and_interpolate(const Mobius_mesh<P>& mesh, unsigned levels, Values& values, Mobius_mesh<Q>& out,
                               const std::vector<float>& edge_sharpness = {},
                               const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
   {
+    check_size(mesh, levels);
     levels_.resize(levels == 0 ? 1 : 2);
     build_base(mesh, edge_sharpness, vertex_sharpness);
     Values next;
@@ -227,6 +280,31 @@ public:
     interpolate<ConcurrencyTag>(base, result, scratch);
   }
 
+  /// For each face of the last level, the face of the base mesh it lies in
+  /// (quad and triangle splits, whose child faces each lie in one parent
+  /// face; the dual and √3 splits make faces across several).
+  std::vector<u32> base_faces() const
+  {
+    static_assert(!uses_stencils, "the faces of the dual and sqrt(3) splits have no single parent face");
+    std::vector<u32> origin(levels_.empty() ? 0 : levels_[0].nf), next;
+    for (u32 f = 0; f < origin.size(); ++f)
+      origin[f] = f;
+    for (unsigned k = 0; k + 1 < levels_.size(); ++k) {
+      // The split's layout (Level.h): child face c is the one at parent
+      // corner c, and the triangle split's centre triangles follow the corners.
+      const Level& p = levels_[k];
+      next.resize(levels_[k + 1].nf);
+      for (u32 f = 0; f < p.nf; ++f) {
+        for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+          next[c] = origin[f];
+        if constexpr (Mask::split == Split::triangle)
+          next[p.nc + f] = origin[f];
+      }
+      origin.swap(next);
+    }
+    return origin;
+  }
+
   /// Replaces the connectivity of `out` with that of the last level. If
   /// `write_sharpness`, the property maps "e:sharpness" and "v:sharpness" get
   /// the sharpness of the last level (border edges: 0, as they are sharp by
@@ -236,6 +314,13 @@ public:
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
 private:
+  template <class P>
+  static void check_size(const Mobius_mesh<P>& mesh, unsigned levels)
+  {
+    CGAL_ext::internal::check_mesh_size("subdividing " + std::to_string(levels) + " levels",
+                                        refined_size(Mask::split, internal::size_of(mesh), levels));
+  }
+
   // Refines levels_[slot] into levels_[slot + 1] with the weights or
   // stencils of slot `slot`; `k` is the step's number (√3 alternates).
   template <class ConcurrencyTag = CGAL::Sequential_tag>

@@ -13,6 +13,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
+#include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <algorithm>
@@ -87,6 +88,7 @@ public:
     check_repeated_vertices();
     pair_sides();
     number_edges();
+    check_mesh_size("the faces", Mesh_size{faces_.n_vertices, n_edges_, faces_.n_faces, 0});
   }
 
   u32 number_of_vertices() const { return faces_.n_vertices; }
@@ -187,7 +189,9 @@ private:
   }
 
   // Edges are numbered in order of first use; the corner that uses an edge
-  // first gets its halfedge 2e, the partner 2e+1.
+  // first gets its halfedge 2e, the partner 2e+1. Edges past what darts
+  // index are only counted (the constructor then refuses them): their
+  // halfedge numbers would wrap.
   void number_edges()
   {
     corner_halfedge_.assign(n_corners_, null);
@@ -195,9 +199,10 @@ private:
     for (std::size_t t = 0; t < n_corners_; ++t) {
       if (corner_halfedge_[t] != null)
         continue;
-      corner_halfedge_[t] = dart_encoding::halfedge_of_edge(n_edges_, 0);
+      const bool indexable = n_edges_ < max_edges;
+      corner_halfedge_[t] = indexable ? dart_encoding::halfedge_of_edge(n_edges_, 0) : 0;
       if (partner_[t] != null)
-        corner_halfedge_[partner_[t]] = dart_encoding::halfedge_of_edge(n_edges_, 1);
+        corner_halfedge_[partner_[t]] = indexable ? dart_encoding::halfedge_of_edge(n_edges_, 1) : 0;
       ++n_edges_;
     }
   }

@@ -22,6 +22,14 @@
 namespace CGAL_ext {
 namespace internal {
 
+// A value type passed as an argument, for walking a list of value types
+// (the maps of a mesh are found by name and type at run time).
+template <class T>
+struct Type_tag
+{
+  using type = T;
+};
+
 // Where a transfer takes its values from: element `first + i` of the target
 // takes element `source_of[i]` of the source, unless that is `no_source`.
 struct Transfer_sources

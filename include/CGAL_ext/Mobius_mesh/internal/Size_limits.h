@@ -1,0 +1,55 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// How many elements a Mobius_mesh can index, and the one check of it that
+// every operation growing a mesh makes before it allocates.
+
+#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_SIZE_LIMITS_H
+#define CGAL_EXT_MOBIUS_MESH_INTERNAL_SIZE_LIMITS_H
+
+#include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
+#include <CGAL_ext/exceptions.h>
+
+#include <string>
+
+namespace CGAL_ext {
+
+/// \ingroup PkgMobiusMesh
+/// Element counts of a mesh, in 64 bits so that counts past what the mesh
+/// can index can be computed (and refused) before anything is allocated.
+struct Mesh_size
+{
+  unsigned long long vertices = 0;
+  unsigned long long edges = 0;
+  unsigned long long faces = 0;
+  unsigned long long border_edges = 0; ///< edges with a face on one side only
+};
+
+namespace internal {
+
+// A dart packs 4 e + 2 i + flipped into 32 bits (Dart_encoding.h) and must
+// stay below the null value 2^32 - 1: the last edge index is 2^30 - 2.
+// Vertex and face indices run up to the null value, excluded.
+constexpr unsigned long long max_edges = (1ull << 30) - 1;
+constexpr unsigned long long max_vertices = dart_encoding::null;
+constexpr unsigned long long max_faces = dart_encoding::null;
+
+/// Throws `Size_error` if a mesh of `size` cannot be indexed; `what` says
+/// which operation would make it ("subdividing 12 levels", "the polygon soup").
+inline void check_mesh_size(const std::string& what, const Mesh_size& size)
+{
+  auto check = [&](const char* element, unsigned long long count, unsigned long long limit) {
+    if (count > limit)
+      throw Size_error(what + " would make " + std::to_string(count) + " " + element + ", more than the " +
+                         std::to_string(limit) + " that the mesh's 32-bit indices hold",
+                       element, count, limit);
+  };
+  check("edges", size.edges, max_edges);
+  check("vertices", size.vertices, max_vertices);
+  check("faces", size.faces, max_faces);
+}
+
+} // namespace internal
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_SIZE_LIMITS_H
