@@ -270,6 +270,7 @@ template <class P, class Q, class NamedParameters = parameters::Default_named_pa
 Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh<Q>& sm,
                                   const NamedParameters& np = parameters::default_values())
 {
+  CGAL_ext::internal::require_no_garbage(mesh, "to_surface_mesh");
   // Without Möbius edges the faces are oriented alike already: orient()
   // would reverse none, and the mesh serves as its own oriented copy.
   if (CGAL_ext::number_of_mobius_edges(mesh) == 0)

@@ -598,6 +598,8 @@ template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
                            const NamedParameters& np = parameters::default_values())
 {
+  CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
+  CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
   Mobius_mesh<P> work = mesh_a;
   const std::size_t split = work.number_of_vertices();
   work.join(mesh_b);
@@ -615,6 +617,7 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
 template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
+  CGAL_ext::internal::require_no_garbage(mesh, "merge_borders");
   Mobius_mesh<P> out;
   Merge_result r = internal::merge_borders_impl(out, mesh, mesh.number_of_vertices(), true, np);
   mesh = std::move(out);
@@ -715,6 +718,8 @@ template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b, const Border_pairing& pairing,
                            Merge_strategy strategy, const NamedParameters& np = parameters::default_values())
 {
+  CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
+  CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
   using Default_traits = typename CGAL::Kernel_traits<P>::Kernel;
   const auto traits =
     parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::geom_traits), Default_traits());

@@ -139,7 +139,7 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
 {
   if (!(std::isfinite(distance) && distance > 0))
     throw Parameter_error("offset_mesh: the distance must be finite and positive, not " + std::to_string(distance));
-  internal::require_no_garbage(mesh, "offset_mesh");
+  CGAL_ext::internal::require_no_garbage(mesh, "offset_mesh");
   const bool solid = parameters::choose_parameter(parameters::get_parameter(np, internal_np::solid), false);
   const auto weighting = parameters::choose_parameter(
     parameters::get_parameter(np, internal_np::vertex_normal_weighting), Vertex_normal_weighting::area);

@@ -590,6 +590,7 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using Double_point = CGAL::Simple_cartesian<double>::Point_3;
+  CGAL_ext::internal::require_no_garbage(mesh, "write_polygon_mesh");
   const internal::Mesh_format format = internal::format_of(filename);
 
   std::vector<Double_point> points;

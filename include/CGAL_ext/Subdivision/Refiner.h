@@ -317,6 +317,7 @@ private:
   template <class P>
   static void check_size(const Mobius_mesh<P>& mesh, unsigned levels)
   {
+    CGAL_ext::internal::require_no_garbage(mesh, "subdivision");
     CGAL_ext::internal::check_mesh_size("subdividing " + std::to_string(levels) + " levels",
                                         refined_size(Mask::split, internal::size_of(mesh), levels));
   }
