@@ -11,7 +11,12 @@
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh/transform.h>
+#include <CGAL_ext/Surface_mesh_conversion.h>
+#include <CGAL_ext/merge_borders.h>
 #include <CGAL_ext/offset_mesh.h>
+#include <CGAL_ext/subdivision.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
 #include <CGAL/AABB_traits.h>
@@ -270,6 +275,35 @@ TEST(GarbageCollection, CompactsArraysAndPropertyMapsFollowTheirElements)
     EXPECT_EQ(eid[maps(e)], id);
   for (const auto& [f, odd] : face_flags)
     EXPECT_EQ(fid[maps(f)], odd);
+}
+
+TEST(GarbageCollection, AlgorithmsThatNeedCompactIndicesRefuseGarbageAndCopiesKeepIt)
+{
+  Mesh m;
+  CGAL_ext::make_klein_bottle(m, 6, 5);
+  Euler::join_face(m.halfedge(Face_index(0u)), m);
+  ASSERT_TRUE(m.has_garbage());
+  const auto signature = face_signature(m);
+  Mesh other = hexagon_fan(), out;
+  CGAL::Surface_mesh<Point> sm;
+  EXPECT_THROW(CGAL_ext::Subdivision::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(1)),
+               CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::to_surface_mesh(m, sm), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::IO::write_polygon_mesh("never_written.obj", m), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::merge_borders(other, m), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::offset_mesh(m, 0.1, out), CGAL_ext::Parameter_error);
+  EXPECT_EQ(face_signature(m), signature);
+
+  // Copies keep the garbage, marks and all, to other point types too.
+  CGAL_ext::Mobius_mesh<test::Epeck::Point_3> exact;
+  CGAL_ext::copy_mesh(m, exact);
+  EXPECT_EQ(exact.number_of_faces(), m.number_of_faces());
+  EXPECT_EQ(exact.number_of_removed_faces(), 1u);
+  EXPECT_TRUE(exact.is_valid(true));
+  exact.collect_garbage();
+  m.collect_garbage();
+  EXPECT_EQ(face_signature(exact), face_signature(m));
+  EXPECT_NO_THROW(CGAL_ext::Subdivision::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(1)));
 }
 
 // ---------------------------------------------------------------- each operation on every dart
