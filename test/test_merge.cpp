@@ -37,6 +37,18 @@ Mesh<P> from_soup(const std::vector<P>& points, const std::vector<std::vector<st
   return m;
 }
 
+// The quads of a grid of (columns + 1) x (rows + 1) points numbered column
+// by column: quad (i, r) has corners (i, r), (i + 1, r), (i + 1, r + 1), (i, r + 1).
+inline std::vector<std::vector<std::size_t>> grid_quads(int columns, int rows)
+{
+  std::vector<std::vector<std::size_t>> quads;
+  auto id = [rows](int i, int r) { return std::size_t(i * (rows + 1) + r); };
+  for (int i = 0; i < columns; ++i)
+    for (int r = 0; r < rows; ++r)
+      quads.push_back({id(i, r), id(i + 1, r), id(i + 1, r + 1), id(i, r + 1)});
+  return quads;
+}
+
 // A rectangle grid of `columns` x `rows` quads bent into a ring of radius 3;
 // the cross-section turns by `half_twists` half-turns along the ring. The last
 // column is placed exactly on the first column's points (reversed for an odd
@@ -60,12 +72,7 @@ Mesh<P> twisted_strip(int columns, int rows, int half_twists)
       points.emplace_back(radial * std::cos(theta), radial * std::sin(theta), z);
     }
   }
-  std::vector<std::vector<std::size_t>> quads;
-  auto id = [rows](int i, int r) { return std::size_t(i * (rows + 1) + r); };
-  for (int i = 0; i < columns; ++i)
-    for (int r = 0; r < rows; ++r)
-      quads.push_back({id(i, r), id(i + 1, r), id(i + 1, r + 1), id(i, r + 1)});
-  return from_soup(points, quads);
+  return from_soup(points, grid_quads(columns, rows));
 }
 
 // Half of a box [0,1]² x [z0, z1]: its z = z0 face (`bottom`) or its z = z1
@@ -648,12 +655,7 @@ Mesh<P> strip_half(double x0, int columns, int rows)
   for (int i = 0; i <= columns; ++i)
     for (int r = 0; r <= rows; ++r)
       points.emplace_back(FT(x0) + FT(i) / columns, FT(r) / rows, FT(0));
-  std::vector<std::vector<std::size_t>> quads;
-  auto id = [rows](int i, int r) { return std::size_t(i * (rows + 1) + r); };
-  for (int i = 0; i < columns; ++i)
-    for (int r = 0; r < rows; ++r)
-      quads.push_back({id(i, r), id(i + 1, r), id(i + 1, r + 1), id(i, r + 1)});
-  return from_soup(points, quads);
+  return from_soup(points, grid_quads(columns, rows));
 }
 
 template <class P>

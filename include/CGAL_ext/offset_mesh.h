@@ -51,12 +51,7 @@ std::vector<std::uint8_t> corner_agrees(const Mobius_mesh<P>& m, std::vector<Dar
   for (Vertex_index v : m.vertices()) {
     if (m.is_isolated(v))
       continue;
-    Dart r;
-    for (Dart c : CGAL_ext::halfedges_around_target(m.halfedge(v), m))
-      if (!m.is_border(c)) {
-        r = c;
-        break;
-      }
+    const Dart r = vertex_side_dart(v, m); // the side vertex_normal(v) is seen from
     side_dart[v.idx()] = r;
     // Circulation carries the walk of r across every edge, Möbius or not (the
     // fan is a disk): a dart reached unflipped runs its face the way the
