@@ -21,7 +21,11 @@ using Kd = CGAL::Simple_cartesian<double>;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 
-inline std::string data(const std::string& relative) { return std::string(CGAL_EXT_TEST_DATA_DIR) + "/" + relative; }
+// The data folder's path is compiled into one small file (test_data_dir.cpp)
+// only, so that the other files do not depend on where the tree is checked out
+// and compiler caches can share them between checkouts.
+const char* data_directory();
+inline std::string data(const std::string& relative) { return std::string(data_directory()) + "/" + relative; }
 
 // The tests' own OBJ reader, independent of the library's: `on_vertex(x, y, z)`
 // for each `v` line, `on_face(indices)` (0-based; `a/t/n` corners allowed) for
