@@ -10,6 +10,7 @@
 #include "mesh_summary.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/subdivision.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -18,12 +19,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -43,7 +46,7 @@ const examples::Tool_usage usage{
   "  --levels N        subdivision steps, 0 to 15 (default 1)\n"
   "  --vertex-rule     standard, or edge-points (the smooth vertex rule averages the new edge\n"
   "                    points instead of the old neighbours)\n"
-  "  --boundary        border rule: none, edge-only, edge-and-corner\n"
+  "  --boundary        border rule: none (OpenSubdiv's hole faces left out), edge-only, edge-and-corner\n"
   "  --crease-method   uniform or chaikin (semi-sharp creases)\n"
   "  --triangles       catmark, or smooth: OpenSubdiv's smooth-triangle rule, a smoother\n"
   "                    Catmull-Clark edge rule next to triangles (OBJ tag 't smoothtriangles')\n"
@@ -174,6 +177,40 @@ void check_memory(const Mesh& mesh, const Settings& s)
   }
 }
 
+// Under Boundary_interpolation::none OpenSubdiv leaves out the faces it
+// marks as holes ("f:hole"); the library keeps them so that the mesh stays a
+// manifold, and the tool leaves them out of the file. A face whose removal
+// would pinch a vertex waits for its neighbours; any that cannot go stay.
+template <class Mesh>
+std::size_t remove_hole_faces(Mesh& mesh)
+{
+  const auto hole = mesh.template property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+  if (!hole)
+    return 0;
+  std::vector<CGAL_ext::Face_index> left;
+  for (auto f : mesh.faces())
+    if ((*hole)[f] != 0)
+      left.push_back(f);
+  std::size_t removed = 0;
+  for (bool progress = true; progress;) {
+    progress = false;
+    std::vector<CGAL_ext::Face_index> kept;
+    for (auto f : left) {
+      if (CGAL_ext::Euler::can_remove_face(mesh.halfedge(f), mesh)) {
+        CGAL_ext::Euler::remove_face(mesh.halfedge(f), mesh);
+        ++removed;
+        progress = true;
+      } else {
+        kept.push_back(f);
+      }
+    }
+    left.swap(kept);
+  }
+  if (removed > 0)
+    mesh.collect_garbage();
+  return removed;
+}
+
 template <class K>
 void run(const Settings& s)
 {
@@ -205,6 +242,7 @@ void run(const Settings& s)
   else
     S::catmull_clark(mesh, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::size_t hole_faces = boundary == CGAL_ext::Boundary_interpolation::none ? remove_hole_faces(mesh) : 0;
 
   // The output carries the options the input or the flags set, and no
   // others: a tag line makes the file unreadable to CGAL's OBJ reader, so one
@@ -219,7 +257,8 @@ void run(const Settings& s)
   CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
   std::cout << "{\"scheme\":\"" << s.scheme << "\",\"kernel\":\"" << s.kernel << "\",\"levels\":" << s.levels
             << ",\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-            << ",\"faces\":" << mesh.number_of_faces() << ",\"seconds\":" << seconds << "}" << std::endl;
+            << ",\"faces\":" << mesh.number_of_faces() << ",\"hole_faces_removed\":" << hole_faces
+            << ",\"seconds\":" << seconds << "}" << std::endl;
 }
 
 int subdivide(int argc, char** argv)

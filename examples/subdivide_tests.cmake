@@ -11,7 +11,7 @@ if(CGAL_EXT_BUILD_TESTS)
   add_test(NAME example.subdivide.cube
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube2.obj --levels 2)
   set_tests_properties(example.subdivide.cube PROPERTIES
-    PASS_REGULAR_EXPRESSION "\"vertices\":98,\"edges\":192,\"faces\":96,\"seconds\":")
+    PASS_REGULAR_EXPRESSION "\"vertices\":98,\"edges\":192,\"faces\":96,\"hole_faces_removed\":0,\"seconds\":")
   add_test(NAME example.subdivide.mobius_loop_epeck
            COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius2.off
                    --scheme loop --levels 2 --kernel epeck)
@@ -21,7 +21,7 @@ if(CGAL_EXT_BUILD_TESTS)
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube_ds.ply
                    --scheme doo-sabin --kernel epick)
   set_tests_properties(example.subdivide.cube_doo_sabin PROPERTIES
-    PASS_REGULAR_EXPRESSION "\"vertices\":24,\"edges\":48,\"faces\":26,\"seconds\":")
+    PASS_REGULAR_EXPRESSION "\"vertices\":24,\"edges\":48,\"faces\":26,\"hole_faces_removed\":0,\"seconds\":")
   add_test(NAME example.subdivide.mobius_sqrt3
            COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius_s3.obj
                    --scheme sqrt3)
@@ -34,7 +34,16 @@ if(CGAL_EXT_BUILD_TESTS)
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube_lin.obj
                    --scheme linear --kernel epeck)
   set_tests_properties(example.subdivide.cube_linear PROPERTIES
-    PASS_REGULAR_EXPRESSION "\"vertices\":26,\"edges\":48,\"faces\":24,\"seconds\":")
+    PASS_REGULAR_EXPRESSION "\"vertices\":26,\"edges\":48,\"faces\":24,\"hole_faces_removed\":0,\"seconds\":")
+  # --boundary none: the faces OpenSubdiv marks as holes (those with a border
+  # vertex in the input, and their children) are left out of the file. On the
+  # 20x4 Moebius strip that is the two outer rows of 20 quads; Catmull-Clark,
+  # 2 levels: 80 * 16 = 1280 faces, of which 640 are holes.
+  add_test(NAME example.subdivide.boundary_none_drops_holes
+           COMMAND subdivide ${_data}/nonorientable/mobius_20x4_quads.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius_none.obj
+                   --levels 2 --boundary none)
+  set_tests_properties(example.subdivide.boundary_none_drops_holes PROPERTIES
+    PASS_REGULAR_EXPRESSION "\"faces\":640,\"hole_faces_removed\":640,")
   add_test(NAME example.subdivide.sqrt3_on_quads
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme sqrt3)
   add_test(NAME example.subdivide.bad_option

@@ -131,6 +131,9 @@ TEST(Crease, EdgePointRule)
   EXPECT_TRUE(C::edge_point_is_crease(Crease_method::chaikin, 0.9f, 0.1f, 0.2f));
   EXPECT_FALSE(C::edge_point_is_crease(Crease_method::chaikin, 0.9f, 0.1f, 0.0f));
   EXPECT_FALSE(C::edge_point_is_crease(Crease_method::uniform, 0.9f, 0.1f, 0.2f));
+  // Chaikin can also take one child of an edge above 1 to 0: then no crease.
+  EXPECT_FALSE(C::edge_point_is_crease(Crease_method::chaikin, 1.2f, 0.0f, 0.2f));
+  EXPECT_TRUE(C::edge_point_is_crease(Crease_method::chaikin, 1.2f, 0.05f, 0.2f));
 }
 
 // ----------------------------------------------------------------- OpenSubdiv

@@ -33,6 +33,7 @@
 #include <array>
 #include <map>
 #include <random>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -997,4 +998,47 @@ TEST(Offset, ExactKernelAndBadDistances)
   for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL})
     EXPECT_THROW(CGAL_ext::offset_mesh(m, bad, kept), CGAL_ext::Parameter_error);
   EXPECT_EQ(face_signature(kept), before);
+}
+
+// With the caller's displacement field, no square root is taken: on an
+// exact kernel each vertex has its two lifts p ± D·n(v) exactly, n the
+// area-weighted vertex normals (Newell sums, exact), whatever their signs.
+TEST(Offset, DisplacementFieldIsExactOnExactKernels)
+{
+  using K = test::Epeck;
+  using EMesh = CGAL_ext::Mobius_mesh<K::Point_3>;
+  EMesh strip, out;
+  CGAL_ext::make_mobius_strip(strip, 24, 4);
+  auto normals = strip.add_property_map<Vertex_index, K::Vector_3>("v:n").first;
+  CGAL_ext::compute_vertex_normals(strip, normals);
+  std::size_t i = 0;
+  for (Vertex_index v : strip.vertices()) // signs do not matter: the side is read from the surface
+    if (++i % 3 == 0)
+      normals[v] = -normals[v];
+  const double distance = 0.0625;
+  const auto r = CGAL_ext::offset_mesh(strip, distance, out, CGAL_ext::parameters::vertex_displacement_map(normals));
+  EXPECT_TRUE(r.closed && r.orientable);
+  EXPECT_EQ(r.components, 1u);
+  EXPECT_EQ(r.euler_characteristic, 0);
+  ASSERT_TRUE(out.is_valid(true));
+  std::set<std::array<K::FT::ET, 3>> lifts;
+  for (Vertex_index w : out.vertices()) {
+    const auto& p = out.point(w);
+    lifts.insert({CGAL::exact(p.x()), CGAL::exact(p.y()), CGAL::exact(p.z())});
+  }
+  for (Vertex_index v : strip.vertices())
+    for (int sign : {1, -1}) {
+      const K::Point_3 q = strip.point(v) + normals[v] * K::FT(sign * distance);
+      EXPECT_EQ(lifts.count({CGAL::exact(q.x()), CGAL::exact(q.y()), CGAL::exact(q.z())}), 1u) << v.idx();
+    }
+
+  // A displacement tangent to the surface has no side: refused, `out` kept.
+  EMesh flat, kept = out;
+  std::vector<K::Point_3> points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  std::vector<std::array<std::size_t, 3>> face = {{0, 1, 2}};
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, face, flat);
+  auto tangent = flat.add_property_map<Vertex_index, K::Vector_3>("v:t", K::Vector_3(1, 0, 0)).first;
+  EXPECT_THROW(CGAL_ext::offset_mesh(flat, 0.5, out, CGAL_ext::parameters::vertex_displacement_map(tangent)),
+               CGAL_ext::Parameter_error);
+  EXPECT_EQ(out.number_of_faces(), kept.number_of_faces());
 }

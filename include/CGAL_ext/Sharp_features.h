@@ -2,9 +2,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Sharp features of a mesh, with OpenSubdiv's names and conventions: edge
-// and vertex sharpness, and the mesh-level options that OpenSubdiv's OBJ
-// tags carry. Read and written by the OBJ reader and writer, used by
-// subdivision.
+// and vertex sharpness, the mesh-level options that OpenSubdiv's OBJ tags
+// carry, and every other option enum of subdivision (all in namespace
+// CGAL_ext; `CGAL_ext::Subdivision` names them too). Read and written by
+// the OBJ reader and writer, used by subdivision.
 
 #ifndef CGAL_EXT_SHARP_FEATURES_H
 #define CGAL_EXT_SHARP_FEATURES_H
@@ -32,6 +33,12 @@ enum class Crease_method { uniform, chaikin };
 
 /// Catmull–Clark rule on triangles (OpenSubdiv's `TriangleSubdivision`).
 enum class Triangle_subdivision { catmark, smooth };
+
+/// The smooth Catmull–Clark vertex rule.
+enum class Vertex_rule {
+  standard,   ///< (n−2)/n V + 1/n² Σ neighbours + 1/n² Σ face points (DeRose et al., OpenSubdiv)
+  edge_points ///< (n−2)/n V + 1/n² Σ new edge points + 1/n² Σ face points
+};
 
 /// The mesh-level options of a shape, as OpenSubdiv's OBJ tags give them;
 /// unset where a file says nothing.

@@ -97,6 +97,29 @@ void build_from_used_points(const std::vector<P>& points, std::vector<std::vecto
   polygon_soup_to_mobius_mesh(used, polygons, out);
 }
 
+// The offset of vertex v to the side of the walk of its side dart `r`: the
+// unit vertex normal times `distance`, or the caller's displacement times
+// `distance`, turned to that side (its sign against the vertex normal, an
+// exact test; a displacement tangent to the surface has no side).
+template <class P, class NP, class Vector>
+Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double distance, const NP& np,
+                     Vertex_normal_weighting weighting)
+{
+  const Vector n = CGAL_ext::vertex_normal(r, m, parameters::vertex_normal_weighting(weighting));
+  const auto given = parameters::get_parameter(np, internal_np::vertex_displacement);
+  if constexpr (parameters::is_default_parameter<NP, internal_np::vertex_displacement_t>::value) {
+    return scaled_unit(n, distance);
+  } else {
+    using FT = typename CGAL::Kernel_traits<Vector>::Kernel::FT;
+    const Vector delta = Vector(get(given, v)) * FT(distance);
+    const CGAL::Sign side = CGAL::sign(delta * n);
+    if (side == CGAL::ZERO)
+      throw Parameter_error("offset_mesh: the displacement of vertex v" + std::to_string(v.idx()) +
+                            " has no side: it is zero or tangent to the surface");
+    return side == CGAL::POSITIVE ? delta : -delta;
+  }
+}
+
 } // namespace internal
 
 /// \ingroup PkgMobiusMeshOperations
@@ -125,9 +148,15 @@ void build_from_used_points(const std::vector<P>& points, std::vector<std::vecto
 /// normal a unit vector.
 ///
 /// \param np optional named parameters: `solid` (bool, default `false`),
-///   `vertex_normal_weighting` (default `Vertex_normal_weighting::area`).
-/// \throws Parameter_error if `distance` is not finite and positive, or the
-///   mesh has removed elements; `out` is then unchanged.
+///   `vertex_normal_weighting` (default `Vertex_normal_weighting::area`),
+///   `vertex_displacement_map` (a readable vertex map of vectors δ: each
+///   vertex then moves to `p ± distance · δ(v)` instead of along its unit
+///   normal; δ's sign does not matter, its side is read against the vertex
+///   normal. No square root is taken, so on an exact kernel the offset is
+///   exact, e.g. with δ the area-weighted normals of `compute_vertex_normals()`).
+/// \throws Parameter_error if `distance` is not finite and positive, the
+///   mesh has removed elements, or a displacement is zero or tangent to the
+///   surface; `out` is then unchanged.
 template <class P, class NP = parameters::Default_named_parameters>
 Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_mesh<P>& out,
                           const NP& np = parameters::default_values())
@@ -159,8 +188,8 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
       lifts[2 * v.idx()] = lifts[2 * v.idx() + 1] = p;
       continue;
     }
-    const auto offset = internal::scaled_unit(
-      CGAL_ext::vertex_normal(side_dart[v.idx()], m, parameters::vertex_normal_weighting(weighting)), distance);
+    using Vector = typename CGAL::Kernel_traits<P>::Kernel::Vector_3;
+    const Vector offset = internal::vertex_offset<P, NP, Vector>(v, side_dart[v.idx()], m, distance, np, weighting);
     lifts[2 * v.idx()] = p + offset;
     lifts[2 * v.idx() + 1] = p - offset;
   }

@@ -165,14 +165,20 @@ inline float fractional_weight_at_vertex(float parent_vertex, float child_vertex
 /// Whether the child point of an edge of sharpness `s` takes the crease mask
 /// ½ (a + b), given the sharpness of its two children `child_a` and `child_b`
 /// (at either end); otherwise it takes the smooth mask, blended with the
-/// crease mask by `s` if `s > 0`. An edge of sharpness 1 or more gets the
-/// crease mask: with uniform decay that is exactly the blend OpenSubdiv
-/// makes when `s` is 1 (weight 1 on the crease mask), and more is sharper.
+/// crease mask by `s` (unclamped) if `s > 0`. As OpenSubdiv's refiner decides
+/// it: the crease mask where the child point is a crease vertex, both
+/// children sharp. Sharpness 1 blends to exactly the crease mask; with
+/// uniform decay both children of a sharper edge are sharp. With Chaikin's
+/// decay an edge sharper than 1 can lose one child (a weaker semi-sharp edge
+/// at that end): its point is then the blend, which extrapolates past the
+/// crease mask, as in OpenSubdiv.
 inline bool edge_point_is_crease(Crease_method method, float s, float child_a, float child_b)
 {
   if (!is_sharp(s))
     return false;
-  return s >= 1.0f || (method == Crease_method::chaikin && is_sharp(child_a) && is_sharp(child_b));
+  if (s == 1.0f || (method == Crease_method::uniform && s > 1.0f))
+    return true;
+  return method == Crease_method::chaikin && is_sharp(child_a) && is_sharp(child_b);
 }
 
 } // namespace Crease

@@ -53,11 +53,12 @@ W two_cos(unsigned k, unsigned n)
 
 } // namespace internal
 
-/// The smooth Catmull–Clark vertex rule.
-enum class Vertex_rule {
-  standard,   ///< (n−2)/n V + 1/n² Σ neighbours + 1/n² Σ face points (DeRose et al., OpenSubdiv)
-  edge_points ///< (n−2)/n V + 1/n² Σ new edge points + 1/n² Σ face points
-};
+// The option enums live in namespace CGAL_ext (Sharp_features.h), all in one
+// place; they are also reachable by their subdivision names.
+using CGAL_ext::Boundary_interpolation;
+using CGAL_ext::Crease_method;
+using CGAL_ext::Triangle_subdivision;
+using CGAL_ext::Vertex_rule;
 
 /// The weights that make the child of a parent edge with ends `a`, `b`:
 /// `vertex * (a + b) + face * (F0 + F1)`, where `F0`, `F1` are the face

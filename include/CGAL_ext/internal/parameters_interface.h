@@ -18,6 +18,7 @@ CGAL_EXT_add_named_parameter(vertex_rule_t, vertex_rule, vertex_rule)
 CGAL_EXT_add_named_parameter(triangle_subdivision_t, triangle_subdivision, triangle_subdivision)
 // offsets
 CGAL_EXT_add_named_parameter(solid_t, solid, solid)
+CGAL_EXT_add_named_parameter(vertex_displacement_t, vertex_displacement, vertex_displacement_map)
 // normals
 CGAL_EXT_add_named_parameter(normalize_t, normalize, normalize)
 CGAL_EXT_add_named_parameter(vertex_normal_weighting_t, vertex_normal_weighting, vertex_normal_weighting)
