@@ -37,14 +37,19 @@ enum class Triangle_subdivision { catmark, smooth };
 /// unset where a file says nothing.
 struct Sharp_feature_options
 {
+  /// The `t interpolateboundary` tag.
   std::optional<Boundary_interpolation> boundary_interpolation;
+  /// The `t creasemethod` tag.
   std::optional<Crease_method> crease_method;
+  /// The `t smoothtriangles` tag.
   std::optional<Triangle_subdivision> triangle_subdivision;
 };
 
-/// The names of the property maps that hold sharpness.
+///@{
+/// The names of the property maps that hold sharpness (edge map, vertex map).
 inline constexpr const char* edge_sharpness_name = "e:sharpness";
 inline constexpr const char* vertex_sharpness_name = "v:sharpness";
+///@}
 
 /// The edge sharpness map of `mesh` (created, all 0, if missing).
 template <class P>
