@@ -27,10 +27,14 @@ enum class Boundary_interpolation {
   edge_and_corner ///< also border vertices with one face are corners
 };
 
-/// How semi-sharp creases decay from level to level (OpenSubdiv's `CreasingMethod`).
+/// How semi-sharp creases decay from level to level (OpenSubdiv's `CreasingMethod`):
+/// `uniform` takes 1 off each sharpness per level; `chaikin` first averages an
+/// edge's sharpness with that of the semi-sharp edges at its ends (¾ and ¼).
 enum class Crease_method { uniform, chaikin };
 
-/// Catmull–Clark rule on triangles (OpenSubdiv's `TriangleSubdivision`).
+/// Catmull–Clark rule on triangles (OpenSubdiv's `TriangleSubdivision`):
+/// `catmark`, the ordinary rule, or `smooth`, OpenSubdiv's smoother edge
+/// weights next to triangles.
 enum class Triangle_subdivision { catmark, smooth };
 
 /// The mesh-level options of a shape, as OpenSubdiv's OBJ tags give them;
