@@ -28,8 +28,8 @@ enum class Boundary_interpolation {
 };
 
 /// How semi-sharp creases decay from level to level (OpenSubdiv's `CreasingMethod`):
-/// `uniform` takes 1 off each sharpness per level; `chaikin` first averages an
-/// edge's sharpness with that of the semi-sharp edges at its ends (¾ and ¼).
+/// `uniform` takes 1 off each sharpness per level; `chaikin` takes ¾ of it plus
+/// ¼ of the mean of the other semi-sharp edges at the end vertex, then 1 off.
 enum class Crease_method { uniform, chaikin };
 
 /// Catmull–Clark rule on triangles (OpenSubdiv's `TriangleSubdivision`):
