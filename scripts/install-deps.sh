@@ -3,7 +3,7 @@
 set -euo pipefail
 
 required=(cmake g++ make ccache libcgal-dev libboost-dev libeigen3-dev libgmp-dev libmpfr-dev
-          libgtest-dev libbenchmark-dev libtbb-dev)
+          libgtest-dev libbenchmark-dev libtbb-dev doxygen)
 # Peers used only for reference tests and benchmarks: skipped cleanly when absent.
 optional=(libosd-dev libopenmesh-dev)
 

@@ -1,9 +1,13 @@
 #!/usr/bin/env bash
 # Builds the test suite with -Wall -Wextra under AddressSanitizer and
-# UndefinedBehaviorSanitizer, and runs it (GoogleTest through CTest).
+# UndefinedBehaviorSanitizer, and runs it (GoogleTest through CTest), after
+# building the API reference with warnings as errors.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+# The API reference first: it takes seconds and fails on an undocumented
+# public class, function or named parameter.
+bash scripts/reference.sh
 
 build=${CGAL_EXT_TEST_BUILD_DIR:-build/test}
 launcher=()

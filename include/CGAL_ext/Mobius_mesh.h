@@ -38,43 +38,87 @@ template <class Tag>
 class Index
 {
 public:
+  /// The unsigned 32-bit integer that holds the index.
   using size_type = std::uint32_t;
+  /// The value of a null (invalid) index: the largest `size_type`.
   static constexpr size_type null_value = (std::numeric_limits<size_type>::max)();
 
+  /// A null index.
   constexpr Index() = default;
+  ///@{
+  /// The index `i`; `i` must fit in `size_type`.
   constexpr explicit Index(size_type i) : idx_(i) {}
   constexpr explicit Index(std::size_t i) : idx_(static_cast<size_type>(i)) {}
   constexpr explicit Index(int i) : idx_(static_cast<size_type>(i)) {}
+  ///@}
 
+  /// The index as an integer (`null_value` for a null index).
   constexpr size_type idx() const { return idx_; }
+  /// The index as an integer, as `idx()`.
   constexpr explicit operator size_type() const { return idx_; }
+  /// True unless the index is null.
   constexpr bool is_valid() const { return idx_ != null_value; }
+  /// Makes the index null.
   void reset() { idx_ = null_value; }
 
+  ///@{
+  /// Compares the integer values of two indices (a null index is the largest).
   constexpr bool operator==(Index o) const { return idx_ == o.idx_; }
   constexpr bool operator!=(Index o) const { return idx_ != o.idx_; }
   constexpr bool operator<(Index o) const { return idx_ < o.idx_; }
   constexpr bool operator>(Index o) const { return idx_ > o.idx_; }
+  ///@}
 
+  /// Writes the index as the tag's prefix and its value (`v12`, `f3`), or the
+  /// prefix and `null`.
   friend std::ostream& operator<<(std::ostream& os, Index i)
   {
     os << Tag::prefix;
     return i.is_valid() ? (os << i.idx_) : (os << "null");
   }
+  /// A hash of the index, for `boost::hash` and `std::hash`.
   friend std::size_t hash_value(Index i) { return std::hash<size_type>()(i.idx_); }
 
 private:
   size_type idx_ = null_value;
 };
 
+/// \ingroup PkgMobiusMesh
+/// The tag of `Vertex_index`.
 struct Vertex_tag { static constexpr const char* prefix = "v"; };
+/// \ingroup PkgMobiusMesh
+/// The tag of `Halfedge_index`.
 struct Halfedge_tag { static constexpr const char* prefix = "h"; };
+/// \ingroup PkgMobiusMesh
+/// The tag of `Edge_index`.
 struct Edge_tag { static constexpr const char* prefix = "e"; };
+/// \ingroup PkgMobiusMesh
+/// The tag of `Face_index`.
 struct Face_tag { static constexpr const char* prefix = "f"; };
 
+/// \var Vertex_tag::prefix
+/// The prefix with which vertex indices are printed.
+
+/// \var Halfedge_tag::prefix
+/// The prefix with which halfedge indices are printed.
+
+/// \var Edge_tag::prefix
+/// The prefix with which edge indices are printed.
+
+/// \var Face_tag::prefix
+/// The prefix with which face indices are printed.
+
+/// \ingroup PkgMobiusMesh
+/// The index of a vertex of a `Mobius_mesh`.
 using Vertex_index = Index<Vertex_tag>;
+/// \ingroup PkgMobiusMesh
+/// The index of a halfedge of a `Mobius_mesh`: the halfedges of edge `e` are `2e` and `2e+1`.
 using Halfedge_index = Index<Halfedge_tag>;
+/// \ingroup PkgMobiusMesh
+/// The index of an edge of a `Mobius_mesh`.
 using Edge_index = Index<Edge_tag>;
+/// \ingroup PkgMobiusMesh
+/// The index of a face of a `Mobius_mesh`.
 using Face_index = Index<Face_tag>;
 
 /// \ingroup PkgMobiusMesh
@@ -86,40 +130,57 @@ using Face_index = Index<Face_tag>;
 class Dart
 {
 public:
+  /// The unsigned 32-bit integer that holds the halfedge index and the orientation bit.
   using size_type = std::uint32_t;
+  /// The bits of a null dart.
   static constexpr size_type null_value = (std::numeric_limits<size_type>::max)();
 
+  /// A null dart.
   constexpr Dart() = default;
+  /// The dart of `h`, flipped if `flipped`; null if `h` is null.
   constexpr Dart(Halfedge_index h, bool flipped)
     : bits_(h.is_valid() ? internal::dart_encoding::dart(h.idx(), flipped) : null_value)
   {}
+  /// The unflipped dart of `h`.
   constexpr explicit Dart(Halfedge_index h) : Dart(h, false) {}
 
+  /// The dart whose encoding is `b`, as returned by `bits()`.
   static constexpr Dart from_bits(size_type b)
   {
     Dart d;
     d.bits_ = b;
     return d;
   }
+  /// The encoding of the dart (halfedge and orientation bit) as one integer,
+  /// for use as an array index or a hash key.
   constexpr size_type bits() const { return bits_; }
+  /// The halfedge of the dart; null for a null dart.
   constexpr Halfedge_index halfedge() const
   {
     return is_valid() ? Halfedge_index(internal::dart_encoding::halfedge_of_dart(bits_)) : Halfedge_index();
   }
+  /// True if the dart walks its halfedge against the orientation of its face.
   constexpr bool is_flipped() const { return internal::dart_encoding::is_flipped(bits_); }
+  /// The same halfedge with the other orientation bit.
   constexpr Dart flipped() const { return from_bits(internal::dart_encoding::flip(bits_)); }
+  /// True unless the dart is null.
   constexpr bool is_valid() const { return bits_ != null_value; }
 
+  ///@{
+  /// Compares the encodings of two darts, as returned by `bits()`.
   constexpr bool operator==(Dart o) const { return bits_ == o.bits_; }
   constexpr bool operator!=(Dart o) const { return bits_ != o.bits_; }
   constexpr bool operator<(Dart o) const { return bits_ < o.bits_; }
+  ///@}
 
+  /// Writes the dart as its halfedge, followed by `~` if flipped (`h7~`), or `d:null`.
   friend std::ostream& operator<<(std::ostream& os, Dart d)
   {
     if (!d.is_valid())
       return os << "d:null";
     return os << d.halfedge() << (d.is_flipped() ? "~" : "");
   }
+  /// A hash of the dart, for `boost::hash` and `std::hash`.
   friend std::size_t hash_value(Dart d) { return std::hash<size_type>()(d.bits_); }
 
 private:
@@ -222,27 +283,42 @@ template <class P>
 class Mobius_mesh
 {
 public:
+  /// The point type.
   using Point = P;
+  /// The type of element counts and indices (32 bits).
   using size_type = std::uint32_t;
+  ///@{
+  /// The element indices and darts, as in the enclosing namespace.
   using Vertex_index = CGAL_ext::Vertex_index;
   using Halfedge_index = CGAL_ext::Halfedge_index;
   using Edge_index = CGAL_ext::Edge_index;
   using Face_index = CGAL_ext::Face_index;
   using Dart = CGAL_ext::Dart;
+  ///@}
 
+  /// A property map with key `I` (an index type) and value `T`, a model of
+  /// `LvaluePropertyMap`; it converts to `false` when null.
   template <class I, class T>
   using Property_map = internal::Property_map<I, T>;
 
+  ///@{
+  /// Ranges of the indices of one kind of element, in index order, removed
+  /// elements skipped; they have `begin()`, `end()`, `size()` and `empty()`.
   using Vertex_range = internal::Iterator_range<internal::Index_iterator<Vertex_index>>;
   using Halfedge_range = internal::Iterator_range<internal::Index_iterator<Halfedge_index>>;
   using Edge_range = internal::Iterator_range<internal::Index_iterator<Edge_index>>;
   using Face_range = internal::Iterator_range<internal::Index_iterator<Face_index>>;
+  ///@}
 
   // ---------------------------------------------------------------- lifecycle
 
+  /// An empty mesh, with its point map.
   Mobius_mesh() { init_points(); }
+  /// A copy of `o`: connectivity, removed elements and every property map.
   Mobius_mesh(const Mobius_mesh& o) { *this = o; }
+  /// Takes the elements and property maps of `o`, which is left empty.
   Mobius_mesh(Mobius_mesh&& o) noexcept { *this = std::move(o); }
+  /// Makes this mesh a copy of `o`: connectivity, removed elements and every property map.
   Mobius_mesh& operator=(const Mobius_mesh& o)
   {
     if (this != &o) {
@@ -256,6 +332,7 @@ public:
     }
     return *this;
   }
+  /// Takes the elements and property maps of `o`, which is left empty.
   Mobius_mesh& operator=(Mobius_mesh&& o) noexcept
   {
     if (this != &o) {
@@ -331,13 +408,17 @@ public:
 
   // ---------------------------------------------------------------- counts and ranges
 
+  ///@{
   /// The numbers of elements, removed ones not counted (as in `Surface_mesh`).
   size_type number_of_vertices() const { return num_vertices() - removed_vertices_.count; }
   size_type number_of_halfedges() const { return num_halfedges() - 2 * removed_edges_.count; }
   size_type number_of_edges() const { return num_edges() - removed_edges_.count; }
   size_type number_of_faces() const { return num_faces() - removed_faces_.count; }
+  ///@}
+  /// True if the mesh has no vertex (removed ones not counted).
   bool is_empty() const { return number_of_vertices() == 0; }
 
+  ///@{
   /// The numbers of element slots, removed elements included: every index of
   /// the mesh is below them. Equal to the `number_of_*()` functions unless
   /// `has_garbage()`.
@@ -345,45 +426,60 @@ public:
   size_type num_halfedges() const { return size_type(h_target_.size()); }
   size_type num_edges() const { return size_type(e_mobius_.size()); }
   size_type num_faces() const { return size_type(f_halfedge_.size()); }
+  ///@}
 
+  ///@{
   /// The elements, in index order, removed ones skipped.
   Vertex_range vertices() const { return range<Vertex_index>(num_vertices(), removed_vertices_, 0); }
   Halfedge_range halfedges() const { return range<Halfedge_index>(num_halfedges(), removed_edges_, 1); }
   Edge_range edges() const { return range<Edge_index>(num_edges(), removed_edges_, 0); }
   Face_range faces() const { return range<Face_index>(num_faces(), removed_faces_, 0); }
+  ///@}
 
+  ///@{
+  /// The null index (or dart) of each kind, as returned where there is no element.
   static constexpr Vertex_index null_vertex() { return Vertex_index(); }
   static constexpr Halfedge_index null_halfedge() { return Halfedge_index(); }
   static constexpr Edge_index null_edge() { return Edge_index(); }
   static constexpr Face_index null_face() { return Face_index(); }
   static constexpr Dart null_dart() { return Dart(); }
+  ///@}
 
-  /// True if the index names a slot of the mesh (removed or not).
+  ///@{
+  /// True if the index (or the dart's halfedge) names a slot of the mesh
+  /// (removed or not); null indices are not valid.
   bool is_valid(Vertex_index v) const { return v.idx() < num_vertices(); }
   bool is_valid(Halfedge_index h) const { return h.idx() < num_halfedges(); }
   bool is_valid(Edge_index e) const { return e.idx() < num_edges(); }
   bool is_valid(Face_index f) const { return f.idx() < num_faces(); }
   bool is_valid(Dart d) const { return d.is_valid() && is_valid(d.halfedge()); }
+  ///@}
 
   // ---------------------------------------------------------------- darts
 
   /// The dart of `h`; unflipped runs along the orientation of `h`'s face.
   static constexpr Dart dart(Halfedge_index h, bool flipped = false) { return Dart(h, flipped); }
+  /// The same halfedge as `d` with the other orientation bit: `d.flipped()`.
   static constexpr Dart flip(Dart d) { return d.flipped(); }
 
+  /// The vertex `d` points to.
   Vertex_index target(Dart d) const
   {
     return d.is_flipped() ? source_of(d.halfedge()) : h_target_[d.halfedge().idx()];
   }
+  /// The vertex `d` starts from: `target(opposite(d))`.
   Vertex_index source(Dart d) const
   {
     return d.is_flipped() ? h_target_[d.halfedge().idx()] : source_of(d.halfedge());
   }
+  /// The dart after `d` around its face (or border cycle), walked in `d`'s
+  /// direction: `source(next(d)) == target(d)`.
   Dart next(Dart d) const
   {
     const size_type h = d.halfedge().idx();
     return d.is_flipped() ? h_prev_[h].flipped() : h_next_[h];
   }
+  /// The dart before `d` around its face (or border cycle): `next(prev(d)) == d`.
   Dart prev(Dart d) const
   {
     const size_type h = d.halfedge().idx();
@@ -395,8 +491,11 @@ public:
     const size_type b = d.bits();
     return Dart::from_bits(internal::dart_encoding::opposite_dart(b, e_mobius_[internal::dart_encoding::edge_of_dart(b)] != 0));
   }
+  /// The face of `d`'s halfedge; null on the border.
   Face_index face(Dart d) const { return h_face_[d.halfedge().idx()]; }
+  /// The edge of `d`'s halfedge.
   Edge_index edge(Dart d) const { return Edge_index(internal::dart_encoding::edge_of_dart(d.bits())); }
+  /// The halfedge of `d`: `d.halfedge()`.
   static Halfedge_index halfedge(Dart d) { return d.halfedge(); }
 
   /// An incoming dart of `v` (target `v`); a border dart if `v` is on the border.
@@ -405,19 +504,27 @@ public:
   Dart halfedge(Face_index f) const { return Dart(f_halfedge_[f.idx()], false); }
   /// The unflipped dart of the first halfedge of `e`.
   static Dart halfedge(Edge_index e) { return Dart(halfedge(e, 0), false); }
+  /// Halfedge `i` (0 or 1) of `e`: `2e + i`.
   static Halfedge_index halfedge(Edge_index e, unsigned i)
   {
     return Halfedge_index(internal::dart_encoding::halfedge_of_edge(e.idx(), i));
   }
+  /// The edge of `h`: `h / 2`.
   static Edge_index edge(Halfedge_index h) { return Edge_index(internal::dart_encoding::edge_of_halfedge(h.idx())); }
+  /// The other halfedge of `h`'s edge, as an index (`h ^ 1`); to walk the
+  /// mesh, use `opposite(Dart)`, which also sets the orientation bit.
   static Halfedge_index opposite_halfedge(Halfedge_index h)
   {
     return Halfedge_index(internal::dart_encoding::opposite_halfedge(h.idx()));
   }
 
+  /// The target of the unflipped dart of `h`.
   Vertex_index target(Halfedge_index h) const { return target(dart(h)); }
+  /// The source of the unflipped dart of `h`.
   Vertex_index source(Halfedge_index h) const { return source(dart(h)); }
+  /// The face of `h`; null on the border.
   Face_index face(Halfedge_index h) const { return h_face_[h.idx()]; }
+  /// End `i` of `e`: its source (`i == 0`) or target (`i == 1`) as seen from `halfedge(e)`.
   Vertex_index vertex(Edge_index e, unsigned i) const
   {
     return i == 0 ? source(halfedge(e)) : target(halfedge(e));
@@ -425,8 +532,12 @@ public:
 
   // ---------------------------------------------------------------- queries
 
+  ///@{
+  /// True if the halfedge has no face.
   bool is_border(Dart d) const { return !h_face_[d.halfedge().idx()].is_valid(); }
   bool is_border(Halfedge_index h) const { return !h_face_[h.idx()].is_valid(); }
+  ///@}
+  /// True if one of the two halfedges of `e` has no face.
   bool is_border(Edge_index e) const
   {
     return is_border(halfedge(e, 0)) || is_border(halfedge(e, 1));
@@ -437,6 +548,7 @@ public:
     const Dart d = v_halfedge_[v.idx()];
     return !d.is_valid() || is_border(d);
   }
+  /// True if `v` has no incident edge.
   bool is_isolated(Vertex_index v) const { return !v_halfedge_[v.idx()].is_valid(); }
   /// True if the two faces of `e` run along it in the same direction.
   bool is_mobius(Edge_index e) const { return e_mobius_[e.idx()] != 0; }
@@ -450,8 +562,12 @@ public:
 
   // ---------------------------------------------------------------- points and properties
 
+  ///@{
+  /// The point of `v`.
   const Point& point(Vertex_index v) const { return points_[v]; }
   Point& point(Vertex_index v) { return points_[v]; }
+  ///@}
+  /// The point map (the vertex property named `"v:point"`).
   Property_map<Vertex_index, Point> points() const { return points_; }
 
   /// Adds a property map named `name` with value type `T`, or returns the
@@ -482,11 +598,13 @@ public:
     map = Property_map<I, T>();
     return removed;
   }
+  /// The names of the property maps with key type `I`, the point map included.
   template <class I>
   std::vector<std::string> properties() const { return container<I>().names(); }
 
   // ---------------------------------------------------------------- construction
 
+  ///@{
   /// Adds an isolated vertex. (`p` is taken by value: it may be a point of
   /// this mesh, which the insertion can move.)
   Vertex_index add_vertex() { return add_vertex(default_point()); }
@@ -496,6 +614,7 @@ public:
     points_[v] = std::move(p);
     return v;
   }
+  ///@}
 
   /// Adds a face given its vertices in order; an edge it shares with an
   /// existing face becomes a Möbius edge if both faces run along it the same
@@ -510,15 +629,29 @@ public:
   /// builds a whole mesh at once.
   template <class VertexRange>
   Face_index add_face(const VertexRange& vertices, std::string* why = nullptr);
+  /// `add_face()` for a braced list of vertices: `m.add_face({u, v, w})`.
   Face_index add_face(std::initializer_list<Vertex_index> vertices, std::string* why = nullptr)
   {
     return add_face<std::initializer_list<Vertex_index>>(vertices, why);
   }
 
-  /// Appends a disjoint copy of `other`; returns the offsets of its vertex,
-  /// edge and face indices in this mesh (halfedges are offset by twice the
-  /// edge offset). Property maps of the same name and type are copied.
+  /// The offsets returned by `join()`: element `x` of the joined mesh is
+  /// element `x + offset` of this one.
   struct Join_offsets { size_type vertices, edges, faces; };
+
+  /// \var Join_offsets::vertices
+  /// The offset of the joined mesh's vertex indices.
+
+  /// \var Join_offsets::edges
+  /// The offset of the joined mesh's edge indices (its halfedges move by twice as much).
+
+  /// \var Join_offsets::faces
+  /// The offset of the joined mesh's face indices.
+
+  /// Appends a disjoint copy of `other` to this mesh and returns where its
+  /// elements went: the offsets of its vertex, edge and face indices (its
+  /// halfedges move by twice the edge offset). Property maps of the same
+  /// name and type are copied.
   Join_offsets join(const Mobius_mesh& other);
 
   /// Reverses the orientation of face `f`: its halfedges change direction,
@@ -528,6 +661,7 @@ public:
   // ---- low-level construction, as in Surface_mesh; the mesh may be invalid
   //      until the caller has set every link.
 
+  /// Adds a vertex with no halfedge and a default point.
   Vertex_index add_vertex_record()
   {
     if (v_halfedge_.size() >= internal::max_vertices)
@@ -551,6 +685,7 @@ public:
     eprops_.resize(e_mobius_.size());
     return Edge_index(size_type(e_mobius_.size() - 1));
   }
+  /// Adds a face whose stored halfedge is `h`; no halfedge is linked to it.
   Face_index add_face_record(Halfedge_index h = Halfedge_index())
   {
     if (f_halfedge_.size() >= internal::max_faces)
@@ -592,10 +727,15 @@ public:
     else
       h_prev_[b.halfedge().idx()] = a;
   }
+  /// Sets the target of (the unflipped dart of) `h` to `v`.
   void set_target(Halfedge_index h, Vertex_index v) { h_target_[h.idx()] = v; }
+  /// Sets the face of `h` to `f` (null makes `h` a border halfedge).
   void set_face(Halfedge_index h, Face_index f) { h_face_[h.idx()] = f; }
+  /// Sets the stored dart of `v`, which must end at `v` (a border dart if `v` is on the border).
   void set_halfedge(Vertex_index v, Dart d) { v_halfedge_[v.idx()] = d; }
+  /// Sets the stored halfedge of `f`, which must be one of `f`'s halfedges.
   void set_halfedge(Face_index f, Halfedge_index h) { f_halfedge_[f.idx()] = h; }
+  /// Sets the Möbius bit of `e`: whether its two faces run along it in the same direction.
   void set_mobius(Edge_index e, bool m) { e_mobius_[e.idx()] = m ? 1 : 0; }
 
   // ---------------------------------------------------------------- validity
@@ -631,15 +771,24 @@ public:
   /// Marks `f` removed.
   void remove_face(Face_index f) { mark(fprops_, "f:removed", removed_faces_, f.idx()); }
 
+  /// True if `v` is marked removed.
   bool is_removed(Vertex_index v) const { return removed_vertices_.is_marked(v.idx()); }
+  /// True if `h`'s edge is marked removed.
   bool is_removed(Halfedge_index h) const { return removed_edges_.is_marked(h.idx() / 2); }
+  /// True if `e` is marked removed.
   bool is_removed(Edge_index e) const { return removed_edges_.is_marked(e.idx()); }
+  /// True if `f` is marked removed.
   bool is_removed(Face_index f) const { return removed_faces_.is_marked(f.idx()); }
 
+  /// The number of vertices marked removed.
   size_type number_of_removed_vertices() const { return removed_vertices_.count; }
+  /// The number of halfedges marked removed: twice the number of removed edges.
   size_type number_of_removed_halfedges() const { return 2 * removed_edges_.count; }
+  /// The number of edges marked removed.
   size_type number_of_removed_edges() const { return removed_edges_.count; }
+  /// The number of faces marked removed.
   size_type number_of_removed_faces() const { return removed_faces_.count; }
+  /// True if some element is marked removed and `collect_garbage()` has not run since.
   bool has_garbage() const
   {
     return removed_vertices_.count != 0 || removed_edges_.count != 0 || removed_faces_.count != 0;
@@ -649,19 +798,27 @@ public:
   /// of the old index (or dart) `x`, null for a removed element.
   struct Garbage_collection_maps
   {
+    /// The new index of each old vertex index (null if removed).
     std::vector<Vertex_index> vertices;
+    /// The new index of each old edge index (null if removed).
     std::vector<Edge_index> edges;
+    /// The new index of each old face index (null if removed).
     std::vector<Face_index> faces;
 
+    /// The new index of `v`; null if `v` was removed or is null.
     Vertex_index operator()(Vertex_index v) const { return v.is_valid() ? vertices[v.idx()] : v; }
+    /// The new index of `e`; null if `e` was removed or is null.
     Edge_index operator()(Edge_index e) const { return e.is_valid() ? edges[e.idx()] : e; }
+    /// The new index of `f`; null if `f` was removed or is null.
     Face_index operator()(Face_index f) const { return f.is_valid() ? faces[f.idx()] : f; }
+    /// The new index of `h` (halfedges move with their edge); null if removed or null.
     Halfedge_index operator()(Halfedge_index h) const
     {
       const Edge_index e = (*this)(Edge_index(internal::dart_encoding::edge_of_halfedge(h.idx())));
       return e.is_valid() ? Halfedge_index(internal::dart_encoding::halfedge_of_edge(e.idx(), h.idx() & 1u))
                           : Halfedge_index();
     }
+    /// The new dart of `d`, with the same orientation bit; null if removed or null.
     Dart operator()(Dart d) const
     {
       return d.is_valid() ? Dart((*this)(d.halfedge()), d.is_flipped()) : d;
@@ -676,6 +833,7 @@ public:
     Garbage_collection_maps maps;
     collect_garbage(maps);
   }
+  /// As `collect_garbage()`, and fills `maps` with where each element went.
   void collect_garbage(Garbage_collection_maps& maps);
   /// @}
 
@@ -1479,14 +1637,18 @@ std::string Mobius_mesh<P>::check_vertex_fans() const
 } // namespace CGAL_ext
 
 namespace std {
+/// Hashes mesh indices, so that they key `std::unordered_map` and `std::unordered_set`.
 template <class Tag>
 struct hash<CGAL_ext::Index<Tag>>
 {
+  /// `hash_value(i)`.
   std::size_t operator()(CGAL_ext::Index<Tag> i) const { return hash_value(i); }
 };
+/// Hashes darts, so that they key `std::unordered_map` and `std::unordered_set`.
 template <>
 struct hash<CGAL_ext::Dart>
 {
+  /// `hash_value(d)`.
   std::size_t operator()(CGAL_ext::Dart d) const { return hash_value(d); }
 };
 } // namespace std

@@ -20,15 +20,23 @@ namespace internal_np {
 } // namespace internal_np
 
 /// A `CGAL::Named_function_parameters` whose chaining functions also know
-/// CGAL_ext's parameters.
+/// CGAL_ext's parameters: `.x(a)` appends parameter `x` with value `a`, for
+/// every parameter of CGAL and of CGAL_ext (see \ref md_doc_named_parameters "doc/named_parameters.md").
+/// It holds the value `T` of the parameter tagged `Tag`, and the parameters
+/// before it in `Base`.
 template <class T, class Tag, class Base = CGAL::internal_np::No_property>
 struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 {
+  /// The CGAL class it extends, which every CGAL function accepts.
   using cgal_type = CGAL::Named_function_parameters<T, Tag, Base>;
+  /// This class.
   using self = Named_function_parameters<T, Tag, Base>;
 
+  /// An empty list of parameters.
   Named_function_parameters() : cgal_type() {}
+  /// The list of one parameter of value `v`.
   Named_function_parameters(const T& v) : cgal_type(v) {}
+  /// The list `b` followed by a parameter of value `v`.
   Named_function_parameters(const T& v, const Base& b) : cgal_type(v, b) {}
 
 #define CGAL_add_named_parameter(X, Y, Z)                                                                   \
@@ -50,10 +58,15 @@ struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 #undef CGAL_EXT_add_named_parameter
 };
 
+/// The named parameters: each function of this namespace named after a
+/// parameter (`tolerance()`, `geom_traits()`, ...) starts a list with that
+/// parameter, as in `CGAL::parameters` (see \ref md_doc_named_parameters "doc/named_parameters.md").
 namespace parameters {
 
+/// The type of an empty list of named parameters, where every parameter takes its default.
 using Default_named_parameters = CGAL::parameters::Default_named_parameters;
 
+/// An empty list of named parameters: every parameter takes its default.
 inline Default_named_parameters default_values() { return Default_named_parameters(); }
 
 #define CGAL_add_named_parameter(X, Y, Z)                                                                   \

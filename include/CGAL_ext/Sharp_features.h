@@ -28,10 +28,14 @@ enum class Boundary_interpolation {
   edge_and_corner ///< also border vertices with one face are corners
 };
 
-/// How semi-sharp creases decay from level to level (OpenSubdiv's `CreasingMethod`).
+/// How semi-sharp creases decay from level to level (OpenSubdiv's `CreasingMethod`):
+/// `uniform` takes 1 off each sharpness per level; `chaikin` takes ¾ of it plus
+/// ¼ of the mean of the other semi-sharp edges at the end vertex, then 1 off.
 enum class Crease_method { uniform, chaikin };
 
-/// Catmull–Clark rule on triangles (OpenSubdiv's `TriangleSubdivision`).
+/// Catmull–Clark rule on triangles (OpenSubdiv's `TriangleSubdivision`):
+/// `catmark`, the ordinary rule, or `smooth`, OpenSubdiv's smoother edge
+/// weights next to triangles.
 enum class Triangle_subdivision { catmark, smooth };
 
 /// The smooth Catmull–Clark vertex rule.
@@ -44,14 +48,19 @@ enum class Vertex_rule {
 /// unset where a file says nothing.
 struct Sharp_feature_options
 {
+  /// The `t interpolateboundary` tag.
   std::optional<Boundary_interpolation> boundary_interpolation;
+  /// The `t creasemethod` tag.
   std::optional<Crease_method> crease_method;
+  /// The `t smoothtriangles` tag.
   std::optional<Triangle_subdivision> triangle_subdivision;
 };
 
-/// The names of the property maps that hold sharpness.
+///@{
+/// The names of the property maps that hold sharpness (edge map, vertex map).
 inline constexpr const char* edge_sharpness_name = "e:sharpness";
 inline constexpr const char* vertex_sharpness_name = "v:sharpness";
+///@}
 
 /// The edge sharpness map of `mesh` (created, all 0, if missing).
 template <class P>

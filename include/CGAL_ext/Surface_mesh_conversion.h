@@ -51,13 +51,18 @@ struct Not_a_graph_descriptor {};
 } // namespace internal
 } // namespace CGAL_ext
 namespace boost {
+/// `Mobius_mesh` is not a BGL graph: these traits name descriptor types that
+/// nothing converts to, so that CGAL's BGL overloads are not viable for it.
 template <class P>
 struct graph_traits<CGAL_ext::Mobius_mesh<P>>
 {
+  ///@{
+  /// A type that no mesh element converts to.
   using vertex_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
   using halfedge_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
   using edge_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
   using face_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
+  ///@}
 };
 template <class P>
 struct graph_traits<const CGAL_ext::Mobius_mesh<P>> : graph_traits<CGAL_ext::Mobius_mesh<P>>
@@ -77,7 +82,9 @@ namespace CGAL_ext {
 /// glued hold a null `partner`.
 struct Seam_link
 {
+  /// The border halfedge glued to this one; null if none.
   CGAL::SM_Halfedge_index partner;
+  /// True if the two halfedges are glued running the same way (a Möbius edge).
   bool twisted = false;
 };
 

@@ -54,11 +54,16 @@ public:
 class Size_error : public Parameter_error
 {
 public:
+  /// An error with the text `message`, about `count` elements of kind
+  /// `element` where at most `limit` fit.
   Size_error(const std::string& message, std::string element, unsigned long long count, unsigned long long limit)
     : Parameter_error(message), element_(std::move(element)), count_(count), limit_(limit)
   {}
+  /// The kind of element that does not fit: `"vertices"`, `"edges"` or `"faces"`.
   const std::string& element() const { return element_; }
+  /// How many elements there would be.
   unsigned long long count() const { return count_; }
+  /// The most elements of that kind a mesh may have.
   unsigned long long limit() const { return limit_; }
 
 private:
@@ -71,6 +76,7 @@ private:
 class Soup_error : public Error
 {
 public:
+  /// What is wrong with the soup.
   enum class Kind {
     index_out_of_range,  ///< a polygon names a point that does not exist
     degenerate_polygon,  ///< a polygon has fewer than three vertices
@@ -80,11 +86,14 @@ public:
     non_finite_point     ///< a coordinate is infinite or NaN
   };
 
+  /// An error of kind `kind` with the text `message`, naming the offending
+  /// polygons and points by their indices in the soup.
   Soup_error(Kind kind, std::string message, std::vector<std::size_t> polygons,
              std::vector<std::size_t> vertices)
     : Error(std::move(message)), kind_(kind), polygons_(std::move(polygons)), vertices_(std::move(vertices))
   {}
 
+  /// What is wrong with the soup.
   Kind kind() const { return kind_; }
   /// Indices of the offending polygons, in the order of the soup.
   const std::vector<std::size_t>& polygons() const { return polygons_; }
@@ -103,13 +112,18 @@ private:
 class IO_error : public Error
 {
 public:
+  /// An error in `file` at `line` (0: no line); its text is
+  /// `file:line: what` (`file: what` without a line).
   IO_error(const std::string& file, std::size_t line, const std::string& what,
            std::optional<Soup_error::Kind> soup_kind = std::nullopt)
     : Error(file + (line ? ":" + std::to_string(line) : std::string()) + ": " + what), file_(file), line_(line),
       soup_kind_(soup_kind)
   {}
+  /// The name of the file, as given to the reader or writer.
   const std::string& file() const { return file_; }
+  /// The line (1-based) of the file where the error is, 0 where none can be named.
   std::size_t line() const { return line_; }
+  /// The kind of `Soup_error` the file's polygons gave, if that was the error.
   std::optional<Soup_error::Kind> soup_kind() const { return soup_kind_; }
 
 private:
@@ -124,6 +138,7 @@ private:
 class Merge_error : public Error
 {
 public:
+  /// Why the merge cannot be done.
   enum class Kind {
     non_manifold_edge,   ///< three or more border edges would be glued into one edge
     non_manifold_vertex, ///< the glue would give a vertex several fans
@@ -131,10 +146,13 @@ public:
     mismatched_chains,   ///< the two chosen borders do not correspond (length, vertex pairs)
     not_a_border         ///< a dart given as a border is not one
   };
+  /// An error of kind `kind` with the text `message`, naming the offending vertices.
   Merge_error(Kind kind, std::string message, std::vector<std::size_t> vertices)
     : Error(std::move(message)), kind_(kind), vertices_(std::move(vertices))
   {}
+  /// Why the merge cannot be done.
   Kind kind() const { return kind_; }
+  /// Indices of the offending vertices of the input.
   const std::vector<std::size_t>& vertices() const { return vertices_; }
 
 private:

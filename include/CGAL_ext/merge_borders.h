@@ -700,6 +700,10 @@ Border_pairing aligned_border_loops(const Mobius_mesh<P>& mesh_a, Dart loop_a, c
 ///   evenly (the k-th face advances it iff floor((k+1) min / max) >
 ///   floor(k min / max)), and |n - m| triangles.
 ///
+/// \param mesh_a the first mesh; it receives the result
+/// \param mesh_b the second mesh
+/// \param pairing the two border chains to glue, of `mesh_a` and `mesh_b`
+/// \param strategy where the glued vertices go, or `Merge_strategy::bridge`
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{geom_traits}

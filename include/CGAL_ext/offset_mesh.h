@@ -36,6 +36,24 @@ struct Offset_result
   bool closed = false, orientable = false;
 };
 
+/// \var Offset_result::vertices
+/// The number of vertices of the output.
+
+/// \var Offset_result::edges
+/// The number of edges of the output.
+
+/// \var Offset_result::faces
+/// The number of faces of the output.
+
+/// \var Offset_result::euler_characteristic
+/// V − E + F of the output.
+
+/// \var Offset_result::closed
+/// True if the output has no border.
+
+/// \var Offset_result::orientable
+/// True if every component of the output is orientable.
+
 namespace internal {
 
 // Which side of each face each corner's lift takes: the input's sides are
@@ -147,6 +165,9 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 /// positions exactly, up to the rounding of the one square root that makes a
 /// normal a unit vector.
 ///
+/// \param mesh the mesh to offset; it must have no removed elements
+/// \param distance the offset distance, finite and positive
+/// \param out receives the offset surface (its content is replaced)
 /// \param np optional named parameters: `solid` (bool, default `false`),
 ///   `vertex_normal_weighting` (default `Vertex_normal_weighting::area`),
 ///   `vertex_displacement_map` (a readable vertex map of vectors δ: each

@@ -34,6 +34,7 @@ std::vector<Dart> border_cycles(const Mobius_mesh<P>& mesh)
   return cycles;
 }
 
+/// The number of border cycles of `mesh`: `border_cycles(mesh).size()`.
 template <class P>
 std::size_t number_of_border_cycles(const Mobius_mesh<P>& mesh)
 {
@@ -58,6 +59,7 @@ long long euler_characteristic(const Mobius_mesh<P>& mesh)
          static_cast<long long>(mesh.number_of_faces());
 }
 
+/// The number of Möbius edges of `mesh` (see `Mobius_mesh::is_mobius()`).
 template <class P>
 std::size_t number_of_mobius_edges(const Mobius_mesh<P>& mesh)
 {
@@ -72,12 +74,16 @@ std::size_t number_of_mobius_edges(const Mobius_mesh<P>& mesh)
 /// no component (`no_component`).
 struct Mesh_components
 {
+  /// The component of a removed element.
   static constexpr std::uint32_t no_component = Vertex_index::null_value;
+  /// The number of components; they are numbered from 0.
   std::size_t count = 0;
   std::vector<std::uint32_t> vertex_component; ///< component of each vertex
   std::vector<std::uint32_t> face_component;   ///< component of each face
 };
 
+/// The connected components of `mesh`: vertices linked by edges are in one
+/// component, and each face is in that of its vertices.
 template <class P>
 Mesh_components connected_components(const Mobius_mesh<P>& mesh)
 {

@@ -61,7 +61,9 @@ constexpr float subdivide_vertex_sharpness(float s) { return subdivide_uniform_s
 /// order of the calls to `add()` (float arithmetic, so order matters).
 struct Semi_sharp_edges
 {
+  /// The sum of the semi-sharp sharpnesses added.
   float sum = 0.0f;
+  /// The number of semi-sharp edges added.
   unsigned count = 0;
 
   /// Counts edge sharpness `s` if it is semi-sharp.

@@ -71,9 +71,15 @@ struct Edge_weights
   bool has_face; ///< false if `face` is zero (set by the refiner)
 };
 
+/// \var Edge_weights::vertex
+/// The weight of each end of the edge.
+
+/// \var Edge_weights::face
+/// The weight of each face point (quad split) or opposite vertex (triangle split).
+
 /// The weights that make the child of a parent vertex `V`:
-/// `vertex * V + edge * Σ neighbours + face * Σ face points
-///  + edge_point * Σ new edge points + crease * (A + B)`,
+/// `vertex * V + edge * Σ neighbours + face * Σ face points`
+/// `+ edge_point * Σ new edge points + crease * (A + B)`,
 /// where `A`, `B` are the far ends of the two crease edges (`crease_ends`).
 template <class W>
 struct Vertex_weights
@@ -86,6 +92,24 @@ struct Vertex_weights
   bool has_edge_point; ///< `edge_point` is not zero
   bool has_crease;     ///< `crease` is not zero
 };
+
+/// \var Vertex_weights::vertex
+/// The weight of the parent vertex `V`.
+
+/// \var Vertex_weights::edge
+/// The weight of each neighbour of `V` (the far end of each incident edge).
+
+/// \var Vertex_weights::face
+/// The weight of each face point of the faces around `V`.
+
+/// \var Vertex_weights::edge_point
+/// The weight of each new edge point of the edges around `V`.
+
+/// \var Vertex_weights::crease
+/// The weight of each of the two crease neighbours `A`, `B`.
+
+/// \var Vertex_weights::crease_ends
+/// The vertices `A`, `B` at the far ends of the two crease edges of `V`.
 
 /*!
 \ingroup PkgSubdivisionConcepts
@@ -129,11 +153,17 @@ A mask with `split == Split::dual` (Doo–Sabin) instead provides
 /// "smooth triangle" option are settings.
 struct Catmull_clark_mask
 {
+  /// How faces are split (see `SubdivisionMask`).
   static constexpr Split split = Split::quad;
+  /// True: crease, corner and border rules apply.
   static constexpr bool creases = true;
+  /// The smooth vertex rule (named parameter `vertex_rule`).
   Vertex_rule vertex_rule = Vertex_rule::standard;
+  /// The edge rule next to triangles (named parameter `triangle_subdivision`).
   Triangle_subdivision triangle_subdivision = Triangle_subdivision::catmark;
 
+  /// The smooth edge rule: ¼ of each end and of each face point, or
+  /// OpenSubdiv's smooth-triangle weights next to a triangle.
   template <class W>
   void smooth_edge(unsigned d0, unsigned d1, Edge_weights<W>& w) const
   {
@@ -149,6 +179,8 @@ struct Catmull_clark_mask
     w.face = W(0.25);
   }
 
+  /// The smooth vertex rule: (n−2)/n of `V` and 1/n² of each neighbour (or
+  /// new edge point) and face point.
   template <class W>
   void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
   {
@@ -165,9 +197,12 @@ struct Catmull_clark_mask
 /// Loop subdivision of triangle meshes, with OpenSubdiv's rules.
 struct Loop_mask
 {
+  /// How faces are split (see `SubdivisionMask`).
   static constexpr Split split = Split::triangle;
+  /// True: crease, corner and border rules apply.
   static constexpr bool creases = true;
 
+  /// The smooth edge rule: ⅜ of each end, ⅛ of each opposite vertex.
   template <class W>
   void smooth_edge(unsigned, unsigned, Edge_weights<W>& w) const
   {
@@ -175,6 +210,8 @@ struct Loop_mask
     w.face = W(0.125);
   }
 
+  /// The smooth vertex rule: Loop's β(n) for each neighbour, exact for
+  /// valences 3 and 6.
   template <class W>
   void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
   {
@@ -204,15 +241,19 @@ struct Loop_mask
 /// and borders change nothing.
 struct Bilinear_mask
 {
+  /// How faces are split (see `SubdivisionMask`).
   static constexpr Split split = Split::quad;
+  /// False: sharpness and borders change nothing.
   static constexpr bool creases = false;
 
+  /// The edge midpoint.
   template <class W>
   void smooth_edge(unsigned, unsigned, Edge_weights<W>& w) const
   {
     w.vertex = W(0.5);
     w.face = W(0);
   }
+  /// The old point, kept.
   template <class W>
   void smooth_vertex(unsigned, Vertex_weights<W>& w) const
   {
@@ -226,14 +267,18 @@ struct Bilinear_mask
 /// with `PTQ`). As with `Bilinear_mask`, sharpness and borders change nothing.
 struct Linear_mask
 {
+  /// How faces are split (see `SubdivisionMask`).
   static constexpr Split split = Split::triangle;
+  /// False: sharpness and borders change nothing.
   static constexpr bool creases = false;
 
+  /// The edge midpoint.
   template <class W>
   void smooth_edge(unsigned d0, unsigned d1, Edge_weights<W>& w) const
   {
     Bilinear_mask().smooth_edge(d0, d1, w);
   }
+  /// The old point, kept.
   template <class W>
   void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
   {
@@ -249,9 +294,14 @@ struct Linear_mask
 /// border converges to the quadratic B-spline of the border polygon.
 struct Doo_sabin_mask
 {
+  /// How faces are split (see `SubdivisionMask`).
   static constexpr Split split = Split::dual;
+  /// False: sharpness and borders change nothing.
   static constexpr bool creases = false;
 
+  /// Writes the weights of the `n` vertices of a face, starting at the
+  /// corner's vertex and following the face, for the new point of that
+  /// corner: (n+5)/4n for the corner, (3 + 2 cos(2πk/n))/4n for vertex `k`.
   template <class W>
   void corner(unsigned n, W* weights) const
   {
@@ -277,9 +327,12 @@ struct Doo_sabin_mask
 /// the 1/27 rules and border vertices smoothed with (4, 19, 4) / 27.
 struct Sqrt3_mask
 {
+  /// How faces are split (see `SubdivisionMask`).
   static constexpr Split split = Split::sqrt3;
+  /// False: sharpness and borders change nothing.
   static constexpr bool creases = false;
 
+  /// The smooth vertex rule: 1 − α(n) of `V` and α(n)/n of each neighbour.
   template <class W>
   void smooth_vertex(unsigned n, Vertex_weights<W>& w) const
   {

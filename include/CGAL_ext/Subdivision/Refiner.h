@@ -33,7 +33,9 @@ namespace Subdivision {
 /// The rules of a refinement that do not depend on the scheme.
 struct Refinement_options
 {
+  /// Which border edges and vertices are sharp (named parameter `boundary_interpolation`).
   Boundary_interpolation boundary_interpolation = Boundary_interpolation::edge_only;
+  /// How semi-sharp creases decay from level to level (named parameter `crease_method`).
   Crease_method crease_method = Crease_method::uniform;
   /// With `CGAL::Parallel_tag`, levels of fewer vertices are interpolated
   /// serially (with the same result) and get no incidence tables: on small
@@ -117,15 +119,21 @@ template <class Mask, class W = double>
 class Refiner
 {
 public:
+  /// The weight type.
   using Weight = W;
+  /// The topology of one level: its counts and connectivity arrays.
   using Level = internal::Level;
+  /// The type of the element indices of a level (32 bits, as in `Mobius_mesh`).
   using u32 = internal::u32;
 
+  /// A refiner that applies `mask` with `options`; it refines nothing yet.
   explicit Refiner(const Mask& mask = Mask(), const Refinement_options& options = Refinement_options())
     : mask_(mask), options_(options)
   {}
 
+  /// The mask.
   const Mask& mask() const { return mask_; }
+  /// The options.
   const Refinement_options& options() const { return options_; }
 
   /// Refines `mesh` `levels` times. `edge_sharpness` and `vertex_sharpness`
@@ -220,9 +228,10 @@ public:
   unsigned number_of_levels() const { return levels_.empty() ? 0u : unsigned(levels_.size() - 1); }
   /// The topology of level `k` (0 is the base mesh).
   const Level& level(unsigned k) const { return levels_[k]; }
-  /// The weights of edge `e` and vertex `v` of level `k` in step `k`
-  /// (primal schemes: quad and triangle splits).
+  /// The weights of edge `e` of level `k` in step `k` (primal schemes: quad
+  /// and triangle splits).
   const Edge_weights<W>& edge_weights(unsigned k, u32 e) const { return weights_[k].edge(e); }
+  /// The weights of vertex `v` of level `k` in step `k` (primal schemes).
   const Vertex_weights<W>& vertex_weights(unsigned k, u32 v) const { return weights_[k].vertex(v); }
   /// The stencils of step `k` (Doo–Sabin and √3): child vertex `i` is the sum
   /// of `weight[j]` times parent vertex `source[j]` over `j` in
@@ -273,6 +282,7 @@ public:
       src = dst;
     }
   }
+  /// As the three-argument `interpolate()`, with a scratch buffer of its own.
   template <class ConcurrencyTag = CGAL::Sequential_tag, class Value>
   void interpolate(const std::vector<Value>& base, std::vector<Value>& result) const
   {
