@@ -22,3 +22,6 @@ CGAL_EXT_add_named_parameter(vertex_displacement_t, vertex_displacement, vertex_
 // normals
 CGAL_EXT_add_named_parameter(normalize_t, normalize, normalize)
 CGAL_EXT_add_named_parameter(vertex_normal_weighting_t, vertex_normal_weighting, vertex_normal_weighting)
+// isotropic remeshing
+CGAL_EXT_add_named_parameter(protect_borders_t, protect_borders, protect_borders)
+CGAL_EXT_add_named_parameter(protect_sharp_edges_t, protect_sharp_edges, protect_sharp_edges)

@@ -1,0 +1,46 @@
+# CTest tests of the remesh tool (included from examples/CMakeLists.txt).
+# Remeshing keeps what makes a surface what it is: the Euler characteristic,
+# the number of border loops and orientability, taken from each file's first
+# line; the output is valid and most of its edges are in the band
+# [4/5 L, 4/3 L] (at least 90 %).
+if(NOT CGAL_EXT_BUILD_TESTS)
+  return()
+endif()
+
+set(_data ${PROJECT_SOURCE_DIR}/test/data/nonorientable)
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/tool_output)
+file(MAKE_DIRECTORY ${_out})
+
+# File and target edge length (half the file's mean edge length or more).
+foreach(_case "mobius_20x4_tris;0.18" "klein_fig8_24x12_quads;0.45" "torus_24x12_quads;0.3"
+              "boys_surface_quads;0.3")
+  list(GET _case 0 _name)
+  list(GET _case 1 _length)
+  file(STRINGS ${_data}/${_name}.obj _header LIMIT_COUNT 1)
+  string(REGEX MATCH "chi=(-?[0-9]+) orientable=(True|False) boundary_loops=([0-9]+)" _match "${_header}")
+  string(TOLOWER ${CMAKE_MATCH_2} _orientable)
+  add_test(NAME remesh.${_name}
+           COMMAND remesh ${_data}/${_name}.obj ${_out}/remesh_${_name}.obj --edge-length ${_length} --iterations 5)
+  set_tests_properties(remesh.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"border_loops\":${CMAKE_MATCH_3},\"orientable\":${_orientable},\"closed\":[a-z]+,\"components\":1,\"euler_characteristic\":${CMAKE_MATCH_1},\"valid\":true,\"in_band\":(0\\.9|1[,.])")
+endforeach()
+
+# With --protect-borders the Möbius strip's border keeps its 40 vertices and edges.
+add_test(NAME remesh.protected_border
+         COMMAND remesh ${_data}/mobius_20x4_tris.obj ${_out}/remesh_protected.obj --edge-length 0.15 --protect-borders)
+set_tests_properties(remesh.protected_border PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"border_loops\":1,\"orientable\":false,\"closed\":false,\"components\":1,\"euler_characteristic\":0,\"valid\":true")
+
+# A missing file, a length that is not positive, iterations out of range: one line, exit 2.
+add_test(NAME remesh.fails.missing_file
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh> "-DARGS=${_out}/no_such.obj;${_out}/x.obj;--edge-length;1"
+          -DSTATUS=2 "-DSTDERR=^remesh: [^\n]+\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+add_test(NAME remesh.fails.negative_length
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh> "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;-1"
+          -DSTATUS=2 "-DSTDERR=^remesh: --edge-length '-1' is not positive; usage: [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+add_test(NAME remesh.fails.iterations
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh>
+          "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;1;--iterations;0"
+          -DSTATUS=2 "-DSTDERR=^remesh: --iterations '0' is not an integer from 1 to 1000; usage: [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)

@@ -1,0 +1,459 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The loop of isotropic_remeshing(): Botsch and Kobbelt's split / collapse /
+// flip / relax / project, on darts, so that it runs across Möbius edges.
+
+#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_ISOTROPIC_REMESHER_H
+#define CGAL_EXT_MOBIUS_MESH_INTERNAL_ISOTROPIC_REMESHER_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/Euler_operations.h>
+#include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
+#include <CGAL_ext/Mobius_mesh/normals.h>
+#include <CGAL_ext/Sharp_features.h>
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/assertions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace internal {
+
+// Relaxation and projection run in double whatever the kernel (see isotropic_remeshing()).
+using Remeshing_kernel = CGAL::Simple_cartesian<double>;
+using Remeshing_point = Remeshing_kernel::Point_3;
+using Remeshing_vector = Remeshing_kernel::Vector_3;
+
+template <class Point>
+Remeshing_point to_remeshing_point(const Point& p)
+{
+  return Remeshing_point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+template <class Vector>
+Remeshing_vector to_remeshing_vector(const Vector& v)
+{
+  return Remeshing_vector(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+}
+
+// Twice the vector area of triangle (p, q, r), in that orientation; null if it is degenerate.
+inline Remeshing_vector triangle_normal(const Remeshing_point& p, const Remeshing_point& q, const Remeshing_point& r)
+{
+  return CGAL::cross_product(q - p, r - p);
+}
+
+// Would moving target(into) to `to` turn a face around it over? Each face is
+// compared with itself, walked the way the circulation's dart walks it, so
+// the test means the same on both sides of a Möbius edge. Faces in `skip`
+// (those that a collapse removes) are not looked at.
+template <class P>
+bool remeshing_move_keeps_sides(Dart into, const Remeshing_point& to, const Mobius_mesh<P>& mesh,
+                                Face_index skip_a = Face_index(), Face_index skip_b = Face_index())
+{
+  const Remeshing_point from = to_remeshing_point(mesh.point(mesh.target(into)));
+  for (Dart c : CGAL_ext::halfedges_around_target(into, mesh)) {
+    if (mesh.is_border(c) || mesh.face(c) == skip_a || mesh.face(c) == skip_b)
+      continue;
+    const Remeshing_point u = to_remeshing_point(mesh.point(mesh.source(c)));
+    const Remeshing_point w = to_remeshing_point(mesh.point(mesh.target(mesh.next(c))));
+    const Remeshing_vector before = triangle_normal(u, from, w);
+    if (before.squared_length() > 0 && !(before * triangle_normal(u, to, w) > 0))
+      return false;
+  }
+  return true;
+}
+
+// The input surface, copied once as triangles (and border segments) in double,
+// with the AABB trees that projection asks for closest points.
+class Remeshing_input_surface
+{
+  using K = Remeshing_kernel;
+  using Triangles = std::vector<K::Triangle_3>;
+  using Segments = std::vector<K::Segment_3>;
+  using Triangle_tree =
+    CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>>>;
+  using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segments::const_iterator>>>;
+
+public:
+  template <class P>
+  explicit Remeshing_input_surface(const Mobius_mesh<P>& mesh)
+  {
+    triangles_.reserve(mesh.number_of_faces());
+    for (Face_index f : mesh.faces()) {
+      const Dart d = mesh.halfedge(f);
+      triangles_.emplace_back(to_remeshing_point(mesh.point(mesh.source(d))),
+                              to_remeshing_point(mesh.point(mesh.target(d))),
+                              to_remeshing_point(mesh.point(mesh.target(mesh.next(d)))));
+    }
+    for (Edge_index e : mesh.edges())
+      if (mesh.is_border(e))
+        border_.emplace_back(to_remeshing_point(mesh.point(mesh.vertex(e, 0))),
+                             to_remeshing_point(mesh.point(mesh.vertex(e, 1))));
+    faces_tree_.insert(triangles_.begin(), triangles_.end());
+    faces_tree_.accelerate_distance_queries();
+    if (!border_.empty()) {
+      border_tree_.insert(border_.begin(), border_.end());
+      border_tree_.accelerate_distance_queries();
+    }
+  }
+  Remeshing_input_surface(const Remeshing_input_surface&) = delete;
+  Remeshing_input_surface& operator=(const Remeshing_input_surface&) = delete;
+
+  Remeshing_point closest_on_faces(const Remeshing_point& p) const { return faces_tree_.closest_point(p); }
+  // A border vertex stays on the input's border: its closest point there.
+  std::optional<Remeshing_point> closest_on_border(const Remeshing_point& p) const
+  {
+    if (border_.empty())
+      return std::nullopt;
+    return border_tree_.closest_point(p);
+  }
+
+private:
+  Triangles triangles_;
+  Segments border_;
+  Triangle_tree faces_tree_;
+  Segment_tree border_tree_;
+};
+
+// The options of one run, read from the named parameters by isotropic_remeshing().
+struct Remeshing_options
+{
+  double target_edge_length = 1;
+  unsigned iterations = 1;
+  bool protect_borders = false;
+  bool protect_sharp_edges = false;
+};
+
+template <class P>
+class Isotropic_remesher
+{
+  using Mesh = Mobius_mesh<P>;
+  using Sharpness_map = typename Mesh::template Property_map<Edge_index, float>;
+
+public:
+  Isotropic_remesher(Mesh& mesh, const Remeshing_options& options)
+    : mesh_(mesh), options_(options), input_(mesh),
+      // Botsch and Kobbelt's band, as in CGAL: 4/5 L and 4/3 L.
+      low2_(square(0.8 * options.target_edge_length)), high2_(square(4.0 / 3.0 * options.target_edge_length)),
+      sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name))
+  {
+    collapse_options_.is_protected = [this](Edge_index e) { return is_protected(e); };
+  }
+  Isotropic_remesher(const Isotropic_remesher&) = delete;
+  Isotropic_remesher& operator=(const Isotropic_remesher&) = delete;
+
+  void run()
+  {
+    for (unsigned i = 0; i < options_.iterations; ++i) {
+      split_long_edges();
+      collapse_short_edges();
+      equalize_valences();
+      relax_and_project();
+    }
+  }
+
+private:
+  static double square(double x) { return x * x; }
+
+  double squared_length(Edge_index e) const
+  {
+    return CGAL::to_double(CGAL::squared_distance(mesh_.point(mesh_.vertex(e, 0)), mesh_.point(mesh_.vertex(e, 1))));
+  }
+
+  bool is_protected(Edge_index e) const
+  {
+    if (options_.protect_borders && mesh_.is_border(e))
+      return true;
+    return options_.protect_sharp_edges && sharpness_ && (*sharpness_)[e] > 0;
+  }
+
+  // A vertex on a protected edge never moves and is never removed (CGAL's
+  // relax_constraints(false)): so protected polylines keep their exact points.
+  bool is_fixed(Vertex_index v) const
+  {
+    for (Edge_index e : CGAL_ext::edges_around_target(v, mesh_))
+      if (is_protected(e))
+        return true;
+    return false;
+  }
+
+  template <class Queue>
+  void push_edges_around(Vertex_index v, Queue& queue, bool long_ones)
+  {
+    for (Edge_index e : CGAL_ext::edges_around_target(v, mesh_))
+      push_if_outside_band(e, queue, long_ones);
+  }
+
+  template <class Queue>
+  void push_if_outside_band(Edge_index e, Queue& queue, bool long_ones)
+  {
+    if (is_protected(e))
+      return;
+    const double l2 = squared_length(e);
+    if (long_ones ? l2 > high2_ : l2 < low2_)
+      queue.emplace(l2, e);
+  }
+
+  // The dart of face f that ends at v.
+  Dart dart_into_in_face(Vertex_index v, Face_index f) const
+  {
+    for (Dart c : CGAL_ext::halfedges_around_target(v, mesh_))
+      if (!mesh_.is_border(c) && mesh_.face(c) == f)
+        return c;
+    CGAL_assertion(false);
+    return Dart();
+  }
+
+  // Longest first, as CGAL: an edge's entry is stale once its length changed.
+  void split_long_edges()
+  {
+    std::priority_queue<std::pair<double, Edge_index>> queue;
+    for (Edge_index e : mesh_.edges())
+      push_if_outside_band(e, queue, true);
+    while (!queue.empty()) {
+      const auto [l2, e] = queue.top();
+      queue.pop();
+      if (squared_length(e) != l2)
+        continue;
+      // Only the halves go back to the queue, as in CGAL: the edges that join
+      // the new vertex to the far corners may be long too (next to a
+      // protected edge they stay so), and pushing them would not end.
+      const Edge_index half = split_at_midpoint(e);
+      push_if_outside_band(e, queue, true);
+      push_if_outside_band(half, queue, true);
+    }
+  }
+
+  // Splits e at its midpoint (computed in the kernel's FT) and joins the new
+  // vertex to the far corner of each triangle of e; returns the new half of e.
+  Edge_index split_at_midpoint(Edge_index e)
+  {
+    const Dart d = Mesh::halfedge(e);
+    const Face_index sides[2] = {mesh_.face(d), mesh_.face(mesh_.opposite(d))};
+    const P middle = CGAL::midpoint(mesh_.point(mesh_.source(d)), mesh_.point(mesh_.target(d)));
+    const Dart n = Euler::split_edge(d, mesh_);
+    const Vertex_index w = mesh_.target(n);
+    mesh_.point(w) = middle;
+    if (sharpness_) // both halves keep the edge's sharpness
+      (*sharpness_)[mesh_.edge(n)] = (*sharpness_)[e];
+    for (Face_index f : sides) {
+      if (!f.is_valid())
+        continue;
+      const Dart into = dart_into_in_face(w, f);
+      Euler::split_face(into, mesh_.next(mesh_.next(into)), mesh_);
+    }
+    check_star(w);
+    return mesh_.edge(n);
+  }
+
+  // Shortest first; a collapse changes the lengths around the kept vertex.
+  void collapse_short_edges()
+  {
+    using Entry = std::pair<double, Edge_index>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    for (Edge_index e : mesh_.edges())
+      push_if_outside_band(e, queue, false);
+    while (!queue.empty()) {
+      const auto [l2, e] = queue.top();
+      queue.pop();
+      if (mesh_.is_removed(e) || squared_length(e) != l2)
+        continue;
+      const Vertex_index kept = collapse(e);
+      if (kept.is_valid())
+        push_edges_around(kept, queue, false);
+    }
+  }
+
+  // Would joining source(d) into target(d) make an edge longer than 4/3 L?
+  bool collapse_makes_long_edge(Dart d) const
+  {
+    const P& kept = mesh_.point(mesh_.target(d));
+    for (Vertex_index k : CGAL_ext::vertices_around_target(mesh_.opposite(d), mesh_))
+      if (CGAL::to_double(CGAL::squared_distance(kept, mesh_.point(k))) > high2_)
+        return true;
+    return false;
+  }
+
+  // For each triangle of the edge of d, the side that stays after
+  // collapse_edge(d), with the sharpness of the side it removes (the one before the edge).
+  std::vector<std::pair<Edge_index, float>> merged_edges(Dart d) const
+  {
+    std::vector<std::pair<Edge_index, float>> merged;
+    if (!sharpness_)
+      return merged;
+    for (Dart side : {d, mesh_.opposite(d)})
+      if (!mesh_.is_border(side)) {
+        merged.emplace_back(mesh_.edge(mesh_.next(side)), (*sharpness_)[mesh_.edge(mesh_.prev(side))]);
+      }
+    return merged;
+  }
+
+  // Joins one end of e into the other, which keeps its point, if some
+  // direction is allowed; returns the kept vertex, or null if none is.
+  Vertex_index collapse(Edge_index e)
+  {
+    const Dart d = Mesh::halfedge(e);
+    for (Dart c : {d, mesh_.opposite(d)}) {
+      const Vertex_index gone = mesh_.source(c), kept = mesh_.target(c);
+      // A border vertex joined into an inner one would pull the border inwards.
+      if (is_fixed(gone) || (mesh_.is_border(gone) && !mesh_.is_border(kept)) || collapse_makes_long_edge(c))
+        continue;
+      if (check_collapse(c, mesh_.point(kept), mesh_, collapse_options_) != Collapse_verdict::allowed)
+        continue;
+      const auto merged = merged_edges(c);
+      Euler::collapse_edge(c, mesh_);
+      // Of two sides of a triangle that become one edge, collapse_edge()
+      // keeps one index: it keeps the sharpness of both.
+      if (sharpness_)
+        for (const auto& [survivor, sharpness] : merged)
+          (*sharpness_)[survivor] = std::max((*sharpness_)[survivor], sharpness);
+      check_star(kept);
+      return kept;
+    }
+    return Vertex_index();
+  }
+
+  int valence_deviation(Vertex_index v, int change) const
+  {
+    const int target = mesh_.is_border(v) ? 4 : 6;
+    return std::abs(int(mesh_.degree(v)) + change - target);
+  }
+
+  // Flips every edge whose flip brings the valences of its four vertices
+  // closer to 6 (4 on the border), if the two new triangles keep the side
+  // the old ones face: their normals, taken in the orientation that the
+  // edge's darts carry, must agree with the old pair's.
+  void equalize_valences()
+  {
+    for (Edge_index e : mesh_.edges()) {
+      const Dart d = Mesh::halfedge(e);
+      if (is_protected(e) || !Euler::can_flip_edge(d, mesh_))
+        continue;
+      const Dart o = mesh_.opposite(d);
+      const Vertex_index a = mesh_.source(d), b = mesh_.target(d);
+      const Vertex_index c = mesh_.target(mesh_.next(d)), x = mesh_.target(mesh_.next(o));
+      const int before = valence_deviation(a, 0) + valence_deviation(b, 0) + valence_deviation(c, 0) +
+                         valence_deviation(x, 0);
+      const int after = valence_deviation(a, -1) + valence_deviation(b, -1) + valence_deviation(c, 1) +
+                        valence_deviation(x, 1);
+      if (after >= before || !keeps_valence_at_least_three(a) || !keeps_valence_at_least_three(b) ||
+          !flip_keeps_side(a, b, c, x))
+        continue;
+      Euler::flip_edge(d, mesh_);
+      check_star(a);
+      check_star(b);
+    }
+  }
+
+  bool keeps_valence_at_least_three(Vertex_index v) const
+  {
+    return mesh_.degree(v) > (mesh_.is_border(v) ? 2u : 3u);
+  }
+
+  Remeshing_point approximate(Vertex_index v) const { return to_remeshing_point(mesh_.point(v)); }
+
+  // Triangles (a, b, c) and (b, a, x) in one orientation become (a, x, c) and (x, b, c).
+  bool flip_keeps_side(Vertex_index a, Vertex_index b, Vertex_index c, Vertex_index x) const
+  {
+    const Remeshing_point pa = approximate(a), pb = approximate(b), pc = approximate(c), px = approximate(x);
+    const Remeshing_vector old_side = triangle_normal(pa, pb, pc) + triangle_normal(pb, pa, px);
+    return old_side * triangle_normal(pa, px, pc) > 0 && old_side * triangle_normal(px, pb, pc) > 0;
+  }
+
+  // Every free vertex moves to the area-weighted centroid of its triangles,
+  // taken in its tangent plane, then onto the input surface (a border vertex:
+  // to the middle of its border neighbours, then onto the input's border),
+  // unless that would turn a triangle around it over.
+  void relax_and_project()
+  {
+    for (Vertex_index v : mesh_.vertices()) {
+      if (mesh_.is_isolated(v) || is_fixed(v))
+        continue;
+      const std::optional<Remeshing_point> to = mesh_.is_border(v) ? border_position(v) : inner_position(v);
+      if (!to || !remeshing_move_keeps_sides(mesh_.halfedge(v), *to, mesh_))
+        continue;
+      mesh_.point(v) = P(to->x(), to->y(), to->z());
+      check_star(v);
+    }
+  }
+
+  std::optional<Remeshing_point> inner_position(Vertex_index v) const
+  {
+    // The normal's sign depends on the side of the dart; the tangent plane does not.
+    Remeshing_vector normal = to_remeshing_vector(CGAL_ext::vertex_normal(mesh_.halfedge(v), mesh_));
+    const double normal2 = normal.squared_length();
+    if (!(normal2 > 0))
+      return std::nullopt;
+    normal = normal / std::sqrt(normal2);
+    Remeshing_vector sum = CGAL::NULL_VECTOR;
+    double area = 0;
+    const Remeshing_point p = approximate(v);
+    for (Dart c : CGAL_ext::halfedges_around_target(v, mesh_)) {
+      if (mesh_.is_border(c))
+        continue;
+      const Remeshing_point u = approximate(mesh_.source(c)), w = approximate(mesh_.target(mesh_.next(c)));
+      const double a = std::sqrt(CGAL::cross_product(u - p, w - p).squared_length());
+      sum = sum + a * (CGAL::centroid(u, p, w) - CGAL::ORIGIN);
+      area += a;
+    }
+    if (!(area > 0))
+      return std::nullopt;
+    const Remeshing_point centroid = CGAL::ORIGIN + sum / area;
+    const Remeshing_point tangent = centroid + ((p - centroid) * normal) * normal;
+    return input_.closest_on_faces(tangent);
+  }
+
+  std::optional<Remeshing_point> border_position(Vertex_index v) const
+  {
+    std::optional<Remeshing_point> middle;
+    for (Dart c : CGAL_ext::halfedges_around_target(v, mesh_)) {
+      if (!mesh_.is_border(c))
+        continue;
+      if (middle) // two gaps in the fan: no single border line to slide on
+        return std::nullopt;
+      middle = CGAL::midpoint(approximate(mesh_.source(c)), approximate(mesh_.target(mesh_.next(c))));
+    }
+    return middle ? input_.closest_on_border(*middle) : std::nullopt;
+  }
+
+  // After each operation, in debug builds: the darts around the touched
+  // vertex still make a manifold star of triangles (a full is_valid() per
+  // operation would make the loop quadratic).
+  void check_star([[maybe_unused]] Vertex_index v) const
+  {
+#ifndef NDEBUG
+    CGAL_assertion(!mesh_.is_removed(v) && !mesh_.is_isolated(v));
+    for (Dart c : CGAL_ext::halfedges_around_target(v, mesh_)) {
+      CGAL_assertion(mesh_.target(c) == v && !mesh_.is_removed(mesh_.edge(c)));
+      CGAL_assertion(mesh_.opposite(mesh_.opposite(c)) == c);
+      CGAL_assertion(mesh_.next(mesh_.prev(c)) == c && mesh_.prev(mesh_.next(c)) == c);
+      CGAL_assertion(mesh_.source(mesh_.next(c)) == v && mesh_.face(mesh_.next(c)) == mesh_.face(c));
+      CGAL_assertion(mesh_.is_border(c) || (!mesh_.is_removed(mesh_.face(c)) && mesh_.degree(mesh_.face(c)) == 3));
+    }
+#endif
+  }
+
+  Mesh& mesh_;
+  Remeshing_options options_;
+  const Remeshing_input_surface input_;
+  const double low2_, high2_;
+  std::optional<Sharpness_map> sharpness_;
+  Collapse_options collapse_options_;
+};
+
+} // namespace internal
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_ISOTROPIC_REMESHER_H

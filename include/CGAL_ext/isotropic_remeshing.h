@@ -1,0 +1,120 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Isotropic remeshing of a Mobius_mesh (Botsch and Kobbelt), with the
+// contract of CGAL's Polygon_mesh_processing::isotropic_remeshing(), on any
+// surface: Möbius strips, Klein bottles and other one-sided surfaces included.
+
+#ifndef CGAL_EXT_ISOTROPIC_REMESHING_H
+#define CGAL_EXT_ISOTROPIC_REMESHING_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Isotropic_remesher.h>
+#include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/exceptions.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace CGAL_ext {
+
+namespace internal {
+
+template <class NP>
+Remeshing_options remeshing_options(double target_edge_length, const NP& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  if (!(std::isfinite(target_edge_length) && target_edge_length > 0)) {
+    std::ostringstream what;
+    what << "isotropic_remeshing: the target edge length " << target_edge_length
+         << " is not a positive finite number";
+    throw Parameter_error(what.str());
+  }
+  const auto iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 1u);
+  const long long count = static_cast<long long>(iterations);
+  if (count < 0 || count > 1000)
+    throw Parameter_error("isotropic_remeshing: number_of_iterations " + std::to_string(count) +
+                          " is not from 0 to 1000");
+  Remeshing_options options;
+  options.target_edge_length = target_edge_length;
+  options.iterations = static_cast<unsigned>(count);
+  // protect_constraints is CGAL's name; its default constraints are the border.
+  const bool constraints = choose_parameter(get_parameter(np, CGAL::internal_np::protect_constraints), false);
+  options.protect_borders =
+    choose_parameter(get_parameter(np, CGAL_ext::internal_np::protect_borders), constraints);
+  options.protect_sharp_edges =
+    choose_parameter(get_parameter(np, CGAL_ext::internal_np::protect_sharp_edges), false);
+  return options;
+}
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMeshEditing
+/// \brief remeshes `mesh` into triangles whose edges are close to
+/// `target_edge_length` (L), by Botsch and Kobbelt's loop, as
+/// `CGAL::Polygon_mesh_processing::isotropic_remeshing()` does: each
+/// iteration splits the edges longer than 4/3 L at their midpoints (longest
+/// first), collapses the edges shorter than 4/5 L (shortest first) where no
+/// edge would become longer than 4/3 L, flips edges to bring valences
+/// towards 6 (4 on the border), moves each vertex to the area-weighted
+/// centroid of its triangles in its tangent plane, and projects it back onto
+/// the input surface (the closest point, through an AABB tree of the input's
+/// triangles built once).
+///
+/// On any surface: every step is written on darts, normals are taken per
+/// dart (`vertex_normal(Dart)`), and a collapse, flip or move is refused if
+/// it would turn a triangle over as seen from the darts around it, so it
+/// works across Möbius edges. What makes the surface what it is stays: the
+/// Euler characteristic, the number of border loops, orientability (a Möbius
+/// strip stays one non-orientable strip), the number of components.
+///
+/// Faces that are not triangles are first split into triangles by
+/// `triangulate_faces()`. The mesh must have no removed elements; the
+/// result is garbage-collected. Positions: midpoints are computed in the
+/// kernel's `FT`; relaxation and projection in `double`, converted back to
+/// the point type (exact kernels work, but moved points are rounded to
+/// double).
+///
+/// \param mesh the mesh, remeshed in place
+/// \param target_edge_length L, positive and finite
+/// \param np optional named parameters:
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{how many times the loop runs, from 0 to 1000}
+///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{protect_borders}
+///     \cgalParamDescription{`true`: border edges are neither split nor
+///       collapsed nor flipped, and their vertices do not move. `false`:
+///       border edges are split and collapsed like others, and border
+///       vertices slide along the input's border (to the middle of their
+///       border neighbours, then onto the input's border edges), so each
+///       border loop stays one loop on the input's border.}
+///     \cgalParamDefault{the value of CGAL's `protect_constraints`, itself `false` by default}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{protect_sharp_edges}
+///     \cgalParamDescription{`true`: edges whose sharpness (`edge_sharpness_map()`,
+///       the `e:sharpness` property) is above 0 are protected as borders are;
+///       their vertices (corners included) stay fixed}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Parameter_error if L is not positive and finite, the number of
+/// iterations is out of range, or `mesh` has removed elements; `mesh` is
+/// then untouched.
+template <class P, class NP = parameters::Default_named_parameters>
+void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const NP& np = parameters::default_values())
+{
+  const internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
+  internal::require_no_garbage(mesh, "isotropic_remeshing");
+  triangulate_faces(mesh);
+  internal::Isotropic_remesher<P>(mesh, options).run();
+  mesh.collect_garbage();
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_ISOTROPIC_REMESHING_H
