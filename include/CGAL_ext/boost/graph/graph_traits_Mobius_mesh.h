@@ -67,7 +67,10 @@ struct To_unflipped_dart
 };
 struct To_graph_edge
 {
-  Dart_edge operator()(Edge_index e) const { return Dart_edge(Dart(Halfedge_index(2 * e.idx()), false)); }
+  Dart_edge operator()(Edge_index e) const
+  {
+    return Dart_edge(Dart(Halfedge_index(dart_encoding::halfedge_of_edge(e.idx(), 0)), false));
+  }
 };
 
 } // namespace internal
@@ -102,7 +105,8 @@ public:
     boost::transform_iterator<CGAL_ext::internal::To_unflipped_dart,
                               CGAL_ext::internal::Index_iterator<CGAL_ext::Halfedge_index>>;
   using edge_iterator =
-    boost::transform_iterator<CGAL_ext::internal::To_graph_edge, CGAL_ext::internal::Index_iterator<CGAL_ext::Edge_index>>;
+    boost::transform_iterator<CGAL_ext::internal::To_graph_edge,
+                              CGAL_ext::internal::Index_iterator<CGAL_ext::Edge_index>>;
   using face_iterator = CGAL_ext::internal::Index_iterator<CGAL_ext::Face_index>;
 
   using vertices_size_type = typename Mesh::size_type;
@@ -155,11 +159,12 @@ Vertex_index source(Dart_edge e, const Mobius_mesh<P>& m) { return m.source(e.da
 template <class P>
 Vertex_index target(Dart_edge e, const Mobius_mesh<P>& m) { return m.target(e.dart()); }
 
-/// An incoming dart of `v`, a border dart if `v` is on the border, and an
-/// unflipped one wherever one of those exists: the mesh may store a flipped
-/// dart (after `reverse_face_orientation()`), and a walk from it would visit
-/// the mirror darts, which the graph's ranges never yield. On a mesh without
-/// Möbius edges the result is always unflipped.
+/// An incoming dart of `v`, a border dart if `v` is on the border. The mesh
+/// may store a flipped dart (after `reverse_face_orientation()`), and a walk
+/// from it would visit mirror darts that the graph's ranges never yield; it
+/// is replaced by the unflipped dart into `v` across its edge (or before it
+/// on the border) when that one is unflipped, which is always the case on a
+/// mesh without Möbius edges.
 template <class P>
 Dart halfedge(Vertex_index v, const Mobius_mesh<P>& m)
 {

@@ -262,7 +262,8 @@ template <class P, class T>
 auto get(CGAL::dynamic_vertex_property_t<T>, Mobius_mesh<P>& m)
 {
   using Map = internal::Property_map<Vertex_index, T>;
-  return typename internal::Dynamic_maps<P, T>::Vertex(m, new Map(internal::add_unnamed_property_map<Vertex_index, T>(m)));
+  return typename internal::Dynamic_maps<P, T>::Vertex(
+    m, new Map(internal::add_unnamed_property_map<Vertex_index, T>(m)));
 }
 template <class P, class T>
 auto get(CGAL::dynamic_halfedge_property_t<T>, Mobius_mesh<P>& m)
