@@ -1081,6 +1081,25 @@ struct Edge_value { template <class M> Edge_index operator()(const M& m, Dart d)
 
 } // namespace internal
 
+namespace internal {
+
+// Where a circulator starts: a dart or a vertex, taken through this
+// conversion on purpose. CGAL's BGL defines templates of the same names
+// (`CGAL::halfedges_around_face()`, ...) that CGAL's algorithms call
+// unqualified and whose result types they rely on; with the graph traits of
+// `CGAL_ext/boost/graph/graph_traits_Mobius_mesh.h` both are viable for a
+// `Mobius_mesh`, and the conversion makes CGAL's the better match in an
+// unqualified call. The library calls its own ones qualified.
+template <class H>
+struct Circulator_start
+{
+  Circulator_start(H h) : value(h) {}
+  operator H() const { return value; }
+  H value;
+};
+
+} // namespace internal
+
 /// \name Circulators
 /// Ranges usable in a range-`for`, as `CGAL::halfedges_around_target()` and
 /// friends are for `Surface_mesh`. Functions taking a vertex start at
@@ -1090,7 +1109,7 @@ struct Edge_value { template <class M> Edge_index operator()(const M& m, Dart d)
 
 /// Darts of the face (or border loop) of `d`, starting at `d`.
 template <class P>
-auto halfedges_around_face(Dart d, const Mobius_mesh<P>& m)
+auto halfedges_around_face(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Dart_value>(m, d);
 }
@@ -1100,18 +1119,18 @@ auto halfedges_around_face_reverse(Dart d, const Mobius_mesh<P>& m)
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Prev_step, internal::Dart_value>(m, d);
 }
 template <class P>
-auto vertices_around_face(Dart d, const Mobius_mesh<P>& m)
+auto vertices_around_face(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Target_value>(m, d);
 }
 /// Faces across the edges of the face of `d` (null faces across border edges).
 template <class P>
-auto faces_around_face(Dart d, const Mobius_mesh<P>& m)
+auto faces_around_face(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Opposite_face_value>(m, d);
 }
 template <class P>
-auto edges_around_face(Dart d, const Mobius_mesh<P>& m)
+auto edges_around_face(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Next_step, internal::Edge_value>(m, d);
 }
@@ -1126,7 +1145,7 @@ auto edges_around_face(Face_index f, const Mobius_mesh<P>& m) { return CGAL_ext:
 
 /// Incoming darts of `target(d)`, starting at `d`.
 template <class P>
-auto halfedges_around_target(Dart d, const Mobius_mesh<P>& m)
+auto halfedges_around_target(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Dart_value>(m, d);
 }
@@ -1137,19 +1156,19 @@ auto halfedges_around_target_reverse(Dart d, const Mobius_mesh<P>& m)
 }
 /// Outgoing darts of `target(d)`: the opposites of the incoming ones.
 template <class P>
-auto halfedges_around_source(Dart d, const Mobius_mesh<P>& m)
+auto halfedges_around_source(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Opposite_value>(m, d);
 }
 /// Faces around `target(d)`; a null face stands for the border gap.
 template <class P>
-auto faces_around_target(Dart d, const Mobius_mesh<P>& m)
+auto faces_around_target(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Face_value>(m, d);
 }
 /// Vertices adjacent to `target(d)`.
 template <class P>
-auto vertices_around_target(Dart d, const Mobius_mesh<P>& m)
+auto vertices_around_target(internal::Circulator_start<Dart> d, const Mobius_mesh<P>& m)
 {
   return internal::Dart_cycle_range<Mobius_mesh<P>, internal::Around_target_step, internal::Source_value>(m, d);
 }
@@ -1160,18 +1179,18 @@ auto edges_around_target(Dart d, const Mobius_mesh<P>& m)
 }
 
 template <class P>
-auto halfedges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::halfedges_around_target(m.halfedge(v), m); }
+auto halfedges_around_target(internal::Circulator_start<Vertex_index> v, const Mobius_mesh<P>& m) { return CGAL_ext::halfedges_around_target(m.halfedge(v), m); }
 template <class P>
 auto halfedges_around_target_reverse(Vertex_index v, const Mobius_mesh<P>& m)
 {
   return CGAL_ext::halfedges_around_target_reverse(m.halfedge(v), m);
 }
 template <class P>
-auto halfedges_around_source(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::halfedges_around_source(m.halfedge(v), m); }
+auto halfedges_around_source(internal::Circulator_start<Vertex_index> v, const Mobius_mesh<P>& m) { return CGAL_ext::halfedges_around_source(m.halfedge(v), m); }
 template <class P>
-auto faces_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::faces_around_target(m.halfedge(v), m); }
+auto faces_around_target(internal::Circulator_start<Vertex_index> v, const Mobius_mesh<P>& m) { return CGAL_ext::faces_around_target(m.halfedge(v), m); }
 template <class P>
-auto vertices_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::vertices_around_target(m.halfedge(v), m); }
+auto vertices_around_target(internal::Circulator_start<Vertex_index> v, const Mobius_mesh<P>& m) { return CGAL_ext::vertices_around_target(m.halfedge(v), m); }
 template <class P>
 auto edges_around_target(Vertex_index v, const Mobius_mesh<P>& m) { return CGAL_ext::edges_around_target(m.halfedge(v), m); }
 

@@ -15,13 +15,12 @@
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/boost/graph/graph_traits_Mobius_mesh.h>
 #include <CGAL_ext/internal/Union_find.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/squared_distance_3.h>
-
-#include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -34,41 +33,6 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
-
-// Mobius_mesh is not a BGL graph. With a CGAL point type, argument-dependent
-// lookup also finds CGAL's BGL circulators (`CGAL::halfedges_around_face()`
-// and friends, which `<CGAL/Surface_mesh.h>` brings in) for the library's
-// unqualified calls, and naming `graph_traits<Mobius_mesh>::halfedge_descriptor`
-// in their signatures is a hard error. These traits name descriptor types
-// nothing converts to, so those overloads are merely not viable.
-#ifndef CGAL_EXT_MOBIUS_MESH_GRAPH_TRAITS_DEFINED
-#define CGAL_EXT_MOBIUS_MESH_GRAPH_TRAITS_DEFINED
-namespace CGAL_ext {
-template <class P>
-class Mobius_mesh;
-namespace internal {
-struct Not_a_graph_descriptor {};
-} // namespace internal
-} // namespace CGAL_ext
-namespace boost {
-/// `Mobius_mesh` is not a BGL graph: these traits name descriptor types that
-/// nothing converts to, so that CGAL's BGL overloads are not viable for it.
-template <class P>
-struct graph_traits<CGAL_ext::Mobius_mesh<P>>
-{
-  ///@{
-  /// A type that no mesh element converts to.
-  using vertex_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
-  using halfedge_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
-  using edge_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
-  using face_descriptor = CGAL_ext::internal::Not_a_graph_descriptor;
-  ///@}
-};
-template <class P>
-struct graph_traits<const CGAL_ext::Mobius_mesh<P>> : graph_traits<CGAL_ext::Mobius_mesh<P>>
-{};
-} // namespace boost
-#endif
 
 namespace CGAL_ext {
 

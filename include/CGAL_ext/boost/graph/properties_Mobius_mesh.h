@@ -1,0 +1,312 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The internal property maps of Mobius_mesh as a CGAL graph: points, the
+// four index maps, and dynamic maps kept in the mesh's own property arrays
+// (so that they grow with the elements that CGAL's Euler operations add).
+
+#ifndef CGAL_EXT_BOOST_GRAPH_PROPERTIES_MOBIUS_MESH_H
+#define CGAL_EXT_BOOST_GRAPH_PROPERTIES_MOBIUS_MESH_H
+
+#include <CGAL_ext/boost/graph/graph_traits_Mobius_mesh.h>
+
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL_ext {
+namespace internal {
+
+// The index of a descriptor in the arrays CGAL algorithms size with
+// `num_vertices()`, `num_halfedges()`, ...: a dart's index is its bits, so the
+// two darts of a halfedge have two indices.
+inline std::uint32_t graph_index(Vertex_index v) { return v.idx(); }
+inline std::uint32_t graph_index(Face_index f) { return f.idx(); }
+inline std::uint32_t graph_index(Dart d) { return d.bits(); }
+inline std::uint32_t graph_index(Dart_edge e) { return e.idx(); }
+
+template <class Key>
+struct Graph_index_map
+{
+  using key_type = Key;
+  using value_type = std::uint32_t;
+  using reference = std::uint32_t;
+  using category = boost::readable_property_map_tag;
+
+  value_type operator[](Key k) const { return graph_index(k); }
+  friend value_type get(Graph_index_map, Key k) { return graph_index(k); }
+};
+
+// A dart property kept in the mesh's halfedge arrays: one pair of values per
+// halfedge, the unflipped dart's first.
+template <class T>
+class Dart_property_map
+{
+public:
+  using key_type = Dart;
+  using value_type = T;
+  using reference = T&;
+  using category = boost::lvalue_property_map_tag;
+  using Base = Property_map<Halfedge_index, std::array<T, 2>>;
+
+  Dart_property_map() = default;
+  explicit Dart_property_map(Base base) : base_(base) {}
+
+  reference operator[](Dart d) const { return base_[d.halfedge()][d.is_flipped() ? 1 : 0]; }
+  friend reference get(const Dart_property_map& m, Dart d) { return m[d]; }
+  friend void put(const Dart_property_map& m, Dart d, const T& v) { m[d] = v; }
+  Base base() const { return base_; }
+
+private:
+  Base base_;
+};
+
+// An edge property kept in the mesh's edge arrays, keyed by edge descriptors.
+template <class T>
+class Dart_edge_property_map
+{
+public:
+  using key_type = Dart_edge;
+  using value_type = T;
+  using reference = T&;
+  using category = boost::lvalue_property_map_tag;
+  using Base = Property_map<Edge_index, T>;
+
+  Dart_edge_property_map() = default;
+  explicit Dart_edge_property_map(Base base) : base_(base) {}
+
+  reference operator[](Dart_edge e) const { return base_[e.edge()]; }
+  friend reference get(const Dart_edge_property_map& m, Dart_edge e) { return m[e]; }
+  friend void put(const Dart_edge_property_map& m, Dart_edge e, const T& v) { m[e] = v; }
+  Base base() const { return base_; }
+
+private:
+  Base base_;
+};
+
+// What a dynamic property of a const mesh uses: a vector beside the mesh,
+// sized by the `num_*()` of the moment (the mesh cannot grow meanwhile).
+template <class Key, class T>
+class Vector_property_map
+{
+public:
+  using key_type = Key;
+  using value_type = T;
+  using reference = T&;
+  using category = boost::lvalue_property_map_tag;
+
+  Vector_property_map() = default;
+  explicit Vector_property_map(std::size_t n) : values_(std::make_shared<std::vector<Stored_value<T>>>(n, T())) {}
+
+  reference operator[](Key k) const
+  {
+    auto& cell = (*values_)[graph_index(k)];
+    if constexpr (std::is_same_v<T, bool>)
+      return cell.value;
+    else
+      return cell;
+  }
+  friend reference get(const Vector_property_map& m, Key k) { return m[k]; }
+  friend void put(const Vector_property_map& m, Key k, const T& v) { m[k] = v; }
+
+private:
+  std::shared_ptr<std::vector<Stored_value<T>>> values_;
+};
+
+// An unnamed property array of element kind `I`: a fresh name each time, as
+// the mesh's maps are found by name.
+template <class I, class T, class P>
+Property_map<I, T> add_unnamed_property_map(Mobius_mesh<P>& m)
+{
+  for (std::size_t k = 0;; ++k) {
+    auto [map, created] = m.template add_property_map<I, T>("dynamic:" + std::to_string(k), T());
+    if (created)
+      return map;
+  }
+}
+
+// Called by CGAL's dynamic map deleter when the last copy of a map goes.
+template <class I, class T, class P>
+void remove_property(Property_map<I, T> map, Mobius_mesh<P>& m)
+{
+  m.remove_property_map(map);
+}
+template <class T, class P>
+void remove_property(Dart_property_map<T> map, Mobius_mesh<P>& m)
+{
+  auto base = map.base();
+  m.remove_property_map(base);
+}
+template <class T, class P>
+void remove_property(Dart_edge_property_map<T> map, Mobius_mesh<P>& m)
+{
+  auto base = map.base();
+  m.remove_property_map(base);
+}
+
+// The maps behind CGAL's dynamic property tags, by element kind.
+template <class P, class T>
+struct Dynamic_maps
+{
+  using Mesh = Mobius_mesh<P>;
+  using Vertex = CGAL::internal::Dynamic<Mesh, Property_map<Vertex_index, T>>;
+  using Halfedge = CGAL::internal::Dynamic<Mesh, Dart_property_map<T>>;
+  using Edge = CGAL::internal::Dynamic<Mesh, Dart_edge_property_map<T>>;
+  using Face = CGAL::internal::Dynamic<Mesh, Property_map<Face_index, T>>;
+};
+
+} // namespace internal
+} // namespace CGAL_ext
+
+namespace boost {
+
+template <class P>
+struct property_map<CGAL_ext::Mobius_mesh<P>, CGAL::vertex_point_t>
+{
+  using type = CGAL_ext::internal::Property_map<CGAL_ext::Vertex_index, P>;
+  using const_type = type;
+};
+
+#define CGAL_EXT_INDEX_PROPERTY_MAP(TAG, KEY)                                                                  \
+  template <class P>                                                                                           \
+  struct property_map<CGAL_ext::Mobius_mesh<P>, TAG>                                                           \
+  {                                                                                                            \
+    using type = CGAL_ext::internal::Graph_index_map<KEY>;                                                     \
+    using const_type = type;                                                                                   \
+  };
+CGAL_EXT_INDEX_PROPERTY_MAP(boost::vertex_index_t, CGAL_ext::Vertex_index)
+CGAL_EXT_INDEX_PROPERTY_MAP(boost::halfedge_index_t, CGAL_ext::Dart)
+CGAL_EXT_INDEX_PROPERTY_MAP(boost::edge_index_t, CGAL_ext::Dart_edge)
+CGAL_EXT_INDEX_PROPERTY_MAP(boost::face_index_t, CGAL_ext::Face_index)
+#undef CGAL_EXT_INDEX_PROPERTY_MAP
+
+template <class P, class T>
+struct property_map<CGAL_ext::Mobius_mesh<P>, CGAL::dynamic_vertex_property_t<T>>
+{
+  using type = typename CGAL_ext::internal::Dynamic_maps<P, T>::Vertex;
+  using const_type = CGAL_ext::internal::Vector_property_map<CGAL_ext::Vertex_index, T>;
+};
+template <class P, class T>
+struct property_map<CGAL_ext::Mobius_mesh<P>, CGAL::dynamic_halfedge_property_t<T>>
+{
+  using type = typename CGAL_ext::internal::Dynamic_maps<P, T>::Halfedge;
+  using const_type = CGAL_ext::internal::Vector_property_map<CGAL_ext::Dart, T>;
+};
+template <class P, class T>
+struct property_map<CGAL_ext::Mobius_mesh<P>, CGAL::dynamic_edge_property_t<T>>
+{
+  using type = typename CGAL_ext::internal::Dynamic_maps<P, T>::Edge;
+  using const_type = CGAL_ext::internal::Vector_property_map<CGAL_ext::Dart_edge, T>;
+};
+template <class P, class T>
+struct property_map<CGAL_ext::Mobius_mesh<P>, CGAL::dynamic_face_property_t<T>>
+{
+  using type = typename CGAL_ext::internal::Dynamic_maps<P, T>::Face;
+  using const_type = CGAL_ext::internal::Vector_property_map<CGAL_ext::Face_index, T>;
+};
+
+} // namespace boost
+
+namespace CGAL {
+
+template <class P>
+struct graph_has_property<CGAL_ext::Mobius_mesh<P>, boost::vertex_index_t> : CGAL::Tag_true {};
+template <class P>
+struct graph_has_property<CGAL_ext::Mobius_mesh<P>, boost::halfedge_index_t> : CGAL::Tag_true {};
+template <class P>
+struct graph_has_property<CGAL_ext::Mobius_mesh<P>, boost::edge_index_t> : CGAL::Tag_true {};
+template <class P>
+struct graph_has_property<CGAL_ext::Mobius_mesh<P>, boost::face_index_t> : CGAL::Tag_true {};
+template <class P>
+struct graph_has_property<CGAL_ext::Mobius_mesh<P>, CGAL::vertex_point_t> : CGAL::Tag_true {};
+
+} // namespace CGAL
+
+namespace CGAL_ext {
+
+/// \name Internal property maps of the graph
+/// @{
+template <class P>
+internal::Property_map<Vertex_index, P> get(CGAL::vertex_point_t, const Mobius_mesh<P>& m) { return m.points(); }
+template <class P>
+internal::Graph_index_map<Vertex_index> get(boost::vertex_index_t, const Mobius_mesh<P>&) { return {}; }
+template <class P>
+internal::Graph_index_map<Dart> get(boost::halfedge_index_t, const Mobius_mesh<P>&) { return {}; }
+template <class P>
+internal::Graph_index_map<Dart_edge> get(boost::edge_index_t, const Mobius_mesh<P>&) { return {}; }
+template <class P>
+internal::Graph_index_map<Face_index> get(boost::face_index_t, const Mobius_mesh<P>&) { return {}; }
+
+template <class P>
+const P& get(CGAL::vertex_point_t, const Mobius_mesh<P>& m, Vertex_index v) { return m.point(v); }
+template <class P>
+void put(CGAL::vertex_point_t, Mobius_mesh<P>& m, Vertex_index v, const P& p) { m.point(v) = p; }
+template <class P>
+std::uint32_t get(boost::vertex_index_t, const Mobius_mesh<P>&, Vertex_index v) { return v.idx(); }
+template <class P>
+std::uint32_t get(boost::halfedge_index_t, const Mobius_mesh<P>&, Dart d) { return d.bits(); }
+template <class P>
+std::uint32_t get(boost::edge_index_t, const Mobius_mesh<P>&, Dart_edge e) { return e.idx(); }
+template <class P>
+std::uint32_t get(boost::face_index_t, const Mobius_mesh<P>&, Face_index f) { return f.idx(); }
+
+template <class P, class T>
+auto get(CGAL::dynamic_vertex_property_t<T>, Mobius_mesh<P>& m)
+{
+  using Map = internal::Property_map<Vertex_index, T>;
+  return typename internal::Dynamic_maps<P, T>::Vertex(
+    m, new Map(internal::add_unnamed_property_map<Vertex_index, T>(m)));
+}
+template <class P, class T>
+auto get(CGAL::dynamic_halfedge_property_t<T>, Mobius_mesh<P>& m)
+{
+  using Map = internal::Dart_property_map<T>;
+  return typename internal::Dynamic_maps<P, T>::Halfedge(
+    m, new Map(internal::add_unnamed_property_map<Halfedge_index, std::array<T, 2>>(m)));
+}
+template <class P, class T>
+auto get(CGAL::dynamic_edge_property_t<T>, Mobius_mesh<P>& m)
+{
+  using Map = internal::Dart_edge_property_map<T>;
+  return typename internal::Dynamic_maps<P, T>::Edge(m, new Map(internal::add_unnamed_property_map<Edge_index, T>(m)));
+}
+template <class P, class T>
+auto get(CGAL::dynamic_face_property_t<T>, Mobius_mesh<P>& m)
+{
+  using Map = internal::Property_map<Face_index, T>;
+  return typename internal::Dynamic_maps<P, T>::Face(m, new Map(internal::add_unnamed_property_map<Face_index, T>(m)));
+}
+
+template <class P, class T>
+auto get(CGAL::dynamic_vertex_property_t<T>, const Mobius_mesh<P>& m)
+{
+  return internal::Vector_property_map<Vertex_index, T>(num_vertices(m));
+}
+template <class P, class T>
+auto get(CGAL::dynamic_halfedge_property_t<T>, const Mobius_mesh<P>& m)
+{
+  return internal::Vector_property_map<Dart, T>(num_halfedges(m));
+}
+template <class P, class T>
+auto get(CGAL::dynamic_edge_property_t<T>, const Mobius_mesh<P>& m)
+{
+  return internal::Vector_property_map<Dart_edge, T>(num_edges(m));
+}
+template <class P, class T>
+auto get(CGAL::dynamic_face_property_t<T>, const Mobius_mesh<P>& m)
+{
+  return internal::Vector_property_map<Face_index, T>(num_faces(m));
+}
+/// @}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_BOOST_GRAPH_PROPERTIES_MOBIUS_MESH_H

@@ -1,0 +1,529 @@
+// CGAL's graph concepts on Mobius_mesh: CGAL's own algorithms run directly
+// on the mesh, checked against the same algorithms on the Surface_mesh that
+// the library's conversion makes, and against closed forms.
+#include "test_util.h"
+
+#include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh/generators.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/Surface_mesh_conversion.h>
+#include <CGAL_ext/boost/graph/graph_traits_Mobius_mesh.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <map>
+#include <set>
+#include <string>
+#include <type_traits>
+#include <unordered_set>
+#include <vector>
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using K = test::Epick;
+using Point = K::Point_3;
+using Mesh = CGAL_ext::Mobius_mesh<Point>;
+using SM = CGAL::Surface_mesh<Point>;
+using GT = boost::graph_traits<Mesh>;
+
+// The faces as cycles of points, each started at its least point (so that two
+// meshes with the same faces in another order or numbering compare equal,
+// orientation included), sorted.
+using Face_points = std::vector<Point>;
+Face_points started_at_least(Face_points f)
+{
+  std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  return f;
+}
+// Through the library's own walks, not the graph traits.
+std::vector<Face_points> faces_of(const Mesh& m)
+{
+  std::vector<Face_points> out;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    Face_points ps;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, m))
+      ps.push_back(m.point(v));
+    out.push_back(started_at_least(ps));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+std::vector<Face_points> faces_of(const SM& m)
+{
+  std::vector<Face_points> out;
+  for (SM::Face_index f : m.faces()) {
+    Face_points ps;
+    for (SM::Vertex_index v : m.vertices_around_face(m.halfedge(f)))
+      ps.push_back(m.point(v));
+    out.push_back(started_at_least(ps));
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Mesh read_mesh(const std::string& name)
+{
+  Mesh m;
+  CGAL_ext::IO::read_polygon_mesh(test::data("nonorientable/" + name), m);
+  return m;
+}
+// An orientable mesh, oriented: no Möbius edges, the exact model.
+Mesh oriented_torus()
+{
+  Mesh m = read_mesh("torus_24x12_quads.obj");
+  CGAL_ext::orient(m);
+  return m;
+}
+SM converted(const Mesh& m)
+{
+  SM sm;
+  CGAL_ext::to_surface_mesh(m, sm);
+  return sm;
+}
+template <class G>
+void triangulate(G& g)
+{
+  PMP::triangulate_faces(g);
+}
+
+// The non-orientable test shapes (Euler characteristic, border loops).
+struct Shape
+{
+  const char* file;
+  long long chi;
+  std::size_t border_loops;
+};
+const Shape non_orientable_shapes[] = {
+  {"mobius_20x4_tris.obj", 0, 1}, {"klein_fig8_24x12_quads.obj", 0, 0}, {"boys_surface_quads.obj", 1, 0}};
+
+double relative_difference(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
+
+// ---------------------------------------------------------------- the model
+
+TEST(GraphTraits, DescriptorsAreTheDartTypes)
+{
+  static_assert(std::is_same_v<GT::vertex_descriptor, CGAL_ext::Vertex_index>);
+  static_assert(std::is_same_v<GT::halfedge_descriptor, CGAL_ext::Dart>);
+  static_assert(std::is_same_v<GT::edge_descriptor, CGAL_ext::Dart_edge>);
+  static_assert(std::is_same_v<GT::face_descriptor, CGAL_ext::Face_index>);
+  static_assert(std::is_same_v<boost::graph_traits<const Mesh>::halfedge_descriptor, CGAL_ext::Dart>);
+}
+
+TEST(GraphTraits, RangesYieldUnflippedDartsAndIdentitiesHoldOnAMobiusStrip)
+{
+  Mesh m = read_mesh("mobius_20x4_quads.obj");
+  CGAL_ext::orient(m);
+  ASSERT_EQ(CGAL_ext::number_of_mobius_edges(m), 4u); // one seam across the 4 quads of the band
+  // 21 x 5 grid points glued with a twist: 100 vertices, 180 edges, 80 faces.
+  EXPECT_EQ(std::distance(vertices(m).begin(), vertices(m).end()), 100);
+  EXPECT_EQ(std::distance(edges(m).begin(), edges(m).end()), 180);
+  EXPECT_EQ(std::distance(halfedges(m).begin(), halfedges(m).end()), 360);
+  EXPECT_EQ(std::distance(faces(m).begin(), faces(m).end()), 80);
+  std::size_t flipped_opposites = 0;
+  for (GT::halfedge_descriptor h : halfedges(m)) {
+    EXPECT_FALSE(h.is_flipped());
+    EXPECT_EQ(opposite(opposite(h, m), m), h);
+    EXPECT_EQ(next(prev(h, m), m), h);
+    EXPECT_EQ(target(opposite(h, m), m), source(h, m));
+    EXPECT_EQ(halfedge(edge(h, m), m), h);
+    EXPECT_EQ(edge(opposite(h, m), m), edge(h, m));
+    flipped_opposites += opposite(h, m).is_flipped() ? 1 : 0;
+  }
+  // Only across the 4 Möbius edges is the opposite of a range dart a flipped
+  // dart (both halfedges of each: 8).
+  EXPECT_EQ(flipped_opposites, 8u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+}
+
+TEST(GraphTraits, EveryDartReachedOnAnOrientedMeshIsUnflipped)
+{
+  // A closed and a bordered orientable mesh (a band with two half twists).
+  std::vector<Mesh> meshes(2);
+  meshes[0] = oriented_torus();
+  CGAL_ext::make_mobius_strip(meshes[1], 12, 3, 2);
+  for (Mesh& mesh : meshes) {
+    Mesh* m = &mesh;
+    // Reversing every face keeps the mesh oriented but leaves flipped vertex
+    // darts in it; the graph's halfedge(v) names the same fan with an
+    // unflipped dart.
+    for (CGAL_ext::Face_index f : m->faces())
+      m->reverse_face_orientation(f);
+    ASSERT_FALSE(CGAL_ext::has_mobius_edges(*m));
+    std::size_t stored_flipped = 0;
+    for (GT::vertex_descriptor v : vertices(*m))
+      stored_flipped += m->halfedge(v).is_flipped() ? 1 : 0;
+    EXPECT_GT(stored_flipped, 0u);
+    for (GT::vertex_descriptor v : vertices(*m)) {
+      const GT::halfedge_descriptor h = halfedge(v, *m);
+      EXPECT_FALSE(h.is_flipped());
+      EXPECT_EQ(target(h, *m), v);
+      EXPECT_EQ(CGAL::is_border(h, *m), m->is_border(v));
+      for (GT::halfedge_descriptor g : CGAL::halfedges_around_target(h, *m))
+        EXPECT_FALSE(g.is_flipped());
+    }
+    for (GT::halfedge_descriptor h : halfedges(*m))
+      EXPECT_FALSE(opposite(h, *m).is_flipped() || next(h, *m).is_flipped() || prev(h, *m).is_flipped());
+  }
+}
+
+TEST(GraphTraits, BorderVerticesGetBorderHalfedges)
+{
+  Mesh m = read_mesh("mobius_20x4_tris.obj");
+  CGAL_ext::orient(m);
+  std::size_t border_vertices = 0;
+  for (GT::vertex_descriptor v : vertices(m))
+    if (m.is_border(v)) {
+      ++border_vertices;
+      EXPECT_TRUE(CGAL::is_border(halfedge(v, m), m));
+    }
+  EXPECT_EQ(border_vertices, 40u); // the one border loop runs twice round the 20 columns
+}
+
+TEST(GraphTraits, LibraryAndCgalCirculatorsCoexist)
+{
+  Mesh m = oriented_torus();
+  const GT::halfedge_descriptor h = halfedge(*faces(m).begin(), m);
+  const GT::vertex_descriptor v = target(h, m);
+  // Unqualified, CGAL's templates win (CGAL's algorithms rely on their result
+  // types); qualified, the library's own circulators are called.
+  static_assert(std::is_same_v<decltype(halfedges_around_face(h, m)), decltype(CGAL::halfedges_around_face(h, m))>);
+  static_assert(std::is_same_v<decltype(vertices_around_target(v, m)), decltype(CGAL::vertices_around_target(v, m))>);
+  static_assert(!std::is_same_v<decltype(CGAL_ext::halfedges_around_face(h, m)),
+                                decltype(CGAL::halfedges_around_face(h, m))>);
+  // Both walk the same darts.
+  std::vector<GT::halfedge_descriptor> ours, cgals;
+  for (GT::halfedge_descriptor g : CGAL_ext::halfedges_around_face(h, m))
+    ours.push_back(g);
+  for (GT::halfedge_descriptor g : halfedges_around_face(h, m))
+    cgals.push_back(g);
+  EXPECT_EQ(ours, cgals);
+  EXPECT_EQ(ours.size(), 4u);
+  ours.clear();
+  cgals.clear();
+  for (GT::halfedge_descriptor g : CGAL_ext::halfedges_around_target(v, m))
+    ours.push_back(g);
+  for (GT::halfedge_descriptor g : halfedges_around_target(v, m))
+    cgals.push_back(g);
+  EXPECT_EQ(ours, cgals);
+  EXPECT_EQ(ours.size(), 4u); // a regular quad grid
+  EXPECT_EQ(out_degree(v, m), 4u);
+  // The library's is_closed() (exact overload) and CGAL's agree.
+  EXPECT_TRUE(is_closed(m));
+  EXPECT_TRUE(CGAL::is_closed(m));
+}
+
+TEST(GraphTraits, IndexMapsAreInjectiveOverDarts)
+{
+  Mesh m = read_mesh("mobius_20x4_quads.obj");
+  auto him = get(boost::halfedge_index, m);
+  std::set<std::uint32_t> seen;
+  for (GT::halfedge_descriptor h : halfedges(m))
+    for (GT::halfedge_descriptor d : {h, h.flipped()}) {
+      EXPECT_LT(get(him, d), num_halfedges(m));
+      EXPECT_TRUE(seen.insert(get(him, d)).second);
+    }
+  EXPECT_EQ(seen.size(), std::size_t(num_halfedges(m))); // two darts per halfedge
+  EXPECT_EQ(num_halfedges(m), 2 * m.number_of_halfedges());
+  EXPECT_EQ(get(boost::edge_index, m, edge(halfedges(m).begin()->flipped(), m)), 0u);
+}
+
+TEST(GraphTraits, DynamicMapsKeepTheTwoDartsApartAndGrowWithTheMesh)
+{
+  Mesh m = oriented_torus();
+  const auto names_before = m.properties<CGAL_ext::Halfedge_index>();
+  {
+    auto marks = get(CGAL::dynamic_halfedge_property_t<int>(), m);
+    const GT::halfedge_descriptor h = *halfedges(m).begin();
+    put(marks, h, 1);
+    put(marks, h.flipped(), 2);
+    EXPECT_EQ(get(marks, h), 1);
+    EXPECT_EQ(get(marks, h.flipped()), 2);
+    auto edge_marks = get(CGAL::dynamic_edge_property_t<bool>(), m);
+    put(edge_marks, edge(h, m), true);
+    EXPECT_TRUE(get(edge_marks, edge(opposite(h, m), m)));
+    const GT::edge_descriptor e = add_edge(m);
+    put(marks, halfedge(e, m), 7);
+    EXPECT_EQ(get(marks, halfedge(e, m)), 7);
+    EXPECT_FALSE(get(edge_marks, e));
+  }
+  // The last copy of a dynamic map removes its array.
+  EXPECT_EQ(m.properties<CGAL_ext::Halfedge_index>(), names_before);
+  const Mesh& cm = m;
+  auto const_marks = get(CGAL::dynamic_vertex_property_t<bool>(), cm);
+  put(const_marks, *vertices(cm).begin(), true);
+  EXPECT_TRUE(get(const_marks, *vertices(cm).begin()));
+}
+
+// ---------------------------------------------------------------- orientable: same as on Surface_mesh
+
+TEST(GraphTraits, CopyFaceGraphBothWays)
+{
+  const Mesh m = oriented_torus();
+  const SM reference = converted(m); // the library's own conversion
+  SM copy;
+  CGAL::copy_face_graph(m, copy);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(copy));
+  EXPECT_EQ(faces_of(copy), faces_of(reference));
+
+  Mesh back;
+  CGAL::copy_face_graph(reference, back);
+  EXPECT_TRUE(back.is_valid(true));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(back), 0u);
+  EXPECT_EQ(faces_of(back), faces_of(reference));
+  EXPECT_EQ(CGAL_ext::euler_characteristic(back), 0);
+}
+
+TEST(GraphTraits, TriangulationAreaVolumeNormalsAsOnSurfaceMesh)
+{
+  Mesh m = oriented_torus();
+  SM sm = converted(m);
+  triangulate(m);
+  triangulate(sm);
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_faces(), 2u * 24 * 12);
+  EXPECT_EQ(faces_of(m), faces_of(sm));
+  EXPECT_TRUE(CGAL::is_triangle_mesh(m));
+  EXPECT_TRUE(CGAL::is_closed(m));
+
+  EXPECT_LT(relative_difference(PMP::area(m), PMP::area(sm)), 1e-12);
+  const double volume = PMP::volume(m);
+  EXPECT_LT(relative_difference(volume, PMP::volume(sm)), 1e-12);
+  EXPECT_GT(volume, 0); // oriented outward, as the file's faces are
+
+  // Per face normals, matched through the faces' points.
+  std::map<Face_points, K::Vector_3> normals;
+  for (SM::Face_index f : sm.faces()) {
+    Face_points ps;
+    for (SM::Vertex_index v : sm.vertices_around_face(sm.halfedge(f)))
+      ps.push_back(sm.point(v));
+    normals[started_at_least(ps)] = PMP::compute_face_normal(f, sm);
+  }
+  auto vnormals = get(CGAL::dynamic_vertex_property_t<K::Vector_3>(), m);
+  PMP::compute_vertex_normals(m, vnormals);
+  for (GT::face_descriptor f : faces(m)) {
+    Face_points ps;
+    for (GT::vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, m), m))
+      ps.push_back(m.point(v));
+    const K::Vector_3 n = PMP::compute_face_normal(f, m), r = normals.at(started_at_least(ps));
+    EXPECT_LT(CGAL::squared_distance(CGAL::ORIGIN + n, CGAL::ORIGIN + r), 1e-24);
+  }
+  for (SM::Vertex_index v : sm.vertices()) {
+    const K::Vector_3 r = PMP::compute_vertex_normal(v, sm);
+    // The same vertex, found by its point.
+    for (GT::vertex_descriptor w : vertices(m))
+      if (m.point(w) == sm.point(v)) {
+        EXPECT_LT(CGAL::squared_distance(CGAL::ORIGIN + get(vnormals, w), CGAL::ORIGIN + r), 1e-24);
+      }
+  }
+
+  // The tube's centre circle has radius R = xmax - r, where 2r is the height.
+  const CGAL::Bbox_3 box = PMP::bbox(m);
+  const double R = box.xmax() - (box.zmax() - box.zmin()) / 2;
+  const CGAL::Side_of_triangle_mesh<Mesh, K> inside(m);
+  EXPECT_EQ(inside(Point(R, 0, 0)), CGAL::ON_BOUNDED_SIDE);
+  EXPECT_EQ(inside(Point(0, 0, 0)), CGAL::ON_UNBOUNDED_SIDE); // the hole
+  const CGAL::Side_of_triangle_mesh<SM, K> sm_inside(sm);
+  for (const Point& q : {Point(0, 0, 0), Point(box.xmax() - 0.01, 0, 0), Point(1, 1, 0.1)})
+    EXPECT_EQ(inside(q), sm_inside(q));
+}
+
+// Finds the dart from the vertex at `a` to the vertex at `b` in any graph.
+template <class G>
+typename boost::graph_traits<G>::halfedge_descriptor dart_between(const G& g, const Point& a, const Point& b)
+{
+  auto vpm = get(CGAL::vertex_point, g);
+  for (auto h : halfedges(g))
+    for (auto d : {h, opposite(h, g)})
+      if (get(vpm, source(d, g)) == a && get(vpm, target(d, g)) == b)
+        return d;
+  return boost::graph_traits<G>::null_halfedge();
+}
+
+TEST(GraphTraits, CgalEulerOperationsAsOnSurfaceMesh)
+{
+  Mesh m = oriented_torus();
+  SM sm = converted(m);
+  triangulate(m);
+  triangulate(sm);
+  // Each operation on the edge at a given place of m's range, found in sm by
+  // its end points; the places lie far apart on the 1728 darts.
+  std::size_t place = 0;
+  auto on_both = [&](auto op) {
+    const GT::halfedge_descriptor h = *std::next(halfedges(m).begin(), std::ptrdiff_t(place));
+    place += 200;
+    const Point a = m.point(source(h, m)), b = m.point(target(h, m));
+    op(m, dart_between(m, a, b), CGAL::midpoint(a, b));
+    op(sm, dart_between(sm, a, b), CGAL::midpoint(a, b));
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+    EXPECT_TRUE(m.is_valid(true));
+    EXPECT_EQ(m.number_of_vertices(), sm.number_of_vertices());
+    EXPECT_EQ(m.number_of_faces(), sm.number_of_faces());
+    EXPECT_EQ(std::distance(faces(m).begin(), faces(m).end()), std::ptrdiff_t(sm.number_of_faces()));
+    EXPECT_EQ(faces_of(m), faces_of(sm));
+  };
+  on_both([](auto& g, auto h, const Point&) { CGAL::Euler::collapse_edge(edge(h, g), g); });
+  on_both([](auto& g, auto h, const Point&) { CGAL::Euler::flip_edge(h, g); });
+  on_both([](auto& g, auto h, const Point& mid) {
+    const auto v = target(CGAL::Euler::split_edge(h, g), g);
+    put(get(CGAL::vertex_point, g), v, mid);
+  });
+  on_both([](auto& g, auto h, const Point& mid) {
+    const auto v = target(CGAL::Euler::add_center_vertex(h, g), g);
+    put(get(CGAL::vertex_point, g), v, mid);
+  });
+  on_both([](auto& g, auto h, const Point&) { CGAL::Euler::remove_center_vertex(h, g); });
+  on_both([](auto& g, auto h, const Point&) { CGAL::Euler::remove_face(h, g); });
+  EXPECT_TRUE(m.has_garbage());
+  EXPECT_EQ(std::distance(faces(m).begin(), faces(m).end()), std::ptrdiff_t(m.number_of_faces()));
+  m.collect_garbage();
+  sm.collect_garbage();
+  EXPECT_EQ(faces_of(m), faces_of(sm));
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 1u);
+}
+
+// ---------------------------------------------------------------- any mesh: orientation-free algorithms
+
+TEST(GraphTraits, ValidityAndCountsOnNonOrientableShapes)
+{
+  for (const Shape& s : non_orientable_shapes) {
+    SCOPED_TRACE(s.file);
+    const Mesh m = read_mesh(s.file);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m, true));
+    const long long chi = static_cast<long long>(std::distance(vertices(m).begin(), vertices(m).end())) -
+                          std::distance(edges(m).begin(), edges(m).end()) +
+                          std::distance(faces(m).begin(), faces(m).end());
+    EXPECT_EQ(chi, s.chi);
+    EXPECT_EQ(CGAL::is_closed(m), s.border_loops == 0);
+    EXPECT_EQ(CGAL::is_quad_mesh(m), std::string(s.file).find("quads") != std::string::npos);
+  }
+}
+
+TEST(GraphTraits, AreaBoxComponentsAndBordersOnNonOrientableShapes)
+{
+  for (const Shape& s : non_orientable_shapes) {
+    SCOPED_TRACE(s.file);
+    Mesh m = read_mesh(s.file);
+    triangulate(m); // face by face: no global orientation needed
+    EXPECT_TRUE(m.is_valid(true));
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), s.chi);
+    EXPECT_FALSE(CGAL_ext::is_orientable(m));
+    SM sm = converted(m); // cut along the Möbius edges: the same faces
+    EXPECT_LT(relative_difference(PMP::area(m), PMP::area(sm)), 1e-12);
+    const CGAL::Bbox_3 box = PMP::bbox(m), sm_box = PMP::bbox(sm);
+    EXPECT_EQ(box, sm_box);
+
+    auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), m);
+    EXPECT_EQ(PMP::connected_components(m, component), 1u);
+
+    std::vector<GT::halfedge_descriptor> border;
+    PMP::border_halfedges(m, std::back_inserter(border));
+    EXPECT_EQ(border.size(), s.border_loops == 0 ? 0u : 40u);
+    // A halfedge-marking walk sees the two darts of a border halfedge as two
+    // halfedges: a border loop through a Möbius link is found once in each
+    // direction (see doc/graph_traits.md).
+    std::vector<GT::halfedge_descriptor> cycles;
+    PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
+    EXPECT_EQ(cycles.size(), 2 * s.border_loops);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), s.border_loops);
+  }
+}
+
+TEST(GraphTraits, TwoCopiesAreTwoComponents)
+{
+  Mesh m = read_mesh("klein_fig8_24x12_quads.obj");
+  m.join(read_mesh("boys_surface_quads.obj"));
+  auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), m);
+  EXPECT_EQ(PMP::connected_components(m, component), 2u);
+}
+
+TEST(GraphTraits, SelfIntersectionOfImmersions)
+{
+  // Neither the Klein bottle nor the projective plane embeds in space: their
+  // immersions must cross themselves. The Möbius band of the file is embedded.
+  for (const Shape& s : non_orientable_shapes) {
+    SCOPED_TRACE(s.file);
+    Mesh m = read_mesh(s.file);
+    triangulate(m);
+    EXPECT_EQ(PMP::does_self_intersect(m), s.border_loops == 0);
+  }
+  Mesh torus = oriented_torus();
+  triangulate(torus);
+  EXPECT_FALSE(PMP::does_self_intersect(torus));
+}
+
+TEST(GraphTraits, AabbDistancesAndHausdorffOnNonOrientableShapes)
+{
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  using SM_primitive = CGAL::AABB_face_graph_triangle_primitive<SM>;
+  using SM_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, SM_primitive>>;
+  for (const Shape& s : non_orientable_shapes) {
+    SCOPED_TRACE(s.file);
+    Mesh m = read_mesh(s.file);
+    triangulate(m);
+    const SM sm = converted(m);
+    Tree tree(faces(m).first, faces(m).second, m);
+    SM_tree sm_tree(faces(sm).first, faces(sm).second, sm);
+    // Vertices lie on the surface; points off it are as far as on the cut copy.
+    for (GT::vertex_descriptor v : vertices(m))
+      EXPECT_EQ(tree.squared_distance(m.point(v)), 0.0);
+    for (const Point& q : {Point(3, 0, 0), Point(0.1, 0.2, 0.3), Point(-1, 2, 5)})
+      EXPECT_LT(std::abs(tree.squared_distance(q) - sm_tree.squared_distance(q)), 1e-12);
+    // The same surface through a round trip: Hausdorff distance 0 either way;
+    // a copy moved by t is at most |t| away.
+    Mesh back, moved = m;
+    CGAL_ext::from_surface_mesh(sm, back);
+    const auto np = PMP::parameters::number_of_points_on_faces(200);
+    EXPECT_LT(PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(m, back, np, np), 1e-12);
+    EXPECT_LT(PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(back, m, np, np), 1e-12);
+    for (GT::vertex_descriptor v : vertices(moved))
+      put(get(CGAL::vertex_point, moved), v, moved.point(v) + K::Vector_3(0, 0, 0.01));
+    const double h = PMP::approximate_Hausdorff_distance<CGAL::Sequential_tag>(m, moved, np, np);
+    EXPECT_GT(h, 0.0);
+    EXPECT_LE(h, 0.01 + 1e-12);
+  }
+}
+
+// ---------------------------------------------------------------- the guard
+
+TEST(GraphTraits, OrientationGuard)
+{
+  Mesh strip = read_mesh("mobius_20x4_quads.obj");
+  CGAL_ext::orient(strip);
+  EXPECT_TRUE(CGAL_ext::has_mobius_edges(strip));
+  try {
+    CGAL_ext::require_orientable_model(strip, "PMP::compute_vertex_normals");
+    FAIL() << "no exception";
+  } catch (const CGAL_ext::Parameter_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "PMP::compute_vertex_normals: the mesh has 4 Möbius edges, so CGAL would see no global orientation; "
+              "call CGAL_ext::orient() first (this mesh is non-orientable: no orientation exists)");
+  }
+  const Mesh torus = oriented_torus();
+  EXPECT_FALSE(CGAL_ext::has_mobius_edges(torus));
+  EXPECT_NO_THROW(CGAL_ext::require_orientable_model(torus, "PMP::volume"));
+}
+
+} // namespace
