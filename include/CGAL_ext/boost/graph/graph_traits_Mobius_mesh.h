@@ -36,22 +36,36 @@ namespace CGAL_ext {
 class Dart_edge
 {
 public:
+  /// The type of edge indices.
   using size_type = std::uint32_t;
 
+  /// The null descriptor, or the edge of dart `d`.
+  ///@{
   Dart_edge() = default;
   explicit Dart_edge(Dart d) : dart_(d) {}
+  ///@}
 
+  /// The dart it holds, the edge it names, that edge's index, and whether it
+  /// names one.
+  ///@{
   Dart dart() const { return dart_; }
   Edge_index edge() const { return dart_.is_valid() ? Edge_index(idx()) : Edge_index(); }
   size_type idx() const { return internal::dart_encoding::edge_of_dart(dart_.bits()); }
   bool is_valid() const { return dart_.is_valid(); }
+  ///@}
 
+  /// Comparisons of the edges named, whichever darts hold them.
+  ///@{
   bool operator==(Dart_edge o) const { return edge() == o.edge(); }
   bool operator!=(Dart_edge o) const { return edge() != o.edge(); }
   bool operator<(Dart_edge o) const { return edge() < o.edge(); }
+  ///@}
 
+  /// Printing and hashing (by the edge named).
+  ///@{
   friend std::ostream& operator<<(std::ostream& os, Dart_edge e) { return os << e.edge() << " on " << e.dart_; }
   friend std::size_t hash_value(Dart_edge e) { return hash_value(e.edge()); }
+  ///@}
 
 private:
   Dart dart_;
@@ -78,6 +92,11 @@ struct To_graph_edge
 
 namespace boost {
 
+/// \ingroup PkgMobiusMeshGraph
+/// `Mobius_mesh` as a model of CGAL's `HalfedgeListGraph`, `FaceListGraph`
+/// and `MutableFaceGraph`: vertices and faces by index, halfedges as darts
+/// (each halfedge yielded once, unflipped, by `halfedges(g)`), edges as
+/// `Dart_edge`. What holds on a mesh with Möbius edges: doc/graph_traits.md.
 template <class P>
 struct graph_traits<CGAL_ext::Mobius_mesh<P>>
 {
@@ -90,6 +109,8 @@ private:
   {};
 
 public:
+  /// The types and functions the concepts ask for.
+  ///@{
   using vertex_descriptor = CGAL_ext::Vertex_index;
   using halfedge_descriptor = CGAL_ext::Dart;
   using edge_descriptor = CGAL_ext::Dart_edge;
@@ -122,8 +143,10 @@ public:
   static vertex_descriptor null_vertex() { return vertex_descriptor(); }
   static halfedge_descriptor null_halfedge() { return halfedge_descriptor(); }
   static face_descriptor null_face() { return face_descriptor(); }
+  ///@}
 };
 
+/// The same for a const mesh.
 template <class P>
 struct graph_traits<const CGAL_ext::Mobius_mesh<P>> : graph_traits<CGAL_ext::Mobius_mesh<P>>
 {};
@@ -131,6 +154,11 @@ struct graph_traits<const CGAL_ext::Mobius_mesh<P>> : graph_traits<CGAL_ext::Mob
 } // namespace boost
 
 namespace CGAL_ext {
+
+// The free functions of CGAL's HalfedgeListGraph, FaceListGraph and
+// MutableFaceGraph concepts, documented by the concepts themselves (see
+// doc/graph_traits.md), as CGAL documents those of Surface_mesh.
+/// \cond
 
 // ============================================================================
 // HalfedgeGraph and FaceGraph: the dart operations
@@ -338,6 +366,8 @@ void reserve(Mobius_mesh<P>& m, typename Mobius_mesh<P>::size_type nv, typename 
 template <class P>
 void collect_garbage(Mobius_mesh<P>& m) { m.collect_garbage(); }
 
+/// \endcond
+
 // ============================================================================
 // Orientation guard
 // ============================================================================
@@ -371,9 +401,11 @@ void require_orientable_model(const Mobius_mesh<P>& mesh, const std::string& wha
 } // namespace CGAL_ext
 
 namespace std {
+/// Hashes an edge descriptor by the edge it names.
 template <>
 struct hash<CGAL_ext::Dart_edge>
 {
+  /// The hash of `e`.
   std::size_t operator()(CGAL_ext::Dart_edge e) const { return hash_value(e); }
 };
 } // namespace std

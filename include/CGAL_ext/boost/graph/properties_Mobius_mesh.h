@@ -166,6 +166,10 @@ struct Dynamic_maps
 } // namespace internal
 } // namespace CGAL_ext
 
+// The property maps of CGAL's graph concepts (vertex_point, the four index
+// maps, the four dynamic property tags), documented by the concepts and in
+// doc/graph_traits.md, as CGAL documents those of Surface_mesh.
+/// \cond
 namespace boost {
 
 template <class P>
@@ -308,5 +312,6 @@ auto get(CGAL::dynamic_face_property_t<T>, const Mobius_mesh<P>& m)
 /// @}
 
 } // namespace CGAL_ext
+/// \endcond
 
 #endif // CGAL_EXT_BOOST_GRAPH_PROPERTIES_MOBIUS_MESH_H
