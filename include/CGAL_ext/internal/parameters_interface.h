@@ -21,3 +21,8 @@ CGAL_EXT_add_named_parameter(solid_t, solid, solid)
 // normals
 CGAL_EXT_add_named_parameter(normalize_t, normalize, normalize)
 CGAL_EXT_add_named_parameter(vertex_normal_weighting_t, vertex_normal_weighting, vertex_normal_weighting)
+// decimation (with CGAL's maximum_normal_deviation and edge_is_constrained_map)
+CGAL_EXT_add_named_parameter(number_of_faces_t, number_of_faces, number_of_faces)
+CGAL_EXT_add_named_parameter(face_ratio_t, face_ratio, face_ratio)
+CGAL_EXT_add_named_parameter(maximum_error_t, maximum_error, maximum_error)
+CGAL_EXT_add_named_parameter(protect_borders_t, protect_borders, protect_borders)
