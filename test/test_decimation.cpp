@@ -1,22 +1,32 @@
-// What decimation stands on: the collapse predicate and the triangulation
-// of polygons. References: angles, areas and counts worked out
+// Decimation and what it stands on: the collapse predicate and the
+// triangulation of polygons. References: angles, areas and counts worked out
 // by hand on small meshes, the Euler characteristic, border loops and
 // orientability (which no collapse changes), and invariance under reversing
 // faces (which moves Möbius edges but not the surface).
 
 #include "test_util.h"
 
+#include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
+#include <CGAL_ext/Surface_mesh_conversion.h>
+#include <CGAL_ext/decimation.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/subdivision.h>
+
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <set>
 #include <vector>
@@ -235,4 +245,305 @@ TEST(TriangulateFaces, KeepsTheTopologyOfAQuadKleinBottleAndMobiusStrip)
     EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), borders);
     EXPECT_FALSE(CGAL_ext::is_orientable(m));
   }
+}
+
+// ---------------------------------------------------------------- decimation
+
+namespace {
+
+using Surface_mesh = CGAL::Surface_mesh<Point>;
+
+struct Topology
+{
+  long long chi;
+  std::size_t borders;
+  bool orientable;
+  bool operator==(const Topology& o) const
+  {
+    return chi == o.chi && borders == o.borders && orientable == o.orientable;
+  }
+};
+
+template <class P>
+Topology topology(const CGAL_ext::Mobius_mesh<P>& m)
+{
+  return {CGAL_ext::euler_characteristic(m), CGAL_ext::number_of_border_cycles(m), CGAL_ext::is_orientable(m)};
+}
+
+std::ostream& operator<<(std::ostream& out, const Topology& t)
+{
+  return out << "chi " << t.chi << ", " << t.borders << " border loops, " << (t.orientable ? "" : "non-") << "orientable";
+}
+
+// The symmetric Hausdorff distance by CGAL, on the meshes converted (the cut
+// along the seams keeps the geometry): on a grid of the given spacing, which
+// makes the comparison of two results reproducible, or at 3000 random points.
+double hausdorff(const Surface_mesh& sa, const Surface_mesh& sb, double grid_spacing = 0)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if (grid_spacing > 0) {
+    const auto grid = CGAL::parameters::use_grid_sampling(true).grid_spacing(grid_spacing);
+    return PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(sa, sb, grid, grid);
+  }
+  const auto random = CGAL::parameters::number_of_points_on_faces(3000).random_seed(7);
+  return PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(sa, sb, random, random);
+}
+
+double hausdorff(const Mesh& a, const Mesh& b)
+{
+  Surface_mesh sa, sb;
+  CGAL_ext::to_surface_mesh(a, sa);
+  CGAL_ext::to_surface_mesh(b, sb);
+  return hausdorff(sa, sb);
+}
+
+// The surface of the cube [-1, 1]^3, each side an n x n grid of quads.
+Mesh cube_grid(int n)
+{
+  std::map<std::array<int, 3>, std::size_t> index;
+  std::vector<Point> points;
+  auto vertex = [&](std::array<int, 3> c) {
+    auto [it, added] = index.emplace(c, points.size());
+    if (added)
+      points.emplace_back(2.0 * c[0] / n - 1, 2.0 * c[1] / n - 1, 2.0 * c[2] / n - 1);
+    return it->second;
+  };
+  std::vector<std::vector<std::size_t>> faces;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int side : {0, n})
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          std::vector<std::size_t> quad;
+          for (auto [di, dj] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+            std::array<int, 3> c{};
+            c[axis] = side;
+            c[(axis + 1) % 3] = i + di;
+            c[(axis + 2) % 3] = j + dj;
+            quad.push_back(vertex(c));
+          }
+          if (side == 0)
+            std::reverse(quad.begin(), quad.end());
+          faces.push_back(quad);
+        }
+  return mesh_of(points, faces);
+}
+
+// How many coordinates of `p` are +-1: 3 at a corner, 2 on an edge of the cube.
+int coordinates_on_the_cube(const Point& p)
+{
+  return int(std::abs(p.x()) == 1) + int(std::abs(p.y()) == 1) + int(std::abs(p.z()) == 1);
+}
+
+} // namespace
+
+TEST(Quadric, SumsWeightedSquaredDistancesAndIsMinimalWhereThePlanesMeet)
+{
+  using CGAL_ext::internal::Quadric;
+  // The three planes of the cube's corner (1, 1, 1), weights 1, 2 and 3.
+  const Quadric q = Quadric::of_plane({1, 0, 0}, {1, 0, 0}, 1) + Quadric::of_plane({0, 2, 0}, {0, 1, 5}, 2) +
+                    Quadric::of_plane({0, 0, -1}, {3, 4, 1}, 3);
+  EXPECT_DOUBLE_EQ(q({0, 0, 0}), 1 + 2 + 3);
+  EXPECT_DOUBLE_EQ(q({1, 3, -1}), 0 + 2 * 4 + 3 * 4);
+  std::array<double, 3> x{};
+  ASSERT_TRUE(q.minimizer(x));
+  EXPECT_NEAR(x[0], 1, 1e-15);
+  EXPECT_NEAR(x[1], 1, 1e-15);
+  EXPECT_NEAR(x[2], 1, 1e-15);
+  // Two planes meet in a line: no single minimiser.
+  const Quadric edge = Quadric::of_plane({1, 0, 0}, {1, 0, 0}, 1) + Quadric::of_plane({0, 1, 0}, {0, 1, 0}, 1);
+  EXPECT_FALSE(edge.minimizer(x));
+}
+
+TEST(Decimation, ACubeComesDownToItsEightCornersExactly)
+{
+  Mesh m = cube_grid(6);
+  const auto r = CGAL_ext::decimate(m, CGAL_ext::parameters::number_of_faces(12));
+  EXPECT_EQ(r.faces_before, 6u * 36 * 2);
+  EXPECT_EQ(m.number_of_faces(), 12u);
+  EXPECT_EQ(m.number_of_vertices(), 8u);
+  EXPECT_TRUE(m.is_valid());
+  for (Vertex_index v : m.vertices())
+    EXPECT_EQ(coordinates_on_the_cube(m.point(v)), 3) << m.point(v);
+  // Only flat and straight collapses were needed: every quadric error is zero up to rounding.
+  EXPECT_LT(r.largest_error, 1e-20);
+}
+
+TEST(Decimation, MaximumErrorStopsBeforeTheShapeChanges)
+{
+  // An error bound far below any corner's cost leaves a cube: every vertex on
+  // its surface, all eight corners there, and far fewer faces.
+  Mesh m = cube_grid(6);
+  const auto r = CGAL_ext::decimate(m, CGAL_ext::parameters::maximum_error(1e-10));
+  EXPECT_LE(r.largest_error, 1e-10);
+  EXPECT_LT(m.number_of_faces(), 6u * 36 * 2 / 4);
+  std::size_t corners = 0;
+  for (Vertex_index v : m.vertices()) {
+    EXPECT_GE(coordinates_on_the_cube(m.point(v)), 1) << m.point(v);
+    corners += coordinates_on_the_cube(m.point(v)) == 3 ? 1 : 0;
+  }
+  EXPECT_EQ(corners, 8u);
+}
+
+TEST(Decimation, SharpEdgesAndProtectedBordersStayAsTheyWere)
+{
+  // The cube's twelve edges marked sharp: none collapses and none of their
+  // vertices moves, so the 12 (n - 1) + 8 vertices on them stay, exactly.
+  const int n = 6;
+  Mesh m = cube_grid(n);
+  CGAL_ext::triangulate_faces(m);
+  auto sharpness = CGAL_ext::edge_sharpness_map(m);
+  for (Edge_index e : m.edges())
+    if (coordinates_on_the_cube(CGAL::midpoint(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1)))) >= 2)
+      sharpness[e] = 2.f;
+  CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.05));
+  std::size_t on_edges = 0, sharp = 0;
+  for (Vertex_index v : m.vertices())
+    on_edges += coordinates_on_the_cube(m.point(v)) >= 2 ? 1 : 0;
+  const auto kept = *m.property_map<Edge_index, float>("e:sharpness");
+  for (Edge_index e : m.edges())
+    sharp += kept[e] > 0 ? 1 : 0;
+  EXPECT_EQ(on_edges, 12u * (n - 1) + 8);
+  EXPECT_EQ(sharp, 12u * n);
+  EXPECT_TRUE(m.is_valid());
+
+  // A flat square: with protected borders its 4 n border edges stay.
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> quads;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      points.emplace_back(i, j, 0);
+  for (std::size_t i = 0; i < std::size_t(n); ++i)
+    for (std::size_t j = 0; j < std::size_t(n); ++j)
+      quads.push_back({i * (n + 1) + j, (i + 1) * (n + 1) + j, (i + 1) * (n + 1) + j + 1, i * (n + 1) + j + 1});
+  Mesh square = mesh_of(points, quads);
+  CGAL_ext::decimate(square, CGAL_ext::parameters::number_of_faces(1).protect_borders(true));
+  std::size_t border_edges = 0;
+  for (Edge_index e : square.edges())
+    border_edges += square.is_border(e) ? 1 : 0;
+  EXPECT_EQ(border_edges, 4u * n);
+  EXPECT_EQ(square.number_of_vertices(), 4u * n); // the border only: every inner vertex went
+  EXPECT_EQ(CGAL_ext::euler_characteristic(square), 1);
+}
+
+TEST(Decimation, NoMoreErrorThanCgalGarlandHeckbertOnAnOrientableMesh)
+{
+  // A torus, triangulated and Loop-subdivided once: 2304 triangles, down to 10 %.
+  Mesh input;
+  CGAL_ext::make_torus(input, 24, 12);
+  CGAL_ext::triangulate_faces(input);
+  CGAL_ext::Subdivision::loop(input);
+  const std::size_t target = input.number_of_faces() / 10;
+  Mesh ours = input;
+  CGAL_ext::decimate(ours, CGAL_ext::parameters::number_of_faces(target));
+  EXPECT_TRUE(ours.is_valid());
+  EXPECT_EQ(topology(ours), topology(input));
+
+  Surface_mesh theirs;
+  CGAL_ext::to_surface_mesh(input, theirs);
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  SMS::GarlandHeckbert_plane_policies<Surface_mesh, test::Kd> policies(theirs);
+  auto stop = [&theirs, target](const auto&, const auto&, std::size_t, std::size_t) {
+    return theirs.number_of_faces() <= target;
+  };
+  SMS::edge_collapse(theirs, stop,
+                     CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+  theirs.collect_garbage();
+  EXPECT_EQ(ours.number_of_faces(), theirs.number_of_faces());
+  Surface_mesh input_sm;
+  CGAL_ext::to_surface_mesh(input, input_sm);
+  Surface_mesh ours_sm;
+  CGAL_ext::to_surface_mesh(ours, ours_sm);
+  const double d_ours = hausdorff(ours_sm, input_sm, 0.02), d_theirs = hausdorff(theirs, input_sm, 0.02);
+  std::cout << "torus " << input.number_of_faces() << " -> " << ours.number_of_faces()
+            << " faces: Hausdorff ours " << d_ours << ", CGAL " << d_theirs << "\n";
+  EXPECT_LE(d_ours, d_theirs);
+}
+
+TEST(Decimation, OneSidedSurfacesKeepTheirTopologyAt10And1Percent)
+{
+  for (const char* name : {"boys_surface_quads.obj", "klein_fig8_24x12_quads.obj", "mobius_20x4_quads.obj",
+                           "mobius_20x4_tris.obj", "mobius_min_5tris.obj", "rp2_hemi_icosahedron.obj"}) {
+    SCOPED_TRACE(name);
+    Mesh input;
+    CGAL_ext::IO::read_polygon_mesh(test::data(std::string("nonorientable/") + name), input);
+    CGAL_ext::triangulate_faces(input);
+    for (int level = 0; level < 3; ++level)
+      CGAL_ext::Subdivision::loop(input);
+    const Topology before = topology(input);
+    EXPECT_FALSE(before.orientable);
+    for (double ratio : {0.1, 0.01}) {
+      Mesh m = input;
+      const auto r = CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(ratio));
+      EXPECT_TRUE(m.is_valid());
+      EXPECT_EQ(topology(m), before);
+      EXPECT_EQ(r.faces_after, m.number_of_faces());
+      EXPECT_LE(m.number_of_faces(), std::max<std::size_t>(std::size_t(ratio * double(input.number_of_faces())), 12));
+      std::cout << name << " " << input.number_of_faces() << " -> " << m.number_of_faces()
+                << " faces: Hausdorff " << hausdorff(m, input) << "\n";
+    }
+  }
+}
+
+TEST(Decimation, CollapsesAcrossTheMobiusSeamKeepOneNonOrientableStrip)
+{
+  // A triangulated Möbius strip, its vertices numbered in a map that
+  // collapses carry along: edges of the seam are collapsed (one of their ends
+  // is gone), and the strip stays one non-orientable strip with one border.
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 40, 6, 1, 1.0, 0.5, false);
+  auto id = m.add_property_map<Vertex_index, int>("v:id", -1).first;
+  for (Vertex_index v : m.vertices())
+    id[v] = int(v.idx());
+  std::vector<std::pair<int, int>> seam;
+  for (Edge_index e : m.edges())
+    if (m.is_mobius(e))
+      seam.emplace_back(int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx()));
+  ASSERT_EQ(seam.size(), 6u);
+  CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.1));
+  std::set<int> left;
+  for (Vertex_index v : m.vertices())
+    left.insert(id[v]);
+  std::size_t collapsed = 0;
+  for (auto [a, b] : seam)
+    collapsed += left.count(a) == 0 || left.count(b) == 0 ? 1 : 0;
+  EXPECT_GT(collapsed, 0u);
+  EXPECT_TRUE(m.is_valid());
+  EXPECT_EQ(topology(m), (Topology{0, 1, false}));
+  EXPECT_LE(m.number_of_faces(), 48u);
+}
+
+TEST(Decimation, ExactKernelGivesAValidMeshOfTheSameTopology)
+{
+  using EMesh = CGAL_ext::Mobius_mesh<test::Epeck::Point_3>;
+  EMesh m;
+  CGAL_ext::make_klein_bottle(m, 16, 8);
+  const Topology before = topology(m);
+  const auto r = CGAL_ext::decimate(m, CGAL_ext::parameters::number_of_faces(60));
+  EXPECT_EQ(r.faces_before, 256u);
+  EXPECT_LE(m.number_of_faces(), 60u);
+  EXPECT_TRUE(m.is_valid());
+  EXPECT_EQ(topology(m), before);
+}
+
+TEST(Decimation, BadParametersThrowBeforeTheMeshIsTouched)
+{
+  Mesh m;
+  CGAL_ext::make_torus(m, 6, 4); // quads: a decimation that ran would triangulate them
+  const Mesh copy = m;
+  namespace np = CGAL_ext::parameters;
+  auto unchanged = [&] {
+    EXPECT_EQ(m.number_of_faces(), copy.number_of_faces());
+    EXPECT_EQ(m.number_of_edges(), copy.number_of_edges());
+  };
+  EXPECT_THROW(CGAL_ext::decimate(m), CGAL_ext::Parameter_error);
+  unchanged();
+  EXPECT_THROW(CGAL_ext::decimate(m, np::face_ratio(1.5)), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::decimate(m, np::face_ratio(std::nan(""))), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::decimate(m, np::maximum_error(-1.0)), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(-3)), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(10).maximum_normal_deviation(0.0)),
+               CGAL_ext::Parameter_error);
+  unchanged();
+  m.remove_face(*m.faces().begin());
+  EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(10)), CGAL_ext::Parameter_error);
 }

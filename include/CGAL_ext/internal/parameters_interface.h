@@ -22,6 +22,11 @@ CGAL_EXT_add_named_parameter(vertex_displacement_t, vertex_displacement, vertex_
 // normals
 CGAL_EXT_add_named_parameter(normalize_t, normalize, normalize)
 CGAL_EXT_add_named_parameter(vertex_normal_weighting_t, vertex_normal_weighting, vertex_normal_weighting)
-// isotropic remeshing
+// decimation (with CGAL's maximum_normal_deviation and edge_is_constrained_map)
+CGAL_EXT_add_named_parameter(number_of_faces_t, number_of_faces, number_of_faces)
+CGAL_EXT_add_named_parameter(face_ratio_t, face_ratio, face_ratio)
+CGAL_EXT_add_named_parameter(maximum_error_t, maximum_error, maximum_error)
+// decimation and isotropic remeshing
 CGAL_EXT_add_named_parameter(protect_borders_t, protect_borders, protect_borders)
+// isotropic remeshing
 CGAL_EXT_add_named_parameter(protect_sharp_edges_t, protect_sharp_edges, protect_sharp_edges)

@@ -1,0 +1,113 @@
+// decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders]
+//
+// Simplifies a polygon mesh (.obj, .off, .ply), orientable or not, by
+// Garland–Heckbert edge collapses and writes the result. Prints one line of
+// JSON: the output's counts and topology (as mesh_info), then
+//   "seconds":S (the decimation alone),"hausdorff":H (the symmetric
+//   Hausdorff distance to the input, sampled by CGAL)}
+// A bad file or option: one line on stderr, exit status 2.
+
+#include "arguments.h"
+#include "mesh_summary.h"
+
+#include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
+#include <CGAL_ext/Surface_mesh_conversion.h>
+#include <CGAL_ext/decimation.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
+
+const examples::Tool_usage usage{
+  "decimate", "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders]",
+  "Reads a polygon mesh (.obj, .off, .ply), orientable or not, triangulates it and collapses\n"
+  "edges, cheapest first by Garland-Heckbert quadric error, until a stop condition holds (give\n"
+  "one or more; the first reached stops):\n"
+  "  --faces N          at most N faces;\n"
+  "  --ratio R          at most R times the triangles of the input, R in [0, 1];\n"
+  "  --max-error E      the cheapest collapse's error is above E (squared length units).\n"
+  "  --max-angle DEG    no face normal turns by more in one collapse (default 90).\n"
+  "  --protect-borders  keep border edges as they are.\n"
+  "Edges with sharpness tags (OBJ 't crease') are kept. Writes OUT and prints its counts,\n"
+  "topology, the time taken and the Hausdorff distance to the input as one line of JSON.\n"};
+
+// The symmetric Hausdorff distance between the surfaces of two meshes, by
+// CGAL on their Surface_mesh copies (cut along the seams, same geometry).
+double hausdorff_distance(const Mesh& a, const Mesh& b)
+{
+  CGAL::Surface_mesh<Kernel::Point_3> sa, sb;
+  CGAL_ext::to_surface_mesh(a, sa);
+  CGAL_ext::to_surface_mesh(b, sb);
+  const std::size_t faces = (std::max)(std::size_t(a.number_of_faces()), std::size_t(b.number_of_faces()));
+  const std::size_t samples = (std::max)(std::size_t(20000), 4 * faces);
+  const auto np = CGAL::parameters::number_of_points_on_faces(samples).random_seed(1);
+  return CGAL::Polygon_mesh_processing::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(sa, sb, np,
+                                                                                                          np);
+}
+
+int decimate(int argc, char** argv)
+{
+  const examples::Arguments args = examples::parse_arguments(
+    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"}, {"--protect-borders"});
+  if (args.positional.size() != 2)
+    throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
+  if (!args.has("--faces") && !args.has("--ratio") && !args.has("--max-error"))
+    throw examples::Usage_error("give --faces, --ratio or --max-error");
+  const long max_int = long((std::numeric_limits<std::uint32_t>::max)());
+  const std::size_t faces = std::size_t(
+    args.has("--faces") ? examples::integer_argument("--faces", args.value("--faces", ""), 0, max_int) : 0);
+  const double ratio = args.has("--ratio") ? examples::real_argument("--ratio", args.value("--ratio", "")) : 0.0;
+  if (!(ratio >= 0 && ratio <= 1))
+    throw examples::Usage_error("--ratio '" + args.value("--ratio", "") + "' is not in [0, 1]");
+  const double error = args.has("--max-error")
+                         ? examples::real_argument("--max-error", args.value("--max-error", ""))
+                         : std::numeric_limits<double>::infinity();
+  if (!(error >= 0))
+    throw examples::Usage_error("--max-error '" + args.value("--max-error", "") + "' is negative");
+  const double angle = examples::real_argument("--max-angle", args.value("--max-angle", "90"));
+  if (!(angle > 0 && angle <= 180))
+    throw examples::Usage_error("--max-angle '" + args.value("--max-angle", "") + "' is not in (0, 180]");
+
+  Mesh input;
+  CGAL_ext::IO::read_polygon_mesh(args.positional[0], input);
+  Mesh mesh = input;
+  const auto start = std::chrono::steady_clock::now();
+  CGAL_ext::decimate(mesh, CGAL_ext::parameters::number_of_faces(faces)
+                             .face_ratio(ratio)
+                             .maximum_error(error)
+                             .maximum_normal_deviation(angle)
+                             .protect_borders(args.has("--protect-borders")));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
+  CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same
+  const double hausdorff = hausdorff_distance(mesh, input);
+
+  std::ostringstream summary;
+  examples::print_mesh_summary(mesh, summary);
+  std::string line = summary.str();
+  line.erase(line.find_last_of('}'));
+  std::cout << line << ",\"seconds\":" << seconds << ",\"hausdorff\":" << hausdorff << "}" << std::endl;
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  return examples::run_tool(usage, argc, argv, [&] { return decimate(argc, argv); });
+}

@@ -1,0 +1,43 @@
+# CTest tests of the decimate tool (included from examples/CMakeLists.txt).
+# A decimation keeps the Euler characteristic, the border loops and
+# orientability of every input; expected values come from each file's first
+# line (written when the data was made, independently of the library).
+if(NOT CGAL_EXT_BUILD_TESTS)
+  return()
+endif()
+
+set(_data ${PROJECT_SOURCE_DIR}/test/data/nonorientable)
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/tool_output)
+file(MAKE_DIRECTORY ${_out})
+
+file(GLOB _files ${_data}/*.obj)
+foreach(_file ${_files})
+  get_filename_component(_name ${_file} NAME_WE)
+  file(STRINGS ${_file} _header LIMIT_COUNT 1)
+  string(REGEX MATCH "chi=(-?[0-9]+) orientable=(True|False) boundary_loops=([0-9]+)" _match "${_header}")
+  string(TOLOWER ${CMAKE_MATCH_2} _orientable)
+  add_test(NAME decimate.${_name} COMMAND decimate ${_file} ${_out}/decimate_${_name}.obj --ratio 0.5)
+  set_tests_properties(decimate.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"border_loops\":${CMAKE_MATCH_3},[^}]*\"orientable\":${_orientable},[^}]*\"euler_characteristic\":${CMAKE_MATCH_1},\"valid\":true,\"seconds\":[0-9.e+-]+,\"hausdorff\":[0-9.e+-]+}")
+endforeach()
+
+# The torus of 24 x 12 quads (576 triangles) down to 100 faces exactly (each
+# collapse on a closed surface takes two), then a bound no collapse exceeds
+# leaves a flat file alone: the hemi-icosahedron has no collapse of error 0.
+add_test(NAME decimate.torus_to_100 COMMAND decimate ${_data}/torus_24x12_quads.obj ${_out}/decimate_torus.obj
+         --faces 100)
+set_tests_properties(decimate.torus_to_100 PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":50,\"edges\":150,\"faces\":100,\"border_loops\":0,")
+add_test(NAME decimate.error_bound_zero COMMAND decimate ${_data}/rp2_hemi_icosahedron.obj ${_out}/decimate_rp2.obj
+         --max-error 0)
+set_tests_properties(decimate.error_bound_zero PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":6,\"edges\":15,\"faces\":10,.*\"hausdorff\":(0|[0-9.]+e-[0-9]+)}")
+
+# A file that is not there, and a ratio out of range: one line, exit 2.
+add_test(NAME decimate.fails.missing_file
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> "-DARGS=${_out}/no_such.obj;${_out}/x.obj;--faces;10"
+          -DSTATUS=2 "-DSTDERR=^decimate: [^\n]+\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+add_test(NAME decimate.fails.ratio
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> "-DARGS=${_data}/mobius_min_5tris.obj;${_out}/x.obj;--ratio;2"
+          -DSTATUS=2 "-DSTDERR=^decimate: --ratio '2' is not in \\[0, 1\\]; usage: [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
