@@ -13,12 +13,10 @@ file(MAKE_DIRECTORY ${_out})
 file(GLOB _files ${_data}/*.obj)
 foreach(_file ${_files})
   get_filename_component(_name ${_file} NAME_WE)
-  file(STRINGS ${_file} _header LIMIT_COUNT 1)
-  string(REGEX MATCH "chi=(-?[0-9]+) orientable=(True|False) boundary_loops=([0-9]+)" _match "${_header}")
-  string(TOLOWER ${CMAKE_MATCH_2} _orientable)
+  cgal_ext_stated_topology(${_file})
   add_test(NAME decimate.${_name} COMMAND decimate ${_file} ${_out}/decimate_${_name}.obj --ratio 0.5)
   set_tests_properties(decimate.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
-    "\"border_loops\":${CMAKE_MATCH_3},[^}]*\"orientable\":${_orientable},[^}]*\"euler_characteristic\":${CMAKE_MATCH_1},\"valid\":true,\"seconds\":[0-9.e+-]+,\"hausdorff\":[0-9.e+-]+}")
+    "\"border_loops\":${_border_loops},[^}]*\"orientable\":${_orientable},[^}]*\"euler_characteristic\":${_chi},\"valid\":true,\"seconds\":[0-9.e+-]+,\"hausdorff\":[0-9.e+-]+}")
 endforeach()
 
 # The torus of 24 x 12 quads (576 triangles) down to 100 faces exactly (each

@@ -16,13 +16,11 @@ foreach(_case "mobius_20x4_tris;0.18" "klein_fig8_24x12_quads;0.45" "torus_24x12
               "boys_surface_quads;0.3")
   list(GET _case 0 _name)
   list(GET _case 1 _length)
-  file(STRINGS ${_data}/${_name}.obj _header LIMIT_COUNT 1)
-  string(REGEX MATCH "chi=(-?[0-9]+) orientable=(True|False) boundary_loops=([0-9]+)" _match "${_header}")
-  string(TOLOWER ${CMAKE_MATCH_2} _orientable)
+  cgal_ext_stated_topology(${_data}/${_name}.obj)
   add_test(NAME remesh.${_name}
            COMMAND remesh ${_data}/${_name}.obj ${_out}/remesh_${_name}.obj --edge-length ${_length} --iterations 5)
   set_tests_properties(remesh.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
-    "\"border_loops\":${CMAKE_MATCH_3},\"orientable\":${_orientable},\"closed\":[a-z]+,\"components\":1,\"euler_characteristic\":${CMAKE_MATCH_1},\"valid\":true,\"in_band\":(0\\.9|1[,.])")
+    "\"border_loops\":${_border_loops},\"orientable\":${_orientable},\"closed\":[a-z]+,\"components\":1,\"euler_characteristic\":${_chi},\"valid\":true,\"in_band\":(0\\.9|1[,.])")
 endforeach()
 
 # With --protect-borders the Möbius strip's border keeps its 40 vertices and edges.

@@ -27,6 +27,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
@@ -1106,6 +1107,16 @@ TEST(SubdivisionApi, SharpnessMapsFromMeshAndParameters)
     fives += x == 5.0f ? 1 : 0;
   EXPECT_EQ(fives, 11);
   EXPECT_EQ(threes, 4 * fives); // each edge of sharpness 5 in four pieces of sharpness 3
+}
+
+// The option enums live in one place, namespace CGAL_ext; the subdivision
+// namespace names the same types (checked when this file compiles).
+TEST(SubdivisionApi, OptionEnumsAreOneTypeEach)
+{
+  static_assert(std::is_same_v<S::Vertex_rule, CGAL_ext::Vertex_rule>);
+  static_assert(std::is_same_v<S::Boundary_interpolation, CGAL_ext::Boundary_interpolation>);
+  static_assert(std::is_same_v<S::Crease_method, CGAL_ext::Crease_method>);
+  static_assert(std::is_same_v<S::Triangle_subdivision, CGAL_ext::Triangle_subdivision>);
 }
 
 TEST(SubdivisionApi, BadInputLeavesMeshUnchanged)

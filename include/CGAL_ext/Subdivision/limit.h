@@ -425,6 +425,33 @@ auto limit_tangents_at(const char* function, Dart d, const Mobius_mesh<P>& mesh,
   return limit_tangents_of_ring<Mask>(ring, s);
 }
 
+// Fills `map` with `of_ring(ring)` for every vertex (`isolated(v)` for a
+// vertex of no face), the ring walked from the side of vertex_normal(v): all
+// values are computed before any is written, so `map` may be what they are
+// read from.
+template <class Mask, class P, class NP, class Map, class Isolated, class OfRing>
+void write_per_vertex(const char* function, const Mobius_mesh<P>& mesh, const Limit_settings<P, NP>& s, Map map,
+                      const Isolated& isolated, const OfRing& of_ring)
+{
+  using Value = decltype(isolated(Vertex_index()));
+  CGAL_ext::internal::require_no_garbage(mesh, function);
+  for (Face_index f : mesh.faces())
+    check_face_degree<Mask>(function, f, mesh);
+  std::vector<Value> result;
+  result.reserve(mesh.number_of_vertices());
+  Limit_ring<P> ring;
+  for (Vertex_index v : mesh.vertices()) {
+    if (mesh.is_isolated(v)) {
+      result.push_back(isolated(v));
+      continue;
+    }
+    ring.gather(vertex_side_dart(v, mesh), mesh, s.edge_sharpness, s.sharpness(v), s.corner_if_one_face);
+    result.push_back(of_ring(ring));
+  }
+  for (Vertex_index v : mesh.vertices())
+    put(map, v, result[v.idx()]);
+}
+
 } // namespace internal
 
 /// \ingroup PkgSubdivision
@@ -478,24 +505,11 @@ template <class Mask, class P, class VertexPointMap, class NP = parameters::Defa
 void limit_points(const Mobius_mesh<P>& mesh, VertexPointMap limit_points, const NP& np = parameters::default_values())
 {
   static_assert(internal::has_limit_masks<Mask>, "limit masks exist for Catmull_clark_mask and Loop_mask");
-  CGAL_ext::internal::require_no_garbage(mesh, "limit_points");
-  for (Face_index f : mesh.faces())
-    internal::check_face_degree<Mask>("limit_points", f, mesh);
   const internal::Limit_settings<P, NP> s(mesh, np);
-  std::vector<typename internal::Normal_types<P, NP>::Point> result;
-  result.reserve(mesh.number_of_vertices());
-  internal::Limit_ring<P> ring;
-  for (Vertex_index v : mesh.vertices()) {
-    if (mesh.is_isolated(v)) {
-      result.push_back(get(s.points, v));
-      continue;
-    }
-    ring.gather(internal::vertex_side_dart(v, mesh), mesh, s.edge_sharpness, s.sharpness(v),
-                s.corner_if_one_face);
-    result.push_back(internal::limit_point_of_ring<Mask>(ring, s));
-  }
-  for (Vertex_index v : mesh.vertices())
-    put(limit_points, v, result[v.idx()]);
+  using Point = typename internal::Normal_types<P, NP>::Point;
+  internal::write_per_vertex<Mask>(
+    "limit_points", mesh, s, limit_points, [&](Vertex_index v) { return Point(get(s.points, v)); },
+    [&](const internal::Limit_ring<P>& ring) { return internal::limit_point_of_ring<Mask>(ring, s); });
 }
 
 /// \ingroup PkgSubdivision
@@ -552,28 +566,16 @@ void limit_normals(const Mobius_mesh<P>& mesh, VertexNormalMap limit_normals,
                    const NP& np = parameters::default_values())
 {
   static_assert(internal::has_limit_masks<Mask>, "limit masks exist for Catmull_clark_mask and Loop_mask");
-  CGAL_ext::internal::require_no_garbage(mesh, "limit_normals");
-  for (Face_index f : mesh.faces())
-    internal::check_face_degree<Mask>("limit_normals", f, mesh);
   const internal::Limit_settings<P, NP> s(mesh, np);
   const auto cross = s.traits.construct_cross_product_vector_3_object();
   using Vector = typename internal::Normal_types<P, NP>::Vector;
-  std::vector<Vector> result;
-  result.reserve(mesh.number_of_vertices());
-  internal::Limit_ring<P> ring;
-  for (Vertex_index v : mesh.vertices()) {
-    if (mesh.is_isolated(v)) {
-      result.push_back(Vector(CGAL::NULL_VECTOR));
-      continue;
-    }
-    ring.gather(internal::vertex_side_dart(v, mesh), mesh, s.edge_sharpness, s.sharpness(v),
-                s.corner_if_one_face);
-    const auto t = internal::limit_tangents_of_ring<Mask>(ring, s);
-    const auto n = cross(t.tangent1, t.tangent2);
-    result.push_back(s.normalize ? internal::unit_vector(n, s.traits) : n);
-  }
-  for (Vertex_index v : mesh.vertices())
-    put(limit_normals, v, result[v.idx()]);
+  internal::write_per_vertex<Mask>(
+    "limit_normals", mesh, s, limit_normals, [](Vertex_index) { return Vector(CGAL::NULL_VECTOR); },
+    [&](const internal::Limit_ring<P>& ring) {
+      const auto t = internal::limit_tangents_of_ring<Mask>(ring, s);
+      const Vector n = cross(t.tangent1, t.tangent2);
+      return s.normalize ? internal::unit_vector(n, s.traits) : n;
+    });
 }
 
 } // namespace Subdivision
