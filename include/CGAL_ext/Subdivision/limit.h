@@ -14,7 +14,6 @@
 #include <CGAL_ext/Subdivision/Crease.h>
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/exceptions.h>
-#include <CGAL_ext/subdivision.h>
 
 #include <cmath>
 #include <functional>
