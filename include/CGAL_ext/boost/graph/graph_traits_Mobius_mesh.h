@@ -274,26 +274,30 @@ typename Mobius_mesh<P>::size_type num_edges(const Mobius_mesh<P>& m) { return m
 template <class P>
 typename Mobius_mesh<P>::size_type num_faces(const Mobius_mesh<P>& m) { return m.num_faces(); }
 
+namespace internal {
+// The range of a CGAL circulator-based iterator around `v`, from halfedge(v).
+template <class Iterator, class P>
+auto range_around(Vertex_index v, const Mobius_mesh<P>& m)
+{
+  const Dart h = CGAL_ext::halfedge(v, m);
+  return CGAL::make_range(Iterator(h, m), Iterator(h, m, 1));
+}
+} // namespace internal
+
 template <class P>
 auto out_edges(Vertex_index v, const Mobius_mesh<P>& m)
 {
-  using It = CGAL::Out_edge_iterator<Mobius_mesh<P>>;
-  const Dart h = CGAL_ext::halfedge(v, m);
-  return CGAL::make_range(It(h, m), It(h, m, 1));
+  return internal::range_around<CGAL::Out_edge_iterator<Mobius_mesh<P>>>(v, m);
 }
 template <class P>
 auto in_edges(Vertex_index v, const Mobius_mesh<P>& m)
 {
-  using It = CGAL::In_edge_iterator<Mobius_mesh<P>>;
-  const Dart h = CGAL_ext::halfedge(v, m);
-  return CGAL::make_range(It(h, m), It(h, m, 1));
+  return internal::range_around<CGAL::In_edge_iterator<Mobius_mesh<P>>>(v, m);
 }
 template <class P>
 auto adjacent_vertices(Vertex_index v, const Mobius_mesh<P>& m)
 {
-  using It = CGAL::Vertex_around_target_iterator<Mobius_mesh<P>>;
-  const Dart h = CGAL_ext::halfedge(v, m);
-  return CGAL::make_range(It(h, m), It(h, m, 1));
+  return internal::range_around<CGAL::Vertex_around_target_iterator<Mobius_mesh<P>>>(v, m);
 }
 
 // ============================================================================
