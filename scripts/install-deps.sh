@@ -4,8 +4,10 @@ set -euo pipefail
 
 required=(cmake g++ make ccache libcgal-dev libboost-dev libeigen3-dev libgmp-dev libmpfr-dev
           libgtest-dev libbenchmark-dev libtbb-dev doxygen)
-# Peers used only for reference tests and benchmarks: skipped cleanly when absent.
-optional=(libosd-dev libopenmesh-dev)
+# Peers used only for reference tests and benchmarks, and the viewer (CGAL's
+# Qt5 component, with a virtual screen and software OpenGL for its tests):
+# installed where the package archive has them, skipped cleanly when absent.
+optional=(libosd-dev libopenmesh-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri)
 
 missing() { for p in "$@"; do dpkg -s "$p" >/dev/null 2>&1 || echo "$p"; done; }
 

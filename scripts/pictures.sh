@@ -1,20 +1,22 @@
 #!/usr/bin/env bash
 # Renders the pictures of the manual (doc/pictures/*.png) from the library's
 # own tools: the release example tools (built as scripts/demo.sh builds them)
-# make the meshes, f3d renders them off screen under xvfb-run.
-# Needs the Debian packages f3d and xvfb; not part of the test script.
+# make the meshes, and the view tool draws each with one colour per side (blue
+# where the faces' orientation points, orange on the other side) on a virtual
+# screen (xvfb-run). Needs the Debian packages libcgal-qt5-dev and xvfb; not
+# part of the test script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-for tool in f3d xvfb-run; do
-  command -v "$tool" >/dev/null 2>&1 || { echo "pictures: $tool is not installed (apt-get install f3d xvfb)" >&2; exit 2; }
-done
+command -v xvfb-run >/dev/null 2>&1 || { echo "pictures: xvfb-run is not installed (apt-get install xvfb)" >&2; exit 2; }
 
 build=${CGAL_EXT_DEMO_BUILD_DIR:-build/release}
 launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_EXT_BUILD_TESTS=OFF -DCGAL_EXT_BUILD_EXAMPLES=ON \
       "${launcher[@]}" >/dev/null
-cmake --build "$build" --target subdivide merge offset -j "${CGAL_EXT_JOBS:-$(nproc)}"
+cmake --build "$build" --target subdivide merge offset decimate remesh -j "${CGAL_EXT_JOBS:-$(nproc)}"
+cmake --build "$build" --target view -j "${CGAL_EXT_JOBS:-$(nproc)}" ||
+  { echo "pictures: the view tool was not built (apt-get install libcgal-qt5-dev)" >&2; exit 2; }
 tools=$build/examples
 
 data=test/data/nonorientable
@@ -22,16 +24,15 @@ work=build/pictures
 out=doc/pictures
 mkdir -p "$work" "$out"
 
-# render MESH PNG [WIDTH HEIGHT]: the mesh seen from above at an angle, on
-# white, with its edges drawn if $edges is set (cages and coarse levels), in
-# a view angle of $view degrees (narrower: larger).
-edges= view=24
+# render MESH PNG [WIDTH HEIGHT]: the mesh seen from above at an angle (40°
+# up, 25° round), z up, on white; with all its edges if $edges is set (cages
+# and coarse levels), else only its borders, Möbius edges and sharp edges.
+edges=
 render() {
   local width=${3:-480} height=${4:-360} options=()
-  [ -n "$edges" ] && options+=(--edges)
-  xvfb-run -a f3d "$1" --output="$2" --resolution="$width,$height" --geometry-only --up=+Z \
-    --camera-elevation-angle=40 --camera-azimuth-angle=25 --camera-view-angle="$view" --fxaa \
-    --bg-color=1,1,1 --quiet "${options[@]}"
+  [ -n "$edges" ] || options+=(--features-only)
+  xvfb-run -a -s "-screen 0 1280x1024x24" "$tools/view" "$1" --screenshot "$2" --size "${width}x$height" \
+    --direction -0.32,0.69,-0.64 "${options[@]}" >/dev/null 2>"$work/view.log" || { cat "$work/view.log" >&2; exit 2; }
   echo "pictures: $2 ($(stat -c %s "$2") bytes)"
 }
 subdivide() { "$tools/subdivide" "$@" >/dev/null; }
@@ -66,7 +67,7 @@ for s in 0 1 2 10; do
   } >"$cage"
   name=$s; [ "$s" = 10 ] && name=inf
   subdivide "$cage" "$work/cube_crease_${name}_cc4.obj" --levels 4
-  view=32 render "$work/cube_crease_${name}_cc4.obj" "$out/crease_$name.png" 240 200
+  render "$work/cube_crease_${name}_cc4.obj" "$out/crease_$name.png" 240 200
 done
 
 # A strip glued from two halves: the Möbius strip's faces 1-40 and 41-80
@@ -95,3 +96,12 @@ edges=1 render "$work/glued.obj" "$out/merge_glued.png"
 # The thickened strip: both offsets of the Möbius strip are one closed surface.
 "$tools/offset" "$data/mobius_20x4_quads.obj" "$work/mobius_offset.obj" --distance 0.1 >/dev/null
 edges=1 render "$work/mobius_offset.obj" "$out/mobius_offset.png"
+
+# Decimation and remeshing keep a one-sided surface one-sided: the Klein
+# bottle after two Catmull–Clark steps (4608 quads, 9216 triangles), decimated
+# to 10 %; Boy's surface remeshed to edges of about 0.12.
+subdivide "$data/klein_fig8_24x12_quads.obj" "$work/klein_cc2_for_decimation.obj" --levels 2
+"$tools/decimate" "$work/klein_cc2_for_decimation.obj" "$work/klein_decimated.obj" --ratio 0.1 >/dev/null
+edges=1 render "$work/klein_decimated.obj" "$out/klein_decimated.png"
+"$tools/remesh" "$data/boys_surface_quads.obj" "$work/boys_remeshed.obj" --edge-length 0.12 --iterations 5 >/dev/null
+edges=1 render "$work/boys_remeshed.obj" "$out/boys_remeshed.png"

@@ -30,3 +30,5 @@ CGAL_EXT_add_named_parameter(maximum_error_t, maximum_error, maximum_error)
 CGAL_EXT_add_named_parameter(protect_borders_t, protect_borders, protect_borders)
 // isotropic remeshing
 CGAL_EXT_add_named_parameter(protect_sharp_edges_t, protect_sharp_edges, protect_sharp_edges)
+// drawing
+CGAL_EXT_add_named_parameter(two_sided_style_t, two_sided_style, two_sided_style)

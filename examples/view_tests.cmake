@@ -1,0 +1,49 @@
+# CTest tests of the view tool (included from examples/CMakeLists.txt when
+# CGAL's Qt5 component is there). The pictures are taken under Xvfb and
+# checked by side_colours, which counts the pixels of each side's colour: a
+# one-sided surface shows both colours, a closed orientable one only one.
+if(NOT CGAL_EXT_BUILD_TESTS)
+  return()
+endif()
+find_program(CGAL_EXT_XVFB_RUN xvfb-run)
+if(NOT CGAL_EXT_XVFB_RUN)
+  message(STATUS "xvfb-run not found: the view tool's screenshot tests are left out")
+  return()
+endif()
+find_package(Qt5 REQUIRED COMPONENTS Gui)
+add_executable(side_colours ${PROJECT_SOURCE_DIR}/test/side_colours.cpp)
+target_link_libraries(side_colours PRIVATE Qt5::Gui cgal_ext_warnings)
+
+set(_data ${PROJECT_SOURCE_DIR}/test/data/nonorientable)
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/tool_output)
+file(MAKE_DIRECTORY ${_out})
+
+# Mesa and Qt keep allocations to the end of the process, which the leak
+# checker would report: leaks are not checked in the viewer's tests.
+set(_environment "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
+foreach(_case "mobius_20x4_quads;both" "klein_fig8_24x12_quads;both" "boys_surface_quads;both"
+              "torus_24x12_quads;one")
+  list(GET _case 0 _name)
+  list(GET _case 1 _sides)
+  add_test(NAME view.${_name}
+    COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${CGAL_EXT_XVFB_RUN} -DVIEW=$<TARGET_FILE:view>
+            -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${_data}/${_name}.obj -DPICTURE=${_out}/view_${_name}.png
+            -DSIDES=${_sides} -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+  set_tests_properties(view.${_name} PROPERTIES ENVIRONMENT "${_environment}" TIMEOUT 120)
+endforeach()
+
+# No display: one line naming what is missing, exit 2, no picture.
+add_test(NAME view.fails.no_display
+  COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY --unset=QT_QPA_PLATFORM
+          ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:view>
+          "-DARGS=${_data}/mobius_20x4_quads.obj;--screenshot;${_out}/view_no_display.png" -DSTATUS=2
+          "-DSTDERR=^view: save_screenshot: no display to draw on[^\n]*\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+add_test(NAME view.fails.missing_file
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:view> "-DARGS=${_out}/no_such.obj;--screenshot;${_out}/x.png"
+          -DSTATUS=2 "-DSTDERR=^view: [^\n]*no_such.obj[^\n]*\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+add_test(NAME view.fails.size
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:view> "-DARGS=${_data}/mobius_20x4_quads.obj;--size;8x600"
+          -DSTATUS=2 "-DSTDERR=^view: --size '8' is not an integer from 16 to 8192; usage: [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+set_tests_properties(view.fails.no_display view.fails.missing_file view.fails.size PROPERTIES
+  ENVIRONMENT "${_environment}")

@@ -1,0 +1,233 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Drawing a Mobius_mesh in CGAL's Basic_viewer_qt, in the manner of
+// CGAL::draw(): one colour per side, so that a one-sided surface shows itself.
+// Needs CGAL's Qt5 component (Debian libcgal-qt5-dev): link with
+// CGAL::CGAL_Basic_viewer, which defines CGAL_USE_BASIC_VIEWER. Without it,
+// draw() and save_screenshot() say so and do nothing, as CGAL::draw() does.
+
+#ifndef CGAL_EXT_DRAW_MOBIUS_MESH_H
+#define CGAL_EXT_DRAW_MOBIUS_MESH_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/two_sided_scene.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/exceptions.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#ifdef CGAL_USE_BASIC_VIEWER
+#include <CGAL/Qt/Basic_viewer_qt.h>
+#include <CGAL/Qt/init_ogl_context.h>
+
+#include <QApplication>
+#include <QTimer>
+#include <memory>
+#endif
+
+namespace CGAL_ext {
+
+/// \ingroup PkgMobiusMeshDrawing
+/// The picture `save_screenshot()` takes.
+struct Screenshot_settings
+{
+  int width = 800;  ///< in pixels
+  int height = 600; ///< in pixels
+  /// The direction the camera looks in; the whole mesh is in view. The
+  /// default looks down on the mesh from above and to the side.
+  std::array<double, 3> view_direction{{-1.0, -0.6, -1.2}};
+  /// The direction that is up in the picture (as far as it is not along the
+  /// view direction); the z axis, as the library's generators build surfaces.
+  std::array<double, 3> up_vector{{0.0, 0.0, 1.0}};
+};
+
+#if defined(CGAL_USE_BASIC_VIEWER) || defined(CGAL_EXT_DOXYGEN_RUNNING)
+
+/// \ingroup PkgMobiusMeshDrawing
+/// \brief A `CGAL::Basic_viewer_qt` showing the two sides of a `Mobius_mesh`
+/// (`make_two_sided_scene()`): what `draw()` opens.
+///
+/// The viewer's keys are CGAL's (`H` lists them): `F` hides the faces, `E`
+/// the edges, `S` switches to smooth shading with the scene's per-side normals.
+class Mobius_mesh_viewer_qt : public CGAL::Basic_viewer_qt
+{
+public:
+  /// Shows `scene` in a window titled `title`.
+  Mobius_mesh_viewer_qt(QWidget* parent, const Two_sided_scene& scene, const char* title = "Mobius_mesh viewer")
+    : CGAL::Basic_viewer_qt(parent, title, /*draw_vertices*/ false, /*draw_edges*/ true, /*draw_faces*/ true,
+                            /*use_mono_color*/ false, /*inverse_normal*/ false)
+  {
+    add_scene(scene);
+  }
+
+  /// Shows `mesh` in a window titled `title`, with the named parameters of
+  /// `make_two_sided_scene()`.
+  template <class P, class NP = parameters::Default_named_parameters>
+  Mobius_mesh_viewer_qt(QWidget* parent, const Mobius_mesh<P>& mesh, const char* title = "Mobius_mesh viewer",
+                        const NP& np = parameters::default_values())
+    : Mobius_mesh_viewer_qt(parent, make_two_sided_scene(mesh, np), title)
+  {}
+
+  /// Adds the faces and segments of `scene` to what is drawn.
+  void add_scene(const Two_sided_scene& scene)
+  {
+    for (const auto& face : scene.faces) {
+      face_begin(face.color);
+      for (std::size_t i = face.first_corner; i < face.first_corner + face.size; ++i)
+        add_point_in_face(scene.corners[i], scene.normals[i]);
+      face_end();
+    }
+    for (const auto& segment : scene.segments)
+      add_segment(segment.source, segment.target, segment.color);
+  }
+
+  /// Looks in `direction`, with `up` up, at the whole scene once the window
+  /// is shown; a zero direction keeps CGAL's default view.
+  void set_view(const std::array<double, 3>& direction, const std::array<double, 3>& up)
+  {
+    view_direction_ = direction;
+    up_vector_ = up;
+  }
+
+  /// Writes a PNG of what the viewer shows to `file` once the window has
+  /// been drawn, then quits the application's event loop.
+  void take_screenshot_and_quit(const std::string& file) { screenshot_file_ = file; }
+
+protected:
+  /// Sets the view and schedules the screenshot once OpenGL is ready.
+  void init() override
+  {
+    CGAL::Basic_viewer_qt::init();
+    setBackgroundColor(::QColor(::Qt::white)); // as CGAL's viewer clears, and pictures in a manual want
+    const auto& d = view_direction_;
+    if (d[0] != 0 || d[1] != 0 || d[2] != 0) {
+      camera()->setUpVector(CGAL::qglviewer::Vec(up_vector_[0], up_vector_[1], up_vector_[2]));
+      camera()->setViewDirection(CGAL::qglviewer::Vec(d[0], d[1], d[2]));
+      showEntireScene();
+    }
+    if (!screenshot_file_.empty())
+      // After the first frame, from the event loop: the snapshot draws again
+      // into its own frame buffer, which needs the context init() made.
+      QTimer::singleShot(0, this, [this] {
+        saveSnapshot(QString::fromStdString(screenshot_file_), width(), height());
+        QCoreApplication::quit();
+      });
+  }
+
+private:
+  std::array<double, 3> view_direction_{{0.0, 0.0, 0.0}};
+  std::array<double, 3> up_vector_{{0.0, 0.0, 1.0}};
+  std::string screenshot_file_;
+};
+
+namespace internal {
+
+// A QApplication for the length of one drawing, unless the program has one.
+// Qt aborts the program when it finds no display, so that is checked first.
+class Viewer_application
+{
+public:
+  explicit Viewer_application(const std::string& what)
+  {
+    if (QApplication::instance())
+      return;
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY") && !std::getenv("QT_QPA_PLATFORM"))
+      throw Error(what + ": no display to draw on (DISPLAY is not set; xvfb-run gives a program one)");
+    CGAL::Qt::init_ogl_context(4, 3);
+    app_ = std::make_unique<QApplication>(argc_, argv_);
+  }
+  int exec() { return QApplication::exec(); }
+
+private:
+  int argc_ = 1;
+  char name_[9] = "CGAL_ext";
+  char* argv_[2] = {name_, nullptr};
+  std::unique_ptr<QApplication> app_;
+};
+
+} // namespace internal
+
+#endif // CGAL_USE_BASIC_VIEWER || CGAL_EXT_DOXYGEN_RUNNING
+
+/// \ingroup PkgMobiusMeshDrawing
+/// \brief opens a window showing `mesh` and returns when it is closed, as
+/// `CGAL::draw()` does.
+///
+/// Each side of the surface in its own colour (`make_two_sided_scene()`):
+/// where a face's orientation points one side is blue, the other orange, and
+/// the colours swap across each Möbius edge (drawn green), so a one-sided
+/// surface shows both colours on one side. Borders are red, sharp edges
+/// purple by their sharpness. Takes the named parameters of
+/// `make_two_sided_scene()`. Does nothing but say so on `std::cerr` when
+/// built without `CGAL_USE_BASIC_VIEWER`, and when the environment variable
+/// `CGAL_TEST_SUITE` is set (as `CGAL::draw()`).
+/// \throws Parameter_error as `make_two_sided_scene()`, before a window opens;
+/// \throws Error when there is no display to open it on.
+template <class P, class NP = parameters::Default_named_parameters>
+void draw(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values(),
+          const char* title = "Mobius_mesh viewer")
+{
+#ifdef CGAL_USE_BASIC_VIEWER
+  const Two_sided_scene scene = make_two_sided_scene(mesh, np);
+  if (qEnvironmentVariableIsSet("CGAL_TEST_SUITE"))
+    return;
+  internal::Viewer_application app("draw");
+  Mobius_mesh_viewer_qt viewer(nullptr, scene, title);
+  viewer.show();
+  app.exec();
+#else
+  (void)mesh, (void)np, (void)title;
+  std::cerr << "CGAL_ext::draw: built without CGAL_USE_BASIC_VIEWER (link with CGAL::CGAL_Basic_viewer)\n";
+#endif
+}
+
+/// \ingroup PkgMobiusMeshDrawing
+/// \brief draws `mesh` as `draw()` does, off any screen's way, and writes the
+/// picture to the PNG file `file`.
+///
+/// It needs a display (an X server; `xvfb-run` gives one to a program without
+/// a screen) with OpenGL 4.3 or 2.1 ES. Takes the named parameters of
+/// `make_two_sided_scene()`.
+/// \throws Parameter_error as `make_two_sided_scene()`, or when the picture
+/// is not between 16 and 8192 pixels wide and high;
+/// \throws Error when there is no display;
+/// \throws IO_error if no picture could be written to `file`, or when built
+/// without `CGAL_USE_BASIC_VIEWER`.
+template <class P, class NP = parameters::Default_named_parameters>
+void save_screenshot(const Mobius_mesh<P>& mesh, const std::string& file, const Screenshot_settings& settings = {},
+                     const NP& np = parameters::default_values())
+{
+  const auto in_range = [](int n) { return n >= 16 && n <= 8192; };
+  if (!in_range(settings.width) || !in_range(settings.height))
+    throw Parameter_error("save_screenshot: a picture of " + std::to_string(settings.width) + " x " +
+                          std::to_string(settings.height) + " pixels; each side must be from 16 to 8192");
+#ifdef CGAL_USE_BASIC_VIEWER
+  const Two_sided_scene scene = make_two_sided_scene(mesh, np);
+  std::remove(file.c_str()); // so that a stale picture is not taken for this one
+  {
+    internal::Viewer_application app("save_screenshot");
+    Mobius_mesh_viewer_qt viewer(nullptr, scene, "Mobius_mesh screenshot");
+    viewer.set_view(settings.view_direction, settings.up_vector);
+    viewer.take_screenshot_and_quit(file);
+    viewer.resize(settings.width, settings.height);
+    viewer.show();
+    app.exec();
+  }
+  if (!std::ifstream(file).good())
+    throw IO_error(file, 0, "no picture was written (is there a display with OpenGL?)");
+#else
+  (void)mesh, (void)np;
+  throw IO_error(file, 0, "save_screenshot: built without CGAL_USE_BASIC_VIEWER (link with CGAL::CGAL_Basic_viewer)");
+#endif
+}
+
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_DRAW_MOBIUS_MESH_H

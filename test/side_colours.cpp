@@ -1,0 +1,41 @@
+// side_colours PICTURE.png (both|one)
+//
+// Counts the pixels of a picture of the view tool that show the front side's
+// colour (blue: blue well above red) and the back side's (orange: red above
+// green well above blue), whatever the shading did to their brightness, and
+// checks what a surface must show: "both" sides' colours (each on at least 2 %
+// of the picture), or only "one" (one on at least 5 %, the other on under 0.1 %).
+// Prints {"pixels":N,"front":F,"back":B} and exits 0 if the check holds, 1 if not,
+// 2 if the picture cannot be read.
+#include <QImage>
+
+#include <algorithm>
+#include <iostream>
+#include <string>
+
+int main(int argc, char* argv[])
+{
+  const std::string expect = argc == 3 ? argv[2] : "";
+  if (expect != "both" && expect != "one") {
+    std::cerr << "usage: side_colours PICTURE.png (both|one)\n";
+    return 2;
+  }
+  const QImage image(QString::fromLocal8Bit(argv[1]));
+  if (image.isNull()) {
+    std::cerr << "side_colours: cannot read " << argv[1] << "\n";
+    return 2;
+  }
+  long front = 0, back = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      const int r = c.red(), g = c.green(), b = c.blue();
+      front += b > r + 40 && b > g + 20;
+      back += r > g + 20 && g > b + 30;
+    }
+  const long pixels = long(image.width()) * image.height();
+  std::cout << "{\"pixels\":" << pixels << ",\"front\":" << front << ",\"back\":" << back << "}" << std::endl;
+  const double f = double(front) / double(pixels), b = double(back) / double(pixels);
+  const bool ok = expect == "both" ? std::min(f, b) >= 0.02 : std::max(f, b) >= 0.05 && std::min(f, b) < 0.001;
+  return ok ? 0 : 1;
+}
