@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -1442,6 +1443,68 @@ TEST(MeshSize, SubdivisionPastTheLimitIsRefusedBeforeAllocating)
   // Doo–Sabin and √3: upper bounds, refused alike.
   EXPECT_THROW(S::doo_sabin(quads, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
   EXPECT_THROW(S::sqrt3(triangles, CGAL_ext::parameters::number_of_iterations(40)), CGAL_ext::Size_error);
+}
+
+// Memory: the estimate is refused up front, naming the gigabytes, and the
+// mesh is unchanged. Twelve Catmull–Clark levels of a cube make 6 * 4^12 =
+// 100 663 296 quads, which index (201 M edges) but take about 10 GB.
+bool same_points(const Mesh& a, const Mesh& b)
+{
+  if (a.number_of_vertices() != b.number_of_vertices())
+    return false;
+  for (CGAL_ext::Vertex_index v : a.vertices())
+    if (a.point(v) != b.point(v))
+      return false;
+  return true;
+}
+
+TEST(MeshSize, SubdivisionPastTheMemoryLimitIsRefusedBeforeAllocating)
+{
+  Mesh cube;
+  CGAL_ext::polygon_soup_to_mobius_mesh(
+    std::vector<Point>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+    std::vector<std::vector<std::size_t>>{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
+                                          {3, 0, 4, 7}},
+    cube);
+  const Mesh before = cube;
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    S::catmull_clark(cube, CGAL_ext::parameters::number_of_iterations(12).maximum_memory(1e9));
+    ADD_FAILURE() << "no Size_error";
+  } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.element(), "bytes");
+    EXPECT_EQ(e.limit(), 1'000'000'000ull);
+    // At least the result's points and two halfedges of four indices per edge.
+    const unsigned long long quads = 6ull << 24, edges = 2 * quads, vertices = quads + 2;
+    EXPECT_GE(e.count(), vertices * sizeof(Point) + edges * 2 * 16) << e.what();
+    EXPECT_NE(std::string(e.what()).find("GB of memory"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 1.0);
+  EXPECT_TRUE(same_points(cube, before));
+  EXPECT_EQ(cube.number_of_faces(), 6u);
+
+  // Every scheme reads the limit; a limit that is not positive is refused.
+  Mesh triangles;
+  CGAL_ext::make_mobius_strip(triangles, 40, 2, 1, 1.0, 0.5, false);
+  const auto tight = CGAL_ext::parameters::number_of_iterations(6).maximum_memory(1e6);
+  EXPECT_THROW(S::loop(triangles, tight), CGAL_ext::Size_error);
+  EXPECT_THROW(S::sqrt3(triangles, tight), CGAL_ext::Size_error);
+  EXPECT_THROW(S::doo_sabin(cube, tight), CGAL_ext::Size_error);
+  EXPECT_THROW(S::bilinear(cube, tight), CGAL_ext::Size_error);
+  for (const double bad : {0.0, -1.0, std::nan("")})
+    EXPECT_THROW(S::catmull_clark(cube, CGAL_ext::parameters::maximum_memory(bad)), CGAL_ext::Parameter_error);
+  // Within the limit, the same result as without one.
+  Mesh limited = cube, unlimited = cube;
+  S::catmull_clark(limited, CGAL_ext::parameters::number_of_iterations(2).maximum_memory(1e6));
+  S::catmull_clark(unlimited, CGAL_ext::parameters::number_of_iterations(2));
+  EXPECT_TRUE(same_points(limited, unlimited));
+
+  // By default the limit is the machine's memory: 13 levels of a cube
+  // (403 M quads, 805 M edges: indexable) need about 40 GB.
+  const double physical = CGAL_ext::internal::physical_memory();
+  if (physical > 60e9)
+    GTEST_SKIP() << "this machine has " << physical / 1e9 << " GB: 13 levels of a cube may fit";
+  EXPECT_THROW(S::catmull_clark(cube, CGAL_ext::parameters::number_of_iterations(13)), CGAL_ext::Size_error);
 }
 
 // ----------------------------------------------------------------- property maps

@@ -75,6 +75,16 @@ public:
     : Mobius_mesh_viewer_qt(parent, make_two_sided_scene(mesh, np), title)
   {}
 
+  /// Closes the viewer.
+  ~Mobius_mesh_viewer_qt() override
+  {
+    // CGAL's QGLViewer listens for the end of its OpenGL context, which comes
+    // in QOpenGLWidget's destructor, after QGLViewer's own: the call would
+    // reach a destroyed object. It has nothing left to free by then.
+    if (context())
+      QObject::disconnect(context(), nullptr, this, nullptr);
+  }
+
   /// Adds the faces and segments of `scene` to what is drawn.
   void add_scene(const Two_sided_scene& scene)
   {

@@ -59,7 +59,9 @@ public:
   Size_error(const std::string& message, std::string element, unsigned long long count, unsigned long long limit)
     : Parameter_error(message), element_(std::move(element)), count_(count), limit_(limit)
   {}
-  /// The kind of element that does not fit: `"vertices"`, `"edges"` or `"faces"`.
+  /// The kind of element that does not fit: `"vertices"`, `"edges"` or
+  /// `"faces"`; `"bytes"` where the memory an operation would need is
+  /// more than it may take (`maximum_memory`).
   const std::string& element() const { return element_; }
   /// How many elements there would be.
   unsigned long long count() const { return count_; }

@@ -252,6 +252,26 @@ bool gather_sharpness(const Mobius_mesh<P>& mesh, const NamedParameters& np, std
   return has_sharpness;
 }
 
+// Refuses, before anything is allocated, a subdivision whose result a
+// Mobius_mesh cannot index, or whose estimated peak of memory passes
+// `limit`: the result's arrays and a quarter more for the
+// refiner's last two levels (the measured peak is 123 bytes per quad of
+// double points against the result's 98), or two and a half times the
+// result when other maps are carried, as every level is then kept.
+template <class Value, class P>
+void check_subdivision_size(const Mobius_mesh<P>& mesh, Split split, unsigned levels, bool keeps_levels,
+                            double limit)
+{
+  if (!(limit > 0))
+    throw Parameter_error("subdivision: maximum_memory " + std::to_string(limit) + " is not a positive number");
+  const std::string what = "subdividing " + std::to_string(levels) + " levels";
+  const Mesh_size result = refined_size(split, size_of(mesh), levels);
+  CGAL_ext::internal::check_mesh_size(what, result);
+  const double bytes = CGAL_ext::internal::mesh_bytes<P>(result) * (keeps_levels ? 2.5 : 1.25) +
+                       double(result.vertices) * double(sizeof(Value));
+  CGAL_ext::internal::check_memory(what, bytes, limit);
+}
+
 template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
 void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
 {
@@ -270,6 +290,9 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation), Boundary_interpolation::edge_only);
   options.crease_method =
     pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+  check_subdivision_size<Value>(mesh, Mask::split, levels, has_carried_maps(mesh),
+                                pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
+                                                     CGAL_ext::internal::physical_memory()));
   std::vector<float> es, vs;
   const bool write_sharpness = gather_sharpness(mesh, np, es, vs) && Mask::creases;
 
@@ -385,6 +408,11 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 ///     \cgalParamDescription{a readable property map from `Vertex_index` to `float` (corners)}
 ///     \cgalParamDefault{the map `"v:sharpness"` of `mesh` if it has one, else all 0}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_memory}
+///     \cgalParamDescription{the most memory, in bytes, the subdivision may take: a larger
+///       estimated peak is refused with `Size_error` before anything is allocated}
+///     \cgalParamDefault{the machine's physical memory}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// If sharpness was given, the result has maps `"e:sharpness"` and
@@ -392,6 +420,9 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 /// continues the same surface.
 ///
 /// \throws Parameter_error if a sharpness is NaN or negative; `mesh` is then unchanged.
+/// \throws Size_error, before anything is allocated, if the result would have
+/// more elements than a `Mobius_mesh` indexes, or its estimated peak of memory
+/// is more than `maximum_memory` (all the schemes); `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -425,7 +456,8 @@ void loop(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_
 ///
 /// Bilinear subdivision: the Catmull–Clark split with new points at edge
 /// midpoints and face centroids and old points kept (OpenSubdiv's bilinear
-/// scheme). Named parameters `number_of_iterations` and `vertex_point_map`.
+/// scheme). Named parameters `number_of_iterations`, `vertex_point_map` and
+/// `maximum_memory` (as `catmull_clark()`).
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void bilinear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -438,8 +470,8 @@ void bilinear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::defa
 /// Linear (midpoint) subdivision of a triangle mesh: the Loop split, each
 /// triangle into four, with new points at edge midpoints and old points kept
 /// (CGAL's `PTQ` with `Linear_mask_3`). Child vertices are laid out as
-/// `[vertex points | edge points]`. Named parameters `number_of_iterations`
-/// and `vertex_point_map`. For other polygons, `bilinear()`.
+/// `[vertex points | edge points]`. Named parameters `number_of_iterations`,
+/// `vertex_point_map` and `maximum_memory`. For other polygons, `bilinear()`.
 ///
 /// \throws Parameter_error if a face is not a triangle; `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
@@ -456,8 +488,8 @@ void linear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::defaul
 /// corner, and a face per face, per interior edge (a quad) and per vertex
 /// with three or more faces; the child vertex of a corner is numbered as the
 /// corner (faces in order, each face's corners from its first halfedge).
-/// Named parameters `number_of_iterations` and `vertex_point_map`; sharpness
-/// and boundary options do not apply.
+/// Named parameters `number_of_iterations`, `vertex_point_map` and
+/// `maximum_memory`; sharpness and boundary options do not apply.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void doo_sabin(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -472,7 +504,7 @@ void doo_sabin(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::def
 /// the border when `i` is odd, as CGAL's `Sqrt3_subdivision` does, so border
 /// refinement needs two steps in one call. Child vertices are laid out as
 /// `[vertices | centroids | border points]`. Named parameters
-/// `number_of_iterations` and `vertex_point_map`.
+/// `number_of_iterations`, `vertex_point_map` and `maximum_memory`.
 ///
 /// \throws Parameter_error if a face is not a triangle; `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,

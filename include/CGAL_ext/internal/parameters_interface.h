@@ -16,6 +16,7 @@ CGAL_EXT_add_named_parameter(boundary_interpolation_t, boundary_interpolation, b
 CGAL_EXT_add_named_parameter(crease_method_t, crease_method, crease_method)
 CGAL_EXT_add_named_parameter(vertex_rule_t, vertex_rule, vertex_rule)
 CGAL_EXT_add_named_parameter(triangle_subdivision_t, triangle_subdivision, triangle_subdivision)
+CGAL_EXT_add_named_parameter(maximum_memory_t, maximum_memory, maximum_memory)
 // offsets
 CGAL_EXT_add_named_parameter(solid_t, solid, solid)
 CGAL_EXT_add_named_parameter(vertex_displacement_t, vertex_displacement, vertex_displacement_map)

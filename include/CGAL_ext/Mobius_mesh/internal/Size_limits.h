@@ -10,7 +10,16 @@
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/exceptions.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <string>
+#include <type_traits>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <unistd.h>
+#endif
 
 namespace CGAL_ext {
 
@@ -47,6 +56,46 @@ inline void check_mesh_size(const std::string& what, const Mesh_size& size)
   check("edges", size.edges, max_edges);
   check("vertices", size.vertices, max_vertices);
   check("faces", size.faces, max_faces);
+}
+
+/// The machine's physical memory in bytes; infinity where it cannot be asked.
+inline double physical_memory()
+{
+#if defined(_SC_PHYS_PAGES) && defined(_SC_PAGE_SIZE)
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages > 0 && page > 0)
+    return double(pages) * double(page);
+#endif
+  return HUGE_VAL;
+}
+
+/// The bytes the arrays of a `Mobius_mesh` of point type `Point` and counts
+/// `size` take: per vertex its point and a dart, per edge two halfedges of
+/// four indices each and the Möbius flag, per face a halfedge. A point that
+/// is a handle (the lazy exact kernels) adds an estimate of what it points to.
+template <class Point>
+double mesh_bytes(const Mesh_size& size)
+{
+  constexpr double handle_target = std::is_trivially_copyable_v<Point> ? 0 : 160;
+  return double(size.vertices) * (double(sizeof(Point)) + handle_target + 4) + double(size.edges) * (2 * 16 + 1) +
+         double(size.faces) * 4;
+}
+
+/// Throws `Size_error` (element `"bytes"`) if an operation needs an
+/// estimated `bytes` of memory and more than `limit` is asked.
+inline void check_memory(const std::string& what, double bytes, double limit)
+{
+  if (!(bytes > limit))
+    return;
+  const auto gigabytes = [](double b) {
+    std::ostringstream text;
+    text << std::setprecision(3) << b / 1e9;
+    return text.str();
+  };
+  throw Size_error(what + " would need about " + gigabytes(bytes) + " GB of memory, more than the limit of " +
+                     gigabytes(limit) + " GB (named parameter maximum_memory; by default the machine's memory)",
+                   "bytes", static_cast<unsigned long long>(std::min(bytes, 1.8e19)),
+                   static_cast<unsigned long long>(std::min(limit, 1.8e19)));
 }
 
 } // namespace internal
