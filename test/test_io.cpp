@@ -1185,6 +1185,24 @@ TEST(IO_hostile, ply_truncated_oversized_or_not_ply_is_refused)
   fs::remove_all(dir);
 }
 
+// A header whose counts do not cover the file lies: data after the last
+// element is refused (line ends and blanks at the very end are not data).
+TEST(IO_hostile, ply_with_more_data_than_its_header_declares_is_refused)
+{
+  const fs::path dir = scratch_directory();
+  const std::string body = "0 0 0 0\n1 0 0 0\n0 1 0 0\n3 0 1 2 0\n0 1\n";
+  write_text(dir / "ascii_more.ply", ply_header("ascii", "3", "1", "uchar int") + body + "5 5 5 0\n");
+  expect_read_error(dir / "ascii_more.ply", 21, "bytes of data after the last element");
+  write_text(dir / "ascii_trailing_lines.ply", ply_header("ascii", "3", "1", "uchar int") + body + "\n \r\n\n");
+  expect_unit_triangle(dir / "ascii_trailing_lines.ply");
+  const std::string binary = binary_ply_triangle<std::uint8_t, std::int32_t>(false, "uchar int");
+  write_text(dir / "binary_more.ply", binary + std::string("\x01\x02\x03\x04", 4));
+  expect_read_error(dir / "binary_more.ply", 0, "4 bytes of data after the last element");
+  write_text(dir / "binary_newline.ply", binary + "\n");
+  expect_unit_triangle(dir / "binary_newline.ply");
+  fs::remove_all(dir);
+}
+
 // ---------------------------------------------------------------- readable by others
 
 TEST(IO_round_trip, output_without_sharpness_is_read_by_cgal)

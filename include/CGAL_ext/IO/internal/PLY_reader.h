@@ -197,6 +197,17 @@ public:
   }
   // The last token read (ASCII), for error messages.
   std::string last_token() const { return printable(token_); }
+  // How many bytes follow what was read, blanks and line ends at the very
+  // end left out: a file may end in a line end, but not in more data than
+  // its header declares.
+  std::size_t bytes_after_data() const
+  {
+    const char* last = end_;
+    const char* const at = end_ - remaining();
+    while (last != at && (is_blank(last[-1]) || last[-1] == '\n' || last[-1] == '\r'))
+      --last;
+    return std::size_t(last - at);
+  }
 
 private:
   void skip_space()
@@ -346,6 +357,10 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
   }
   if (!has_vertices)
     throw IO_error(filename, 0, "the header declares no 'vertex' element");
+  if (const std::size_t extra = in.bytes_after_data())
+    throw IO_error(filename, in.line(),
+                   std::to_string(extra) + " bytes of data after the last element: the header's counts do not "
+                                           "cover the file");
   return lines;
 }
 
