@@ -18,9 +18,13 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -401,6 +405,48 @@ TEST(GraphTraits, CgalEulerOperationsAsOnSurfaceMesh)
   sm.collect_garbage();
   EXPECT_EQ(faces_of(m), faces_of(sm));
   EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 1u);
+}
+
+// CGAL's remeshing and simplification, run on the oriented mesh itself and on
+// the converted Surface_mesh. They visit elements in slot order and CGAL's
+// Euler operations fill removed slots of a Surface_mesh but append to a
+// Mobius_mesh, so the two runs part ways after the first changes: the
+// results are compared as surfaces (counts, topology, Hausdorff distance),
+// and a stop by edge count stops both at the same count.
+TEST(GraphTraits, CgalRemeshingAndSimplificationOnTheOrientedMesh)
+{
+  Mesh m = oriented_torus();
+  triangulate(m);
+  SM sm = converted(m);
+  const SM input = sm;
+  const double L = 0.3; // the torus's mean edge is about 0.4
+  PMP::isotropic_remeshing(faces(m), L, m, CGAL::parameters::number_of_iterations(3));
+  PMP::isotropic_remeshing(faces(sm), L, sm, CGAL::parameters::number_of_iterations(3));
+  m.collect_garbage();
+  sm.collect_garbage();
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+  EXPECT_FALSE(CGAL_ext::has_mobius_edges(m));
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+  EXPECT_NEAR(double(m.number_of_faces()), double(sm.number_of_faces()), 0.02 * double(sm.number_of_faces()));
+  const SM remeshed = converted(m);
+  EXPECT_LE(PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(remeshed, sm), 0.1 * L);
+  EXPECT_TRUE(PMP::is_outward_oriented(m));
+
+  // Garland-Heckbert's rival, CGAL's default Lindstrom-Turk policies, down to 300 edges.
+  namespace SMS = CGAL::Surface_mesh_simplification;
+  const int removed = SMS::edge_collapse(m, SMS::Count_stop_predicate<Mesh>(300));
+  const int removed_sm = SMS::edge_collapse(sm, SMS::Count_stop_predicate<SM>(300));
+  m.collect_garbage();
+  sm.collect_garbage();
+  EXPECT_GT(removed, 0);
+  EXPECT_EQ(m.number_of_edges(), sm.number_of_edges()) << removed << " " << removed_sm;
+  EXPECT_EQ(m.number_of_faces(), sm.number_of_faces());
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+  EXPECT_FALSE(CGAL_ext::has_mobius_edges(m));
+  const SM simplified = converted(m);
+  const double theirs = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(sm, input);
+  EXPECT_LE(PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(simplified, input), 2 * theirs);
 }
 
 // ---------------------------------------------------------------- any mesh: orientation-free algorithms

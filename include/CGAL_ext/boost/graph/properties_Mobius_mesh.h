@@ -45,6 +45,25 @@ struct Graph_index_map
   friend value_type get(Graph_index_map, Key k) { return graph_index(k); }
 };
 
+// The halfedge index CGAL's algorithms see. The unflipped dart of halfedge h
+// gets h, so that, as in Surface_mesh, the two halfedges of edge e are 2e and
+// 2e + 1 (Surface_mesh_simplification takes index / 2 as the edge's index);
+// the flipped one gets h plus the mesh's halfedge slots when the map was
+// taken, below num_halfedges(g), twice those slots.
+template <>
+struct Graph_index_map<Dart>
+{
+  using key_type = Dart;
+  using value_type = std::uint32_t;
+  using reference = std::uint32_t;
+  using category = boost::readable_property_map_tag;
+
+  std::uint32_t flipped_offset = 0; ///< the mesh's halfedge slots
+
+  value_type operator[](Dart d) const { return d.halfedge().idx() + (d.is_flipped() ? flipped_offset : 0); }
+  friend value_type get(const Graph_index_map& map, Dart d) { return map[d]; }
+};
+
 // A dart property kept in the mesh's halfedge arrays: one pair of values per
 // halfedge, the unflipped dart's first.
 template <class T>
@@ -243,7 +262,10 @@ internal::Property_map<Vertex_index, P> get(CGAL::vertex_point_t, const Mobius_m
 template <class P>
 internal::Graph_index_map<Vertex_index> get(boost::vertex_index_t, const Mobius_mesh<P>&) { return {}; }
 template <class P>
-internal::Graph_index_map<Dart> get(boost::halfedge_index_t, const Mobius_mesh<P>&) { return {}; }
+internal::Graph_index_map<Dart> get(boost::halfedge_index_t, const Mobius_mesh<P>& m)
+{
+  return {std::uint32_t(m.num_halfedges())};
+}
 template <class P>
 internal::Graph_index_map<Dart_edge> get(boost::edge_index_t, const Mobius_mesh<P>&) { return {}; }
 template <class P>
@@ -256,7 +278,7 @@ void put(CGAL::vertex_point_t, Mobius_mesh<P>& m, Vertex_index v, const P& p) { 
 template <class P>
 std::uint32_t get(boost::vertex_index_t, const Mobius_mesh<P>&, Vertex_index v) { return v.idx(); }
 template <class P>
-std::uint32_t get(boost::halfedge_index_t, const Mobius_mesh<P>&, Dart d) { return d.bits(); }
+std::uint32_t get(boost::halfedge_index_t, const Mobius_mesh<P>& m, Dart d) { return get(get(boost::halfedge_index, m), d); }
 template <class P>
 std::uint32_t get(boost::edge_index_t, const Mobius_mesh<P>&, Dart_edge e) { return e.idx(); }
 template <class P>
