@@ -4,10 +4,13 @@
 //
 // A round splits a random edge, splits its two quads back into triangles,
 // flips one of the new edges (and back) and collapses the new vertex into an
-// end of the split edge: seven Euler operations (and their checks) that leave
-// the mesh as large as it was. Surface_mesh reuses the slots of removed
-// elements; Mobius_mesh appends, so its rounds collect the garbage every
-// 2^16 rounds, inside the timing.
+// end of the split edge: six Euler operations (and their checks) that leave
+// the mesh as large as it was. Ours run twice: with the operations' own
+// checks (each throws rather than break the mesh), and with
+// `Euler::unchecked`, as CGAL::Euler's operations run (the round still asks
+// can_flip_edge() and the link condition once). Surface_mesh reuses the
+// slots of removed elements; Mobius_mesh appends, so its rounds collect the
+// garbage every 2^16 rounds, inside the timing.
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
@@ -72,8 +75,13 @@ SM theirs(const Soup& s)
   return sm;
 }
 
-// One round on Mobius_mesh; returns the number of operations done.
-int round(Mesh& m, std::mt19937& rng)
+// One round on Mobius_mesh; returns the number of operations done. Given
+// `Euler::unchecked`, the operations skip their checks (the round asks
+// can_flip_edge() and the link condition once, as a caller would); without
+// it, each operation checks again and would throw rather than break the mesh.
+// Rounds are kept out of line so that a profile (callgrind) counts them.
+template <class... Unchecked>
+[[gnu::noinline]] int round(Mesh& m, std::mt19937& rng, Unchecked... unchecked)
 {
   namespace E = CGAL_ext::Euler;
   CGAL_ext::Halfedge_index h;
@@ -82,23 +90,23 @@ int round(Mesh& m, std::mt19937& rng)
   while (m.is_removed(h));
   const CGAL_ext::Dart d(h, false);
   const CGAL_ext::Dart n = E::split_edge(d, m); // a -> w, then d: w -> b
-  const CGAL_ext::Dart x = E::split_face(n, m.next(m.next(n)), m);
+  const CGAL_ext::Dart x = E::split_face(n, m.next(m.next(n)), m, unchecked...);
   const CGAL_ext::Dart od = m.opposite(d);
-  E::split_face(od, m.next(m.next(od)), m);
+  E::split_face(od, m.next(m.next(od)), m, unchecked...);
   int ops = 3;
   if (E::can_flip_edge(x, m)) {
-    E::flip_edge(E::flip_edge(x, m), m); // the same edge, back again
+    E::flip_edge(E::flip_edge(x, m, unchecked...), m, unchecked...); // the same edge, back again
     ops += 2;
   }
   const CGAL_ext::Dart back = m.opposite(n); // w -> a
   if (E::does_satisfy_link_condition(back, m)) {
-    E::collapse_edge(back, m);
+    E::collapse_edge(back, m, unchecked...);
     ++ops;
   }
   return ops;
 }
 
-int round(SM& sm, std::mt19937& rng)
+[[gnu::noinline]] int round(SM& sm, std::mt19937& rng)
 {
   namespace E = CGAL::Euler;
   SM::Halfedge_index h;
@@ -124,11 +132,17 @@ int round(SM& sm, std::mt19937& rng)
   return ops;
 }
 
-template <class M, class Collect>
-void random_rounds(benchmark::State& state, M mesh, Collect collect)
+template <class M, class Round, class Collect>
+void random_rounds(benchmark::State& state, M mesh, Round round, Collect collect)
 {
   std::mt19937 rng(1);
   std::int64_t ops = 0, rounds = 0;
+  // Room for the rounds between two collections (a round adds a vertex,
+  // three edges and two faces), so that the first round does not pay the
+  // arrays' first growth, a copy of the whole mesh: that would weigh on
+  // short runs only (as under callgrind).
+  mesh.reserve(mesh.number_of_vertices() + (1 << 16), mesh.number_of_edges() + 3 * (1 << 16),
+               mesh.number_of_faces() + 2 * (1 << 16));
   for (auto _ : state) {
     ops += round(mesh, rng);
     if ((++rounds & 0xffff) == 0)
@@ -140,11 +154,21 @@ void random_rounds(benchmark::State& state, M mesh, Collect collect)
 
 void Euler_random_rounds_CGAL_ext(benchmark::State& state)
 {
-  random_rounds(state, ours(torus(std::size_t(state.range(0)))), [](Mesh& m) { m.collect_garbage(); });
+  random_rounds(
+    state, ours(torus(std::size_t(state.range(0)))), [](Mesh& m, std::mt19937& r) { return round(m, r); },
+    [](Mesh& m) { m.collect_garbage(); });
+}
+void Euler_random_rounds_CGAL_ext_unchecked(benchmark::State& state)
+{
+  random_rounds(
+    state, ours(torus(std::size_t(state.range(0)))),
+    [](Mesh& m, std::mt19937& r) { return round(m, r, CGAL_ext::Euler::unchecked); },
+    [](Mesh& m) { m.collect_garbage(); });
 }
 void Euler_random_rounds_CGAL(benchmark::State& state)
 {
-  random_rounds(state, theirs(torus(std::size_t(state.range(0)))), [](SM&) {});
+  random_rounds(state, theirs(torus(std::size_t(state.range(0)))), [](SM& m, std::mt19937& r) { return round(m, r); },
+                [](SM&) {});
 }
 
 // Removes about a tenth of the elements by collapses, then times the compaction.
@@ -202,6 +226,10 @@ int main(int argc, char** argv)
     benchmark::RegisterBenchmark(name, f)->Arg(n)->Unit(unit);
   };
   add("euler/random_rounds/torus_256x256/CGAL_ext", Euler_random_rounds_CGAL_ext, 256, benchmark::kMicrosecond);
+  add("euler/random_rounds_unchecked/torus_256x256/CGAL_ext", Euler_random_rounds_CGAL_ext_unchecked, 256,
+      benchmark::kMicrosecond);
+  add("euler/random_rounds_unchecked/torus_256x256/CGAL_Surface_mesh", Euler_random_rounds_CGAL, 256,
+      benchmark::kMicrosecond);
   add("euler/random_rounds/torus_256x256/CGAL_Surface_mesh", Euler_random_rounds_CGAL, 256, benchmark::kMicrosecond);
   add("collect_garbage/torus_512x512_tenth_collapsed/CGAL_ext", Collect_garbage_CGAL_ext, 512,
       benchmark::kMillisecond);

@@ -31,6 +31,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <random>
 #include <set>
@@ -512,6 +513,116 @@ TEST_P(EulerOnEveryDart, CollapseRemoveAndFill)
     });
 }
 
+// The whole connectivity, element by element: two meshes edited the same
+// way must agree on every link, bit and removal mark.
+void expect_same_connectivity(const Mesh& a, const Mesh& b, Dart d)
+{
+  ASSERT_EQ(a.num_halfedges(), b.num_halfedges()) << d;
+  ASSERT_EQ(a.num_vertices(), b.num_vertices()) << d;
+  ASSERT_EQ(a.num_faces(), b.num_faces()) << d;
+  for (std::uint32_t i = 0; i < a.num_halfedges(); ++i) {
+    const Halfedge_index h(i);
+    EXPECT_EQ(a.is_removed(h), b.is_removed(h)) << d;
+    if (a.is_removed(h))
+      continue;
+    EXPECT_EQ(a.next(Dart(h)), b.next(Dart(h))) << d;
+    EXPECT_EQ(a.prev(Dart(h)), b.prev(Dart(h))) << d;
+    EXPECT_EQ(a.target(h), b.target(h)) << d;
+    EXPECT_EQ(a.face(h), b.face(h)) << d;
+    EXPECT_EQ(a.is_mobius(a.edge(h)), b.is_mobius(b.edge(h))) << d;
+  }
+  for (std::uint32_t i = 0; i < a.num_vertices(); ++i) {
+    const Vertex_index v(i);
+    EXPECT_EQ(a.is_removed(v), b.is_removed(v)) << d;
+    if (!a.is_removed(v)) {
+      EXPECT_EQ(a.halfedge(v), b.halfedge(v)) << d;
+    }
+  }
+  for (std::uint32_t i = 0; i < a.num_faces(); ++i) {
+    const Face_index f(i);
+    EXPECT_EQ(a.is_removed(f), b.is_removed(f)) << d;
+    if (!a.is_removed(f)) {
+      EXPECT_EQ(a.halfedge(f), b.halfedge(f)) << d;
+    }
+  }
+}
+
+// Runs `checked` and `unchecked` on two copies of `m` at every dart where
+// `can` allows it: same result, same mesh, and a valid one.
+template <class Can, class Op, class Unchecked_op>
+int checked_against_unchecked(const Mesh& m, Can can, Op checked, Unchecked_op unchecked)
+{
+  int applied = 0;
+  for (Dart d : all_darts(m)) {
+    if (!can(m, d))
+      continue;
+    Mesh a = m, b = m;
+    const auto r = checked(a, d);
+    EXPECT_EQ(r, unchecked(b, d)) << d;
+    EXPECT_TRUE(b.is_valid(true)) << d;
+    expect_same_connectivity(a, b, d);
+    ++applied;
+  }
+  return applied;
+}
+
+TEST_P(EulerOnEveryDart, UncheckedOverloadsDoWhatTheCheckedOnesDo)
+{
+  Mesh m = mesh();
+  // Quads and larger faces too, so that split_face and join_vertex apply.
+  for (Dart d : all_darts(m))
+    if (!m.is_removed(d.halfedge()) && !d.is_flipped() && Euler::can_join_face(d, m) &&
+        m.number_of_faces() > m.number_of_vertices() / 2)
+      Euler::join_face(d, m);
+  ASSERT_TRUE(m.is_valid(true));
+  m.collect_garbage();
+  auto two_on = [](const Mesh& e, Dart d) { return e.next(e.next(d)); };
+  int applied = 0;
+  applied += checked_against_unchecked(
+    m, [](const Mesh& e, Dart d) { return Euler::can_flip_edge(d, e); },
+    [](Mesh& e, Dart d) { return Euler::flip_edge(d, e); },
+    [](Mesh& e, Dart d) { return Euler::flip_edge(d, e, Euler::unchecked); });
+  applied += checked_against_unchecked(
+    m, [](const Mesh& e, Dart d) { return Euler::can_join_face(d, e); },
+    [](Mesh& e, Dart d) { return Euler::join_face(d, e); },
+    [](Mesh& e, Dart d) { return Euler::join_face(d, e, Euler::unchecked); });
+  applied += checked_against_unchecked(
+    m, [&](const Mesh& e, Dart d) { return !e.is_border(d) && Euler::can_split_face(d, two_on(e, d), e); },
+    [&](Mesh& e, Dart d) { return Euler::split_face(d, two_on(e, d), e); },
+    [&](Mesh& e, Dart d) { return Euler::split_face(d, two_on(e, d), e, Euler::unchecked); });
+  applied += checked_against_unchecked(
+    m, [](const Mesh& e, Dart d) { return Euler::can_join_vertex(d, e); },
+    [](Mesh& e, Dart d) { return Euler::join_vertex(d, e); },
+    [](Mesh& e, Dart d) { return Euler::join_vertex(d, e, Euler::unchecked); });
+  applied += checked_against_unchecked(
+    m, [](const Mesh& e, Dart d) { return Euler::can_remove_center_vertex(d, e); },
+    [](Mesh& e, Dart d) { return Euler::remove_center_vertex(d, e); },
+    [](Mesh& e, Dart d) { return Euler::remove_center_vertex(d, e, Euler::unchecked); });
+  applied += checked_against_unchecked(
+    m, [](const Mesh& e, Dart d) { return Euler::does_satisfy_link_condition(d, e); },
+    [](Mesh& e, Dart d) { return Euler::collapse_edge(d, e); },
+    [](Mesh& e, Dart d) { return Euler::collapse_edge(d, e, Euler::unchecked); });
+  applied += checked_against_unchecked(
+    m, [](const Mesh& e, Dart d) { return Euler::can_make_hole(d, e); },
+    [](Mesh& e, Dart d) { return Euler::make_hole(d, e); },
+    [](Mesh& e, Dart d) { return Euler::make_hole(d, e, Euler::unchecked); });
+  applied += checked_against_unchecked(
+    m, [](const Mesh& e, Dart d) { return Euler::can_remove_face(d, e); },
+    [](Mesh& e, Dart d) {
+      Euler::remove_face(d, e);
+      return 0;
+    },
+    [](Mesh& e, Dart d) {
+      Euler::remove_face(d, e, Euler::unchecked);
+      return 0;
+    });
+  applied += checked_against_unchecked(
+    m, [&](const Mesh& e, Dart d) { return e.is_border(d) && Euler::can_add_face_to_border(d, two_on(e, d), e); },
+    [&](Mesh& e, Dart d) { return Euler::add_face_to_border(d, two_on(e, d), e); },
+    [&](Mesh& e, Dart d) { return Euler::add_face_to_border(d, two_on(e, d), e, Euler::unchecked); });
+  EXPECT_GT(applied, 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Meshes, EulerOnEveryDart, ::testing::Values(0, 1, 2));
 
 TEST(Euler, FillingTheBorderOfAMobiusBandMakesAProjectivePlane)
@@ -606,7 +717,9 @@ TEST(Euler, RefusalsThrowAndLeaveTheMeshAlone)
 
 // ---------------------------------------------------------------- against CGAL::Euler
 
-TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
+// Runs the same random operations through CGAL::Euler on a Surface_mesh and
+// through ours, with their checks or (`unchecked`) without.
+void same_sequence_as_cgal_euler(bool unchecked)
 {
   using SM = CGAL::Surface_mesh<Point>;
   Mesh m;
@@ -650,7 +763,7 @@ TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
       if (!Euler::can_make_hole(d, m) || CGAL_ext::number_of_border_cycles(m) > 2)
         continue;
       CGAL::Euler::make_hole(h, sm);
-      Euler::make_hole(d, m);
+      unchecked ? Euler::make_hole(d, m, Euler::unchecked) : Euler::make_hole(d, m);
       break;
     case 8:
       if (!m.is_border(d))
@@ -662,7 +775,10 @@ TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
       if (!m.is_border(d) || !Euler::can_add_face_to_border(d, m.next(m.next(d)), m))
         continue;
       CGAL::Euler::add_face_to_border(h, sm_halfedge(m.next(m.next(d))), sm);
-      Euler::add_face_to_border(d, m.next(m.next(d)), m);
+      if (unchecked)
+        Euler::add_face_to_border(d, m.next(m.next(d)), m, Euler::unchecked);
+      else
+        Euler::add_face_to_border(d, m.next(m.next(d)), m);
       break;
     }
     case 0: {
@@ -675,7 +791,7 @@ TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
       if (!Euler::can_join_face(d, m))
         continue;
       CGAL::Euler::join_face(h, sm);
-      Euler::join_face(d, m);
+      unchecked ? Euler::join_face(d, m, Euler::unchecked) : Euler::join_face(d, m);
       break;
     case 2: {
       if (m.is_border(d) || m.degree(m.face(d)) < 4)
@@ -684,14 +800,14 @@ TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
       if (!Euler::can_split_face(d, g, m))
         continue;
       CGAL::Euler::split_face(h, sm_halfedge(g), sm);
-      Euler::split_face(d, g, m);
+      unchecked ? Euler::split_face(d, g, m, Euler::unchecked) : Euler::split_face(d, g, m);
       break;
     }
     case 3:
       if (!Euler::can_join_vertex(d, m))
         continue;
       CGAL::Euler::join_vertex(h, sm);
-      Euler::join_vertex(d, m);
+      unchecked ? Euler::join_vertex(d, m, Euler::unchecked) : Euler::join_vertex(d, m);
       break;
     case 4: {
       if (m.is_border(d))
@@ -705,7 +821,7 @@ TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
       if (!Euler::can_remove_center_vertex(d, m))
         continue;
       CGAL::Euler::remove_center_vertex(h, sm);
-      Euler::remove_center_vertex(d, m);
+      unchecked ? Euler::remove_center_vertex(d, m, Euler::unchecked) : Euler::remove_center_vertex(d, m);
       break;
     default: {
       // CGAL collapses edges between triangles: keep to those, and collapse
@@ -722,7 +838,7 @@ TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
       if (!ours || !CGAL::Euler::does_satisfy_link_condition(e, sm))
         continue;
       CGAL::Euler::collapse_edge(e, sm);
-      Euler::collapse_edge(dd, m);
+      unchecked ? Euler::collapse_edge(dd, m, Euler::unchecked) : Euler::collapse_edge(dd, m);
     }
     }
     ++applied;
@@ -735,6 +851,25 @@ TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh)
   sm.collect_garbage();
   EXPECT_EQ(face_signature(m), face_signature(sm));
 }
+
+TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh) { same_sequence_as_cgal_euler(false); }
+
+TEST(Euler, UncheckedSameSequenceAsCgalEulerOnSurfaceMesh) { same_sequence_as_cgal_euler(true); }
+
+#if !defined(NDEBUG) && !defined(CGAL_NO_PRECONDITIONS)
+// Without their checks, the operations still assert them where CGAL's
+// preconditions are on (CGAL's default failure behaviour throws).
+TEST(Euler, UncheckedOverloadsAssertTheirChecksInDebugBuilds)
+{
+  Mesh m = five_triangle_band<Point>();
+  const Dart d = m.halfedge(Face_index(0u));
+  EXPECT_THROW(Euler::split_face(d, m.next(d), m, Euler::unchecked), CGAL::Precondition_exception);
+  EXPECT_THROW(Euler::join_vertex(d, m, Euler::unchecked), CGAL::Precondition_exception);
+  EXPECT_THROW(Euler::remove_face(d, m, Euler::unchecked), CGAL::Precondition_exception);
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_FALSE(m.has_garbage());
+}
+#endif
 
 // ---------------------------------------------------------------- random stress
 

@@ -675,11 +675,15 @@ public:
   {
     if (e_mobius_.size() >= internal::max_edges)
       internal::check_mesh_size("add_edge()", grown_size(0, 1, 0));
+    // push_back, not resize(size + 2, value): Euler operations add edges one
+    // at a time, and a filling resize is an out-of-line call each time.
     h_target_.push_back(t0);
     h_target_.push_back(t1);
-    h_next_.resize(h_next_.size() + 2, Dart());
-    h_prev_.resize(h_prev_.size() + 2, Dart());
-    h_face_.resize(h_face_.size() + 2, Face_index());
+    for (int i = 0; i < 2; ++i) {
+      h_next_.push_back(Dart());
+      h_prev_.push_back(Dart());
+      h_face_.push_back(Face_index());
+    }
     hprops_.resize(h_target_.size());
     e_mobius_.push_back(mobius ? 1 : 0);
     eprops_.resize(e_mobius_.size());

@@ -324,7 +324,7 @@ bool Decimator<P>::collapse(Edge_index e, const Collapse_candidate& c)
   std::vector<std::pair<char, float>> side_values; // read before the collapse removes one of each pair
   for (Edge_index s : sides)
     side_values.emplace_back(feature_[s.idx()], sharpness_ ? (*sharpness_)[s] : 0.f);
-  Euler::collapse_edge(d, m_);
+  Euler::collapse_edge(d, m_, Euler::unchecked); // check_collapse() checked the link condition
   m_.points()[q] = point;
   quadric_[q.idx()] += quadric_[p.idx()];
   area_[q.idx()] += area_[p.idx()];

@@ -31,7 +31,10 @@
 ///   darts returned walk the way the darts given did.
 /// - Each one that could break the 2-manifold has a `can_*()` check (for
 ///   `collapse_edge()`, `does_satisfy_link_condition()`), and refuses with an
-///   `Euler_error` when it says no, leaving the mesh unchanged.
+///   `Euler_error` when it says no, leaving the mesh unchanged. Each of them
+///   also has an overload that takes `Euler::unchecked` last and skips the
+///   check, for callers that checked already (the check is then a
+///   precondition, as in `CGAL::Euler`).
 /// - Elements are removed as `Mobius_mesh::remove_*()` does: marked, skipped
 ///   by the ranges, gone for good at `collect_garbage()`. New elements get
 ///   the default values of every property map (new vertices the origin).
@@ -39,34 +42,100 @@
 namespace CGAL_ext {
 namespace Euler {
 
+/// \ingroup PkgMobiusMeshEuler
+/// The type of `unchecked`: passed last to an operation that has a check, it
+/// selects the overload that skips the check.
+struct Unchecked_t
+{
+  /// Not implicitly constructible from `{}`, so that it never matches by accident.
+  explicit constexpr Unchecked_t() = default;
+};
+
+/// \ingroup PkgMobiusMeshEuler
+/// Passed last to an Euler operation that has a check (`flip_edge(d, mesh,
+/// Euler::unchecked)`), skips it, as `CGAL::Euler` does: for callers that
+/// checked already. The check must hold (it is a precondition, asserted in
+/// builds with CGAL's preconditions on); if it does not, the mesh is left
+/// invalid instead of an `Euler_error` being thrown.
+inline constexpr Unchecked_t unchecked{};
+
 namespace internal {
 
 using CGAL_ext::internal::Walk;
 using CGAL_ext::internal::dart_of;
 using CGAL_ext::internal::walk_of;
 
+// The checks below walk faces and vertex rings in place, without collecting
+// them: they run on every checked operation, and the rings are short.
+
+// True if the face or border loop of `d` has exactly three sides.
 template <class P>
-bool are_adjacent(Vertex_index a, Vertex_index b, const Mobius_mesh<P>& m)
+bool is_triangle(Dart d, const Mobius_mesh<P>& m)
 {
-  if (m.is_isolated(a))
-    return false;
-  for (Vertex_index w : CGAL_ext::vertices_around_target(m.halfedge(a), m))
-    if (w == b)
+  const Dart n = m.next(d), nn = m.next(n);
+  return n != d && nn != d && m.next(nn) == d;
+}
+
+// True if the face or border loop of `d` has fewer than `k` sides, walking at most k - 1 of them.
+template <class P>
+bool has_fewer_sides_than(Dart d, std::size_t k, const Mobius_mesh<P>& m)
+{
+  Dart c = d;
+  for (std::size_t i = 1; i < k; ++i) {
+    c = m.next(c);
+    if (c == d)
       return true;
+  }
   return false;
 }
 
-// The checks run on every operation: no allocation for the usual small fans and faces.
-using Vertex_list = boost::container::small_vector<Vertex_index, 16>;
-
+// True if `target(d)` has fewer than `k` edges, walking at most k - 1 of them.
 template <class P>
-Vertex_list face_vertices(Face_index f, const Mobius_mesh<P>& m)
+bool has_fewer_edges_than(Dart d, std::size_t k, const Mobius_mesh<P>& m)
 {
-  Vertex_list vs;
-  for (Vertex_index v : CGAL_ext::vertices_around_face(f, m))
-    vs.push_back(v);
-  return vs;
+  Dart c = d;
+  for (std::size_t i = 1; i < k; ++i) {
+    c = m.opposite(m.next(c));
+    if (c == d)
+      return true;
+  }
+  return false;
 }
+
+// True if the face (or border loop) of `d` visits `v`.
+template <class P>
+bool face_holds(Dart d, Vertex_index v, const Mobius_mesh<P>& m)
+{
+  Dart c = d;
+  do {
+    if (m.target(c) == v)
+      return true;
+    c = m.next(c);
+  } while (c != d);
+  return false;
+}
+
+// Walks the ring of `a` by its outgoing darts: the far end of next(c) is
+// one load where an unflipped dart's source would need its partner too.
+template <class P>
+bool are_adjacent(Vertex_index a, Vertex_index b, const Mobius_mesh<P>& m)
+{
+  const Dart start = m.halfedge(a);
+  if (!start.is_valid())
+    return false;
+  Dart c = start;
+  do {
+    const Dart out = m.next(c);
+    if (m.target(out) == b)
+      return true;
+    c = m.opposite(out);
+  } while (c != start);
+  return false;
+}
+
+// The ring of a vertex, for the checks that intersect two rings: no
+// allocation for the usual small fans.
+using Vertex_list = boost::container::small_vector<Vertex_index, 16>;
 
 template <class P>
 Vertex_list neighbours(Dart into, const Mobius_mesh<P>& m)
@@ -79,37 +148,51 @@ Vertex_list neighbours(Dart into, const Mobius_mesh<P>& m)
 
 inline bool holds(const Vertex_list& vs, Vertex_index v) { return std::find(vs.begin(), vs.end(), v) != vs.end(); }
 
+// True if a face around `target(into)` other than `f1` and `f2` visits `v`.
 template <class P>
-std::size_t border_loop_length(Dart d, const Mobius_mesh<P>& m)
+bool other_face_around_holds(Dart into, Face_index f1, Face_index f2, Vertex_index v, const Mobius_mesh<P>& m)
 {
-  return CGAL_ext::halfedges_around_face(d, m).size();
+  Dart c = into;
+  do {
+    const Face_index f = m.face(c);
+    if (f.is_valid() && f != f1 && f != f2 && face_holds(c, v, m))
+      return true;
+    c = m.opposite(m.next(c));
+  } while (c != into);
+  return false;
 }
 
-// Throws an Euler_error naming the operation if `why` is not empty.
-inline void refuse_unless_empty(const char* operation, const std::string& why)
+// Throws an Euler_error naming the operation if `why` (a reason from the
+// why_not_*() functions below, null when the operation may be done) is set.
+inline void refuse_if(const char* operation, const char* why)
 {
-  if (!why.empty())
+  if (why != nullptr)
     throw Euler_error(std::string("Euler::") + operation + ": " + why);
 }
 
 template <class P>
-std::string why_not_join_face(Dart d, const Mobius_mesh<P>& m)
+const char* why_not_join_face(Dart d, const Mobius_mesh<P>& m)
 {
   const Dart o = m.opposite(d);
   if (m.is_border(d) || m.is_border(o))
     return "the edge is on the border";
   if (m.face(d) == m.face(o))
     return "the edge has the same face on both sides";
-  if (m.degree(m.source(d)) < 3 || m.degree(m.target(d)) < 3)
+  if (has_fewer_edges_than(d.flipped(), 3, m) || has_fewer_edges_than(d, 3, m))
     return "an end of the edge would be left with one edge";
-  const Vertex_list a = face_vertices(m.face(d), m), b = face_vertices(m.face(o), m);
-  if (std::count_if(a.begin(), a.end(), [&b](Vertex_index v) { return holds(b, v); }) != 2)
+  std::size_t shared = 0;
+  Dart c = d;
+  do {
+    shared += face_holds(o, m.target(c), m) ? 1 : 0;
+    c = m.next(c);
+  } while (c != d);
+  if (shared != 2)
     return "the two faces share a vertex besides the edge's ends";
-  return std::string();
+  return nullptr;
 }
 
 template <class P>
-std::string why_not_split_face(Dart h, Dart g, const Mobius_mesh<P>& m)
+const char* why_not_split_face(Dart h, Dart g, const Mobius_mesh<P>& m)
 {
   if (m.is_border(h) || m.face(h) != m.face(g))
     return "the darts are not in one face";
@@ -119,34 +202,30 @@ std::string why_not_split_face(Dart h, Dart g, const Mobius_mesh<P>& m)
     return "the new edge would join adjacent corners";
   if (are_adjacent(m.target(h), m.target(g), m))
     return "the corners are already joined by an edge";
-  return std::string();
+  return nullptr;
 }
 
 template <class P>
-std::string why_not_join_vertex(Dart d, const Mobius_mesh<P>& m)
+const char* why_not_join_vertex(Dart d, const Mobius_mesh<P>& m)
 {
   const Dart o = m.opposite(d);
   for (Dart side : {d, o})
-    if ((m.is_border(side) ? border_loop_length(side, m) : m.degree(m.face(side))) < 4)
+    if (has_fewer_sides_than(side, 4, m))
       return "a face or border loop of the edge has fewer than four sides";
   const Vertex_index s = m.source(d), t = m.target(d);
   if (m.is_border(s) && m.is_border(t) && !m.is_border(m.edge(d)))
     return "both ends are on the border but the edge is not";
-  const Vertex_list ns = neighbours(d.flipped(), m), nt = neighbours(d, m);
-  for (Vertex_index w : ns)
-    if (holds(nt, w))
+  const Vertex_list ns = neighbours(d.flipped(), m);
+  for (Vertex_index w : CGAL_ext::vertices_around_target(d, m))
+    if (holds(ns, w))
       return "the ends have a common neighbour";
-  for (Face_index f : CGAL_ext::faces_around_target(d.flipped(), m)) {
-    if (!f.is_valid() || f == m.face(d) || f == m.face(o))
-      continue;
-    if (holds(face_vertices(f, m), t))
-      return "another face holds both ends";
-  }
-  return std::string();
+  if (other_face_around_holds(d.flipped(), m.face(d), m.face(o), t, m))
+    return "another face holds both ends";
+  return nullptr;
 }
 
 template <class P>
-std::string why_not_detach_face(Dart d, const Mobius_mesh<P>& m, bool keep_edges)
+const char* why_not_detach_face(Dart d, const Mobius_mesh<P>& m, bool keep_edges)
 {
   if (m.is_border(d))
     return "the dart is on the border";
@@ -157,11 +236,11 @@ std::string why_not_detach_face(Dart d, const Mobius_mesh<P>& m, bool keep_edges
     if (!in_border && !out_border && m.is_border(m.target(c)))
       return "a corner of the face is already on the border (it would be pinched)";
   }
-  return std::string();
+  return nullptr;
 }
 
 template <class P>
-std::string why_not_add_face_to_border(Dart h1, Dart h2, const Mobius_mesh<P>& m)
+const char* why_not_add_face_to_border(Dart h1, Dart h2, const Mobius_mesh<P>& m)
 {
   if (!m.is_border(h1) || !m.is_border(h2))
     return "the darts are not border darts";
@@ -175,44 +254,152 @@ std::string why_not_add_face_to_border(Dart h1, Dart h2, const Mobius_mesh<P>& m
     return "the darts are not on one border loop, walked one way";
   if (are_adjacent(m.target(h2), m.target(h1), m))
     return "the new edge already exists";
-  return std::string();
+  return nullptr;
 }
 
-// The operations without their checks, for collapse_edge(), which checks once.
+// The triangle sides of the edge of `d`: its far corners (`apexes`, at most
+// two), or why a collapse would fold something up there.
 template <class P>
-Dart join_face_unchecked(Dart d, Mobius_mesh<P>& mesh);
-template <class P>
-Dart join_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh);
-
-} // namespace internal
-
-/// \ingroup PkgMobiusMeshEuler
-/// @{
-
-/// Tells whether `flip_edge(d, mesh)` can be done: the edge of `d` has two
-/// triangles, and their far vertices are distinct and not yet adjacent.
-template <class P>
-bool can_flip_edge(Dart d, const Mobius_mesh<P>& mesh)
+const char* why_not_collapse_triangles(Dart d, const Mobius_mesh<P>& m, Vertex_list& apexes)
 {
-  if (mesh.is_border(mesh.edge(d)))
-    return false;
-  const Dart o = mesh.opposite(d);
-  if (mesh.degree(mesh.face(d)) != 3 || mesh.degree(mesh.face(o)) != 3 || mesh.face(d) == mesh.face(o))
-    return false;
-  const Vertex_index c = mesh.target(mesh.next(d)), e = mesh.target(mesh.next(o));
-  return c != e && !internal::are_adjacent(c, e, mesh);
+  const Dart o = m.opposite(d);
+  for (Dart side : {d, o}) {
+    if (m.is_border(side)) {
+      if (has_fewer_sides_than(side, 4, m))
+        return "the edge is on a border loop of three sides";
+      continue;
+    }
+    if (!internal::is_triangle(side, m))
+      continue;
+    apexes.push_back(m.target(m.next(side)));
+    if (m.is_border(m.opposite(m.next(side))) && m.is_border(m.opposite(m.prev(side))))
+      return "a triangle of the edge has its two other sides on the border";
+    const Dart other = side == d ? o : d;
+    if (!m.is_border(other) && face_holds(other, apexes.back(), m))
+      return "the faces of the edge meet again at the far corner of a triangle";
+  }
+  return nullptr;
 }
 
-/// Replaces the diagonal of the two triangles on the edge of `d` by the other
-/// diagonal, keeping the edge's index.
-/// \returns the dart of the new diagonal in the face of `d`, unflipped.
-template <class P>
-Dart flip_edge(Dart d, Mobius_mesh<P>& mesh)
+// What the link condition asks of the star of `p = source(d)`, gathered in
+// one walk of its faces: the ring of p, whether a face other than those of
+// the edge holds `q = target(d)`, and whether a face holds both apexes.
+struct Source_star
 {
-  if (!can_flip_edge(d, mesh))
-    throw Euler_error("Euler::flip_edge: the edge is not the diagonal of two triangles that can turn");
+  Vertex_list ring;
+  bool other_face_holds_q = false;
+  bool a_face_holds_apexes = false;
+};
+
+template <class P>
+Source_star scan_source_star(Dart d, const Vertex_list& apexes, const Mobius_mesh<P>& m)
+{
+  const Dart o = m.opposite(d);
+  const Face_index f1 = m.face(d), f2 = m.face(o);
+  const Vertex_index q = m.target(d);
+  // Null apexes (fewer than two triangles) match no vertex.
+  const Vertex_index a0 = apexes.size() == 2 ? apexes[0] : Vertex_index();
+  const Vertex_index a1 = apexes.size() == 2 ? apexes[1] : Vertex_index();
+  Source_star star;
+  Dart c = o;
+  do {
+    const Dart out = m.next(c);
+    star.ring.push_back(m.target(out));
+    const Face_index f = m.face(c);
+    if (f.is_valid()) {
+      bool q_in = false, a0_in = false, a1_in = false;
+      for (Dart x = out; x != c; x = m.next(x)) { // the face's corners but p
+        const Vertex_index v = m.target(x);
+        q_in |= v == q;
+        a0_in |= v == a0;
+        a1_in |= v == a1;
+      }
+      star.other_face_holds_q = star.other_face_holds_q || (q_in && f != f1 && f != f2);
+      star.a_face_holds_apexes = star.a_face_holds_apexes || (a0_in && a1_in);
+    }
+    c = m.opposite(out);
+  } while (c != o);
+  return star;
+}
+
+// True if a face around `a` holds both `b` and `c`.
+template <class P>
+bool some_face_holds(Vertex_index a, Vertex_index b, Vertex_index c, const Mobius_mesh<P>& m)
+{
+  for (Dart x : CGAL_ext::halfedges_around_target(m.halfedge(a), m))
+    if (!m.is_border(x) && face_holds(x, b, m) && face_holds(x, c, m))
+      return true;
+  return false;
+}
+
+template <class P>
+const char* why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
+{
+  const Vertex_index p = m.source(d), q = m.target(d);
+  Vertex_list apexes;
+  if (const char* why = why_not_collapse_triangles(d, m, apexes))
+    return why;
+  if (m.is_border(p) && m.is_border(q) && !m.is_border(m.edge(d)))
+    return "both ends are on the border but the edge is not";
+  if (has_fewer_edges_than(d, 3, m))
+    return "the kept end would vanish with the triangle of the edge";
+  const Source_star star = scan_source_star(d, apexes, m);
+  Dart c = d;
+  do { // the ring of q, by the far ends of its outgoing darts
+    const Dart out = m.next(c);
+    const Vertex_index k = m.target(out);
+    if (k != p && holds(star.ring, k) && !holds(apexes, k))
+      return "the link condition fails: the ends have a common neighbour that is not across a triangle of the edge";
+    c = m.opposite(out);
+  } while (c != d);
+  if (star.other_face_holds_q)
+    return "another face holds both ends";
+  if (star.a_face_holds_apexes && some_face_holds(q, apexes[0], apexes[1], m))
+    return "two triangles would become one (the mesh is too small around the edge)";
+  return nullptr;
+}
+
+template <class P>
+bool may_remove_center_vertex(Dart d, const Mobius_mesh<P>& mesh)
+{
+  const Vertex_index v = mesh.target(d);
+  if (mesh.is_border(v))
+    return false;
+  boost::container::small_vector<Vertex_index, 32> rim;
+  boost::container::small_vector<Face_index, 32> beyond;
+  for (Dart c : CGAL_ext::halfedges_around_target(d, mesh))
+    for (Dart r = mesh.next(mesh.next(c)); r != c; r = mesh.next(r)) {
+      rim.push_back(mesh.source(r));
+      beyond.push_back(mesh.face(mesh.opposite(r)));
+    }
+  std::sort(rim.begin(), rim.end());
+  std::sort(beyond.begin(), beyond.end());
+  return rim.size() >= 3 && std::adjacent_find(rim.begin(), rim.end()) == rim.end() &&
+         std::unique(beyond.begin(), beyond.end()) - beyond.begin() >= 2;
+}
+
+// Turns the faces at the edge of `d` so that `d` is unflipped and the edge
+// is not Möbius; returns the dart that makes the walk of `d`. Nothing to do
+// in the usual case, told by two bits.
+template <class P>
+Dart orient_edge(Dart d, Mobius_mesh<P>& mesh)
+{
+  if (!d.is_flipped() && !mesh.is_mobius(mesh.edge(d)))
+    return d;
+  const Walk wd = walk_of(d, mesh);
+  CGAL_ext::internal::unflip(d, mesh);
+  d = dart_of(wd, mesh);
   CGAL_ext::internal::make_edge_orientable(d, mesh);
+  return dart_of(wd, mesh);
+}
 
+// The operations without their checks: the public overloads check (or
+// assert) first, collapse_edge() checks once for its parts.
+
+template <class P>
+Dart flip_edge_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  CGAL_ext::internal::make_edge_orientable(d, mesh);
   // Work on the unflipped darts of both triangles: a0 = (a->b) in fa, b0 = (b->a) in fb.
   const Dart a0(d.halfedge(), false);
   const Dart b0(Mobius_mesh<P>::opposite_halfedge(d.halfedge()), false);
@@ -242,17 +429,231 @@ Dart flip_edge(Dart d, Mobius_mesh<P>& mesh)
   return a0;
 }
 
+template <class P>
+Dart join_face_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  d = orient_edge(d, mesh);
+  const Dart od(Mobius_mesh<P>::opposite_halfedge(d.halfedge()), false);
+  const Face_index f = mesh.face(d), g = mesh.face(od);
+  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
+  for (Dart c = on; c != od; c = mesh.next(c))
+    mesh.set_face(c.halfedge(), f);
+  mesh.set_next(dp, on);
+  mesh.set_next(op, dn);
+  mesh.set_halfedge(f, dp.halfedge());
+  for (const Dart& end : {dp, op}) {
+    const Vertex_index v = mesh.target(end);
+    const Halfedge_index stored = mesh.halfedge(v).halfedge();
+    if (stored == d.halfedge() || stored == od.halfedge())
+      mesh.set_halfedge(v, end);
+  }
+  mesh.remove_edge(mesh.edge(d));
+  mesh.remove_face(g);
+  return dp;
+}
+
+template <class P>
+Dart split_face_unchecked(Dart h, Dart g, Mobius_mesh<P>& mesh)
+{
+  if (h.is_flipped()) { // then g is too: turn their face
+    const Walk wg = walk_of(g, mesh);
+    h = CGAL_ext::internal::unflip(h, mesh);
+    g = dart_of(wg, mesh);
+  }
+  const Face_index f = mesh.face(h);
+  const Dart hn = mesh.next(h), gn = mesh.next(g);
+  const Edge_index e = mesh.add_edge(mesh.target(g), mesh.target(h));
+  const Dart x(Mobius_mesh<P>::halfedge(e, 0), false), y(Mobius_mesh<P>::halfedge(e, 1), false);
+  const Face_index fn = mesh.add_face_record(g.halfedge());
+  mesh.set_next(h, x);
+  mesh.set_next(x, gn);
+  mesh.set_next(g, y);
+  mesh.set_next(y, hn);
+  mesh.set_face(x.halfedge(), f);
+  for (Dart c = y; c != g; c = mesh.next(c))
+    mesh.set_face(c.halfedge(), fn);
+  mesh.set_face(g.halfedge(), fn);
+  mesh.set_halfedge(f, h.halfedge());
+  return x;
+}
+
+template <class P>
+Dart join_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  const Walk wd = walk_of(d, mesh);
+  // Orient the star of source(d) so that opposite(d), and with it d, is unflipped.
+  CGAL_ext::internal::orient_star(mesh.opposite(d), mesh);
+  d = dart_of(wd, mesh);
+  CGAL_assertion(!d.is_flipped());
+  const Dart od = mesh.opposite(d);
+  const Vertex_index s = mesh.source(d), t = mesh.target(d);
+  const bool on_border = mesh.is_border(s) || mesh.is_border(t);
+  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
+  // The darts into s (unflipped, after orient_star()) now end at t; the
+  // walk around s reads links only, not the targets it changes.
+  for (Dart c = mesh.opposite(mesh.next(od)); c != od; c = mesh.opposite(mesh.next(c)))
+    mesh.set_target(c.halfedge(), t);
+  mesh.set_next(dp, dn);
+  mesh.set_next(op, on);
+  for (const Dart& side : {d, od}) {
+    const Face_index f = mesh.face(side);
+    if (f.is_valid() && mesh.halfedge(f).halfedge() == side.halfedge())
+      mesh.set_halfedge(f, (side == d ? dp : op).halfedge());
+  }
+  mesh.remove_edge(mesh.edge(d));
+  mesh.remove_vertex(s);
+  if (on_border) // t must store a border dart: look for it
+    CGAL_ext::internal::reset_vertex_halfedge(t, op, mesh);
+  else
+    mesh.set_halfedge(t, op);
+  return op;
+}
+
+template <class P>
+Dart remove_center_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  d = CGAL_ext::internal::orient_star(d, mesh);
+  const Vertex_index v = mesh.target(d);
+  const Face_index kept = mesh.face(d);
+  boost::container::small_vector<Dart, 16> into;
+  for (Dart c : CGAL_ext::halfedges_around_target(d, mesh))
+    into.push_back(c);
+  const Dart result = mesh.prev(d);
+  // Around v the rim chains run against the circulation: chain i+1 ends where chain i starts.
+  const std::size_t k = into.size();
+  boost::container::small_vector<Dart, 16> first(k), last(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    first[i] = mesh.next(mesh.next(into[i]));
+    last[i] = mesh.prev(into[i]);
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    for (Dart r = first[i];; r = mesh.next(r)) {
+      mesh.set_face(r.halfedge(), kept);
+      if (r == last[i])
+        break;
+    }
+    mesh.set_next(last[(i + 1) % k], first[i]);
+  }
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vertex_index r = mesh.target(last[i]);
+    const Halfedge_index stored = mesh.halfedge(r).halfedge();
+    if (Mobius_mesh<P>::edge(stored) == mesh.edge(into[i]) ||
+        Mobius_mesh<P>::edge(stored) == mesh.edge(mesh.next(into[i])))
+      mesh.set_halfedge(r, last[i]);
+    mesh.remove_edge(mesh.edge(into[i]));
+    if (mesh.face(into[i]) != kept)
+      mesh.remove_face(mesh.face(into[i]));
+  }
+  mesh.set_halfedge(kept, result.halfedge());
+  mesh.remove_vertex(v);
+  return result;
+}
+
+template <class P>
+Dart make_hole_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  const Walk wd = walk_of(d, mesh);
+  CGAL_ext::internal::detach_face(mesh.face(d), mesh, false);
+  return dart_of(wd, mesh);
+}
+
+template <class P>
+Dart add_face_to_border_unchecked(Dart h1, Dart h2, Mobius_mesh<P>& mesh)
+{
+  std::vector<Dart> cycle;
+  for (Dart c = mesh.next(h1);; c = mesh.next(c)) {
+    cycle.push_back(c);
+    if (c == h2)
+      break;
+  }
+  const Dart before = h1, after = mesh.next(h2);
+  const Vertex_index a = mesh.target(h1), b = mesh.target(h2);
+  const Edge_index e = mesh.add_edge(a, b);
+  const Dart inner(Mobius_mesh<P>::halfedge(e, 0), false), outer(Mobius_mesh<P>::halfedge(e, 1), false);
+  mesh.set_next(before, outer);
+  mesh.set_next(outer, after);
+  cycle.push_back(inner);
+  CGAL_ext::internal::make_face_of_border_chain(cycle, mesh);
+  for (std::size_t i = 0; i + 2 < cycle.size(); ++i)
+    mesh.set_halfedge(mesh.target(Dart(cycle[i].halfedge(), false)), Dart(cycle[i].halfedge(), false));
+  mesh.set_halfedge(a, before);
+  mesh.set_halfedge(b, outer);
+  return inner;
+}
+
+template <class P>
+Vertex_index collapse_edge_unchecked(Dart d, Mobius_mesh<P>& mesh)
+{
+  const Walk wd = walk_of(d, mesh);
+  const Vertex_index p = mesh.source(d), q = mesh.target(d);
+  for (bool first_side : {true, false}) {
+    d = dart_of(wd, mesh);
+    const Dart side = first_side ? d : mesh.opposite(d);
+    if (mesh.is_border(side) || !internal::is_triangle(side, mesh))
+      continue;
+    // The triangle's side that ends at its first corner (at p on one side, at
+    // q on the other) goes: the other side becomes the merged edge.
+    const Dart gone = mesh.prev(side);
+    if (!mesh.is_border(mesh.opposite(gone))) {
+      join_face_unchecked(gone, mesh);
+    } else {
+      CGAL_ext::internal::detach_face(mesh.face(side), mesh, true);
+      if (mesh.is_removed(p))
+        return q; // p had no other face
+    }
+  }
+  join_vertex_unchecked(dart_of(wd, mesh), mesh);
+  return q;
+}
+
+} // namespace internal
+
+/// \ingroup PkgMobiusMeshEuler
+/// @{
+
+/// Tells whether `flip_edge(d, mesh)` can be done: the edge of `d` has two
+/// triangles, and their far vertices are distinct and not yet adjacent.
+template <class P>
+bool can_flip_edge(Dart d, const Mobius_mesh<P>& mesh)
+{
+  if (mesh.is_border(mesh.edge(d)))
+    return false;
+  const Dart o = mesh.opposite(d);
+  if (!internal::is_triangle(d, mesh) || !internal::is_triangle(o, mesh) || mesh.face(d) == mesh.face(o))
+    return false;
+  const Vertex_index c = mesh.target(mesh.next(d)), e = mesh.target(mesh.next(o));
+  return c != e && !internal::are_adjacent(c, e, mesh);
+}
+
+/// Replaces the diagonal of the two triangles on the edge of `d` by the other
+/// diagonal, keeping the edge's index.
+/// \returns the dart of the new diagonal in the face of `d`, unflipped.
+/// \throws Euler_error if `can_flip_edge(d, mesh)` is false; the mesh is unchanged.
+template <class P>
+Dart flip_edge(Dart d, Mobius_mesh<P>& mesh)
+{
+  if (!can_flip_edge(d, mesh))
+    throw Euler_error("Euler::flip_edge: the edge is not the diagonal of two triangles that can turn");
+  return internal::flip_edge_unchecked(d, mesh);
+}
+
+/// `flip_edge(d, mesh)` without its check.
+/// \pre `can_flip_edge(d, mesh)`
+template <class P>
+Dart flip_edge(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
+{
+  CGAL_precondition_msg(can_flip_edge(d, mesh), "Euler::flip_edge: the edge cannot turn");
+  return internal::flip_edge_unchecked(d, mesh);
+}
+
 /// Splits the edge of `d` in two with a new vertex (at the origin: set its
-/// point): afterwards `d` runs from the new vertex to `target(d)`.
+/// point): afterwards `d` runs from the new vertex to `target(d)`. It has no
+/// check: every edge can be split.
 /// \returns the new dart `n` from `source(d)` to the new vertex, with `next(n) == d`.
 template <class P>
 Dart split_edge(Dart d, Mobius_mesh<P>& mesh)
 {
-  const internal::Walk wd = internal::walk_of(d, mesh);
-  CGAL_ext::internal::unflip(d, mesh);
-  d = internal::dart_of(wd, mesh);
-  CGAL_ext::internal::make_edge_orientable(d, mesh);
-  d = internal::dart_of(wd, mesh);
+  d = internal::orient_edge(d, mesh);
   const Halfedge_index h = d.halfedge(), o = Mobius_mesh<P>::opposite_halfedge(h);
   const Dart od(o, false);
   const Vertex_index a = mesh.source(d);
@@ -283,47 +684,27 @@ Dart split_edge(Dart d, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_join_face(Dart d, const Mobius_mesh<P>& mesh)
 {
-  return internal::why_not_join_face(d, mesh).empty();
+  return internal::why_not_join_face(d, mesh) == nullptr;
 }
 
 /// Removes the edge of `d`, merging its two faces into the face of `d`.
 /// \returns `prev(d)`, now in the merged face.
+/// \throws Euler_error if `can_join_face(d, mesh)` is false; the mesh is unchanged.
 template <class P>
 Dart join_face(Dart d, Mobius_mesh<P>& mesh)
 {
-  internal::refuse_unless_empty("join_face", internal::why_not_join_face(d, mesh));
+  internal::refuse_if("join_face", internal::why_not_join_face(d, mesh));
   return internal::join_face_unchecked(d, mesh);
 }
 
-namespace internal {
-
+/// `join_face(d, mesh)` without its check.
+/// \pre `can_join_face(d, mesh)`
 template <class P>
-Dart join_face_unchecked(Dart d, Mobius_mesh<P>& mesh)
+Dart join_face(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
 {
-  const internal::Walk wd = internal::walk_of(d, mesh);
-  d = CGAL_ext::internal::unflip(d, mesh);
-  CGAL_ext::internal::make_edge_orientable(d, mesh);
-  d = internal::dart_of(wd, mesh);
-  const Dart od(Mobius_mesh<P>::opposite_halfedge(d.halfedge()), false);
-  const Face_index f = mesh.face(d), g = mesh.face(od);
-  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
-  for (Dart c = on; c != od; c = mesh.next(c))
-    mesh.set_face(c.halfedge(), f);
-  mesh.set_next(dp, on);
-  mesh.set_next(op, dn);
-  mesh.set_halfedge(f, dp.halfedge());
-  for (const Dart& end : {dp, op}) {
-    const Vertex_index v = mesh.target(end);
-    const Halfedge_index stored = mesh.halfedge(v).halfedge();
-    if (stored == d.halfedge() || stored == od.halfedge())
-      mesh.set_halfedge(v, end);
-  }
-  mesh.remove_edge(mesh.edge(d));
-  mesh.remove_face(g);
-  return dp;
+  CGAL_precondition_msg(can_join_face(d, mesh), "Euler::join_face: the faces cannot merge");
+  return internal::join_face_unchecked(d, mesh);
 }
-
-} // namespace internal
 
 /// Tells whether `split_face(h, g, mesh)` can be done: `h` and `g` walk one
 /// face the same way, and their targets are neither adjacent corners nor
@@ -331,34 +712,27 @@ Dart join_face_unchecked(Dart d, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_split_face(Dart h, Dart g, const Mobius_mesh<P>& mesh)
 {
-  return internal::why_not_split_face(h, g, mesh).empty();
+  return internal::why_not_split_face(h, g, mesh) == nullptr;
 }
 
 /// Splits the face of `h` and `g` with a new edge from `target(h)` to
 /// `target(g)`; `g` goes to the new face.
 /// \returns the new dart `n` with `next(h) == n` and `target(n) == target(g)`.
+/// \throws Euler_error if `can_split_face(h, g, mesh)` is false; the mesh is unchanged.
 template <class P>
 Dart split_face(Dart h, Dart g, Mobius_mesh<P>& mesh)
 {
-  internal::refuse_unless_empty("split_face", internal::why_not_split_face(h, g, mesh));
-  const internal::Walk wg = internal::walk_of(g, mesh);
-  h = CGAL_ext::internal::unflip(h, mesh);
-  g = internal::dart_of(wg, mesh);
-  const Face_index f = mesh.face(h);
-  const Dart hn = mesh.next(h), gn = mesh.next(g);
-  const Edge_index e = mesh.add_edge(mesh.target(g), mesh.target(h));
-  const Dart x(Mobius_mesh<P>::halfedge(e, 0), false), y(Mobius_mesh<P>::halfedge(e, 1), false);
-  const Face_index fn = mesh.add_face_record(g.halfedge());
-  mesh.set_next(h, x);
-  mesh.set_next(x, gn);
-  mesh.set_next(g, y);
-  mesh.set_next(y, hn);
-  mesh.set_face(x.halfedge(), f);
-  for (Dart c = y; c != g; c = mesh.next(c))
-    mesh.set_face(c.halfedge(), fn);
-  mesh.set_face(g.halfedge(), fn);
-  mesh.set_halfedge(f, h.halfedge());
-  return x;
+  internal::refuse_if("split_face", internal::why_not_split_face(h, g, mesh));
+  return internal::split_face_unchecked(h, g, mesh);
+}
+
+/// `split_face(h, g, mesh)` without its check.
+/// \pre `can_split_face(h, g, mesh)`
+template <class P>
+Dart split_face(Dart h, Dart g, Mobius_mesh<P>& mesh, Unchecked_t)
+{
+  CGAL_precondition_msg(can_split_face(h, g, mesh), "Euler::split_face: the face cannot be split there");
+  return internal::split_face_unchecked(h, g, mesh);
 }
 
 /// Tells whether `join_vertex(d, mesh)` can be done: the faces (or border
@@ -368,52 +742,28 @@ Dart split_face(Dart h, Dart g, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_join_vertex(Dart d, const Mobius_mesh<P>& mesh)
 {
-  return internal::why_not_join_vertex(d, mesh).empty();
+  return internal::why_not_join_vertex(d, mesh) == nullptr;
 }
 
 /// Joins `source(d)` into `target(d)`, removing the edge of `d` and
 /// `source(d)`.
 /// \returns `prev(opposite(d))`, a dart into the kept vertex.
+/// \throws Euler_error if `can_join_vertex(d, mesh)` is false; the mesh is unchanged.
 template <class P>
 Dart join_vertex(Dart d, Mobius_mesh<P>& mesh)
 {
-  internal::refuse_unless_empty("join_vertex", internal::why_not_join_vertex(d, mesh));
+  internal::refuse_if("join_vertex", internal::why_not_join_vertex(d, mesh));
   return internal::join_vertex_unchecked(d, mesh);
 }
 
-namespace internal {
-
+/// `join_vertex(d, mesh)` without its check.
+/// \pre `can_join_vertex(d, mesh)`
 template <class P>
-Dart join_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh)
+Dart join_vertex(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
 {
-  const internal::Walk wd = internal::walk_of(d, mesh);
-  // Orient the star of source(d) so that opposite(d), and with it d, is unflipped.
-  CGAL_ext::internal::orient_star(mesh.opposite(d), mesh);
-  d = internal::dart_of(wd, mesh);
-  CGAL_assertion(!d.is_flipped());
-  const Dart od = mesh.opposite(d);
-  const Vertex_index s = mesh.source(d), t = mesh.target(d);
-  boost::container::small_vector<Dart, 16> into_s;
-  for (Dart c : CGAL_ext::halfedges_around_target(od, mesh))
-    if (c != od)
-      into_s.push_back(c);
-  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
-  for (Dart c : into_s)
-    mesh.set_target(c.halfedge(), t);
-  mesh.set_next(dp, dn);
-  mesh.set_next(op, on);
-  for (const Dart& side : {d, od}) {
-    const Face_index f = mesh.face(side);
-    if (f.is_valid() && mesh.halfedge(f).halfedge() == side.halfedge())
-      mesh.set_halfedge(f, (side == d ? dp : op).halfedge());
-  }
-  mesh.remove_edge(mesh.edge(d));
-  mesh.remove_vertex(s);
-  CGAL_ext::internal::reset_vertex_halfedge(t, op, mesh);
-  return op;
+  CGAL_precondition_msg(can_join_vertex(d, mesh), "Euler::join_vertex: the ends cannot be joined");
+  return internal::join_vertex_unchecked(d, mesh);
 }
-
-} // namespace internal
 
 /// Splits `target(h1)` (which is `target(h2)`) in two joined by a new edge:
 /// the darts into it from `opposite(next(h1))` round to `h2` go to the new
@@ -494,65 +844,28 @@ Dart add_center_vertex(Dart d, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_remove_center_vertex(Dart d, const Mobius_mesh<P>& mesh)
 {
-  const Vertex_index v = mesh.target(d);
-  if (mesh.is_border(v))
-    return false;
-  std::vector<Vertex_index> rim;
-  std::vector<Face_index> beyond;
-  for (Dart c : CGAL_ext::halfedges_around_target(d, mesh))
-    for (Dart r = mesh.next(mesh.next(c)); r != c; r = mesh.next(r)) {
-      rim.push_back(mesh.source(r));
-      beyond.push_back(mesh.face(mesh.opposite(r)));
-    }
-  std::sort(rim.begin(), rim.end());
-  std::sort(beyond.begin(), beyond.end());
-  return rim.size() >= 3 && std::adjacent_find(rim.begin(), rim.end()) == rim.end() &&
-         std::unique(beyond.begin(), beyond.end()) - beyond.begin() >= 2;
+  return internal::may_remove_center_vertex(d, mesh);
 }
 
 /// Removes `target(d)` and its edges, merging its faces into the face of `d`.
 /// \returns `prev(d)` (before the operation), now a dart of the merged face.
+/// \throws Euler_error if `can_remove_center_vertex(d, mesh)` is false; the mesh is unchanged.
 template <class P>
 Dart remove_center_vertex(Dart d, Mobius_mesh<P>& mesh)
 {
   if (!can_remove_center_vertex(d, mesh))
     throw Euler_error("Euler::remove_center_vertex: the vertex is on the border, or its faces would merge "
                       "into a face that visits a vertex twice");
-  d = CGAL_ext::internal::orient_star(d, mesh);
-  const Vertex_index v = mesh.target(d);
-  const Face_index kept = mesh.face(d);
-  std::vector<Dart> into;
-  for (Dart c : CGAL_ext::halfedges_around_target(d, mesh))
-    into.push_back(c);
-  const Dart result = mesh.prev(d);
-  // Around v the rim chains run against the circulation: chain i+1 ends where chain i starts.
-  const std::size_t k = into.size();
-  std::vector<Dart> first(k), last(k);
-  for (std::size_t i = 0; i < k; ++i) {
-    first[i] = mesh.next(mesh.next(into[i]));
-    last[i] = mesh.prev(into[i]);
-  }
-  for (std::size_t i = 0; i < k; ++i) {
-    for (Dart r = first[i];; r = mesh.next(r)) {
-      mesh.set_face(r.halfedge(), kept);
-      if (r == last[i])
-        break;
-    }
-    mesh.set_next(last[(i + 1) % k], first[i]);
-  }
-  for (std::size_t i = 0; i < k; ++i) {
-    const Vertex_index r = mesh.target(last[i]);
-    const Halfedge_index stored = mesh.halfedge(r).halfedge();
-    if (Mobius_mesh<P>::edge(stored) == mesh.edge(into[i]) ||
-        Mobius_mesh<P>::edge(stored) == mesh.edge(mesh.next(into[i])))
-      mesh.set_halfedge(r, last[i]);
-    mesh.remove_edge(mesh.edge(into[i]));
-    if (mesh.face(into[i]) != kept)
-      mesh.remove_face(mesh.face(into[i]));
-  }
-  mesh.set_halfedge(kept, result.halfedge());
-  mesh.remove_vertex(v);
-  return result;
+  return internal::remove_center_vertex_unchecked(d, mesh);
+}
+
+/// `remove_center_vertex(d, mesh)` without its check.
+/// \pre `can_remove_center_vertex(d, mesh)`
+template <class P>
+Dart remove_center_vertex(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
+{
+  CGAL_precondition_msg(can_remove_center_vertex(d, mesh), "Euler::remove_center_vertex: the faces cannot merge");
+  return internal::remove_center_vertex_unchecked(d, mesh);
 }
 
 /// Tells whether `remove_face(d, mesh)` can be done: `d` is in a face, and no
@@ -560,15 +873,25 @@ Dart remove_center_vertex(Dart d, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_remove_face(Dart d, const Mobius_mesh<P>& mesh)
 {
-  return internal::why_not_detach_face(d, mesh, false).empty();
+  return internal::why_not_detach_face(d, mesh, false) == nullptr;
 }
 
 /// Removes the face of `d`: its sides become border, edges and vertices left
 /// without a face are removed.
+/// \throws Euler_error if `can_remove_face(d, mesh)` is false; the mesh is unchanged.
 template <class P>
 void remove_face(Dart d, Mobius_mesh<P>& mesh)
 {
-  internal::refuse_unless_empty("remove_face", internal::why_not_detach_face(d, mesh, false));
+  internal::refuse_if("remove_face", internal::why_not_detach_face(d, mesh, false));
+  CGAL_ext::internal::detach_face(mesh.face(d), mesh, true);
+}
+
+/// `remove_face(d, mesh)` without its check.
+/// \pre `can_remove_face(d, mesh)`
+template <class P>
+void remove_face(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
+{
+  CGAL_precondition_msg(can_remove_face(d, mesh), "Euler::remove_face: a corner would be pinched");
   CGAL_ext::internal::detach_face(mesh.face(d), mesh, true);
 }
 
@@ -577,24 +900,33 @@ void remove_face(Dart d, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_make_hole(Dart d, const Mobius_mesh<P>& mesh)
 {
-  return internal::why_not_detach_face(d, mesh, true).empty();
+  return internal::why_not_detach_face(d, mesh, true) == nullptr;
 }
 
 /// Removes the face of `d`, leaving a hole whose border is its sides.
 /// \returns the dart of the border that makes the walk of `d`.
+/// \throws Euler_error if `can_make_hole(d, mesh)` is false; the mesh is unchanged.
 template <class P>
 Dart make_hole(Dart d, Mobius_mesh<P>& mesh)
 {
-  internal::refuse_unless_empty("make_hole", internal::why_not_detach_face(d, mesh, true));
-  const internal::Walk wd = internal::walk_of(d, mesh);
-  CGAL_ext::internal::detach_face(mesh.face(d), mesh, false);
-  return internal::dart_of(wd, mesh);
+  internal::refuse_if("make_hole", internal::why_not_detach_face(d, mesh, true));
+  return internal::make_hole_unchecked(d, mesh);
+}
+
+/// `make_hole(d, mesh)` without its check.
+/// \pre `can_make_hole(d, mesh)`
+template <class P>
+Dart make_hole(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
+{
+  CGAL_precondition_msg(can_make_hole(d, mesh), "Euler::make_hole: the face cannot become a hole");
+  return internal::make_hole_unchecked(d, mesh);
 }
 
 /// Fills the border loop of `d` with one face. A loop that passes a Möbius
 /// connection (a loop of a Möbius strip) gives a face with Möbius edges:
 /// filling the border of a Möbius strip makes a projective plane.
 /// \returns the new face.
+/// \throws Euler_error if `d` is not a border dart or its loop has fewer than three sides.
 template <class P>
 Face_index fill_hole(Dart d, Mobius_mesh<P>& mesh)
 {
@@ -617,94 +949,28 @@ Face_index fill_hole(Dart d, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_add_face_to_border(Dart h1, Dart h2, const Mobius_mesh<P>& mesh)
 {
-  return internal::why_not_add_face_to_border(h1, h2, mesh).empty();
+  return internal::why_not_add_face_to_border(h1, h2, mesh) == nullptr;
 }
 
 /// Adds a face whose sides are the border darts after `h1` up to `h2` and a
 /// new edge from `target(h2)` to `target(h1)`; `h1` stays on the border.
 /// \returns the dart of the new edge in the new face.
+/// \throws Euler_error if `can_add_face_to_border(h1, h2, mesh)` is false; the mesh is unchanged.
 template <class P>
 Dart add_face_to_border(Dart h1, Dart h2, Mobius_mesh<P>& mesh)
 {
-  internal::refuse_unless_empty("add_face_to_border", internal::why_not_add_face_to_border(h1, h2, mesh));
-  std::vector<Dart> cycle;
-  for (Dart c = mesh.next(h1);; c = mesh.next(c)) {
-    cycle.push_back(c);
-    if (c == h2)
-      break;
-  }
-  const Dart before = h1, after = mesh.next(h2);
-  const Vertex_index a = mesh.target(h1), b = mesh.target(h2);
-  const Edge_index e = mesh.add_edge(a, b);
-  const Dart inner(Mobius_mesh<P>::halfedge(e, 0), false), outer(Mobius_mesh<P>::halfedge(e, 1), false);
-  mesh.set_next(before, outer);
-  mesh.set_next(outer, after);
-  cycle.push_back(inner);
-  CGAL_ext::internal::make_face_of_border_chain(cycle, mesh);
-  for (std::size_t i = 0; i + 2 < cycle.size(); ++i)
-    mesh.set_halfedge(mesh.target(Dart(cycle[i].halfedge(), false)), Dart(cycle[i].halfedge(), false));
-  mesh.set_halfedge(a, before);
-  mesh.set_halfedge(b, outer);
-  return inner;
+  internal::refuse_if("add_face_to_border", internal::why_not_add_face_to_border(h1, h2, mesh));
+  return internal::add_face_to_border_unchecked(h1, h2, mesh);
 }
 
-namespace internal {
-
+/// `add_face_to_border(h1, h2, mesh)` without its check.
+/// \pre `can_add_face_to_border(h1, h2, mesh)`
 template <class P>
-bool some_face_holds(Vertex_index a, Vertex_index b, Vertex_index c, const Mobius_mesh<P>& m)
+Dart add_face_to_border(Dart h1, Dart h2, Mobius_mesh<P>& mesh, Unchecked_t)
 {
-  for (Face_index f : CGAL_ext::faces_around_target(m.halfedge(a), m)) {
-    if (!f.is_valid())
-      continue;
-    const Vertex_list vs = face_vertices(f, m);
-    if (holds(vs, b) && holds(vs, c))
-      return true;
-  }
-  return false;
+  CGAL_precondition_msg(can_add_face_to_border(h1, h2, mesh), "Euler::add_face_to_border: no face fits there");
+  return internal::add_face_to_border_unchecked(h1, h2, mesh);
 }
-
-template <class P>
-std::string why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
-{
-  const Dart o = m.opposite(d);
-  const Vertex_index p = m.source(d), q = m.target(d);
-  boost::container::small_vector<Vertex_index, 2> apexes;
-  for (Dart side : {d, o}) {
-    if (m.is_border(side)) {
-      if (border_loop_length(side, m) < 4)
-        return "the edge is on a border loop of three sides";
-      continue;
-    }
-    if (m.degree(m.face(side)) != 3)
-      continue;
-    apexes.push_back(m.target(m.next(side)));
-    if (m.is_border(m.opposite(m.next(side))) && m.is_border(m.opposite(m.prev(side))))
-      return "a triangle of the edge has its two other sides on the border";
-    const Dart other = side == d ? o : d;
-    if (!m.is_border(other) && holds(face_vertices(m.face(other), m), apexes.back()))
-      return "the faces of the edge meet again at the far corner of a triangle";
-  }
-  if (m.is_border(p) && m.is_border(q) && !m.is_border(m.edge(d)))
-    return "both ends are on the border but the edge is not";
-  if (m.degree(q) < 3)
-    return "the kept end would vanish with the triangle of the edge";
-  const Vertex_list np = neighbours(o, m);
-  for (Vertex_index k : CGAL_ext::vertices_around_target(d, m))
-    if (k != p && holds(np, k) && std::find(apexes.begin(), apexes.end(), k) == apexes.end())
-      return "the link condition fails: the ends have a common neighbour that is not across a triangle of the edge";
-  for (Face_index f : CGAL_ext::faces_around_target(o, m)) {
-    if (!f.is_valid() || f == m.face(d) || f == m.face(o))
-      continue;
-    if (holds(face_vertices(f, m), q))
-      return "another face holds both ends";
-  }
-  if (apexes.size() == 2 && some_face_holds(p, apexes[0], apexes[1], m) &&
-      some_face_holds(q, apexes[0], apexes[1], m))
-    return "two triangles would become one (the mesh is too small around the edge)";
-  return std::string();
-}
-
-} // namespace internal
 
 /// Tells whether `collapse_edge(d, mesh)` keeps the mesh a 2-manifold without
 /// degenerate faces: the link condition (every common neighbour of the ends
@@ -715,7 +981,7 @@ std::string why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
 template <class P>
 bool does_satisfy_link_condition(Dart d, const Mobius_mesh<P>& mesh)
 {
-  return internal::why_not_collapse_edge(d, mesh).empty();
+  return internal::why_not_collapse_edge(d, mesh) == nullptr;
 }
 
 /// Collapses the edge of `d`: `source(d)` is joined into `target(d)`, and a
@@ -724,30 +990,21 @@ bool does_satisfy_link_condition(Dart d, const Mobius_mesh<P>& mesh)
 /// `opposite(d)` on the other) is removed by joining the triangle with the
 /// face across it, or the triangle is removed if that side is on the border.
 /// \returns the kept vertex, `target(d)`.
+/// \throws Euler_error if `does_satisfy_link_condition(d, mesh)` is false; the mesh is unchanged.
 template <class P>
 Vertex_index collapse_edge(Dart d, Mobius_mesh<P>& mesh)
 {
-  internal::refuse_unless_empty("collapse_edge", internal::why_not_collapse_edge(d, mesh));
-  const internal::Walk wd = internal::walk_of(d, mesh);
-  const Vertex_index p = mesh.source(d), q = mesh.target(d);
-  for (bool first_side : {true, false}) {
-    d = internal::dart_of(wd, mesh);
-    const Dart side = first_side ? d : mesh.opposite(d);
-    if (mesh.is_border(side) || mesh.degree(mesh.face(side)) != 3)
-      continue;
-    // The triangle's side that ends at its first corner (at p on one side, at
-    // q on the other) goes: the other side becomes the merged edge.
-    const Dart gone = mesh.prev(side);
-    if (!mesh.is_border(mesh.opposite(gone))) {
-      internal::join_face_unchecked(gone, mesh);
-    } else {
-      CGAL_ext::internal::detach_face(mesh.face(side), mesh, true);
-      if (mesh.is_removed(p))
-        return q; // p had no other face
-    }
-  }
-  internal::join_vertex_unchecked(internal::dart_of(wd, mesh), mesh);
-  return q;
+  internal::refuse_if("collapse_edge", internal::why_not_collapse_edge(d, mesh));
+  return internal::collapse_edge_unchecked(d, mesh);
+}
+
+/// `collapse_edge(d, mesh)` without its check, as `CGAL::Euler::collapse_edge()`.
+/// \pre `does_satisfy_link_condition(d, mesh)`
+template <class P>
+Vertex_index collapse_edge(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
+{
+  CGAL_precondition_msg(does_satisfy_link_condition(d, mesh), "Euler::collapse_edge: the link condition fails");
+  return internal::collapse_edge_unchecked(d, mesh);
 }
 
 /// @}

@@ -81,6 +81,21 @@ std::vector<Face_index> star_faces(Dart d, const Mobius_mesh<P>& m)
   return faces;
 }
 
+// True if an edge at `target(d)` is Möbius: only then can the faces around
+// it disagree. One circulation, without the checks of the general walk.
+template <class P>
+bool star_has_mobius_edge(Dart d, const Mobius_mesh<P>& m)
+{
+  Dart c = d;
+  do {
+    const Dart out = m.next(c);
+    if (m.is_mobius(m.edge(out)))
+      return true;
+    c = m.opposite(out);
+  } while (c != d);
+  return false;
+}
+
 // Orients the faces around `target(d)` consistently, with `d` unflipped: the
 // star of a vertex of a 2-manifold is a disk, so this is always possible, and
 // afterwards every dart into or out of the vertex (border darts included) is
@@ -88,8 +103,10 @@ std::vector<Face_index> star_faces(Dart d, const Mobius_mesh<P>& m)
 template <class P>
 Dart orient_star(Dart d, Mobius_mesh<P>& m)
 {
+  if (!d.is_flipped() && !star_has_mobius_edge(d, m))
+    return d; // the usual case: nothing to turn, and d already runs the right way
   const Walk w = walk_of(d, m);
-  const Vertex_index v = m.target(d);
+  CGAL_assertion_code(const Vertex_index v = m.target(d);)
   // Walk the fan from a face dart, turning each next face to agree with the last.
   Dart c = m.is_border(d) ? m.opposite(m.next(d)) : d; // a face dart into v
   Dart start = c;

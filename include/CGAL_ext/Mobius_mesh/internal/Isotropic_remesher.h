@@ -313,7 +313,7 @@ private:
       if (check_collapse(c, mesh_.point(kept), mesh_, collapse_options_) != Collapse_verdict::allowed)
         continue;
       const auto merged = merged_edges(c);
-      Euler::collapse_edge(c, mesh_);
+      Euler::collapse_edge(c, mesh_, Euler::unchecked); // check_collapse() checked the link condition
       // Of two sides of a triangle that become one edge, collapse_edge()
       // keeps one index: it keeps the sharpness of both.
       if (sharpness_)
@@ -351,7 +351,7 @@ private:
       if (after >= before || !keeps_valence_at_least_three(a) || !keeps_valence_at_least_three(b) ||
           !flip_keeps_side(a, b, c, x))
         continue;
-      Euler::flip_edge(d, mesh_);
+      Euler::flip_edge(d, mesh_, Euler::unchecked); // can_flip_edge() said yes above
       check_star(a);
       check_star(b);
     }

@@ -89,7 +89,17 @@ public:
     : Base_property_array(std::move(name)), default_(std::move(default_value))
   {}
 
-  void resize(std::size_t n) override { data_.resize(n, Stored(default_)); }
+  void resize(std::size_t n) override
+  {
+    // Euler operations grow the arrays by one or two elements at a time: a
+    // push_back is inline, a filling resize an out-of-line call.
+    if (n > data_.size() && n - data_.size() <= 2) {
+      while (data_.size() < n)
+        data_.push_back(Stored(default_));
+    } else {
+      data_.resize(n, Stored(default_));
+    }
+  }
   void reserve(std::size_t n) override { data_.reserve(n); }
   void shrink_to_fit() override { data_.shrink_to_fit(); }
   void append_from(const Base_property_array& other, std::size_t from, std::size_t n) override
