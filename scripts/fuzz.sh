@@ -6,11 +6,14 @@
 # <build>/findings/. Exits non-zero on a finding.
 #
 #   FUZZ_SECONDS=3600 FUZZ_JOBS=2 bash scripts/fuzz.sh   # an hour per reader
+#   FUZZ_SEED=1 bash scripts/fuzz.sh                     # the same random choices each run
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${CGAL_EXT_FUZZ_BUILD_DIR:-build/fuzz}
 seconds=${FUZZ_SECONDS:-20}
 jobs=${FUZZ_JOBS:-1}
+seed=()
+if [ -n "${FUZZ_SEED:-}" ]; then seed=(-seed="$FUZZ_SEED"); fi
 launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="${CLANGXX:-clang++}" -DCMAKE_BUILD_TYPE=Debug \
@@ -35,7 +38,7 @@ for format in obj off ply; do
   if [ "$jobs" -gt 1 ]; then parallel=(-jobs="$jobs" -workers="$jobs"); fi
   (cd "$build/findings" && "$OLDPWD/$target" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=2048 \
       -timeout=10 -dict="$OLDPWD/test/fuzz/$format.dict" -artifact_prefix="$format-" "${parallel[@]}" \
-      -print_final_stats=1 "$OLDPWD/$corpus" "$OLDPWD/$seeds") >"$build/findings/fuzz_$format.log" 2>&1 ||
+      -print_final_stats=1 "${seed[@]}" "$OLDPWD/$corpus" "$OLDPWD/$seeds") >"$build/findings/fuzz_$format.log" 2>&1 ||
     { tail -60 "$build/findings/fuzz_$format.log"; exit 1; }
   grep -h "stat::number_of_executed_units\|cov:" "$build/findings/fuzz_$format.log" | tail -2 || true
 done

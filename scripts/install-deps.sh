@@ -4,10 +4,11 @@ set -euo pipefail
 
 required=(cmake g++ make ccache libcgal-dev libboost-dev libeigen3-dev libgmp-dev libmpfr-dev
           libgtest-dev libbenchmark-dev libtbb-dev doxygen)
-# Peers used only for reference tests and benchmarks, and the viewer (CGAL's
-# Qt5 component, with a virtual screen and software OpenGL for its tests):
+# Peers used only for reference tests and benchmarks, the viewer (CGAL's Qt5
+# component, with a virtual screen and software OpenGL for its tests) and the
+# readers' fuzz targets (clang's libFuzzer):
 # installed where the package archive has them, skipped cleanly when absent.
-optional=(libosd-dev libopenmesh-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri)
+optional=(libosd-dev libopenmesh-dev libcgal-qt5-dev xvfb xauth libgl1-mesa-dri clang libclang-rt-dev)
 
 missing() { for p in "$@"; do dpkg -s "$p" >/dev/null 2>&1 || echo "$p"; done; }
 

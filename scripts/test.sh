@@ -9,6 +9,21 @@ bash scripts/install-deps.sh
 # public class, function or named parameter.
 bash scripts/reference.sh
 
+# The readers' fuzz targets (clang's libFuzzer, ASan + UBSan) build beside
+# the test suite; each replays its seed corpus and fuzzes for 20 s with a
+# fixed seed. Left out, with a note, where clang has no libFuzzer.
+mkdir -p build
+fuzz_log=$PWD/build/fuzz.log
+fuzz_pid=
+if command -v clang++ >/dev/null 2>&1 &&
+   echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |
+     clang++ -x c++ -fsanitize=fuzzer - -o build/fuzz_probe >/dev/null 2>&1; then
+  (FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_SEED=${FUZZ_SEED:-1} bash scripts/fuzz.sh >"$fuzz_log" 2>&1) &
+  fuzz_pid=$!
+else
+  echo "note: clang++ with libFuzzer not found: the readers' fuzz targets are not run" >&2
+fi
+
 build=${CGAL_EXT_TEST_BUILD_DIR:-build/test}
 launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
@@ -19,5 +34,8 @@ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1
 cmake --build "$build" -j "$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-cd "$build"
-ctest --output-on-failure -j "$(nproc)"
+(cd "$build" && ctest --output-on-failure -j "$(nproc)")
+if [ -n "$fuzz_pid" ]; then
+  wait "$fuzz_pid" || { tail -60 "$fuzz_log"; echo "fuzzing the readers failed (log: $fuzz_log)" >&2; exit 1; }
+  grep -h "^== \|no findings" "$fuzz_log"
+fi

@@ -1,5 +1,6 @@
-// A libFuzzer target for one reader of CGAL_ext/IO/polygon_mesh_io.h; the
-// format is CGAL_EXT_FUZZ_FORMAT ("obj", "off" or "ply"), one executable each.
+// A libFuzzer target for one reader of CGAL_ext/IO/polygon_mesh_io.h. This
+// file is compiled once; each executable links it with fuzz_format.cpp, which
+// names its format ("obj", "off" or "ply").
 //
 // Each input is written to a file and read with read_polygon_mesh(), the
 // whole path a user's file takes. Bad input must give a CGAL_ext::Error; any
@@ -22,9 +23,8 @@
 
 #include <unistd.h>
 
-#ifndef CGAL_EXT_FUZZ_FORMAT
-#error "define CGAL_EXT_FUZZ_FORMAT as \"obj\", \"off\" or \"ply\""
-#endif
+// The file extension, and so the reader, of this executable (fuzz_format.cpp).
+const char* cgal_ext_fuzz_format();
 
 namespace {
 
@@ -40,7 +40,7 @@ const std::string& scratch_file()
   static const std::string path = [] {
     const char* dir = std::getenv("TMPDIR");
     return std::string(dir != nullptr ? dir : "/tmp") + "/cgal_ext_fuzz_" + std::to_string(::getpid()) + "." +
-           CGAL_EXT_FUZZ_FORMAT;
+           cgal_ext_fuzz_format();
   }();
   return path;
 }
