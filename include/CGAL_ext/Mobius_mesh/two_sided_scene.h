@@ -116,7 +116,7 @@ public:
   Two_sided_scene::Point point(Vertex_index v) const { return To_double()(get(points_, v)); }
 
   // The unit normal at target(d) from the side of d; the face's own normal
-  // where the fan's sums to zero, and zero where that does too.
+  // where the fan's sum is zero, and zero where that is too.
   Two_sided_scene::Vector normal(Dart d) const
   {
     const CGAL::Cartesian_converter_property_map<Double_kernel::Point_3, Point_map> double_points(points_);
@@ -147,23 +147,30 @@ void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, c
                          double half_gap, Two_sided_scene& scene)
 {
   std::vector<Dart> darts;
+  std::vector<Two_sided_scene::Point> points;
+  std::vector<Two_sided_scene::Vector> normals;
   for (Face_index f : mesh.faces()) {
     darts.assign(halfedges_around_face(f, mesh).begin(), halfedges_around_face(f, mesh).end());
+    points.clear();
+    normals.clear();
+    for (Dart d : darts) {
+      points.push_back(geometry.point(mesh.target(d)));
+      normals.push_back(geometry.normal(d));
+    }
     for (const bool back : {false, true}) {
       scene.faces.push_back({scene.corners.size(), darts.size(), back, f, back ? style.back : style.front});
       // The back side runs the other way round, so that its corners' order
       // agrees with its normals for a renderer that culls.
       for (std::size_t i = 0; i < darts.size(); ++i) {
-        const Dart d = back ? darts[darts.size() - 1 - i] : darts[i];
-        const auto n = back ? -geometry.normal(d) : geometry.normal(d);
-        scene.corners.push_back(geometry.point(mesh.target(d)) + half_gap * n);
+        const std::size_t k = back ? darts.size() - 1 - i : i;
+        const auto n = back ? -normals[k] : normals[k];
+        scene.corners.push_back(points[k] + half_gap * n);
         scene.normals.push_back(n);
       }
     }
   }
 }
 
-// The sharpness of each edge: the map given, else the mesh's own, else 0.
 template <class P, class NP>
 std::vector<float> edge_sharpness_values(const Mobius_mesh<P>& mesh, const NP& np)
 {
