@@ -1211,3 +1211,82 @@ TEST(MergeInPlace, RefusedMergesLeaveTheMeshesUntouched)
   }
   EXPECT_EQ(snapshot(strip), strip_before);
 }
+
+TEST(MergeInPlace, RandomSplitsOfClosedSurfacesGlueBack)
+{
+  // A closed surface's faces dealt at random to two meshes (each with its
+  // own copies of the points it uses, the second's faces reversed at
+  // random) and merged back, as two meshes and as one: each result must be
+  // the soup import of all the faces with coincident points merged.
+  using namespace in_place;
+  Soup klein;
+  ASSERT_TRUE(test::read_obj_lines(
+    test::data("nonorientable/klein_fig8_24x12_quads.obj"),
+    [&](double x, double y, double z) { klein.points.emplace_back(x, y, z); },
+    [&](const std::vector<std::size_t>& f) { klein.polygons.push_back(f); }, [](const auto&...) {}));
+  // The closed torus: its last column's corners are the first column's points.
+  Soup torus = torus_tube(0, 7, 7, 5);
+  torus.points.resize(7 * 5);
+  for (auto& polygon : torus.polygons)
+    for (std::size_t& v : polygon)
+      v %= 7 * 5;
+  ASSERT_TRUE(CGAL_ext::is_closed(from_soup(torus.points, torus.polygons)));
+  std::size_t split = 0;
+  for (const Soup* surface : {&torus, &klein})
+    for (unsigned seed = 1; seed <= 40; ++seed) {
+      SCOPED_TRACE("seed " + std::to_string(seed));
+      std::uint32_t state = seed * 2654435761u;
+      auto coin = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return (state >> 16) & 1u;
+      };
+      Soup part[2];
+      std::vector<std::size_t> index[2];
+      for (const auto& polygon : surface->polygons) {
+        const unsigned k = coin();
+        std::vector<std::size_t> face;
+        index[k].resize(surface->points.size(), std::size_t(-1));
+        for (std::size_t v : polygon) {
+          if (index[k][v] == std::size_t(-1)) {
+            index[k][v] = part[k].points.size();
+            part[k].points.push_back(surface->points[v]);
+          }
+          face.push_back(index[k][v]);
+        }
+        if (k == 1 && coin())
+          std::reverse(face.begin(), face.end());
+        part[k].polygons.push_back(face);
+      }
+      // A vertex whose faces fall into several fans of one part becomes a
+      // vertex per fan, at the same point: the merge must glue them back too.
+      Mesh<P> a, b;
+      for (unsigned k : {0u, 1u})
+        CGAL_ext::polygon_soup_to_mobius_mesh(part[k].points, part[k].polygons, k ? b : a,
+                                              CGAL_ext::parameters::split_non_manifold_vertices(true));
+      split += a.number_of_vertices() + b.number_of_vertices() - part[0].points.size() - part[1].points.size();
+      Soup both = part[0];
+      both.append(part[1]);
+      const Mesh<P> reference = imported_glued(both);
+      ASSERT_TRUE(CGAL_ext::is_closed(reference));
+      Mesh<P> two = a, one = a;
+      one.join(b);
+      const auto r2 = CGAL_ext::merge_borders(two, b);
+      const auto r1 = CGAL_ext::merge_borders(one);
+      for (const Mesh<P>* m : {&two, &one}) {
+        ASSERT_TRUE(m->is_valid(true));
+        EXPECT_TRUE(CGAL_ext::is_closed(*m));
+        EXPECT_EQ(topology(*m), topology(reference));
+        EXPECT_EQ(CGAL_ext::number_of_mobius_edges(*m), CGAL_ext::number_of_mobius_edges(reference));
+        EXPECT_EQ(CGAL_ext::is_orientable(*m), CGAL_ext::is_orientable(reference));
+      }
+      EXPECT_EQ(r1.glued_edges, r2.glued_edges);
+      EXPECT_EQ(r1.mobius_edges, r2.mobius_edges);
+      EXPECT_EQ(CGAL_ext::number_of_mobius_edges(two),
+                CGAL_ext::number_of_mobius_edges(a) + CGAL_ext::number_of_mobius_edges(b) + r2.mobius_edges);
+      for (std::size_t v = 0; v < r2.vertex_map.size(); ++v)
+        EXPECT_EQ(two.point(r2.vertex_map[v]), v < a.number_of_vertices()
+                                                 ? a.point(CGAL_ext::Vertex_index(v))
+                                                 : b.point(CGAL_ext::Vertex_index(v - a.number_of_vertices())));
+    }
+  EXPECT_GT(split, 0u); // the splits were exercised
+}
