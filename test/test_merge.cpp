@@ -7,12 +7,17 @@
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
 #include <CGAL/Exact_rational.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -893,4 +898,395 @@ TEST(ToleranceRule, SoupAndMergeAgreeAtTheBoundaryEpeck) { one_tolerance_rule<Ep
 TEST(ToleranceRule, SoupAndMergeAgreeAtTheBoundaryRationals)
 {
   one_tolerance_rule<CGAL::Simple_cartesian<CGAL::Exact_rational>>();
+}
+
+// ---------------------------------------------------------------------------- in place, against references
+
+namespace in_place {
+
+using P = Kd::Point_3;
+using Polygons = std::vector<std::vector<std::size_t>>;
+
+struct Soup
+{
+  std::vector<P> points;
+  Polygons polygons;
+
+  // Appends `o`, its point indices shifted past this soup's points.
+  void append(const Soup& o)
+  {
+    const std::size_t base = points.size();
+    points.insert(points.end(), o.points.begin(), o.points.end());
+    for (auto polygon : o.polygons) {
+      for (std::size_t& i : polygon)
+        i += base;
+      polygons.push_back(polygon);
+    }
+  }
+};
+
+// The tube of cells i0 <= i < i1 of an n x m torus grid, with its own copies
+// of its end columns (the same expression computes a shared column's points
+// in both halves, so they coincide exactly). `reversed` flips its faces.
+Soup torus_tube(int i0, int i1, int n, int m, bool reversed = false)
+{
+  Soup s;
+  const double pi = std::acos(-1.0);
+  for (int i = i0; i <= i1; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * pi * (i % n) / n, v = 2 * pi * j / m, q = 2 + 0.7 * std::cos(v);
+      s.points.emplace_back(q * std::cos(u), q * std::sin(u), 0.7 * std::sin(v));
+    }
+  auto id = [&](int i, int j) { return std::size_t((i - i0) * m + j % m); };
+  for (int i = i0; i < i1; ++i)
+    for (int j = 0; j < m; ++j) {
+      std::vector<std::size_t> quad = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
+      if (reversed)
+        std::reverse(quad.begin(), quad.end());
+      s.polygons.push_back(quad);
+    }
+  return s;
+}
+
+// Columns [c0, c1) of a strip of `rows` quads across, its cross-section
+// turning by `half_twists` half-turns along a ring of `columns` columns; the
+// end columns are its own copies (column `columns` lies on column 0,
+// reversed for an odd number of half-twists).
+Soup strip_part(int c0, int c1, int columns, int rows, int half_twists)
+{
+  Soup s;
+  const double pi = std::acos(-1.0);
+  for (int i = c0; i <= c1; ++i)
+    for (int r = 0; r <= rows; ++r) {
+      const int ring = i % columns, across = (i == columns && half_twists % 2) ? rows - r : r;
+      const double theta = 2 * pi * ring / columns, phi = half_twists * theta / 2;
+      const double v = -1.0 + 2.0 * across / rows, radial = 3 + v * std::cos(phi);
+      s.points.emplace_back(radial * std::cos(theta), radial * std::sin(theta), v * std::sin(phi));
+    }
+  auto id = [&](int i, int r) { return std::size_t((i - c0) * (rows + 1) + r); };
+  for (int i = c0; i < c1; ++i)
+    for (int r = 0; r < rows; ++r)
+      s.polygons.push_back({id(i, r), id(i + 1, r), id(i + 1, r + 1), id(i, r + 1)});
+  return s;
+}
+
+// A tube of `columns` x `m` quads along x whose last column lies on its
+// first reflected (row r on row -r): gluing its ends makes a Klein bottle.
+Soup flipped_tube(int columns, int m)
+{
+  Soup s;
+  const double pi = std::acos(-1.0);
+  for (int i = 0; i <= columns; ++i)
+    for (int j = 0; j < m; ++j) {
+      const int k = i == columns ? (m - j) % m : j;
+      s.points.emplace_back(i == columns ? 0.0 : double(i), std::cos(2 * pi * k / m), std::sin(2 * pi * k / m));
+    }
+  auto id = [&](int i, int j) { return std::size_t(i * m + j % m); };
+  for (int i = 0; i < columns; ++i)
+    for (int j = 0; j < m; ++j)
+      s.polygons.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return s;
+}
+
+struct Topology
+{
+  std::size_t v = 0, e = 0, f = 0, border_cycles = 0;
+  long long chi = 0;
+  bool operator==(const Topology& o) const
+  {
+    return v == o.v && e == o.e && f == o.f && border_cycles == o.border_cycles && chi == o.chi;
+  }
+};
+std::ostream& operator<<(std::ostream& os, const Topology& t)
+{
+  return os << "V=" << t.v << " E=" << t.e << " F=" << t.f << " chi=" << t.chi << " borders=" << t.border_cycles;
+}
+
+Topology topology(const Mesh<P>& m)
+{
+  return {m.number_of_vertices(), m.number_of_edges(), m.number_of_faces(), CGAL_ext::number_of_border_cycles(m),
+          CGAL_ext::euler_characteristic(m)};
+}
+
+// CGAL's stitch of the same glue, on a Surface_mesh of the soup.
+Topology stitched_by_cgal(const Soup& soup)
+{
+  CGAL::Surface_mesh<P> sm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, sm);
+  CGAL::Polygon_mesh_processing::stitch_borders(sm);
+  std::vector<CGAL::Surface_mesh<P>::Halfedge_index> cycles;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(cycles));
+  const std::size_t v = sm.number_of_vertices(), e = sm.number_of_edges(), f = sm.number_of_faces();
+  return {v, e, f, cycles.size(), (long long)(v) - (long long)(e) + (long long)(f)};
+}
+
+// The soup import of the glued soup (coincident points merged): the mesh
+// the merge made before it glued in place.
+Mesh<P> imported_glued(const Soup& soup)
+{
+  Mesh<P> m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(soup.points, soup.polygons, m, CGAL_ext::parameters::tolerance(0.0));
+  return m;
+}
+
+// Every link, flag, point and property map name of `m`, and the values of
+// its int maps: equal strings for meshes equal byte for byte.
+std::string snapshot(const Mesh<P>& m)
+{
+  std::ostringstream s;
+  s << m.num_vertices() << ' ' << m.num_edges() << ' ' << m.num_faces() << '\n';
+  for (auto v : m.vertices())
+    s << m.halfedge(v).bits() << ' ' << m.point(v) << ';';
+  for (auto h : m.halfedges())
+    s << m.target(h) << ' ' << m.next(CGAL_ext::Dart(h)).bits() << ' ' << m.prev(CGAL_ext::Dart(h)).bits() << ' '
+      << m.face(h) << ';';
+  for (auto e : m.edges())
+    s << m.is_mobius(e);
+  for (auto f : m.faces())
+    s << m.halfedge(f).bits() << ';';
+  auto dump = [&](auto key, const std::vector<std::string>& names, const auto& range) {
+    using I = decltype(key);
+    for (const std::string& name : names) {
+      s << '\n' << name << ':';
+      if (auto map = m.property_map<I, int>(name))
+        for (auto x : range)
+          s << (*map)[x] << ',';
+    }
+  };
+  dump(CGAL_ext::Vertex_index(), m.properties<CGAL_ext::Vertex_index>(), m.vertices());
+  dump(CGAL_ext::Halfedge_index(), m.properties<CGAL_ext::Halfedge_index>(), m.halfedges());
+  dump(CGAL_ext::Edge_index(), m.properties<CGAL_ext::Edge_index>(), m.edges());
+  dump(CGAL_ext::Face_index(), m.properties<CGAL_ext::Face_index>(), m.faces());
+  return s.str();
+}
+
+// Merges `a` and `b` both ways (two meshes; one mesh holding both) and
+// checks each result against the soup import of the glued soup.
+std::vector<Mesh<P>> merge_both_ways(const Soup& a, const Soup& b)
+{
+  Mesh<P> two = from_soup(a.points, a.polygons), one = two;
+  const Mesh<P> second = from_soup(b.points, b.polygons);
+  one.join(second);
+  CGAL_ext::merge_borders(two, second, CGAL_ext::parameters::tolerance(0.0));
+  CGAL_ext::merge_borders(one, CGAL_ext::parameters::tolerance(0.0));
+  Soup both = a;
+  both.append(b);
+  const Mesh<P> reference = imported_glued(both);
+  for (const Mesh<P>* m : {&two, &one}) {
+    EXPECT_TRUE(m->is_valid(true));
+    EXPECT_FALSE(m->has_garbage());
+    EXPECT_EQ(topology(*m), topology(reference));
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(*m), CGAL_ext::number_of_mobius_edges(reference));
+    EXPECT_EQ(CGAL_ext::is_orientable(*m), CGAL_ext::is_orientable(reference));
+  }
+  return {two, one};
+}
+
+} // namespace in_place
+
+TEST(MergeInPlace, TorusHalvesAsStitchedByCgal)
+{
+  using namespace in_place;
+  for (const auto& [n, m] : {std::pair<int, int>(8, 6), std::pair<int, int>(5, 3), std::pair<int, int>(4, 3)}) {
+    SCOPED_TRACE(std::to_string(n) + " x " + std::to_string(m));
+    const Soup a = torus_tube(0, n / 2, n, m), b = torus_tube(n / 2, n, n, m);
+    Soup both = a;
+    both.append(b);
+    const Topology cgal = stitched_by_cgal(both);
+    EXPECT_EQ(cgal, (Topology{std::size_t(n * m), std::size_t(2 * n * m), std::size_t(n * m), 0, 0}));
+    for (const Mesh<P>& merged : merge_both_ways(a, b)) {
+      EXPECT_EQ(topology(merged), cgal);
+      EXPECT_TRUE(CGAL_ext::is_orientable(merged));
+      EXPECT_EQ(CGAL_ext::number_of_mobius_edges(merged), 0u);
+    }
+  }
+}
+
+TEST(MergeInPlace, StripHalvesAsStitchedByCgal)
+{
+  // Without a twist the halves make an annulus: two border loops.
+  using namespace in_place;
+  const Soup a = strip_part(0, 5, 12, 3, 0), b = strip_part(5, 12, 12, 3, 0);
+  Soup both = a;
+  both.append(b);
+  const Topology cgal = stitched_by_cgal(both);
+  EXPECT_EQ(cgal.border_cycles, 2u);
+  EXPECT_EQ(cgal.chi, 0);
+  for (const Mesh<P>& merged : merge_both_ways(a, b))
+    EXPECT_EQ(topology(merged), cgal);
+}
+
+TEST(MergeInPlace, ReversedHalfGluesWithMobiusEdges)
+{
+  // The second tube's faces run the other way: every glued edge is a Möbius
+  // edge, and the torus is still orientable (reverse one half).
+  using namespace in_place;
+  const Soup a = torus_tube(0, 3, 6, 4), b = torus_tube(3, 6, 6, 4, true);
+  for (const Mesh<P>& merged : merge_both_ways(a, b)) {
+    EXPECT_EQ(topology(merged), (Topology{24, 48, 24, 0, 0}));
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(merged), 8u);
+    EXPECT_TRUE(CGAL_ext::is_orientable(merged));
+  }
+}
+
+TEST(MergeInPlace, MobiusStripFromTwoHalves)
+{
+  // Half of a once-twisted strip and the other half: one glue is plain, the
+  // other has the half-twist. A Möbius strip: chi = 0, one border loop.
+  using namespace in_place;
+  const Soup a = strip_part(0, 6, 12, 3, 1), b = strip_part(6, 12, 12, 3, 1);
+  for (const Mesh<P>& merged : merge_both_ways(a, b)) {
+    EXPECT_EQ(merged.number_of_vertices(), 12u * 4u);
+    EXPECT_EQ(merged.number_of_faces(), 36u);
+    EXPECT_EQ(CGAL_ext::euler_characteristic(merged), 0);
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(merged), 1u);
+    EXPECT_FALSE(CGAL_ext::is_orientable(merged));
+  }
+}
+
+TEST(MergeInPlace, CylinderEndsGluedWithAFlipMakeAKleinBottle)
+{
+  using namespace in_place;
+  const Soup tube = flipped_tube(5, 6);
+  Mesh<P> m = from_soup(tube.points, tube.polygons);
+  ASSERT_EQ(CGAL_ext::number_of_border_cycles(m), 2u);
+  const auto r = CGAL_ext::merge_borders(m);
+  ASSERT_TRUE(m.is_valid(true));
+  EXPECT_EQ(r.glued_edges, 6u);
+  EXPECT_EQ(r.merged_vertices, 6u);
+  EXPECT_EQ(m.number_of_vertices(), 30u);
+  EXPECT_EQ(m.number_of_faces(), 30u);
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+  EXPECT_TRUE(CGAL_ext::is_closed(m));
+  EXPECT_FALSE(CGAL_ext::is_orientable(m));
+  const Mesh<P> reference = in_place::imported_glued(tube);
+  EXPECT_EQ(in_place::topology(m), in_place::topology(reference));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), CGAL_ext::number_of_mobius_edges(reference));
+  // Every input vertex maps to the result vertex at its position.
+  ASSERT_EQ(r.vertex_map.size(), tube.points.size());
+  for (std::size_t v = 0; v < tube.points.size(); ++v)
+    EXPECT_EQ(m.point(r.vertex_map[v]), tube.points[v]);
+}
+
+TEST(MergeInPlace, RefusedMergesLeaveTheMeshesUntouched)
+{
+  using namespace in_place;
+  // A quad split along its diagonal (0, 2), and a triangle lying on its first
+  // half: gluing the triangle's two borders gives the diagonal a third face.
+  const Mesh<P> quad = from_soup<P>({P(0, 0, 0), P(1, 0, 0), P(1, 1, 0), P(0, 1, 0)}, {{0, 1, 2}, {0, 2, 3}});
+  Mesh<P> triangle = from_soup<P>({P(0, 0, 0), P(1, 0, 0), P(1, 1, 0)}, {{2, 1, 0}});
+  // Maps on both sides: one only the second mesh has must not stay behind.
+  auto weight = triangle.add_property_map<CGAL_ext::Vertex_index, int>("v:weight", 7).first;
+  weight[CGAL_ext::Vertex_index(1u)] = 3;
+  Mesh<P> a = quad;
+  auto label = a.add_property_map<CGAL_ext::Edge_index, int>("e:label", -1).first;
+  for (auto e : a.edges())
+    label[e] = int(e.idx()) * 10;
+  auto expect_refused = [](auto merge, Mesh<P>& m) {
+    const std::string before = snapshot(m);
+    try {
+      merge();
+      ADD_FAILURE() << "expected a Merge_error";
+    } catch (const CGAL_ext::Merge_error& e) {
+      EXPECT_EQ(e.kind(), CGAL_ext::Merge_error::Kind::non_manifold_edge) << e.what();
+      EXPECT_NE(std::find(e.vertices().begin(), e.vertices().end(), 0u), e.vertices().end()) << e.what();
+      EXPECT_NE(std::find(e.vertices().begin(), e.vertices().end(), 2u), e.vertices().end()) << e.what();
+    }
+    EXPECT_EQ(snapshot(m), before);
+  };
+  const std::string triangle_before = snapshot(triangle);
+  expect_refused([&] { CGAL_ext::merge_borders(a, triangle); }, a);
+  EXPECT_EQ(snapshot(triangle), triangle_before);
+  Mesh<P> one = a;
+  one.join(triangle);
+  expect_refused([&] { CGAL_ext::merge_borders(one); }, one);
+
+  // A collapsed face: the strip's own border vertices within the tolerance.
+  Mesh<P> strip = twisted_strip<P>(12, 1, 0);
+  const std::string strip_before = snapshot(strip);
+  try {
+    CGAL_ext::merge_borders(strip, CGAL_ext::parameters::tolerance(2.5));
+    ADD_FAILURE() << "expected a Merge_error";
+  } catch (const CGAL_ext::Merge_error&) {
+  }
+  EXPECT_EQ(snapshot(strip), strip_before);
+}
+
+TEST(MergeInPlace, RandomSplitsOfClosedSurfacesGlueBack)
+{
+  // A closed surface's faces dealt at random to two meshes (each with its
+  // own copies of the points it uses, the second's faces reversed at
+  // random) and merged back, as two meshes and as one: each result must be
+  // the soup import of all the faces with coincident points merged.
+  using namespace in_place;
+  Soup klein;
+  ASSERT_TRUE(test::read_obj_lines(
+    test::data("nonorientable/klein_fig8_24x12_quads.obj"),
+    [&](double x, double y, double z) { klein.points.emplace_back(x, y, z); },
+    [&](const std::vector<std::size_t>& f) { klein.polygons.push_back(f); }, [](const auto&...) {}));
+  // The closed torus: its last column's corners are the first column's points.
+  Soup torus = torus_tube(0, 7, 7, 5);
+  torus.points.resize(7 * 5);
+  for (auto& polygon : torus.polygons)
+    for (std::size_t& v : polygon)
+      v %= 7 * 5;
+  ASSERT_TRUE(CGAL_ext::is_closed(from_soup(torus.points, torus.polygons)));
+  std::size_t split = 0;
+  for (const Soup* surface : {&torus, &klein})
+    for (unsigned seed = 1; seed <= 40; ++seed) {
+      SCOPED_TRACE("seed " + std::to_string(seed));
+      std::uint32_t state = seed * 2654435761u;
+      auto coin = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return (state >> 16) & 1u;
+      };
+      Soup part[2];
+      std::vector<std::size_t> index[2];
+      for (const auto& polygon : surface->polygons) {
+        const unsigned k = coin();
+        std::vector<std::size_t> face;
+        index[k].resize(surface->points.size(), std::size_t(-1));
+        for (std::size_t v : polygon) {
+          if (index[k][v] == std::size_t(-1)) {
+            index[k][v] = part[k].points.size();
+            part[k].points.push_back(surface->points[v]);
+          }
+          face.push_back(index[k][v]);
+        }
+        if (k == 1 && coin())
+          std::reverse(face.begin(), face.end());
+        part[k].polygons.push_back(face);
+      }
+      // A vertex whose faces fall into several fans of one part becomes a
+      // vertex per fan, at the same point: the merge must glue them back too.
+      Mesh<P> a, b;
+      for (unsigned k : {0u, 1u})
+        CGAL_ext::polygon_soup_to_mobius_mesh(part[k].points, part[k].polygons, k ? b : a,
+                                              CGAL_ext::parameters::split_non_manifold_vertices(true));
+      split += a.number_of_vertices() + b.number_of_vertices() - part[0].points.size() - part[1].points.size();
+      Soup both = part[0];
+      both.append(part[1]);
+      const Mesh<P> reference = imported_glued(both);
+      ASSERT_TRUE(CGAL_ext::is_closed(reference));
+      Mesh<P> two = a, one = a;
+      one.join(b);
+      const auto r2 = CGAL_ext::merge_borders(two, b);
+      const auto r1 = CGAL_ext::merge_borders(one);
+      for (const Mesh<P>* m : {&two, &one}) {
+        ASSERT_TRUE(m->is_valid(true));
+        EXPECT_TRUE(CGAL_ext::is_closed(*m));
+        EXPECT_EQ(topology(*m), topology(reference));
+        EXPECT_EQ(CGAL_ext::number_of_mobius_edges(*m), CGAL_ext::number_of_mobius_edges(reference));
+        EXPECT_EQ(CGAL_ext::is_orientable(*m), CGAL_ext::is_orientable(reference));
+      }
+      EXPECT_EQ(r1.glued_edges, r2.glued_edges);
+      EXPECT_EQ(r1.mobius_edges, r2.mobius_edges);
+      EXPECT_EQ(CGAL_ext::number_of_mobius_edges(two),
+                CGAL_ext::number_of_mobius_edges(a) + CGAL_ext::number_of_mobius_edges(b) + r2.mobius_edges);
+      for (std::size_t v = 0; v < r2.vertex_map.size(); ++v)
+        EXPECT_EQ(two.point(r2.vertex_map[v]), v < a.number_of_vertices()
+                                                 ? a.point(CGAL_ext::Vertex_index(v))
+                                                 : b.point(CGAL_ext::Vertex_index(v - a.number_of_vertices())));
+    }
+  EXPECT_GT(split, 0u); // the splits were exercised
 }

@@ -1395,19 +1395,21 @@ typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
   auto shift_dart = [hoff](Dart d) {
     return d.is_valid() ? Dart::from_bits(d.bits() + 2 * hoff) : d;
   };
-  for (Dart d : o.v_halfedge_)
-    v_halfedge_.push_back(shift_dart(d));
-  for (Vertex_index v : o.h_target_)
-    h_target_.push_back(Vertex_index(size_type(v.idx() + off.vertices)));
-  for (Dart d : o.h_next_)
-    h_next_.push_back(shift_dart(d));
-  for (Dart d : o.h_prev_)
-    h_prev_.push_back(shift_dart(d));
-  for (Face_index f : o.h_face_)
-    h_face_.push_back(f.is_valid() ? Face_index(size_type(f.idx() + off.faces)) : f);
+  // Each array grows once (resize leaves the new slots unwritten) and is
+  // written in one pass: push_back would copy it again at every doubling.
+  auto append = [](auto& to, const auto& from, auto shift) {
+    const std::size_t n = to.size();
+    to.resize(n + from.size());
+    std::transform(from.begin(), from.end(), to.begin() + std::ptrdiff_t(n), shift);
+  };
+  append(v_halfedge_, o.v_halfedge_, shift_dart);
+  append(h_target_, o.h_target_, [&off](Vertex_index v) { return Vertex_index(size_type(v.idx() + off.vertices)); });
+  append(h_next_, o.h_next_, shift_dart);
+  append(h_prev_, o.h_prev_, shift_dart);
+  append(h_face_, o.h_face_,
+         [&off](Face_index f) { return f.is_valid() ? Face_index(size_type(f.idx() + off.faces)) : f; });
   e_mobius_.insert(e_mobius_.end(), o.e_mobius_.begin(), o.e_mobius_.end());
-  for (Halfedge_index h : o.f_halfedge_)
-    f_halfedge_.push_back(Halfedge_index(size_type(h.idx() + hoff)));
+  append(f_halfedge_, o.f_halfedge_, [hoff](Halfedge_index h) { return Halfedge_index(size_type(h.idx() + hoff)); });
   vprops_.append(o.vprops_);
   hprops_.append(o.hprops_);
   eprops_.append(o.eprops_);

@@ -14,10 +14,11 @@
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/Mobius_mesh/internal/Border_glue.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
 #include <CGAL_ext/internal/Close_points.h>
 #include <CGAL_ext/internal/Nearest_points.h>
-#include <CGAL_ext/internal/Union_find.h>
 
 #include <CGAL/Kernel_traits.h>
 
@@ -78,8 +79,9 @@ struct Border_pairing
 
 namespace internal {
 
-// Rebuilds `work` with the vertices of each class of `cls` identified (and
-// `extra` polygons added, by class), through a soup: linear time, and the
+// Bridging only (the in-place glue adds no faces): rebuilds `work` with the
+// vertices of each class of `cls` identified (and `extra` polygons added, by
+// class), through a soup: linear time, and the
 // soup import finds every normal and Möbius connection and refuses what is
 // not a 2-manifold. `position[c]` is the point of class c. Properties are
 // carried over: faces one to one, a vertex from the lowest member of its
@@ -174,21 +176,55 @@ Mobius_mesh<P> rebuild_glued(const Mobius_mesh<P>& work, const std::vector<std::
   return out;
 }
 
+// The border vertices, each with the border vertices within the tolerance
+// of it: tables over the border only, not over every vertex of the mesh.
+class Border_matches
+{
+public:
+  using u32 = std::uint32_t;
+
+  explicit Border_matches(std::vector<u32> border_vertices)
+    : vertex_(std::move(border_vertices)), match_(vertex_.size())
+  {}
+  const std::vector<u32>& vertices() const { return vertex_; }
+  /// The vertices matched with `v` (none if `v` is not on the border).
+  const std::vector<u32>& operator[](u32 v) const
+  {
+    static const std::vector<u32> no_match;
+    const u32 i = local(v);
+    return i == none ? no_match : match_[i];
+  }
+  void add(u32 u, u32 w)
+  {
+    match_[local(u)].push_back(w);
+    match_[local(w)].push_back(u);
+  }
+
+private:
+  static constexpr u32 none = (std::numeric_limits<u32>::max)();
+  u32 local(u32 v) const
+  {
+    const auto it = std::lower_bound(vertex_.begin(), vertex_.end(), v);
+    return it != vertex_.end() && *it == v ? u32(it - vertex_.begin()) : none;
+  }
+
+  std::vector<u32> vertex_;
+  std::vector<std::vector<u32>> match_;
+};
+
 // Border vertices within the tolerance of each other: those of [0, split)
-// with those of [split, nv), or any two if `self`. `match[v]` lists v's.
+// with those of [split, nv), or any two if `self`. Returns the number of
+// close pairs.
 template <class P, class Traits>
 std::size_t close_border_vertices(const Mobius_mesh<P>& work, std::size_t split, bool self,
-                                  const Close_points<Traits>& close, std::vector<std::vector<std::uint32_t>>& match)
+                                  const Close_points<Traits>& close, Border_matches& match)
 {
   std::vector<std::uint32_t> first, second;
-  for (Vertex_index v : work.vertices())
-    if (!work.is_isolated(v) && work.is_border(v))
-      (self || v.idx() < split ? first : second).push_back(v.idx());
-  match.assign(work.number_of_vertices(), {});
+  for (std::uint32_t v : match.vertices())
+    (self || v < split ? first : second).push_back(v);
   std::size_t n_pairs = 0;
   auto report = [&](std::uint32_t u, std::uint32_t w) {
-    match[u].push_back(w);
-    match[w].push_back(u);
+    match.add(u, w);
     ++n_pairs;
   };
   auto point_of = [&work](std::uint32_t v) -> const P& { return work.point(Vertex_index(v)); };
@@ -199,12 +235,22 @@ std::size_t close_border_vertices(const Mobius_mesh<P>& work, std::size_t split,
   return n_pairs;
 }
 
+template <class P>
+std::vector<std::uint32_t> border_vertices(const Mobius_mesh<P>& m)
+{
+  std::vector<std::uint32_t> vs;
+  for (Vertex_index v : m.vertices())
+    if (!m.is_isolated(v) && m.is_border(v))
+      vs.push_back(v.idx());
+  return vs;
+}
+
 // The border edges that border halfedge `b` (s -> t) may be glued to: those
 // from a vertex matched with s (or s) to one matched with t (or t), with
 // whether each runs the same way as b.
 template <class P>
-std::vector<std::pair<Halfedge_index, bool>>
-glue_candidates(const Mobius_mesh<P>& work, Halfedge_index b, const std::vector<std::vector<std::uint32_t>>& match)
+std::vector<std::pair<Halfedge_index, bool>> glue_candidates(const Mobius_mesh<P>& work, Halfedge_index b,
+                                                             const Border_matches& match)
 {
   const std::uint32_t s = work.source(Dart(b, false)).idx(), t = work.target(Dart(b, false)).idx();
   auto is_close = [&](std::uint32_t x, std::uint32_t y) {
@@ -249,16 +295,37 @@ template <class P>
                     vs);
 }
 
-// Pairs the border edges to glue (each border edge takes at most one
-// partner) and unites their ends; records pairs and counts in `result`.
+// The border halfedges at the border vertices, in increasing order.
 template <class P>
-void pair_border_edges(const Mobius_mesh<P>& work, const std::vector<std::vector<std::uint32_t>>& match,
-                       Union_find& glued, Merge_result& result)
+std::vector<std::uint32_t> border_halfedges(const Mobius_mesh<P>& work, const Border_matches& match)
 {
-  const std::uint32_t none = Vertex_index::null_value;
-  std::vector<std::uint32_t> partner(work.number_of_halfedges(), none);
-  for (Halfedge_index b : work.halfedges()) {
-    if (!work.is_border(b) || partner[b.idx()] != none)
+  std::vector<std::uint32_t> hs;
+  for (std::uint32_t v : match.vertices()) {
+    const Dart in = work.halfedge(Vertex_index(v));
+    hs.push_back(in.halfedge().idx());
+    hs.push_back(work.next(in).halfedge().idx());
+  }
+  std::sort(hs.begin(), hs.end());
+  hs.erase(std::unique(hs.begin(), hs.end()), hs.end());
+  return hs;
+}
+
+// Pairs the border edges to glue (each border edge takes at most one
+// partner); records pairs and counts in `result` and returns the pairs as
+// darts whose sources (and targets) are glued.
+template <class P>
+std::vector<Glue_pair> pair_border_edges(const Mobius_mesh<P>& work, const Border_matches& match,
+                                         Merge_result& result)
+{
+  const std::vector<std::uint32_t> border = border_halfedges(work, match);
+  auto local = [&border](Halfedge_index h) {
+    return std::size_t(std::lower_bound(border.begin(), border.end(), h.idx()) - border.begin());
+  };
+  std::vector<bool> paired(border.size(), false);
+  std::vector<Glue_pair> glue;
+  for (std::uint32_t bi : border) {
+    const Halfedge_index b(bi);
+    if (paired[local(b)])
       continue;
     const std::uint32_t s = work.source(Dart(b, false)).idx(), t = work.target(Dart(b, false)).idx();
     if (match[s].empty() && match[t].empty())
@@ -270,19 +337,16 @@ void pair_border_edges(const Mobius_mesh<P>& work, const std::vector<std::vector
       throw_ambiguous_glue(work, b, found);
     const auto [g, same] = found[0];
     const std::uint32_t gs = work.source(Dart(g, false)).idx(), gt = work.target(Dart(g, false)).idx();
-    if (partner[g.idx()] != none)
+    if (paired[local(g)])
       throw Merge_error(Merge_error::Kind::non_manifold_edge,
                         "border edge (" + join_ids({gs, gt}, "v") + ") could be glued to two border edges",
                         {s, t, gs, gt});
-    partner[b.idx()] = g.idx();
-    partner[g.idx()] = b.idx();
+    paired[local(b)] = paired[local(g)] = true;
     const std::uint32_t s2 = same ? gs : gt, t2 = same ? gt : gs;
-    for (auto [x, y] : {std::make_pair(s, s2), std::make_pair(t, t2)}) {
-      if (x == y)
-        continue;
-      glued.unite(x, y);
-      result.vertex_pairs.emplace_back((std::min)(x, y), (std::max)(x, y));
-    }
+    for (auto [x, y] : {std::make_pair(s, s2), std::make_pair(t, t2)})
+      if (x != y)
+        result.vertex_pairs.emplace_back((std::min)(x, y), (std::max)(x, y));
+    glue.push_back({Dart(b, false), Dart(g, !same)});
     result.halfedge_pairs.emplace_back(b.idx(), g.idx());
     ++result.glued_edges;
     result.mobius_edges += same ? 1 : 0;
@@ -290,14 +354,15 @@ void pair_border_edges(const Mobius_mesh<P>& work, const std::vector<std::vector
   std::sort(result.vertex_pairs.begin(), result.vertex_pairs.end());
   result.vertex_pairs.erase(std::unique(result.vertex_pairs.begin(), result.vertex_pairs.end()),
                             result.vertex_pairs.end());
+  return glue;
 }
 
 // Close pairs that glue no edge.
-inline std::size_t count_ignored_pairs(const std::vector<std::vector<std::uint32_t>>& match, std::size_t close_pairs,
+inline std::size_t count_ignored_pairs(const Border_matches& match, std::size_t close_pairs,
                                        const Merge_result& result)
 {
   std::size_t used_pairs = 0;
-  for (std::uint32_t u = 0; u < match.size(); ++u)
+  for (std::uint32_t u : match.vertices())
     for (std::uint32_t w : match[u])
       if (u < w && std::binary_search(result.vertex_pairs.begin(), result.vertex_pairs.end(),
                                       std::make_pair(std::size_t(u), std::size_t(w))))
@@ -305,11 +370,32 @@ inline std::size_t count_ignored_pairs(const std::vector<std::vector<std::uint32
   return close_pairs - used_pairs;
 }
 
-// The automatic merge on `work`: border vertices of [0, split) are matched
-// with those of [split, nv) (any two if `self`).
+inline std::vector<Vertex_index> identity_vertex_map(std::size_t nv)
+{
+  std::vector<Vertex_index> map(nv);
+  for (std::size_t v = 0; v < nv; ++v)
+    map[v] = Vertex_index(v);
+  return map;
+}
+
+// Glues `pairs` of border darts of `mesh` in place (see Border_glue);
+// throws Merge_error, `mesh` unchanged, if the result is not a 2-manifold.
+template <class P>
+void glue_in_place(Mobius_mesh<P>& mesh, std::vector<Glue_pair> pairs, Merge_result& result)
+{
+  if (pairs.empty()) {
+    result.vertex_map = identity_vertex_map(mesh.number_of_vertices());
+    return;
+  }
+  Border_glue<P> glue(mesh, std::move(pairs));
+  glue.check();
+  result.merged_vertices = glue.apply(result.vertex_map);
+}
+
+// The automatic merge, in place on `mesh`: border vertices of [0, split)
+// are matched with those of [split, nv) (any two if `self`).
 template <class P, class NP>
-Merge_result merge_borders_impl(Mobius_mesh<P>& target, const Mobius_mesh<P>& work, std::size_t split, bool self,
-                                const NP& np)
+Merge_result merge_borders_impl(Mobius_mesh<P>& mesh, std::size_t split, bool self, const NP& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -318,33 +404,72 @@ Merge_result merge_borders_impl(Mobius_mesh<P>& target, const Mobius_mesh<P>& wo
   using Traits = std::decay_t<decltype(traits)>;
   const auto tolerance = choose_parameter(get_parameter(np, CGAL_ext::internal_np::tolerance), 0.0);
   const Close_points<Traits> close(traits, checked_tolerance<typename Traits::FT>(tolerance));
-  const std::uint32_t nv = work.number_of_vertices();
   Merge_result result;
 
-  std::vector<std::vector<std::uint32_t>> match;
-  const std::size_t close_pairs = close_border_vertices(work, split, self, close, match);
-  Union_find glued(nv);
-  pair_border_edges(work, match, glued, result);
+  Border_matches match(border_vertices(mesh));
+  const std::size_t close_pairs = close_border_vertices(mesh, split, self, close, match);
+  std::vector<Glue_pair> pairs = pair_border_edges(mesh, match, result);
   result.ignored_vertex_pairs = count_ignored_pairs(match, close_pairs, result);
-  if (result.glued_edges == 0) {
-    result.vertex_map.resize(nv);
-    for (std::uint32_t v = 0; v < nv; ++v)
-      result.vertex_map[v] = Vertex_index(v);
-    if (&target != &work)
-      target = work;
-    return result;
-  }
-
-  // Rebuild with the glued vertices identified; each keeps the position of
-  // its class's lowest vertex (the first mesh's, in a two-mesh merge).
-  std::uint32_t n_classes = 0;
-  const std::vector<std::uint32_t> cls = glued.classes(n_classes);
-  std::vector<P> position(n_classes);
-  for (std::uint32_t v = nv; v-- > 0;)
-    position[cls[v]] = work.point(Vertex_index(v));
-  target = rebuild_glued(work, cls, position, {}, result);
+  glue_in_place(mesh, std::move(pairs), result);
   return result;
 }
+
+// Appends `b` to `a` for a merge, and takes it out again (`a` as it was)
+// unless `keep()` is called: a failed merge leaves its first mesh unchanged.
+template <class P>
+class Joined
+{
+public:
+  Joined(Mobius_mesh<P>& a, const Mobius_mesh<P>& b)
+    : a_(a), nv_(a.num_vertices()), ne_(a.num_edges()), nf_(a.num_faces())
+  {
+    record<Vertex_index>(0);
+    record<Halfedge_index>(1);
+    record<Edge_index>(2);
+    record<Face_index>(3);
+    offsets_ = a.join(b);
+  }
+  Joined(const Joined&) = delete;
+  Joined& operator=(const Joined&) = delete;
+  ~Joined()
+  {
+    if (kept_)
+      return;
+    a_.resize(nv_, ne_, nf_);
+    drop_added<Vertex_index>(0);
+    drop_added<Halfedge_index>(1);
+    drop_added<Edge_index>(2);
+    drop_added<Face_index>(3);
+  }
+  void keep() { kept_ = true; }
+  const typename Mobius_mesh<P>::Join_offsets& offsets() const { return offsets_; }
+
+private:
+  template <class I>
+  void record(int k)
+  {
+    for (const auto& array : Connectivity_access::properties<I>(a_).arrays())
+      arrays_[k].push_back(array.get());
+  }
+  // Property maps that only the second mesh had.
+  template <class I>
+  void drop_added(int k)
+  {
+    Property_container& props = Connectivity_access::properties<I>(a_);
+    std::vector<const Base_property_array*> added;
+    for (const auto& array : props.arrays())
+      if (std::find(arrays_[k].begin(), arrays_[k].end(), array.get()) == arrays_[k].end())
+        added.push_back(array.get());
+    for (const Base_property_array* array : added)
+      props.remove(array);
+  }
+
+  Mobius_mesh<P>& a_;
+  typename Mobius_mesh<P>::size_type nv_, ne_, nf_;
+  std::vector<const Base_property_array*> arrays_[4];
+  typename Mobius_mesh<P>::Join_offsets offsets_{};
+  bool kept_ = false;
+};
 
 template <class P>
 void check_border_dart(const Mobius_mesh<P>& m, Dart d, const char* which)
@@ -567,6 +692,14 @@ inline Nearest_pair nearest_pair(const std::vector<Border_walk>& walks_a, const 
 /// first. Property maps of every value type are kept (a glued vertex or edge
 /// takes `mesh_a`'s value).
 ///
+/// The glue is made in place, in time proportional to the glued border and
+/// the fans around it (plus appending `mesh_b`, and finding the border):
+/// each glued pair of edges becomes one edge, and the merged vertices and
+/// the second edge of each pair are replaced by the last vertex or edge, so
+/// the result has no removed elements. Faces keep their indices; a vertex or
+/// edge moved into a freed slot changes its index (`Merge_result::vertex_map`
+/// says where each vertex went).
+///
 /// Two vertices are within the tolerance iff their exact distance is at most
 /// the exact value of the tolerance, on every kernel, as in the soup import:
 /// no square root and no rounded square (floating-point coordinates are
@@ -600,12 +733,13 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
 {
   CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
   CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
-  Mobius_mesh<P> work = mesh_a;
-  const std::size_t split = work.number_of_vertices();
-  work.join(mesh_b);
-  Mobius_mesh<P> out;
-  Merge_result r = internal::merge_borders_impl(out, work, split, false, np);
-  mesh_a = std::move(out);
+  if (&mesh_a == &mesh_b) {
+    const Mobius_mesh<P> copy = mesh_b;
+    return merge_borders(mesh_a, copy, np);
+  }
+  internal::Joined<P> joined(mesh_a, mesh_b);
+  Merge_result r = internal::merge_borders_impl(mesh_a, joined.offsets().vertices, false, np);
+  joined.keep();
   return r;
 }
 
@@ -618,10 +752,7 @@ template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh, "merge_borders");
-  Mobius_mesh<P> out;
-  Merge_result r = internal::merge_borders_impl(out, mesh, mesh.number_of_vertices(), true, np);
-  mesh = std::move(out);
-  return r;
+  return internal::merge_borders_impl(mesh, mesh.number_of_vertices(), true, np);
 }
 
 /// \ingroup PkgMobiusMeshMerge
@@ -680,6 +811,78 @@ Border_pairing aligned_border_loops(const Mobius_mesh<P>& mesh_a, Dart loop_a, c
   return internal::whole_loops(walk_a[0], p.i, walk_b[0], p.j);
 }
 
+namespace internal {
+
+// Bridging: the union of both meshes rebuilt through a soup with the new
+// faces (new faces are the one thing the in-place glue does not make).
+template <class P>
+Merge_result bridge_chains(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b, const Border_chain& chain_a,
+                           const Border_chain& chain_b)
+{
+  Mobius_mesh<P> work = mesh_a;
+  work.join(mesh_b);
+  const std::size_t nv = work.number_of_vertices();
+  Merge_result result;
+  const std::vector<std::vector<std::uint32_t>> extra = bridge_faces(chain_a.vertices, chain_b.vertices);
+  std::vector<std::uint32_t> cls(nv);
+  std::vector<P> position(nv);
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    cls[v] = v;
+    position[v] = work.point(Vertex_index(v));
+  }
+  Mobius_mesh<P> out = rebuild_glued(work, cls, position, extra, result);
+  result.mobius_edges = number_of_mobius_edges(out) - number_of_mobius_edges(work);
+  mesh_a = std::move(out);
+  return result;
+}
+
+// Identifies the k-th vertices and glues the k-th edges of two chains of
+// equal length, in place in `mesh_a` (after `mesh_b` is appended), the
+// glued vertices placed by `place(pa, pb)` (a null function keeps `pa`).
+template <class P, class Place>
+Merge_result glue_chains(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b, const Border_chain& chain_a,
+                         const Border_chain& chain_b, Place place)
+{
+  if (chain_a.edges() != chain_b.edges() || chain_a.whole_loop != chain_b.whole_loop) {
+    auto describe = [](const Border_chain& c) {
+      return std::to_string(c.edges()) + (c.whole_loop ? " (a whole loop)" : " (an open chain)");
+    };
+    throw Merge_error(Merge_error::Kind::mismatched_chains,
+                      "the border chains have " + describe(chain_a) + " and " + describe(chain_b) +
+                        " edges; only Merge_strategy::bridge joins chains that differ",
+                      {chain_a.vertices.front(), chain_b.vertices.front()});
+  }
+  const std::uint32_t na = mesh_a.number_of_vertices(), ha = mesh_a.number_of_halfedges();
+  Merge_result result;
+  // A whole loop's last vertex is its first again.
+  const std::size_t n_pairs = chain_a.vertices.size() - (chain_a.whole_loop ? 1 : 0);
+  std::vector<P> placed;
+  for (std::size_t i = 0; i < n_pairs; ++i) {
+    const std::uint32_t va = chain_a.vertices[i], vb = chain_b.vertices[i];
+    result.vertex_pairs.emplace_back(va, vb);
+    placed.push_back(place(mesh_a.point(Vertex_index(va)), mesh_b.point(Vertex_index(vb - na))));
+  }
+  std::vector<Glue_pair> pairs;
+  for (std::size_t k = 0; k < chain_a.edges(); ++k) {
+    const Dart da = chain_a.darts[k], db = chain_b.darts[k];
+    const Dart shifted(Halfedge_index(db.halfedge().idx() + ha), db.is_flipped());
+    pairs.push_back({da, shifted});
+    result.halfedge_pairs.emplace_back(da.halfedge().idx(), shifted.halfedge().idx());
+    // Darts that both run with (or both against) their halfedges: the two
+    // faces then run the same way along the glued edge.
+    result.mobius_edges += da.is_flipped() == db.is_flipped() ? 1 : 0;
+  }
+  result.glued_edges = chain_a.edges();
+  Joined<P> joined(mesh_a, mesh_b);
+  glue_in_place(mesh_a, std::move(pairs), result);
+  joined.keep();
+  for (std::size_t i = 0; i < n_pairs; ++i)
+    mesh_a.point(result.vertex_map[chain_a.vertices[i]]) = placed[i];
+  return result;
+}
+
+} // namespace internal
+
 /// \ingroup PkgMobiusMeshMerge
 ///
 /// Glues the border chain `pairing.second` of `mesh_b` to the chain
@@ -724,6 +927,10 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
 {
   CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
   CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
+  if (&mesh_a == &mesh_b) {
+    const Mobius_mesh<P> copy = mesh_b;
+    return merge_borders(mesh_a, copy, pairing, strategy, np);
+  }
   using Default_traits = typename CGAL::Kernel_traits<P>::Kernel;
   const auto traits =
     parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::geom_traits), Default_traits());
@@ -732,56 +939,17 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
   const internal::Border_chain chain_a = internal::border_chain(mesh_a, pairing.first, pairing.first_edges, 0, "first");
   const internal::Border_chain chain_b =
     internal::border_chain(mesh_b, pairing.second, pairing.second_edges, na, "second");
-  Mobius_mesh<P> work = mesh_a;
-  work.join(mesh_b);
-  const std::size_t nv = work.number_of_vertices();
-  Merge_result result;
-
-  internal::Union_find glued{std::uint32_t(nv)};
-  std::vector<std::vector<std::uint32_t>> extra;
-  if (strategy == Merge_strategy::bridge) {
-    extra = internal::bridge_faces(chain_a.vertices, chain_b.vertices);
-  } else {
-    if (chain_a.edges() != chain_b.edges() || chain_a.whole_loop != chain_b.whole_loop) {
-      auto describe = [](const internal::Border_chain& c) {
-        return std::to_string(c.edges()) + (c.whole_loop ? " (a whole loop)" : " (an open chain)");
-      };
-      throw Merge_error(Merge_error::Kind::mismatched_chains,
-                        "the border chains have " + describe(chain_a) + " and " + describe(chain_b) +
-                          " edges; only Merge_strategy::bridge joins chains that differ",
-                        {chain_a.vertices.front(), chain_b.vertices.front()});
-    }
-    // A whole loop's last vertex is its first again.
-    const std::size_t n_pairs = chain_a.vertices.size() - (chain_a.whole_loop ? 1 : 0);
-    for (std::size_t i = 0; i < n_pairs; ++i) {
-      glued.unite(chain_a.vertices[i], chain_b.vertices[i]);
-      result.vertex_pairs.emplace_back(chain_a.vertices[i], chain_b.vertices[i]);
-    }
-    for (std::size_t k = 0; k < chain_a.edges(); ++k) {
-      const Dart da = chain_a.darts[k], db = chain_b.darts[k];
-      result.halfedge_pairs.emplace_back(da.halfedge().idx(), db.halfedge().idx() + mesh_a.number_of_halfedges());
-      // Darts that both run with (or both against) their halfedges: the two
-      // faces then run the same way along the glued edge.
-      result.mobius_edges += da.is_flipped() == db.is_flipped() ? 1 : 0;
-    }
-    result.glued_edges = chain_a.edges();
+  switch (strategy) {
+  case Merge_strategy::bridge:
+    return internal::bridge_chains(mesh_a, mesh_b, chain_a, chain_b);
+  case Merge_strategy::keep_second:
+    return internal::glue_chains(mesh_a, mesh_b, chain_a, chain_b, [](const P&, const P& pb) { return pb; });
+  case Merge_strategy::average:
+    return internal::glue_chains(mesh_a, mesh_b, chain_a, chain_b,
+                                 [&midpoint](const P& pa, const P& pb) { return P(midpoint(pa, pb)); });
+  default:
+    return internal::glue_chains(mesh_a, mesh_b, chain_a, chain_b, [](const P& pa, const P&) { return pa; });
   }
-  std::uint32_t n_classes = 0;
-  const std::vector<std::uint32_t> cls = glued.classes(n_classes);
-  std::vector<P> position(n_classes);
-  for (std::size_t v = nv; v-- > 0;) // the lowest member (the first mesh's) wins
-    position[cls[v]] = work.point(Vertex_index(v));
-  if (strategy == Merge_strategy::keep_second || strategy == Merge_strategy::average)
-    for (const auto& [va, vb] : result.vertex_pairs) {
-      const P& pa = work.point(Vertex_index(std::uint32_t(va)));
-      const P& pb = work.point(Vertex_index(std::uint32_t(vb)));
-      position[cls[va]] = strategy == Merge_strategy::keep_second ? pb : midpoint(pa, pb);
-    }
-  Mobius_mesh<P> out = internal::rebuild_glued(work, cls, position, extra, result);
-  if (strategy == Merge_strategy::bridge)
-    result.mobius_edges = number_of_mobius_edges(out) - number_of_mobius_edges(work);
-  mesh_a = std::move(out);
-  return result;
 }
 
 /// \ingroup PkgMobiusMeshMerge

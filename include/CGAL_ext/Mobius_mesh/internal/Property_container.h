@@ -57,6 +57,9 @@ public:
   // Keeps the elements `kept[0], kept[1], ...` (increasing), in that order,
   // as elements 0, 1, ...: garbage collection, in place.
   virtual void compact(const std::vector<std::uint32_t>& kept) = 0;
+  // Element `to` takes the value of element `from`: an element moved into
+  // another's slot (in-place edits that keep the arrays compact).
+  virtual void copy(std::size_t from, std::size_t to) = 0;
   virtual std::unique_ptr<Base_property_array> clone() const = 0;
   virtual std::unique_ptr<Base_property_array> empty_clone() const = 0;
   virtual const std::type_info& value_type() const = 0;
@@ -125,6 +128,7 @@ public:
         data_[i] = std::move(data_[kept[i]]);
     data_.resize(kept.size(), Stored(default_));
   }
+  void copy(std::size_t from, std::size_t to) override { data_[to] = data_[from]; }
   std::unique_ptr<Base_property_array> clone() const override
   {
     return std::make_unique<Property_array>(*this);
@@ -252,6 +256,13 @@ public:
     for (auto& a : arrays_)
       a->compact(kept);
     size_ = kept.size();
+  }
+
+  // Element `to` of every array takes the value of element `from`.
+  void copy(std::size_t from, std::size_t to)
+  {
+    for (auto& a : arrays_)
+      a->copy(from, to);
   }
 
   template <class T>
