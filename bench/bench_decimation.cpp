@@ -1,0 +1,289 @@
+// Garland–Heckbert decimation, against CGAL's edge_collapse with
+// GarlandHeckbert_plane_policies (on Surface_mesh) and OpenMesh's Decimater
+// with ModQuadricT (on a TriMesh), on the same input: an n x n torus of
+// triangles (each quad split along one diagonal; 708 x 708 gives 1 002 528
+// triangles), decimated to 10 % and to 1 % of its faces.
+//
+// Timed: the decimation alone, one call per iteration; the copy of the input
+// into each library's mesh is made with the timers paused. OpenMesh also runs
+// with ModNormalFlippingT (90°, the normal test ours and CGAL's edge_collapse
+// make), and its garbage collection is timed, as ours and CGAL's are.
+//
+// Counters, from one extra run after the timed loop: peak_heap_bytes, the
+// highest heap during that run, the copy of the input into the mesh included
+// (bench/heap_accounting.h); faces, of the result; hausdorff, the symmetric
+// Hausdorff distance of the result to the input, both as Surface_mesh copies
+// (PMP::approximate_symmetric_Hausdorff_distance, random uniform sampling of
+// a fixed number of points with a fixed seed, and the vertices, the same for
+// all three).
+
+#include "heap_accounting.h"
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Surface_mesh_conversion.h>
+#include <CGAL_ext/decimation.h>
+
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+
+#if CGAL_EXT_HAVE_OPENMESH
+// OpenMesh's VectorT leaves its coordinates uninitialised, which its property
+// arrays then copy (PropertyT::push_back).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#pragma GCC diagnostic pop
+#endif
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+using K = CGAL::Simple_cartesian<double>;
+using Point = K::Point_3;
+using Mesh = CGAL_ext::Mobius_mesh<Point>;
+using SM = CGAL::Surface_mesh<Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace SMS = CGAL::Surface_mesh_simplification;
+
+constexpr std::size_t grid = 708;
+// Points sampled on each mesh for the Hausdorff distance, in both directions.
+constexpr std::size_t hausdorff_samples = 400000;
+
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+Soup torus_soup(std::size_t n)
+{
+  Soup s;
+  const double pi = std::acos(-1.0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double u = 2 * pi * double(i) / double(n), v = 2 * pi * double(j) / double(n);
+      s.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
+    }
+  auto at = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      s.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      s.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return s;
+}
+
+// The input, built once for all benchmarks, before any timing or counting.
+const Soup& input_soup()
+{
+  static const Soup soup = torus_soup(grid);
+  return soup;
+}
+const SM& input_surface_mesh()
+{
+  static const SM sm = [] {
+    SM m;
+    PMP::polygon_soup_to_polygon_mesh(input_soup().points, input_soup().triangles, m);
+    return m;
+  }();
+  return sm;
+}
+
+// Each implementation: its mesh type, how it is built from the input
+// Surface_mesh, how it decimates, and how its result becomes a Surface_mesh.
+struct Ours
+{
+  using M = Mesh;
+  static void load(M& m) { CGAL_ext::from_surface_mesh(input_surface_mesh(), m); }
+  static void decimate(M& m, std::size_t target)
+  {
+    CGAL_ext::decimate(m, CGAL_ext::parameters::number_of_faces(target));
+  }
+  static std::size_t faces(const M& m) { return m.number_of_faces(); }
+  static SM to_sm(const M& m)
+  {
+    SM sm;
+    CGAL_ext::to_surface_mesh(m, sm);
+    return sm;
+  }
+};
+
+struct Cgal
+{
+  using M = SM;
+  static void load(M& m) { m = input_surface_mesh(); }
+  static void decimate(M& m, std::size_t target)
+  {
+    SMS::GarlandHeckbert_plane_policies<SM, K> policies(m);
+    auto stop = [&m, target](const auto&, const auto&, std::size_t, std::size_t) {
+      return m.number_of_faces() <= target;
+    };
+    SMS::edge_collapse(m, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(policies.get_placement()));
+    m.collect_garbage();
+  }
+  static std::size_t faces(const M& m) { return m.number_of_faces(); }
+  static SM to_sm(const M& m) { return m; }
+};
+
+#if CGAL_EXT_HAVE_OPENMESH
+// Double coordinates, as the others (OpenMesh's default is float).
+struct Om_traits : OpenMesh::DefaultTraits
+{
+  typedef OpenMesh::Vec3d Point;
+  typedef OpenMesh::Vec3d Normal;
+};
+using Om_mesh = OpenMesh::TriMesh_ArrayKernelT<Om_traits>;
+
+template <bool normal_flipping>
+struct Open_mesh
+{
+  using M = Om_mesh;
+  static void load(M& m)
+  {
+    const SM& sm = input_surface_mesh();
+    std::vector<M::VertexHandle> handle;
+    handle.reserve(sm.number_of_vertices());
+    for (SM::Vertex_index v : sm.vertices()) {
+      const Point& p = sm.point(v);
+      handle.push_back(m.add_vertex(M::Point(p.x(), p.y(), p.z())));
+    }
+    for (SM::Face_index f : sm.faces()) {
+      std::array<M::VertexHandle, 3> corners;
+      int i = 0;
+      for (SM::Vertex_index v : CGAL::vertices_around_face(sm.halfedge(f), sm))
+        corners[i++] = handle[v.idx()];
+      m.add_face(corners[0], corners[1], corners[2]);
+    }
+  }
+  static void decimate(M& m, std::size_t target)
+  {
+    OpenMesh::Decimater::DecimaterT<M> decimater(m);
+    OpenMesh::Decimater::ModQuadricT<M>::Handle quadric;
+    decimater.add(quadric);
+    decimater.module(quadric).unset_max_err();
+    OpenMesh::Decimater::ModNormalFlippingT<M>::Handle flipping;
+    if (normal_flipping) {
+      // The module reads face normals; it would otherwise compute them itself and say so on stderr.
+      m.request_face_normals();
+      m.update_face_normals();
+      decimater.add(flipping);
+      decimater.module(flipping).set_max_normal_deviation(90.0);
+    }
+    decimater.initialize();
+    decimater.decimate_to_faces(0, target);
+    m.garbage_collection();
+  }
+  static std::size_t faces(const M& m) { return m.n_faces(); }
+  static SM to_sm(const M& m)
+  {
+    std::vector<Point> points;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    for (auto v : m.vertices()) {
+      const auto& p = m.point(v);
+      points.emplace_back(p[0], p[1], p[2]);
+    }
+    for (auto f : m.faces()) {
+      std::array<std::size_t, 3> t;
+      int i = 0;
+      for (auto v : m.fv_range(f))
+        t[i++] = std::size_t(v.idx());
+      triangles.push_back(t);
+    }
+    SM sm;
+    PMP::polygon_soup_to_polygon_mesh(points, triangles, sm);
+    return sm;
+  }
+};
+#endif
+
+double hausdorff_to_input(const SM& out)
+{
+  // Edges are not sampled: CGAL 5.5 samples them from its default random
+  // generator, not from the seed, and the distances then differ run to run.
+  const auto sampling = CGAL::parameters::use_random_uniform_sampling(true)
+                          .number_of_points_on_faces(hausdorff_samples)
+                          .random_seed(1)
+                          .do_sample_edges(false);
+  return PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(out, input_surface_mesh(), sampling,
+                                                                            sampling);
+}
+
+// Timed runs on fresh copies, then one counted run whose result is measured.
+// The target is given in per mille of the input's faces.
+template <class Impl>
+void decimation(benchmark::State& state, std::size_t per_mille)
+{
+  const std::size_t target = input_soup().triangles.size() * per_mille / 1000;
+  for (auto _ : state) {
+    state.PauseTiming();
+    typename Impl::M m;
+    Impl::load(m);
+    state.ResumeTiming();
+    Impl::decimate(m, target);
+    benchmark::DoNotOptimize(Impl::faces(m));
+    state.PauseTiming(); // the destruction of the result is not timed
+    m = typename Impl::M();
+    state.ResumeTiming();
+  }
+  // Counted from an empty mesh: every block counted is the run's own. The
+  // result is kept after counting stops, which heap_accounting.h allows.
+  typename Impl::M m;
+  heap::live = heap::peak = 0;
+  heap::counting = true;
+  Impl::load(m);
+  Impl::decimate(m, target);
+  heap::counting = false;
+  state.counters["peak_heap_bytes"] = double(heap::peak);
+  state.counters["faces"] = double(Impl::faces(m));
+  // Computed once per implementation and target, not once per repetition.
+  static std::map<std::size_t, double> hausdorff;
+  auto known = hausdorff.find(target);
+  if (known == hausdorff.end())
+    known = hausdorff.emplace(target, hausdorff_to_input(Impl::to_sm(m))).first;
+  state.counters["hausdorff"] = known->second;
+}
+
+template <class Impl>
+void add(const std::string& name, int per_mille)
+{
+  benchmark::RegisterBenchmark(name.c_str(), decimation<Impl>, std::size_t(per_mille))
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  input_surface_mesh(); // built before anything is timed or counted
+  // Names are group/case/implementation, as scripts/bench.sh pairs them.
+  for (int per_mille : {100, 10}) {
+    const std::string c = "decimation/torus_" + std::to_string(grid) + "x" + std::to_string(grid) + "x2_to_" +
+                          (per_mille == 100 ? "10" : "1") + "_percent/";
+    add<Ours>(c + "CGAL_ext", per_mille);
+    add<Cgal>(c + "CGAL_edge_collapse_GH", per_mille);
+#if CGAL_EXT_HAVE_OPENMESH
+    add<Open_mesh<false>>(c + "OpenMesh_Decimater_quadric", per_mille);
+    add<Open_mesh<true>>(c + "OpenMesh_Decimater_quadric_normal_flipping", per_mille);
+#endif
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}
