@@ -34,7 +34,8 @@
 // to do. Each threads:N benchmark runs under its own tbb::global_control
 // (max_allowed_parallelism = N), made and destroyed with the benchmark, so
 // no cap exists for the whole program: TBB applies the smallest of the caps
-// alive, not the innermost. The CPU time is the main thread's: for the
+// alive, not the innermost (a benchmark whose cap TBB does not apply as asked
+// stops with an error). The CPU time is the main thread's: for the
 // threaded variants, read the real (manual) time.
 //
 // Counters (memory measured once per benchmark, outside the timed loop):
@@ -706,8 +707,15 @@ void run(benchmark::State& state, Input which, unsigned levels, Heap_mode heap_m
          unsigned threads, std::optional<Memory>& memory)
 {
   std::optional<Thread_limit> limit;
-  if (threads > 0)
+  if (threads > 0) {
     limit.emplace(int(threads));
+    if (Thread_limit::allowed() != threads && parallel_available()) {
+      state.SkipWithError(("TBB allows " + std::to_string(Thread_limit::allowed()) + " threads, not " +
+                           std::to_string(threads) + ": another tbb::global_control caps it")
+                            .c_str());
+      return;
+    }
+  }
   const Input_data& in = input(which);
   set_heap_mode(heap_mode);
   const auto runner = make(in, levels, threads);

@@ -71,6 +71,9 @@ class Thread_limit
 public:
   explicit Thread_limit(int threads);
   ~Thread_limit();
+  /// The number of threads TBB allows now, with every cap alive applied
+  /// (without the parallel path, 1).
+  static std::size_t allowed();
   Thread_limit(const Thread_limit&) = delete;
   Thread_limit& operator=(const Thread_limit&) = delete;
 

@@ -101,6 +101,15 @@ Thread_limit::Thread_limit(int) {}
 #endif
 Thread_limit::~Thread_limit() = default;
 
+std::size_t Thread_limit::allowed()
+{
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+  return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+#else
+  return 1;
+#endif
+}
+
 void write_blocks(const std::vector<Block>& blocks, unsigned parts)
 {
   // Slices start on page boundaries, so that no page is shared by two
