@@ -62,11 +62,51 @@ private:
 /// Whether the library has the parallel subdivision (`CGAL_EXT_SUBDIVISION_PARALLEL`).
 bool parallel_available();
 
-/// Caps TBB at `threads` for the rest of the program (no-op without the parallel path).
-void limit_threads(int threads);
+/// Caps TBB at `threads` while it exists (a `tbb::global_control`; nothing
+/// without the parallel path). Controls of one parameter that exist at once
+/// do not nest: TBB applies the smallest cap of them all, so no other cap may
+/// be alive, such as one for the whole program.
+class Thread_limit
+{
+public:
+  explicit Thread_limit(int threads);
+  ~Thread_limit();
+  /// The number of threads TBB allows now, with every cap alive applied
+  /// (without the parallel path, 1).
+  static std::size_t allowed();
+  Thread_limit(const Thread_limit&) = delete;
+  Thread_limit& operator=(const Thread_limit&) = delete;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// A block of bytes to write.
+struct Block
+{
+  unsigned char* data;
+  std::size_t size;
+};
+
+/// Writes every byte of `blocks` once (`memset`), each block cut into
+/// `parts` contiguous slices of equal size; with `parts` > 1, one TBB task
+/// per slice index writes that slice of every block (without the parallel
+/// path, one after the other).
+void write_blocks(const std::vector<Block>& blocks, unsigned parts);
+
+/// The bytes of each array of a `CGAL_ext::Mobius_mesh<Point>` with these
+/// counts and only its point map: vertex points and halfedges, halfedge
+/// targets, next, previous and faces, the edges' Möbius flags, the faces'
+/// halfedges.
+std::vector<std::size_t> mesh_array_bytes(std::size_t vertices, std::size_t edges, std::size_t faces);
 
 /// The soup of `CGAL_ext::make_torus(mesh, nu, nv)`: its points and its faces' vertex cycles.
 Soup torus_soup(std::size_t nu, std::size_t nv);
+/// The soup of `CGAL_ext::make_mobius_strip(mesh, n_around, n_across)` (one half twist, quads).
+Soup mobius_strip_soup(std::size_t n_around, std::size_t n_across);
+/// The soup of `CGAL_ext::make_klein_bottle(mesh, nu, nv)`.
+Soup klein_bottle_soup(std::size_t nu, std::size_t nv);
 
 } // namespace subdivision_bench
 

@@ -15,7 +15,13 @@
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
 #include <CGAL/tags.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 #endif
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 
 namespace subdivision_bench {
 
@@ -80,18 +86,66 @@ bool parallel_available()
 #endif
 }
 
-void limit_threads([[maybe_unused]] int threads)
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+struct Thread_limit::Impl
+{
+  tbb::global_control control;
+};
+Thread_limit::Thread_limit(int threads)
+  : impl_(new Impl{tbb::global_control(tbb::global_control::max_allowed_parallelism, std::size_t(threads))})
+{}
+#else
+struct Thread_limit::Impl
+{};
+Thread_limit::Thread_limit(int) {}
+#endif
+Thread_limit::~Thread_limit() = default;
+
+std::size_t Thread_limit::allowed()
 {
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
-  // Lives to the end of the program: the cap holds while the object exists.
-  static tbb::global_control control(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+#else
+  return 1;
 #endif
 }
 
-Soup torus_soup(std::size_t nu, std::size_t nv)
+void write_blocks(const std::vector<Block>& blocks, unsigned parts)
 {
-  CGAL_ext::Mobius_mesh<Point> mesh;
-  CGAL_ext::make_torus(mesh, nu, nv);
+  // Slices start on page boundaries, so that no page is shared by two
+  // writers: each faults in its own pages on a cold run.
+  constexpr std::size_t page = 4096;
+  auto write_slice = [&](std::size_t i) {
+    for (const Block& b : blocks) {
+      const std::size_t slice = (b.size / parts + page - 1) / page * page;
+      const std::size_t begin = (std::min)(b.size, i * slice), end = (std::min)(b.size, begin + slice);
+      std::memset(b.data + begin, 0x5a, end - begin);
+    }
+  };
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+  if (parts > 1) {
+    tbb::parallel_for(std::size_t(0), std::size_t(parts), write_slice, tbb::static_partitioner());
+    return;
+  }
+#endif
+  for (std::size_t i = 0; i < parts; ++i)
+    write_slice(i);
+}
+
+std::vector<std::size_t> mesh_array_bytes(std::size_t vertices, std::size_t edges, std::size_t faces)
+{
+  using namespace CGAL_ext;
+  const std::size_t halfedges = 2 * edges;
+  return {vertices * sizeof(Point),          vertices * sizeof(Dart),
+          halfedges * sizeof(Vertex_index),  halfedges * sizeof(Dart),
+          halfedges * sizeof(Dart),          halfedges * sizeof(Face_index),
+          edges * sizeof(std::uint8_t),      faces * sizeof(Halfedge_index)};
+}
+
+namespace {
+
+Soup soup_of(const CGAL_ext::Mobius_mesh<Point>& mesh)
+{
   Soup s;
   s.points.reserve(mesh.number_of_vertices());
   for (auto v : mesh.vertices())
@@ -103,6 +157,29 @@ Soup torus_soup(std::size_t nu, std::size_t nv)
       polygon.push_back(v.idx());
   }
   return s;
+}
+
+} // namespace
+
+Soup torus_soup(std::size_t nu, std::size_t nv)
+{
+  CGAL_ext::Mobius_mesh<Point> mesh;
+  CGAL_ext::make_torus(mesh, nu, nv);
+  return soup_of(mesh);
+}
+
+Soup mobius_strip_soup(std::size_t n_around, std::size_t n_across)
+{
+  CGAL_ext::Mobius_mesh<Point> mesh;
+  CGAL_ext::make_mobius_strip(mesh, n_around, n_across);
+  return soup_of(mesh);
+}
+
+Soup klein_bottle_soup(std::size_t nu, std::size_t nv)
+{
+  CGAL_ext::Mobius_mesh<Point> mesh;
+  CGAL_ext::make_klein_bottle(mesh, nu, nv);
+  return soup_of(mesh);
 }
 
 } // namespace subdivision_bench

@@ -4,8 +4,10 @@
 # ours, with the ratios (peer time / our time: above 1 means we are faster;
 # our bytes / peer bytes: below 1 means we use less).
 #
-# Benchmark names are `group/case.../implementation`; the implementation whose
-# name starts with `CGAL_ext` is the reference of its case. Counters whose name
+# Benchmark names are `group/case.../implementation`, with `/threads:N` after
+# the implementations run at several thread counts (one row per count); the
+# first implementation whose name starts with `CGAL_ext` is the reference of
+# its case. Counters whose name
 # contains `bytes` are compared as memory.
 #
 # Environment: CGAL_EXT_BENCH_BUILD_DIR (build/bench), CGAL_EXT_BENCH_JOBS (2),
@@ -47,10 +49,14 @@ from collections import OrderedDict
 
 data = json.load(open(sys.argv[1]))
 SUFFIXES = ("real_time", "process_time", "manual_time")
-PREFIXES = ("threads:", "iterations:", "repeats:", "min_time:", "min_warmup_time:")
+PREFIXES = ("iterations:", "repeats:", "min_time:", "min_warmup_time:")
 
+# A thread count stays with its implementation (`name/threads:N`): each count
+# is a row of its own.
 def split(run_name):
     parts = [p for p in run_name.split("/") if p not in SUFFIXES and not p.startswith(PREFIXES)]
+    while len(parts) > 1 and parts[-1].startswith("threads:"):
+        parts[-2:] = [parts[-2] + "/" + parts[-1]]
     return "/".join(parts[:-1]), parts[-1]
 
 # Medians when there are repetitions, single runs otherwise.
