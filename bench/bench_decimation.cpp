@@ -42,6 +42,8 @@
 #pragma GCC diagnostic pop
 #endif
 
+#include "bench_shapes.h"
+
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -63,34 +65,12 @@ constexpr std::size_t grid = 708;
 // Points sampled on each mesh for the Hausdorff distance, in both directions.
 constexpr std::size_t hausdorff_samples = 400000;
 
-struct Soup
-{
-  std::vector<Point> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-};
-
-Soup torus_soup(std::size_t n)
-{
-  Soup s;
-  const double pi = std::acos(-1.0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      const double u = 2 * pi * double(i) / double(n), v = 2 * pi * double(j) / double(n);
-      s.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
-    }
-  auto at = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      s.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      s.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return s;
-}
+using Soup = bench_shapes::Triangle_soup<Point>;
 
 // The input, built once for all benchmarks, before any timing or counting.
 const Soup& input_soup()
 {
-  static const Soup soup = torus_soup(grid);
+  static const Soup soup = bench_shapes::torus_triangle_soup<Point>(grid);
   return soup;
 }
 const SM& input_surface_mesh()

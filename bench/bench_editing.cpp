@@ -21,6 +21,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 
+#include "bench_shapes.h"
+
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -36,30 +38,9 @@ using Point = K::Point_3;
 using Mesh = CGAL_ext::Mobius_mesh<Point>;
 using SM = CGAL::Surface_mesh<Point>;
 
-struct Soup
-{
-  std::vector<Point> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-};
+using Soup = bench_shapes::Triangle_soup<Point>;
 
-// An n x n torus, each quad split along one diagonal.
-Soup torus(std::size_t n)
-{
-  Soup s;
-  const double pi = std::acos(-1.0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      const double u = 2 * pi * double(i) / double(n), v = 2 * pi * double(j) / double(n);
-      s.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
-    }
-  auto at = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      s.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      s.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  return s;
-}
+Soup torus(std::size_t n) { return bench_shapes::torus_triangle_soup<Point>(n); }
 
 Mesh ours(const Soup& s)
 {

@@ -18,6 +18,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "bench_shapes.h"
+
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -37,22 +39,9 @@ constexpr unsigned iterations = 3;
 
 SM torus(std::size_t n)
 {
-  std::vector<Point> points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  const double pi = std::acos(-1.0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      const double u = 2 * pi * double(i) / double(n), v = 2 * pi * double(j) / double(n);
-      points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
-    }
-  auto at = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
+  const auto soup = bench_shapes::torus_triangle_soup<Point>(n);
   SM sm;
-  PMP::polygon_soup_to_polygon_mesh(points, triangles, sm);
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, sm);
   return sm;
 }
 
