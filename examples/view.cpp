@@ -30,9 +30,10 @@ const examples::Tool_usage usage{
   "orientation points to, orange on the other. The colours swap across Möbius edges (green), so a\n"
   "one-sided surface shows both on one side. Borders are red, sharp edges purple by sharpness.\n"
   "  --screenshot OUT.png  draw once, write the picture and exit (needs a display: xvfb-run)\n"
-  "  --size WxH            the window's size in pixels (default 800x600)\n"
+  "  --size WxH            the picture's size in pixels (default 800x600)\n"
   "  --direction X,Y,Z     the direction the camera looks in (default -1,-0.6,-1.2)\n"
   "  --up X,Y,Z            the direction that is up in the picture (default 0,0,1)\n"
+  "                        (these three with --screenshot; the window opens in CGAL's view)\n"
   "  --gap G               the gap between the two sides, a fraction of the bounding box's\n"
   "                        diagonal (default 0.002)\n"
   "  --features-only       draw only border, Möbius and sharp edges, not the others\n"
@@ -96,7 +97,13 @@ int view(int argc, char** argv)
     mobius += mesh.is_mobius(e);
     border += mesh.is_border(e);
   }
-  std::cout << "{\"screenshot\":\"" << out << "\",\"width\":" << settings.width << ",\"height\":" << settings.height
+  std::string quoted; // the name as a JSON string
+  for (const char c : out) {
+    if (c == '"' || c == '\\')
+      quoted += '\\';
+    quoted += c;
+  }
+  std::cout << "{\"screenshot\":\"" << quoted << "\",\"width\":" << settings.width << ",\"height\":" << settings.height
             << ",\"faces\":" << mesh.number_of_faces() << ",\"mobius_edges\":" << mobius
             << ",\"border_edges\":" << border << "}" << std::endl;
   return 0;

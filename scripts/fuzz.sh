@@ -6,7 +6,7 @@
 # <build>/findings/. Exits non-zero on a finding.
 #
 #   FUZZ_SECONDS=3600 FUZZ_JOBS=2 bash scripts/fuzz.sh   # an hour per reader
-#   FUZZ_SEED=1 bash scripts/fuzz.sh                     # the same random choices each run
+#   FUZZ_SEED=1 bash scripts/fuzz.sh                     # the same random choices from the same corpus
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${CGAL_EXT_FUZZ_BUILD_DIR:-build/fuzz}

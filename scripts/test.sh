@@ -18,8 +18,11 @@ fuzz_pid=
 if command -v clang++ >/dev/null 2>&1 &&
    echo 'extern "C" int LLVMFuzzerTestOneInput(const char*, unsigned long) { return 0; }' |
      clang++ -x c++ -fsanitize=fuzzer - -o build/fuzz_probe >/dev/null 2>&1; then
-  (FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_SEED=${FUZZ_SEED:-1} bash scripts/fuzz.sh >"$fuzz_log" 2>&1) &
+  # In a process group of its own, so that all of it stops if the build or
+  # a test fails first.
+  FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_SEED=${FUZZ_SEED:-1} setsid bash scripts/fuzz.sh >"$fuzz_log" 2>&1 &
   fuzz_pid=$!
+  trap 'kill -- -"$fuzz_pid" 2>/dev/null || true' EXIT
 else
   echo "note: clang++ with libFuzzer not found: the readers' fuzz targets are not run" >&2
 fi

@@ -1,10 +1,12 @@
-// side_colours PICTURE.png (both|one)
+// side_colours PICTURE.png (both|front)
 //
 // Counts the pixels of a picture of the view tool that show the front side's
 // colour (blue: blue well above red) and the back side's (orange: red above
 // green well above blue), whatever the shading did to their brightness, and
 // checks what a surface must show: "both" sides' colours (each on at least 2 %
-// of the picture), or only "one" (one on at least 5 %, the other on under 0.1 %).
+// of the picture: a one-sided surface, or a two-sided one seen from both sides),
+// or the "front" only (on at least 5 %, the back's on under 0.1 %: a closed
+// surface whose faces point outwards).
 // Prints {"pixels":N,"front":F,"back":B} and exits 0 if the check holds, 1 if not,
 // 2 if the picture cannot be read.
 #include <QImage>
@@ -16,8 +18,8 @@
 int main(int argc, char* argv[])
 {
   const std::string expect = argc == 3 ? argv[2] : "";
-  if (expect != "both" && expect != "one") {
-    std::cerr << "usage: side_colours PICTURE.png (both|one)\n";
+  if (expect != "both" && expect != "front") {
+    std::cerr << "usage: side_colours PICTURE.png (both|front)\n";
     return 2;
   }
   const QImage image(QString::fromLocal8Bit(argv[1]));
@@ -36,6 +38,6 @@ int main(int argc, char* argv[])
   const long pixels = long(image.width()) * image.height();
   std::cout << "{\"pixels\":" << pixels << ",\"front\":" << front << ",\"back\":" << back << "}" << std::endl;
   const double f = double(front) / double(pixels), b = double(back) / double(pixels);
-  const bool ok = expect == "both" ? std::min(f, b) >= 0.02 : std::max(f, b) >= 0.05 && std::min(f, b) < 0.001;
+  const bool ok = expect == "both" ? std::min(f, b) >= 0.02 : f >= 0.05 && b < 0.001;
   return ok ? 0 : 1;
 }

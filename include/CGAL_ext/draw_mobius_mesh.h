@@ -28,7 +28,9 @@
 #include <CGAL/Qt/init_ogl_context.h>
 
 #include <QApplication>
+#include <QEventLoop>
 #include <QTimer>
+#include <functional>
 #include <memory>
 #endif
 
@@ -106,9 +108,13 @@ public:
     up_vector_ = up;
   }
 
-  /// Writes a PNG of what the viewer shows to `file` once the window has
-  /// been drawn, then quits the application's event loop.
-  void take_screenshot_and_quit(const std::string& file) { screenshot_file_ = file; }
+  /// Writes a picture of what the viewer shows to `file` (its format from
+  /// its suffix) once the window has been drawn, then calls `done`.
+  void take_screenshot(const std::string& file, std::function<void()> done)
+  {
+    screenshot_file_ = file;
+    screenshot_done_ = std::move(done);
+  }
 
 protected:
   /// Sets the view and schedules the screenshot once OpenGL is ready.
@@ -127,7 +133,8 @@ protected:
       // into its own frame buffer, which needs the context init() made.
       QTimer::singleShot(0, this, [this] {
         saveSnapshot(QString::fromStdString(screenshot_file_), width(), height());
-        QCoreApplication::quit();
+        if (screenshot_done_)
+          screenshot_done_();
       });
   }
 
@@ -135,6 +142,7 @@ private:
   std::array<double, 3> view_direction_{{0.0, 0.0, 0.0}};
   std::array<double, 3> up_vector_{{0.0, 0.0, 1.0}};
   std::string screenshot_file_;
+  std::function<void()> screenshot_done_;
 };
 
 namespace internal {
@@ -176,8 +184,9 @@ private:
 /// surface shows both colours on one side. Borders are red, sharp edges
 /// purple by their sharpness. Takes the named parameters of
 /// `make_two_sided_scene()`. Does nothing but say so on `std::cerr` when
-/// built without `CGAL_USE_BASIC_VIEWER`, and when the environment variable
-/// `CGAL_TEST_SUITE` is set (as `CGAL::draw()`).
+/// built without `CGAL_USE_BASIC_VIEWER`; with the environment variable
+/// `CGAL_TEST_SUITE` set, builds the scene and returns without a window (as
+/// `CGAL::draw()`).
 /// \throws Parameter_error as `make_two_sided_scene()`, before a window opens;
 /// \throws Error when there is no display to open it on.
 template <class P, class NP = parameters::Default_named_parameters>
@@ -199,12 +208,15 @@ void draw(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values(
 }
 
 /// \ingroup PkgMobiusMeshDrawing
-/// \brief draws `mesh` as `draw()` does, off any screen's way, and writes the
-/// picture to the PNG file `file`.
+/// \brief draws `mesh` as `draw()` does, in a window of its own for the
+/// moment it takes, and writes the picture to `file` (PNG, or another format
+/// Qt writes, by its suffix).
 ///
 /// It needs a display (an X server; `xvfb-run` gives one to a program without
-/// a screen) with OpenGL 4.3 or 2.1 ES. Takes the named parameters of
-/// `make_two_sided_scene()`.
+/// a screen) with OpenGL 4.3 or 2.1 ES. It runs an event loop of its own, so
+/// a Qt program may call it from its running loop. The picture is written
+/// aside and renamed into place, so a failure leaves an existing `file` as
+/// it was. Takes the named parameters of `make_two_sided_scene()`.
 /// \throws Parameter_error as `make_two_sided_scene()`, or when the picture
 /// is not between 16 and 8192 pixels wide and high;
 /// \throws Error when there is no display;
@@ -220,18 +232,29 @@ void save_screenshot(const Mobius_mesh<P>& mesh, const std::string& file, const 
                           std::to_string(settings.height) + " pixels; each side must be from 16 to 8192");
 #ifdef CGAL_USE_BASIC_VIEWER
   const Two_sided_scene scene = make_two_sided_scene(mesh, np);
-  std::remove(file.c_str()); // so that a stale picture is not taken for this one
+  const std::size_t dot = file.find_last_of('.');
+  const std::string suffix = dot == std::string::npos || file.find('/', dot) != std::string::npos ? ".png"
+                                                                                                 : file.substr(dot);
+  const std::string aside = file + ".part" + suffix; // Qt picks the format by the suffix
+  std::remove(aside.c_str());
   {
     internal::Viewer_application app("save_screenshot");
+    QEventLoop loop;
     Mobius_mesh_viewer_qt viewer(nullptr, scene, "Mobius_mesh screenshot");
     viewer.set_view(settings.view_direction, settings.up_vector);
-    viewer.take_screenshot_and_quit(file);
+    viewer.take_screenshot(aside, [&loop] { loop.quit(); });
     viewer.resize(settings.width, settings.height);
+    // A window that is never drawn (no OpenGL) must not hang the caller.
+    QTimer::singleShot(60000, &loop, &QEventLoop::quit);
     viewer.show();
-    app.exec();
+    loop.exec(); // its own loop: a program's running loop is left as it is
   }
-  if (!std::ifstream(file).good())
+  if (!std::ifstream(aside).good())
     throw IO_error(file, 0, "no picture was written (is there a display with OpenGL?)");
+  if (std::rename(aside.c_str(), file.c_str()) != 0) {
+    std::remove(aside.c_str());
+    throw IO_error(file, 0, "the picture could not be moved into place");
+  }
 #else
   (void)mesh, (void)np;
   throw IO_error(file, 0, "save_screenshot: built without CGAL_USE_BASIC_VIEWER (link with CGAL::CGAL_Basic_viewer)");

@@ -387,8 +387,17 @@ void glue_in_place(Mobius_mesh<P>& mesh, std::vector<Glue_pair> pairs, Merge_res
     result.vertex_map = identity_vertex_map(mesh.number_of_vertices());
     return;
   }
+  const std::size_t given = pairs.size();
   Border_glue<P> glue(mesh, std::move(pairs));
   glue.check();
+  // Border edges that end up between the same two vertices are glued too:
+  // they count as the given pairs do (a Möbius edge where the faces agree).
+  for (std::size_t i = given; i < glue.pairs().size(); ++i) {
+    const Glue_pair& p = glue.pairs()[i];
+    result.halfedge_pairs.emplace_back(p.first.halfedge().idx(), p.second.halfedge().idx());
+    ++result.glued_edges;
+    result.mobius_edges += p.second.is_flipped() ? 0 : 1;
+  }
   result.merged_vertices = glue.apply(result.vertex_map);
 }
 

@@ -67,18 +67,27 @@ public:
   void check()
   {
     check_collapsed_faces();
-    if (check_edges()) { // pairs were added: their ends may be new members
+    while (check_edges()) { // pairs were added: their ends may be new members
       index();
       check_collapsed_faces();
-      check_edges();
     }
     check_fans();
+    // What apply() records, allocated now: apply() must not run out of
+    // memory halfway through the relinking.
+    moved_.reserve(pairs_.size());
+    removed_edges_.reserve(pairs_.size());
+    removed_vertices_.reserve(ends_.size());
+    vertex_moves_.reserve(ends_.size());
   }
+
+  /// The pairs to glue: those given, then those `check()` added.
+  const std::vector<Glue_pair>& pairs() const { return pairs_; }
 
   /// Glues (after `check()`); `vertex_map[v]` receives the vertex that input
   /// vertex `v` became. Returns the number of vertices merged into others.
   std::size_t apply(std::vector<Vertex_index>& vertex_map)
   {
+    vertex_map.resize(m_.num_vertices()); // before the first change, as every allocation
     retarget_members();
     for (const Glue_pair& p : pairs_)
       relink(p);
@@ -431,7 +440,7 @@ private:
   // element moving into each freed slot; fills `vertex_map`.
   std::size_t compact(std::vector<Vertex_index>& vertex_map)
   {
-    std::vector<u32> removed_vertices;
+    std::vector<u32>& removed_vertices = removed_vertices_;
     for (u32 i = 0; i < ends_.size(); ++i)
       if (rep_[i] != ends_[i])
         removed_vertices.push_back(ends_[i]);
@@ -442,7 +451,7 @@ private:
         move_edge(ne, e);
     const u32 nv_in = m_.num_vertices();
     u32 nv = nv_in;
-    std::vector<std::pair<u32, u32>> vertex_moves; // (from, to)
+    std::vector<std::pair<u32, u32>>& vertex_moves = vertex_moves_; // (from, to)
     for (auto it = removed_vertices.rbegin(); it != removed_vertices.rend(); ++it)
       if (*it != --nv) {
         move_vertex(nv, *it);
@@ -450,7 +459,6 @@ private:
       }
     m_.resize(nv, ne, m_.num_faces());
 
-    vertex_map.resize(nv_in);
     for (u32 v = 0; v < nv_in; ++v)
       vertex_map[v] = Vertex_index(v);
     std::sort(vertex_moves.begin(), vertex_moves.end());
@@ -515,8 +523,8 @@ private:
   std::vector<u32> ends_, rep_, by_class_, class_start_;
   std::vector<Dart> fan_, face_dart_;
   std::vector<u32> fan_start_;
-  std::vector<std::pair<u32, u32>> partner_, moved_;
-  std::vector<u32> removed_edges_;
+  std::vector<std::pair<u32, u32>> partner_, moved_, vertex_moves_;
+  std::vector<u32> removed_edges_, removed_vertices_;
 };
 
 } // namespace internal

@@ -25,9 +25,10 @@
 namespace CGAL_ext {
 namespace internal {
 
-// The index of a descriptor in the arrays CGAL algorithms size with
-// `num_vertices()`, `num_halfedges()`, ...: a dart's index is its bits, so the
-// two darts of a halfedge have two indices.
+// The index of a descriptor in the arrays the dynamic maps size with
+// `num_vertices()`, `num_halfedges()`, ...: a dart's is its bits, which stay
+// as the mesh grows, so the two darts of a halfedge have two indices. (The
+// halfedge index map that CGAL's algorithms see is numbered otherwise: below.)
 inline std::uint32_t graph_index(Vertex_index v) { return v.idx(); }
 inline std::uint32_t graph_index(Face_index f) { return f.idx(); }
 inline std::uint32_t graph_index(Dart d) { return d.bits(); }
