@@ -98,7 +98,8 @@ struct Two_sided_scene
 
 namespace internal {
 
-// A mesh's points in double, and the unit vertex normals seen from darts.
+// A mesh's points in double, and the unit vertex normals seen from darts,
+// each computed once: faces and edges ask for the same darts' normals.
 template <class P, class NP>
 class Two_sided_geometry
 {
@@ -110,7 +111,8 @@ public:
   Two_sided_geometry(const Mobius_mesh<P>& mesh, const NP& np)
     : mesh_(mesh),
       points_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                                 mesh.points()))
+                                                 mesh.points())),
+      normals_(2 * std::size_t(mesh.num_halfedges())), known_(normals_.size(), 0)
   {}
 
   Two_sided_scene::Point point(Vertex_index v) const { return To_double()(get(points_, v)); }
@@ -118,6 +120,18 @@ public:
   // The unit normal at target(d) from the side of d; the face's own normal
   // where the fan's sum is zero, and zero where that is too.
   Two_sided_scene::Vector normal(Dart d) const
+  {
+    if (!known_[d.bits()]) {
+      normals_[d.bits()] = compute_normal(d);
+      known_[d.bits()] = 1;
+    }
+    return normals_[d.bits()];
+  }
+
+private:
+  using Point_map = typename Types::Point_map;
+
+  Two_sided_scene::Vector compute_normal(Dart d) const
   {
     const CGAL::Cartesian_converter_property_map<Double_kernel::Point_3, Point_map> double_points(points_);
     const auto np = parameters::vertex_point_map(double_points).geom_traits(Double_kernel());
@@ -128,10 +142,10 @@ public:
     return length > 0 ? n / length : n;
   }
 
-private:
-  using Point_map = typename Types::Point_map;
   const Mobius_mesh<P>& mesh_;
   Point_map points_;
+  mutable std::vector<Two_sided_scene::Vector> normals_; // by dart bits
+  mutable std::vector<char> known_;
 };
 
 inline CGAL::IO::Color blend(const CGAL::IO::Color& a, const CGAL::IO::Color& b, double t)
