@@ -345,13 +345,26 @@ TEST(Quadric, SumsWeightedSquaredDistancesAndIsMinimalWhereThePlanesMeet)
   EXPECT_DOUBLE_EQ(q({0, 0, 0}), 1 + 2 + 3);
   EXPECT_DOUBLE_EQ(q({1, 3, -1}), 0 + 2 * 4 + 3 * 4);
   std::array<double, 3> x{};
-  ASSERT_TRUE(q.minimizer(x));
-  EXPECT_NEAR(x[0], 1, 1e-15);
-  EXPECT_NEAR(x[1], 1, 1e-15);
-  EXPECT_NEAR(x[2], 1, 1e-15);
-  // Two planes meet in a line: no single minimiser.
+  ASSERT_EQ(q.minimizer_near({7, -3, 2}, x), 3);
+  EXPECT_NEAR(x[0], 1, 1e-14);
+  EXPECT_NEAR(x[1], 1, 1e-14);
+  EXPECT_NEAR(x[2], 1, 1e-14);
+  // Two planes meet in a line: of its points, the one nearest the centre.
   const Quadric edge = Quadric::of_plane({1, 0, 0}, {1, 0, 0}, 1) + Quadric::of_plane({0, 1, 0}, {0, 1, 0}, 1);
-  EXPECT_FALSE(edge.minimizer(x));
+  ASSERT_EQ(edge.minimizer_near({4, -2, 5}, x), 2);
+  EXPECT_NEAR(x[0], 1, 1e-14);
+  EXPECT_NEAR(x[1], 1, 1e-14);
+  EXPECT_NEAR(x[2], 5, 1e-14);
+  // Nearly parallel planes (normals 1e-3 apart, eigenvalues ~1e-6 of the
+  // largest) meet far away, at z = -1000 / 1e-3 ~ -1e6 for this pair; the
+  // truncated minimiser keeps to the centre's neighbourhood on the planes.
+  const Quadric flat = Quadric::of_plane({0, 0, 1}, {0, 0, 0}, 1) + Quadric::of_plane({1e-3, 0, 1}, {0, 0, 1e-3}, 1);
+  ASSERT_EQ(flat.minimizer_near({0.5, 0.25, 0.1}, x), 1);
+  EXPECT_NEAR(x[0], 0.5, 1e-3);
+  EXPECT_NEAR(x[1], 0.25, 1e-12);
+  EXPECT_NEAR(x[2], 0.0005, 1e-3);
+  // The zero quadric has no minimiser.
+  EXPECT_EQ(Quadric().minimizer_near({0, 0, 0}, x), 0);
 }
 
 TEST(Decimation, ACubeComesDownToItsEightCornersExactly)

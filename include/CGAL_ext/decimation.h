@@ -152,9 +152,7 @@ public:
       if (m_.is_removed(top.edge) || top.stamp != stamp_[top.edge.idx()])
         continue;
       const Collapse_candidate c = candidate(top.edge);
-      const double error = c.cost / (std::max)(area_[m_.source(m_.halfedge(top.edge)).idx()] +
-                                                 area_[m_.target(m_.halfedge(top.edge)).idx()],
-                                               std::numeric_limits<double>::min());
+      const double error = error_of(top.edge, c);
       if (error > s_.maximum_error)
         break;
       if (collapse(top.edge, c)) {
@@ -169,7 +167,7 @@ public:
 private:
   struct Entry
   {
-    double cost;
+    double cost; // error_of() the edge's candidate
     Edge_index edge;
     std::uint32_t stamp;
     bool operator<(const Entry& o) const { return cost > o.cost; } // the cheapest on top
@@ -212,7 +210,7 @@ private:
   }
 
   // The placement of the edge's collapse: at a fixed end if there is one,
-  // else the quadric's minimiser, else the best of the ends and the midpoint.
+  // else the quadric's minimiser nearest the edge's midpoint.
   Collapse_candidate candidate(Edge_index e) const
   {
     const Dart d = m_.halfedge(e);
@@ -227,35 +225,39 @@ private:
       return c;
     }
     const Point_d a = pt(p), b = pt(q);
-    if (sum.minimizer(c.point)) {
-      c.cost = sum(c.point);
-      // An end as good as the minimiser up to rounding is taken instead, so
-      // that corners (where the minimiser is an end) stay exactly in place.
-      const Point_d ab = minus_d(b, a);
-      const double rounding = 1e-12 * (sum.a[0] + sum.a[3] + sum.a[5]) * dot_d(ab, ab);
-      for (Vertex_index end : {p, q}) {
-        const double cost = sum(pt(end));
-        if (cost <= c.cost + rounding) {
-          c.cost = cost;
-          c.at_end = end;
-          c.point = pt(end);
-          break;
-        }
-      }
-      return c;
-    }
     const Point_d mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
-    c.point = mid;
-    c.cost = sum(mid);
+    const int determined = sum.minimizer_near(mid, c.point);
+    c.cost = sum(c.point);
+    if (determined < 3)
+      return c;
+    // Where the planes meet in a point, an end as good as the minimiser up
+    // to rounding is taken instead, so that corners stay exactly in place.
+    const Point_d ab = minus_d(b, a);
+    const double rounding = 1e-12 * (sum.a[0] + sum.a[3] + sum.a[5]) * dot_d(ab, ab);
     for (Vertex_index end : {p, q}) {
       const double cost = sum(pt(end));
-      if (cost < c.cost) {
+      if (cost <= c.cost + rounding) {
         c.cost = cost;
         c.at_end = end;
         c.point = pt(end);
+        break;
       }
     }
     return c;
+  }
+
+  // The error of collapsing `e` to `c`: the quadric's value at the
+  // placement divided by the area of the faces whose planes it sums, an
+  // area-weighted mean squared distance. The queue is ordered by it, not by
+  // the quadric's value itself: that grows with the area a vertex stands for,
+  // so it would favour collapses where the input's faces are small rather
+  // than where the surface is flat (on a torus of unequal faces, the inside
+  // of the ring first, where it is most curved).
+  double error_of(Edge_index e, const Collapse_candidate& c) const
+  {
+    const Dart d = m_.halfedge(e);
+    return c.cost / (std::max)(area_[m_.source(d).idx()] + area_[m_.target(d).idx()],
+                               std::numeric_limits<double>::min());
   }
 
   void push(Edge_index e)
@@ -263,7 +265,7 @@ private:
     if (feature_[e.idx()])
       return; // a feature edge is never collapsed
     const std::uint32_t stamp = ++stamp_[e.idx()];
-    heap_.push(Entry{candidate(e).cost, e, stamp});
+    heap_.push(Entry{error_of(e, candidate(e)), e, stamp});
   }
 
   P placement(const Collapse_candidate& c) const

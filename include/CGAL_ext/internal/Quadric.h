@@ -7,7 +7,9 @@
 #ifndef CGAL_EXT_INTERNAL_QUADRIC_H
 #define CGAL_EXT_INTERNAL_QUADRIC_H
 
-#include <algorithm>
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
 #include <array>
 #include <cmath>
 
@@ -61,23 +63,44 @@ struct Quadric
     return value > 0 ? value : 0; // a sum of squares: below zero is rounding
   }
 
-  /// The minimiser of the quadric, A x = -b, by the adjugate, when A is well
-  /// conditioned: its determinant is not small against the cube of its
-  /// largest entry (a flat or straight neighbourhood has a singular A, whose
-  /// "minimiser" is anywhere along a plane or line). Returns false otherwise.
-  bool minimizer(std::array<double, 3>& x) const
+  /// The point nearest to `centre` among those that minimise the quadric
+  /// over the directions it determines well. A is split into its eigen
+  /// directions; along those whose eigenvalue is at least
+  /// `relative_threshold` times the largest, x moves from `centre` to the
+  /// minimum; along the others (a flat or straight neighbourhood, where the
+  /// "minimiser" drifts far along a plane or line on a rounding error) it
+  /// stays at `centre`. This is Lindstrom's truncated pseudo-inverse
+  /// ("Out-of-core simplification of large polygonal models", 2000): on fine
+  /// meshes the tangential eigenvalues shrink with the square of the angle
+  /// between neighbouring normals, so a test on A's determinant would throw
+  /// the whole solution away on them. Returns how many directions were
+  /// determined: 3 where planes meet in a point (a corner), 0 if A is zero
+  /// (x is then `centre`).
+  int minimizer_near(const std::array<double, 3>& centre, std::array<double, 3>& x,
+                      double relative_threshold = 1e-3) const
   {
-    const double c00 = a[3] * a[5] - a[4] * a[4], c01 = a[2] * a[4] - a[1] * a[5], c02 = a[1] * a[4] - a[2] * a[3];
-    const double c11 = a[0] * a[5] - a[2] * a[2], c12 = a[1] * a[2] - a[0] * a[4], c22 = a[0] * a[3] - a[1] * a[1];
-    const double det = a[0] * c00 + a[1] * c01 + a[2] * c02;
-    double largest = 0;
-    for (double v : a)
-      largest = (std::max)(largest, std::abs(v));
-    if (!(std::abs(det) > 1e-8 * largest * largest * largest))
-      return false;
-    x = {-(c00 * b[0] + c01 * b[1] + c02 * b[2]) / det, -(c01 * b[0] + c11 * b[1] + c12 * b[2]) / det,
-         -(c02 * b[0] + c12 * b[1] + c22 * b[2]) / det};
-    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+    Eigen::Matrix3d m;
+    m << a[0], a[1], a[2], a[1], a[3], a[4], a[2], a[4], a[5];
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(m);
+    const Eigen::Vector3d& lambda = eigen.eigenvalues(); // increasing
+    x = centre;
+    if (!(lambda(2) > 0))
+      return 0;
+    const Eigen::Vector3d x0(centre[0], centre[1], centre[2]);
+    const Eigen::Vector3d gradient = m * x0 + Eigen::Vector3d(b[0], b[1], b[2]); // half of it
+    Eigen::Vector3d result = x0;
+    int rank = 0;
+    for (int i = 0; i < 3; ++i)
+      if (lambda(i) >= relative_threshold * lambda(2)) {
+        const auto direction = eigen.eigenvectors().col(i);
+        result -= (direction.dot(gradient) / lambda(i)) * direction;
+        ++rank;
+      }
+    if (!(std::isfinite(result(0)) && std::isfinite(result(1)) && std::isfinite(result(2))))
+      return 0;
+    x = {result(0), result(1), result(2)};
+    return rank;
   }
 };
 
