@@ -1515,6 +1515,39 @@ TEST(MeshSize, SubdivisionPastTheMemoryLimitIsRefusedBeforeAllocating)
   EXPECT_THROW(S::catmull_clark(cube, CGAL_ext::parameters::number_of_iterations(13)), CGAL_ext::Size_error);
 }
 
+// A Refiner used directly reads the same limit from its options, in both of
+// its ways of refining, and keeps nothing of a refused refinement.
+TEST(MeshSize, RefinerPastItsMemoryLimitIsRefusedBeforeAllocating)
+{
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 40, 2, 1, 1.0, 0.5, false);
+  S::Refinement_options options;
+  options.maximum_memory = 1e6;
+  S::Refiner<S::Catmull_clark_mask> refiner(S::Catmull_clark_mask(), options);
+  refiner.refine(strip, 1); // 320 quads: well under a megabyte
+  ASSERT_EQ(refiner.number_of_levels(), 1u);
+  // 7 levels: 80 * 4^7 = 1.3 M quads, at least 1.3 M points of 24 bytes.
+  const unsigned long long points = 80ull << 14;
+  try {
+    refiner.refine(strip, 7);
+    ADD_FAILURE() << "no Size_error from refine()";
+  } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.element(), "bytes");
+    EXPECT_EQ(e.limit(), 1'000'000ull);
+    EXPECT_GE(e.count(), points * sizeof(Point)) << e.what();
+  }
+  EXPECT_EQ(refiner.number_of_levels(), 1u) << "the refused call kept nothing of its own";
+  std::vector<V3> values(strip.number_of_vertices(), V3{0, 0, 0});
+  const std::vector<V3> before = values;
+  Mesh out;
+  EXPECT_THROW(refiner.refine_and_interpolate(strip, 7, values, out), CGAL_ext::Size_error);
+  EXPECT_EQ(values.size(), before.size());
+  EXPECT_EQ(out.number_of_vertices(), 0u);
+  options.maximum_memory = 0;
+  EXPECT_THROW(S::Refiner<S::Catmull_clark_mask>(S::Catmull_clark_mask(), options).refine(strip, 1),
+               CGAL_ext::Parameter_error);
+}
+
 // ----------------------------------------------------------------- property maps
 
 // Every rule's weights sum to one, and the maps take the points' weights: a

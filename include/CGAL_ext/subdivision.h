@@ -252,26 +252,6 @@ bool gather_sharpness(const Mobius_mesh<P>& mesh, const NamedParameters& np, std
   return has_sharpness;
 }
 
-// Refuses, before anything is allocated, a subdivision whose result a
-// Mobius_mesh cannot index, or whose estimated peak of memory passes
-// `limit`: the result's arrays and a quarter more for the
-// refiner's last two levels (the measured peak is 123 bytes per quad of
-// double points against the result's 98), or two and a half times the
-// result when other maps are carried, as every level is then kept.
-template <class Value, class P>
-void check_subdivision_size(const Mobius_mesh<P>& mesh, Split split, unsigned levels, bool keeps_levels,
-                            double limit)
-{
-  if (!(limit > 0))
-    throw Parameter_error("subdivision: maximum_memory " + std::to_string(limit) + " is not a positive number");
-  const std::string what = "subdividing " + std::to_string(levels) + " levels";
-  const Mesh_size result = refined_size(split, size_of(mesh), levels);
-  CGAL_ext::internal::check_mesh_size(what, result);
-  const double bytes = CGAL_ext::internal::mesh_bytes<P>(result) * (keeps_levels ? 2.5 : 1.25) +
-                       double(result.vertices) * double(sizeof(Value));
-  CGAL_ext::internal::check_memory(what, bytes, limit);
-}
-
 template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
 void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
 {
@@ -290,9 +270,8 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation), Boundary_interpolation::edge_only);
   options.crease_method =
     pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
-  check_subdivision_size<Value>(mesh, Mask::split, levels, has_carried_maps(mesh),
-                                pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
-                                                     CGAL_ext::internal::physical_memory()));
+  options.maximum_memory = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
+                                                options.maximum_memory);
   std::vector<float> es, vs;
   const bool write_sharpness = gather_sharpness(mesh, np, es, vs) && Mask::creases;
 

@@ -41,6 +41,11 @@ struct Refinement_options
   /// serially (with the same result) and get no incidence tables: on small
   /// levels the tables of the parallel pass cost more than the threads save.
   std::uint32_t parallel_min_vertices = 1u << 17;
+  /// The most bytes a refinement may take (named parameter `maximum_memory`
+  /// of the subdivision functions); by default the machine's physical memory.
+  /// A refinement whose estimated peak is larger is refused before anything
+  /// is allocated.
+  double maximum_memory = CGAL_ext::internal::physical_memory();
 };
 
 /// \ingroup PkgSubdivision
@@ -148,12 +153,14 @@ public:
   /// \throws Parameter_error if a sharpness is NaN or negative, or if the mask splits
   /// triangles and `mesh` has a face that is not a triangle.
   /// \throws Size_error, before anything is allocated, if the last level
-  /// would have more elements than a `Mobius_mesh` indexes (see `refined_size()`).
+  /// would have more elements than a `Mobius_mesh` indexes (see `refined_size()`),
+  /// or if the refinement's estimated peak of memory (all its levels) is more
+  /// than `Refinement_options::maximum_memory` (element `"bytes"`).
   template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
   void refine(const Mobius_mesh<P>& mesh, unsigned levels, const std::vector<float>& edge_sharpness = {},
               const std::vector<float>& vertex_sharpness = {})
   {
-    check_size(mesh, levels);
+    check_size(mesh, levels, 2.5, 0);
     levels_.resize(levels + 1);
     weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
@@ -178,7 +185,7 @@ public:
                               const std::vector<float>& edge_sharpness = {},
                               const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
   {
-    check_size(mesh, levels);
+    check_size(mesh, levels, 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     build_base(mesh, edge_sharpness, vertex_sharpness);
     Values next;
@@ -324,12 +331,27 @@ public:
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
 private:
+  // Refuses, before anything is allocated, a refinement of `mesh` whose
+  // last level a Mobius_mesh cannot index, or whose estimated peak of memory
+  // passes `options().maximum_memory`: `kept` times the bytes of the result
+  // mesh's arrays, plus `value_bytes` per result vertex. The factors are
+  // measured peaks: a one-pass refinement holds its last two levels, a
+  // quarter more than the result (123 bytes per quad of double points
+  // against the result's 98); one that keeps every level, two and a half.
   template <class P>
-  static void check_size(const Mobius_mesh<P>& mesh, unsigned levels)
+  void check_size(const Mobius_mesh<P>& mesh, unsigned levels, double kept, double value_bytes) const
   {
     CGAL_ext::internal::require_no_garbage(mesh, "subdivision");
-    CGAL_ext::internal::check_mesh_size("subdividing " + std::to_string(levels) + " levels",
-                                        refined_size(Mask::split, internal::size_of(mesh), levels));
+    if (!(options_.maximum_memory > 0))
+      throw Parameter_error("subdivision: maximum_memory " + std::to_string(options_.maximum_memory) +
+                            " is not a positive number");
+    const std::string what = "subdividing " + std::to_string(levels) + " levels";
+    const Mesh_size result = refined_size(Mask::split, internal::size_of(mesh), levels);
+    CGAL_ext::internal::check_mesh_size(what, result);
+    CGAL_ext::internal::check_memory(what,
+                                     CGAL_ext::internal::mesh_bytes<P>(result) * kept +
+                                       double(result.vertices) * value_bytes,
+                                     options_.maximum_memory);
   }
 
   // Refines levels_[slot] into levels_[slot + 1] with the weights or
