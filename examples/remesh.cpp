@@ -1,4 +1,5 @@
 // remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp]
+//        [--relax-constraints]
 //
 // Remeshes a polygon mesh (.obj, .off, .ply) into triangles whose edges are
 // close to L (Botsch and Kobbelt's isotropic remeshing), on any surface: a
@@ -25,13 +26,16 @@
 namespace {
 
 const examples::Tool_usage usage{
-  "remesh", "remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp]",
+  "remesh",
+  "remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp] [--relax-constraints]",
   "Reads a polygon mesh (.obj, .off, .ply), splits its faces into triangles and remeshes it so\n"
   "that its edges come close to L (Botsch and Kobbelt's loop of splits, collapses, flips,\n"
   "tangential relaxation and projection onto the input), on any surface, one-sided ones included.\n"
   "  --iterations K       how many times the loop runs (1 to 1000, default 1)\n"
-  "  --protect-borders    border edges and their vertices stay as they are\n"
+  "  --protect-borders    border edges and their vertices stay as they are (but see below)\n"
   "  --protect-sharp      so do the edges the file tags as sharp (OBJ crease tags)\n"
+  "  --relax-constraints  the vertices of protected borders and sharp edges slide along them\n"
+  "                       to even out their edges; corners stay\n"
   "Writes OUT and prints its counts, topology, the share of edges between 4/5 L and 4/3 L and\n"
   "the time taken as one line of JSON.\n"};
 
@@ -51,7 +55,8 @@ int remesh(int argc, char** argv)
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   const examples::Arguments args =
-    examples::parse_arguments(argc, argv, {"--edge-length", "--iterations"}, {"--protect-borders", "--protect-sharp"});
+    examples::parse_arguments(argc, argv, {"--edge-length", "--iterations"},
+                              {"--protect-borders", "--protect-sharp", "--relax-constraints"});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--edge-length"))
@@ -67,7 +72,8 @@ int remesh(int argc, char** argv)
   CGAL_ext::isotropic_remeshing(mesh, L,
                                 CGAL_ext::parameters::number_of_iterations(unsigned(iterations))
                                   .protect_borders(args.has("--protect-borders"))
-                                  .protect_sharp_edges(args.has("--protect-sharp")));
+                                  .protect_sharp_edges(args.has("--protect-sharp"))
+                                  .relax_constraints(args.has("--relax-constraints")));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
   const char* const boolean[] = {"false", "true"};

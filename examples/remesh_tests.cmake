@@ -29,6 +29,14 @@ add_test(NAME remesh.protected_border
 set_tests_properties(remesh.protected_border PROPERTIES PASS_REGULAR_EXPRESSION
   "\"border_loops\":1,\"orientable\":false,\"closed\":false,\"components\":1,\"euler_characteristic\":0,\"valid\":true")
 
+# With --relax-constraints as well, the border slides along itself and stays one loop of a
+# non-orientable strip.
+add_test(NAME remesh.relaxed_protected_border
+         COMMAND remesh ${_data}/mobius_20x4_tris.obj ${_out}/remesh_relaxed.obj --edge-length 0.15 --protect-borders
+                 --relax-constraints --iterations 3)
+set_tests_properties(remesh.relaxed_protected_border PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"border_loops\":1,\"orientable\":false,\"closed\":false,\"components\":1,\"euler_characteristic\":0,\"valid\":true")
+
 # A missing file, a length that is not positive, iterations out of range: one line, exit 2.
 add_test(NAME remesh.fails.missing_file
   COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh> "-DARGS=${_out}/no_such.obj;${_out}/x.obj;--edge-length;1"

@@ -47,6 +47,7 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
     choose_parameter(get_parameter(np, CGAL_ext::internal_np::protect_borders), constraints);
   options.protect_sharp_edges =
     choose_parameter(get_parameter(np, CGAL_ext::internal_np::protect_sharp_edges), false);
+  options.relax_constraints = choose_parameter(get_parameter(np, CGAL::internal_np::relax_constraints), false);
   return options;
 }
 
@@ -88,7 +89,8 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{protect_borders}
 ///     \cgalParamDescription{`true`: border edges are neither split nor
-///       collapsed nor flipped, and their vertices do not move. `false`:
+///       collapsed nor flipped, and their vertices do not move (but see
+///       `relax_constraints`). `false`:
 ///       border edges are split and collapsed like others, and border
 ///       vertices slide along the input's border (to the middle of their
 ///       border neighbours, then onto the input's border edges), so each
@@ -98,8 +100,23 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
 ///   \cgalParamNBegin{protect_sharp_edges}
 ///     \cgalParamDescription{`true`: edges whose sharpness (`edge_sharpness_map()`,
 ///       the `e:sharpness` property) is above 0 are protected as borders are;
-///       their vertices (corners included) stay fixed}
+///       their vertices stay fixed (but see `relax_constraints`)}
 ///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{relax_constraints}
+///     \cgalParamDescription{CGAL's parameter. `true`: the vertices of the
+///       protected polylines (protected borders, protected sharp edges) are
+///       relaxed too, along their polyline only: each moves to 1/2 of itself
+///       and 1/4 of each of its two neighbours on the polyline, measured by
+///       arc length along the input's polyline, so it stays on that polyline
+///       (a border loop that passes Möbius edges is one polyline). Corners
+///       never move: vertices on other than two protected edges, and those
+///       where the polyline turns by more than 60 degrees. The protected
+///       edges are still neither split, collapsed nor flipped. Without
+///       protection it changes nothing: unprotected border vertices always
+///       slide along the input's border.}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`, as in CGAL}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if L is not positive and finite, the number of

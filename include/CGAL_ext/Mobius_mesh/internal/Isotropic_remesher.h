@@ -10,6 +10,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
+#include <CGAL_ext/Mobius_mesh/internal/Constraint_polylines.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Sharp_features.h>
 
@@ -134,6 +135,7 @@ struct Remeshing_options
   unsigned iterations = 1;
   bool protect_borders = false;
   bool protect_sharp_edges = false;
+  bool relax_constraints = false;
 };
 
 template <class P>
@@ -150,6 +152,9 @@ public:
       sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name))
   {
     collapse_options_.is_protected = [this](Edge_index e) { return is_protected(e); };
+    if (options.relax_constraints && (options.protect_borders || options.protect_sharp_edges))
+      polylines_.emplace(
+        mesh, [this](Edge_index e) { return is_protected(e); }, [this](Vertex_index v) { return approximate(v); });
   }
   Isotropic_remesher(const Isotropic_remesher&) = delete;
   Isotropic_remesher& operator=(const Isotropic_remesher&) = delete;
@@ -160,6 +165,7 @@ public:
       split_long_edges();
       collapse_short_edges();
       equalize_valences();
+      slide_along_constraints();
       relax_and_project();
     }
   }
@@ -179,8 +185,9 @@ private:
     return options_.protect_sharp_edges && sharpness_ && (*sharpness_)[e] > 0;
   }
 
-  // A vertex on a protected edge never moves and is never removed (CGAL's
-  // relax_constraints(false)): so protected polylines keep their exact points.
+  // A vertex on a protected edge is never removed and relax_and_project()
+  // leaves it; only slide_along_constraints() moves it, along its polyline:
+  // so protected polylines keep their vertices, corners and shape.
   bool is_fixed(Vertex_index v) const
   {
     for (Edge_index e : CGAL_ext::edges_around_target(v, mesh_))
@@ -389,6 +396,29 @@ private:
     }
   }
 
+  // relax_constraints: each vertex of a protected polyline but its corners
+  // slides along the input's polyline (see Constraint_polylines). As CGAL, a
+  // move that would turn a triangle over is halved, four times at most,
+  // before it is given up; any part of it stays on the polyline.
+  void slide_along_constraints()
+  {
+    if (!polylines_)
+      return;
+    for (const Polyline_move& move : polylines_->relaxation_moves()) {
+      const Vertex_index v = polylines_->vertex(move);
+      CGAL_assertion(!mesh_.is_removed(v) && is_fixed(v));
+      for (double fraction = 1; fraction > 0.05; fraction /= 2) {
+        const Remeshing_point to = polylines_->point_after(move, fraction);
+        if (remeshing_move_keeps_sides(mesh_.halfedge(v), to, mesh_)) {
+          mesh_.point(v) = P(to.x(), to.y(), to.z());
+          polylines_->commit(move, fraction);
+          check_star(v);
+          break;
+        }
+      }
+    }
+  }
+
   std::optional<Remeshing_point> inner_position(Vertex_index v) const
   {
     // The normal's sign depends on the side of the dart; the tangent plane does not.
@@ -451,6 +481,7 @@ private:
   const double low2_, high2_;
   std::optional<Sharpness_map> sharpness_;
   Collapse_options collapse_options_;
+  std::optional<Constraint_polylines> polylines_; // with relax_constraints only
 };
 
 } // namespace internal
