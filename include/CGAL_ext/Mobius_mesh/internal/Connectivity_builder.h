@@ -15,6 +15,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Huge_page_allocator.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -38,11 +39,11 @@ struct Face_lists
   const std::uint32_t* vertex = nullptr;
 };
 
-/// Faces listed one after the other, in arrays of their own; `view()` gives
-/// the builder its input.
+/// Faces listed one after the other, in arrays of their own (on huge pages
+/// when large, as the builder's); `view()` gives the builder its input.
 struct Face_list
 {
-  std::vector<std::uint32_t> offset{0}, vertex;
+  Huge_page_vector<std::uint32_t> offset{0}, vertex;
 
   void clear()
   {
@@ -109,6 +110,10 @@ public:
 
 private:
   static constexpr u32 null = dart_encoding::null;
+  // The temporaries are as large as the mesh, and a cold import spends most
+  // of its time faulting in their fresh pages: on huge pages, one fault per
+  // 2 MiB instead of one per 4 KiB.
+  using Array = Huge_page_vector<u32>;
 
   u32 corner_vertex(std::size_t t) const { return faces_.vertex[t]; }
   std::size_t next_corner(std::size_t t) const
@@ -129,7 +134,7 @@ private:
 
   void check_repeated_vertices() const
   {
-    std::vector<u32> seen_in_face(faces_.n_vertices, null);
+    Array seen_in_face(faces_.n_vertices, null);
     for (u32 f = 0; f < faces_.n_faces; ++f) {
       for (u32 t = faces_.offset[f]; t < faces_.offset[f + 1]; ++t) {
         const u32 v = corner_vertex(t);
@@ -147,18 +152,18 @@ private:
   void pair_sides()
   {
     const u32 nv = faces_.n_vertices;
-    std::vector<u32> bucket_start(std::size_t(nv) + 1, 0);
+    Array bucket_start(std::size_t(nv) + 1, 0);
     for (std::size_t t = 0; t < n_corners_; ++t)
       ++bucket_start[side_low(t) + 1];
     std::partial_sum(bucket_start.begin(), bucket_start.end(), bucket_start.begin());
-    std::vector<u32> bucket(n_corners_);
+    Array bucket(n_corners_);
     {
-      std::vector<u32> fill(bucket_start.begin(), bucket_start.end() - 1);
+      Array fill(bucket_start.begin(), bucket_start.end() - 1);
       for (std::size_t t = 0; t < n_corners_; ++t)
         bucket[fill[side_low(t)]++] = u32(t);
     }
     partner_.assign(n_corners_, null);
-    std::vector<u32> stamp(nv, null), first(nv);
+    Array stamp(nv, null), first(nv);
     for (u32 lo = 0; lo < nv; ++lo) {
       for (u32 k = bucket_start[lo]; k < bucket_start[lo + 1]; ++k) {
         const u32 t = bucket[k], hi = side_high(t);
@@ -233,7 +238,7 @@ private:
           out_.mobius[dart_encoding::edge_of_halfedge(h)] = corner_vertex(partner_[t]) == corner_vertex(t);
       }
     }
-    std::vector<u32>().swap(partner_);
+    Array().swap(partner_);
   }
 
   // Dart navigation on the output arrays, as in Mobius_mesh.
@@ -332,7 +337,7 @@ private:
       ++incoming_start_[corner_vertex(next_corner(t)) + 1];
     std::partial_sum(incoming_start_.begin(), incoming_start_.end(), incoming_start_.begin());
     incoming_corner_.resize(n_corners_);
-    std::vector<u32> fill(incoming_start_.begin(), incoming_start_.end() - 1);
+    Array fill(incoming_start_.begin(), incoming_start_.end() - 1);
     for (std::size_t t = 0; t < n_corners_; ++t)
       incoming_corner_[fill[corner_vertex(next_corner(t))]++] = u32(t);
   }
@@ -376,8 +381,8 @@ private:
   Connectivity_arrays out_{};
   std::size_t n_corners_ = 0;
   u32 n_edges_ = 0;
-  std::vector<u32> corner_face_, partner_, corner_halfedge_, corners_at_, face_stamp_;
-  std::vector<u32> incoming_start_, incoming_corner_;
+  Array corner_face_, partner_, corner_halfedge_, corners_at_, face_stamp_;
+  Array incoming_start_, incoming_corner_;
 };
 
 
