@@ -98,6 +98,35 @@ TEST(PolygonSoup, LargeMobiusStripMatchesItsSoup)
     ASSERT_EQ(mesh.point(CGAL_ext::Vertex_index(std::uint32_t(v))), points[v]);
 }
 
+// Two polygons of 130 corners glued along all their sides (a closed
+// "pillow"): faces longer than a machine word of corners, the second one
+// starting inside a word.
+TEST(PolygonSoup, LongPolygonsAreWalkedWhole)
+{
+  const std::size_t n = 130;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons(2);
+  for (std::size_t i = 0; i < n; ++i) {
+    points.emplace_back(std::cos(0.05 * double(i)), std::sin(0.05 * double(i)), 0.0);
+    polygons[0].push_back(i);
+    polygons[1].push_back(n - 1 - i);
+  }
+  Mesh mesh;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, mesh);
+  EXPECT_TRUE(mesh.is_valid(true));
+  EXPECT_EQ(mesh.number_of_edges(), n);
+  EXPECT_EQ(CGAL_ext::euler_characteristic(mesh), 2); // V - E + F = n - n + 2
+  EXPECT_TRUE(CGAL_ext::is_closed(mesh));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(mesh), 0u);
+  for (std::size_t f = 0; f < 2; ++f) {
+    std::vector<std::size_t> cycle;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(CGAL_ext::Face_index(std::uint32_t(f)), mesh))
+      cycle.push_back(v.idx());
+    std::rotate(cycle.begin(), std::find(cycle.begin(), cycle.end(), polygons[f][0]), cycle.end());
+    EXPECT_EQ(cycle, polygons[f]) << "face " << f;
+  }
+}
+
 } // namespace
 
 namespace {
