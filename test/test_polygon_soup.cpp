@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <vector>
 
@@ -53,6 +55,76 @@ TEST(PolygonSoup, CubeIsClosedOrientable)
   EXPECT_TRUE(CGAL_ext::is_closed(m));
   EXPECT_TRUE(CGAL_ext::is_orientable(m));
   EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 0u);
+}
+
+// A Möbius strip large enough that the import's temporaries and the mesh's
+// arrays pass the huge-page threshold (2 MiB: 655 360 corners of 4 bytes,
+// 164 864 points of 24). Vertex (i, j) is point i * (m + 1) + j; column
+// n - 1 joins column 0 upside down.
+TEST(PolygonSoup, LargeMobiusStripMatchesItsSoup)
+{
+  const std::size_t n = 1024, m = 160;
+  auto vertex = [&](std::size_t i, std::size_t j) { return i == n ? m - j : i * (m + 1) + j; };
+  std::vector<Point> points;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j <= m; ++j)
+      points.emplace_back(double(i), double(j), double(i * j % 7));
+  std::vector<std::array<std::size_t, 4>> quads;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < m; ++j)
+      quads.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+  Mesh mesh;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, quads, mesh);
+  EXPECT_TRUE(mesh.is_valid(true));
+  // V = n(m+1), E = n(m+1) along + nm across, F = nm: a Möbius strip, one
+  // border, the m edges of the seam run the same way in both their quads.
+  EXPECT_EQ(mesh.number_of_vertices(), n * (m + 1));
+  EXPECT_EQ(mesh.number_of_edges(), n * (2 * m + 1));
+  EXPECT_EQ(mesh.number_of_faces(), n * m);
+  EXPECT_EQ(CGAL_ext::euler_characteristic(mesh), 0);
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(mesh), 1u);
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(mesh), m);
+  EXPECT_FALSE(CGAL_ext::is_orientable(mesh));
+  // Every face runs through its quad's corners in the quad's order.
+  for (std::size_t f = 0; f < quads.size(); ++f) {
+    std::vector<std::size_t> cycle;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(CGAL_ext::Face_index(std::uint32_t(f)), mesh))
+      cycle.push_back(v.idx());
+    ASSERT_EQ(cycle.size(), 4u);
+    std::rotate(cycle.begin(), std::find(cycle.begin(), cycle.end(), quads[f][0]), cycle.end());
+    ASSERT_TRUE(std::equal(cycle.begin(), cycle.end(), quads[f].begin())) << "face " << f;
+  }
+  for (std::size_t v = 0; v < points.size(); ++v)
+    ASSERT_EQ(mesh.point(CGAL_ext::Vertex_index(std::uint32_t(v))), points[v]);
+}
+
+// Two polygons of 130 corners glued along all their sides (a closed
+// "pillow"): faces longer than a machine word of corners, the second one
+// starting inside a word.
+TEST(PolygonSoup, LongPolygonsAreWalkedWhole)
+{
+  const std::size_t n = 130;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons(2);
+  for (std::size_t i = 0; i < n; ++i) {
+    points.emplace_back(std::cos(0.05 * double(i)), std::sin(0.05 * double(i)), 0.0);
+    polygons[0].push_back(i);
+    polygons[1].push_back(n - 1 - i);
+  }
+  Mesh mesh;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, mesh);
+  EXPECT_TRUE(mesh.is_valid(true));
+  EXPECT_EQ(mesh.number_of_edges(), n);
+  EXPECT_EQ(CGAL_ext::euler_characteristic(mesh), 2); // V - E + F = n - n + 2
+  EXPECT_TRUE(CGAL_ext::is_closed(mesh));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(mesh), 0u);
+  for (std::size_t f = 0; f < 2; ++f) {
+    std::vector<std::size_t> cycle;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(CGAL_ext::Face_index(std::uint32_t(f)), mesh))
+      cycle.push_back(v.idx());
+    std::rotate(cycle.begin(), std::find(cycle.begin(), cycle.end(), polygons[f][0]), cycle.end());
+    EXPECT_EQ(cycle, polygons[f]) << "face " << f;
+  }
 }
 
 } // namespace

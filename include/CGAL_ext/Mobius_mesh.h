@@ -983,7 +983,8 @@ private:
   }
 
   // Connectivity, one array per attribute.
-  // (Not zeroed when resized without a value: see internal::Connectivity_access::overwrite().)
+  // (Not zeroed when resized without a value: see internal::Connectivity_access::overwrite();
+  // large ones on huge pages: see internal/Huge_page_allocator.h.)
   internal::Uninitialized_array<Dart> v_halfedge_;
   internal::Uninitialized_array<Vertex_index> h_target_;
   internal::Uninitialized_array<Dart> h_next_;

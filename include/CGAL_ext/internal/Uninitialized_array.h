@@ -3,9 +3,12 @@
 //
 // Arrays that are about to be overwritten whole do not need to be zeroed
 // first: for large meshes that first pass costs as much as the writing.
+// Their large buffers are on huge pages (see Huge_page_allocator.h).
 
 #ifndef CGAL_EXT_INTERNAL_UNINITIALIZED_ARRAY_H
 #define CGAL_EXT_INTERNAL_UNINITIALIZED_ARRAY_H
+
+#include <CGAL_ext/internal/Huge_page_allocator.h>
 
 #include <memory>
 #include <new>
@@ -16,11 +19,11 @@
 namespace CGAL_ext {
 namespace internal {
 
-// As std::allocator, except that constructing without a value leaves a
+// As Huge_page_allocator, except that constructing without a value leaves a
 // trivially copyable element unwritten: `resize(n)` then only allocates.
 // Constructing from a value (`resize(n, value)`, `push_back`) is unchanged.
 template <class T>
-struct Overwrite_allocator : std::allocator<T>
+struct Overwrite_allocator : Huge_page_allocator<T>
 {
   template <class U>
   struct rebind

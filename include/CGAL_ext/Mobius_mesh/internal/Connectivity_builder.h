@@ -15,6 +15,9 @@
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Huge_page_allocator.h>
+
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -38,11 +41,11 @@ struct Face_lists
   const std::uint32_t* vertex = nullptr;
 };
 
-/// Faces listed one after the other, in arrays of their own; `view()` gives
-/// the builder its input.
+/// Faces listed one after the other, in arrays of their own (on huge pages
+/// when large, as the builder's); `view()` gives the builder its input.
 struct Face_list
 {
-  std::vector<std::uint32_t> offset{0}, vertex;
+  Huge_page_vector<std::uint32_t> offset{0}, vertex;
 
   void clear()
   {
@@ -109,27 +112,47 @@ public:
 
 private:
   static constexpr u32 null = dart_encoding::null;
+  // The temporaries are as large as the mesh, and a cold import spends most
+  // of its time faulting in their fresh pages: on huge pages, one fault per
+  // 2 MiB instead of one per 4 KiB.
+  using Array = Huge_page_vector<u32>;
 
   u32 corner_vertex(std::size_t t) const { return faces_.vertex[t]; }
+  // The next corner around a face is the following one, or after the face's
+  // last corner its first, found by walking back: once per face and pass,
+  // so in time linear in the corners. One bit per corner says where faces
+  // start (an array of each corner's face took 32).
+  bool is_face_start(std::size_t t) const { return (face_start_[t >> 6] >> (t & 63)) & 1; }
   std::size_t next_corner(std::size_t t) const
   {
-    const u32 f = corner_face_[t];
-    return t + 1 == faces_.offset[f + 1] ? faces_.offset[f] : t + 1;
+    if (t + 1 < n_corners_ && !is_face_start(t + 1))
+      return t + 1;
+    while (!is_face_start(t))
+      --t;
+    return t;
+  }
+  // The face of corner `t`, for the error paths and splitting.
+  u32 face_of_corner(std::size_t t) const
+  {
+    return u32(std::upper_bound(faces_.offset, faces_.offset + faces_.n_faces + 1, u32(t)) - faces_.offset - 1);
   }
   u32 side_low(std::size_t t) const { return (std::min)(corner_vertex(t), corner_vertex(next_corner(t))); }
   u32 side_high(std::size_t t) const { return (std::max)(corner_vertex(t), corner_vertex(next_corner(t))); }
 
+  // Faces have at least one corner each, so no two faces start at the same one.
   void number_corners()
   {
     n_corners_ = faces_.offset[faces_.n_faces];
-    corner_face_.resize(n_corners_);
-    for (u32 f = 0; f < faces_.n_faces; ++f)
-      std::fill(corner_face_.begin() + faces_.offset[f], corner_face_.begin() + faces_.offset[f + 1], f);
+    face_start_.assign((n_corners_ + 63) / 64, 0);
+    for (u32 f = 0; f < faces_.n_faces; ++f) {
+      CGAL_precondition(faces_.offset[f] < faces_.offset[f + 1]);
+      face_start_[faces_.offset[f] >> 6] |= std::uint64_t(1) << (faces_.offset[f] & 63);
+    }
   }
 
   void check_repeated_vertices() const
   {
-    std::vector<u32> seen_in_face(faces_.n_vertices, null);
+    Array seen_in_face(faces_.n_vertices, null);
     for (u32 f = 0; f < faces_.n_faces; ++f) {
       for (u32 t = faces_.offset[f]; t < faces_.offset[f + 1]; ++t) {
         const u32 v = corner_vertex(t);
@@ -147,18 +170,18 @@ private:
   void pair_sides()
   {
     const u32 nv = faces_.n_vertices;
-    std::vector<u32> bucket_start(std::size_t(nv) + 1, 0);
+    Array bucket_start(std::size_t(nv) + 1, 0);
     for (std::size_t t = 0; t < n_corners_; ++t)
       ++bucket_start[side_low(t) + 1];
     std::partial_sum(bucket_start.begin(), bucket_start.end(), bucket_start.begin());
-    std::vector<u32> bucket(n_corners_);
+    Array bucket(n_corners_);
     {
-      std::vector<u32> fill(bucket_start.begin(), bucket_start.end() - 1);
+      Array fill(bucket_start.begin(), bucket_start.end() - 1);
       for (std::size_t t = 0; t < n_corners_; ++t)
         bucket[fill[side_low(t)]++] = u32(t);
     }
     partner_.assign(n_corners_, null);
-    std::vector<u32> stamp(nv, null), first(nv);
+    Array stamp(nv, null), first(nv);
     for (u32 lo = 0; lo < nv; ++lo) {
       for (u32 k = bucket_start[lo]; k < bucket_start[lo + 1]; ++k) {
         const u32 t = bucket[k], hi = side_high(t);
@@ -180,7 +203,7 @@ private:
     std::vector<std::size_t> offenders;
     for (const u32* s = begin; s != end; ++s)
       if (side_high(*s) == hi)
-        offenders.push_back(corner_face_[*s]);
+        offenders.push_back(face_of_corner(*s));
     throw Soup_error(Soup_error::Kind::non_manifold_edge,
                      "edge (" + std::to_string(lo) + ", " + std::to_string(hi) + ") is shared by " +
                        std::to_string(offenders.size()) + " polygons (" + join_ids(offenders) +
@@ -233,7 +256,7 @@ private:
           out_.mobius[dart_encoding::edge_of_halfedge(h)] = corner_vertex(partner_[t]) == corner_vertex(t);
       }
     }
-    std::vector<u32>().swap(partner_);
+    Array().swap(partner_);
   }
 
   // Dart navigation on the output arrays, as in Mobius_mesh.
@@ -332,7 +355,7 @@ private:
       ++incoming_start_[corner_vertex(next_corner(t)) + 1];
     std::partial_sum(incoming_start_.begin(), incoming_start_.end(), incoming_start_.begin());
     incoming_corner_.resize(n_corners_);
-    std::vector<u32> fill(incoming_start_.begin(), incoming_start_.end() - 1);
+    Array fill(incoming_start_.begin(), incoming_start_.end() - 1);
     for (std::size_t t = 0; t < n_corners_; ++t)
       incoming_corner_[fill[corner_vertex(next_corner(t))]++] = u32(t);
   }
@@ -342,7 +365,7 @@ private:
     index_incoming_corners();
     std::vector<std::size_t> first_fan, others;
     for (u32 k = incoming_start_[v]; k < incoming_start_[v + 1]; ++k) {
-      const u32 f = corner_face_[incoming_corner_[k]];
+      const u32 f = face_of_corner(incoming_corner_[k]);
       (face_stamp_[f] == v ? first_fan : others).push_back(f);
     }
     std::vector<std::size_t> all = first_fan;
@@ -360,7 +383,7 @@ private:
     index_incoming_corners();
     for (u32 k = incoming_start_[v]; k < incoming_start_[v + 1]; ++k) {
       const u32 t = incoming_corner_[k];
-      if (face_stamp_[corner_face_[t]] == v)
+      if (face_stamp_[face_of_corner(t)] == v)
         continue;
       const u32 copy = faces_.n_vertices + u32(copies.size());
       std::vector<u32> touched;
@@ -376,8 +399,9 @@ private:
   Connectivity_arrays out_{};
   std::size_t n_corners_ = 0;
   u32 n_edges_ = 0;
-  std::vector<u32> corner_face_, partner_, corner_halfedge_, corners_at_, face_stamp_;
-  std::vector<u32> incoming_start_, incoming_corner_;
+  Huge_page_vector<std::uint64_t> face_start_;
+  Array partner_, corner_halfedge_, corners_at_, face_stamp_;
+  Array incoming_start_, incoming_corner_;
 };
 
 

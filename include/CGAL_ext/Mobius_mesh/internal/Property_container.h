@@ -7,8 +7,11 @@
 #ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_PROPERTY_CONTAINER_H
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_PROPERTY_CONTAINER_H
 
+#include <CGAL_ext/internal/Huge_page_allocator.h>
+
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -100,10 +103,16 @@ public:
       while (data_.size() < n)
         data_.push_back(Stored(default_));
     } else {
+      if (n > data_.capacity())
+        grow_capacity((std::max)(n, 2 * data_.size())); // as the vector itself grows
       data_.resize(n, Stored(default_));
     }
   }
-  void reserve(std::size_t n) override { data_.reserve(n); }
+  void reserve(std::size_t n) override
+  {
+    if (n > data_.capacity())
+      grow_capacity(n);
+  }
   void shrink_to_fit() override { data_.shrink_to_fit(); }
   void append_from(const Base_property_array& other, std::size_t from, std::size_t n) override
   {
@@ -151,6 +160,17 @@ public:
   const T& default_value() const { return default_; }
 
 private:
+  // Moves the values to a buffer of `capacity` elements and advises its
+  // fresh part onto huge pages before anything touches it (see
+  // Huge_page_allocator.h). The array stays a `std::vector<Stored>`, the
+  // type `Property_map::data()` gives users, so the advice covers only the
+  // whole huge pages inside the buffer, not its unaligned ends.
+  void grow_capacity(std::size_t capacity)
+  {
+    data_.reserve(capacity);
+    advise_huge_pages(data_.data() + data_.size(), (data_.capacity() - data_.size()) * sizeof(Stored));
+  }
+
   std::vector<Stored> data_;
   T default_;
 };
