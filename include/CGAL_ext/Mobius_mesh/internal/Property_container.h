@@ -79,6 +79,16 @@ struct Bool_cell
   Bool_cell(bool b) : value(b) {} // implicit, so that a vector of cells fills from a bool
 };
 
+// push_back() where the caller knows there is room: without the
+// reallocation path, the caller needs no stack frame.
+template <class Vector, class Value>
+void push_within_capacity(Vector& v, Value&& x)
+{
+  if (v.size() == v.capacity())
+    __builtin_unreachable();
+  v.push_back(std::forward<Value>(x));
+}
+
 template <class T>
 using Stored_value = std::conditional_t<std::is_same_v<T, bool>, Bool_cell, T>;
 
@@ -94,14 +104,20 @@ public:
 
   void resize(std::size_t n) override
   {
-    // Euler operations grow the arrays by one or two elements at a time: a
-    // push_back is inline, a filling resize an out-of-line call.
-    if (n > data_.size() && n - data_.size() <= 2) {
-      while (data_.size() < n)
-        data_.push_back(Stored(default_));
-    } else {
-      data_.resize(n, Stored(default_));
-    }
+    if (n == data_.size() + 1)
+      push_default();
+    else
+      resize_slowly(n);
+  }
+  // One more element, with the default value. Euler operations grow the
+  // arrays by one element at a time: a push_back is inline, a filling
+  // resize an out-of-line call.
+  [[gnu::flatten]] void push_default()
+  {
+    if (data_.size() < data_.capacity())
+      push_within_capacity(data_, Stored(default_));
+    else
+      resize_slowly(data_.size() + 1);
   }
   void reserve(std::size_t n) override { data_.reserve(n); }
   void shrink_to_fit() override { data_.shrink_to_fit(); }
@@ -151,6 +167,9 @@ public:
   const T& default_value() const { return default_; }
 
 private:
+  // Out of line, so that growing by one within capacity needs no stack frame.
+  [[gnu::noinline]] void resize_slowly(std::size_t n) { data_.resize(n, Stored(default_)); }
+
   std::vector<Stored> data_;
   T default_;
 };
@@ -214,15 +233,20 @@ public:
       a->resize(n);
     size_ = n;
   }
+  // Records that the caller grew every array by one element itself (with
+  // `Property_array::push_default()`, knowing their types).
+  void grown_by_one() { ++size_; }
   void reserve(std::size_t n)
   {
     for (auto& a : arrays_)
       a->reserve(n);
+    reserved_ = n;
   }
   void shrink_to_fit()
   {
     for (auto& a : arrays_)
       a->shrink_to_fit();
+    reserved_ = 0;
   }
   void clear()
   {
@@ -274,6 +298,9 @@ public:
       return {nullptr, false};
     }
     auto array = std::make_unique<Property_array<T>>(name, default_value);
+    // Room for what reserve() asked of the others (the removal flags, made
+    // at the first removal, would otherwise grow by reallocation).
+    array->reserve(reserved_);
     array->resize(size_);
     Property_array<T>* raw = array.get();
     arrays_.push_back(std::move(array));
@@ -293,6 +320,7 @@ public:
     if (Base_property_array* a = find_by_name(like.name()))
       return a->value_type() == like.value_type() ? a : nullptr;
     auto array = like.empty_clone();
+    array->reserve(reserved_);
     array->resize(size_);
     arrays_.push_back(std::move(array));
     return arrays_.back().get();
@@ -338,6 +366,7 @@ private:
 
   std::vector<std::unique_ptr<Base_property_array>> arrays_;
   std::size_t size_ = 0;
+  std::size_t reserved_ = 0; // the last reserve()
 };
 
 } // namespace internal
