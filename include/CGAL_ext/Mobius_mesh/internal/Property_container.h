@@ -7,6 +7,8 @@
 #ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_PROPERTY_CONTAINER_H
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_PROPERTY_CONTAINER_H
 
+#include <CGAL/assertions.h>
+
 #include <boost/property_map/property_map.hpp>
 
 #include <cstddef>
@@ -84,8 +86,11 @@ struct Bool_cell
 template <class Vector, class Value>
 void push_within_capacity(Vector& v, Value&& x)
 {
+  CGAL_precondition(v.size() < v.capacity());
+#if defined(__GNUC__) || defined(__clang__)
   if (v.size() == v.capacity())
     __builtin_unreachable();
+#endif
   v.push_back(std::forward<Value>(x));
 }
 
