@@ -40,9 +40,10 @@ public:
       everywhere_(is_plain_everywhere(m))
   {}
 
-  // True if the mesh has no Möbius edge (it counts them): then no link is
-  // flipped either (faces agree across every edge, so the border darts at a
-  // vertex run the way its faces do), and every walk is plain.
+  // True if the mesh has no Möbius edge (it counts them): then, the mesh
+  // being valid (one fan per vertex), no link is flipped either (faces agree
+  // across every edge, so the border darts at a vertex run the way its faces
+  // do), and every walk is plain.
   template <class P>
   static bool is_plain_everywhere(const Mobius_mesh<P>& m)
   {
