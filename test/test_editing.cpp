@@ -13,6 +13,7 @@
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
+#include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Surface_mesh_conversion.h>
 #include <CGAL_ext/merge_borders.h>
 #include <CGAL_ext/offset_mesh.h>
@@ -691,6 +692,77 @@ TEST(Euler, TheResultDoesNotDependOnHowTheFacesWereOriented)
       EXPECT_EQ(face_signature(ea), face_signature(eb));
     }
   }
+}
+
+// The operations take a shorter path, by halfedge index, where the darts
+// they are given are unflipped and no Möbius edge is near, and the walk of
+// darts elsewhere. The same surface oriented three ways (as built; every
+// face reversed, so that every walk is a flipped dart and no short path
+// applies; one face reversed, so that Möbius edges surround it and only the
+// operations far from it take the short path) must give the same answers
+// and the same meshes, operation by operation, at every dart.
+TEST(Euler, ShortPathsAndDartWalksGiveTheSameMeshes)
+{
+  Mesh a;
+  CGAL_ext::make_torus(a, 7, 5);
+  CGAL_ext::triangulate_faces(a);
+  Euler::make_hole(a.halfedge(Face_index(0u)), a); // a border too
+  a.collect_garbage();
+  Mesh all_reversed = a, one_reversed = a;
+  for (Face_index f : all_reversed.faces())
+    all_reversed.reverse_face_orientation(f);
+  one_reversed.reverse_face_orientation(Face_index(a.number_of_faces() / 2));
+  ASSERT_TRUE(all_reversed.is_valid(true) && one_reversed.is_valid(true));
+  ASSERT_EQ(face_signature(all_reversed), face_signature(a));
+  ASSERT_EQ(face_signature(one_reversed), face_signature(a));
+
+  const Point fresh(7, 7, 7);
+  // Operation `op` at `d` if its check allows it; whether it did.
+  auto apply = [&](Mesh& e, Dart d, int op) {
+    switch (op) {
+    case 0: e.point(e.target(Euler::split_edge(d, e))) = fresh; return true;
+    case 1: {
+      if (e.is_border(d))
+        return false;
+      const Dart n = Euler::split_edge(d, e);
+      e.point(e.target(n)) = fresh;
+      if (!Euler::can_split_face(n, e.next(e.next(n)), e))
+        return false;
+      Euler::split_face(n, e.next(e.next(n)), e, Euler::unchecked);
+      return true;
+    }
+    case 2: return Euler::can_flip_edge(d, e) && (Euler::flip_edge(d, e), true);
+    case 3: return Euler::can_flip_edge(d, e) && (Euler::flip_edge(d, e, Euler::unchecked), true);
+    case 4: return Euler::can_join_face(d, e) && (Euler::join_face(d, e), true);
+    case 5: return Euler::can_join_vertex(d, e) && (Euler::join_vertex(d, e, Euler::unchecked), true);
+    case 6: return Euler::does_satisfy_link_condition(d, e) && (Euler::collapse_edge(d, e), true);
+    default:
+      return Euler::does_satisfy_link_condition(d, e) && (Euler::collapse_edge(d, e, Euler::unchecked), true);
+    }
+  };
+  int applied = 0;
+  for (Dart d : all_darts(a)) {
+    for (int op = 0; op < 8; ++op) {
+      Mesh ea = a;
+      const bool done = apply(ea, d, op);
+      for (const Mesh* other : {&all_reversed, &one_reversed}) {
+        Mesh eo = *other;
+        // The same halfedge (reversing keeps the indices), walked the same way.
+        const Dart od(d.halfedge(), eo.target(Dart(d.halfedge(), false)) != a.target(d));
+        ASSERT_EQ(eo.target(od), a.target(d));
+        ASSERT_EQ(apply(eo, od, op), done) << "operation " << op << " at " << d;
+        if (done) {
+          ASSERT_TRUE(eo.is_valid(true)) << "operation " << op << " at " << d;
+          EXPECT_EQ(face_signature(eo), face_signature(ea)) << "operation " << op << " at " << d;
+        }
+      }
+      if (done) {
+        ASSERT_TRUE(ea.is_valid(true)) << "operation " << op << " at " << d;
+        ++applied;
+      }
+    }
+  }
+  EXPECT_GT(applied, 1000);
 }
 
 TEST(Euler, RefusalsThrowAndLeaveTheMeshAlone)

@@ -32,6 +32,10 @@
 
 namespace CGAL_ext {
 
+namespace internal {
+class Plain_reader;
+} // namespace internal
+
 /// \ingroup PkgMobiusMesh
 /// A typed index into one of the element arrays of a `Mobius_mesh`.
 template <class Tag>
@@ -351,6 +355,7 @@ public:
       removed_vertices_ = o.removed_vertices_;
       removed_edges_ = o.removed_edges_;
       removed_faces_ = o.removed_faces_;
+      mobius_edges_ = o.mobius_edges_;
       o.clear();
     }
     return *this;
@@ -371,6 +376,7 @@ public:
     eprops_.clear();
     fprops_.clear();
     removed_vertices_ = removed_edges_ = removed_faces_ = Removal_marks();
+    mobius_edges_ = 0;
     init_points();
   }
 
@@ -607,7 +613,7 @@ public:
   ///@{
   /// Adds an isolated vertex. (`p` is taken by value: it may be a point of
   /// this mesh, which the insertion can move.)
-  Vertex_index add_vertex() { return add_vertex(default_point()); }
+  Vertex_index add_vertex() { return add_vertex_record(); } // the point map's default is the point
   Vertex_index add_vertex(Point p)
   {
     const Vertex_index v = add_vertex_record();
@@ -665,37 +671,43 @@ public:
   Vertex_index add_vertex_record()
   {
     if (v_halfedge_.size() >= internal::max_vertices)
-      internal::check_mesh_size("add_vertex()", grown_size(1, 0, 0));
+      refuse_growth("add_vertex()", 1, 0, 0);
     v_halfedge_.push_back(Dart());
-    vprops_.resize(v_halfedge_.size());
+    grow_properties(vprops_, removed_vertices_.flags, points_.array());
     return Vertex_index(size_type(v_halfedge_.size() - 1));
   }
   /// Adds an edge with two unlinked halfedges `2e` (target `t0`) and `2e+1` (target `t1`).
   Edge_index add_edge(Vertex_index t0, Vertex_index t1, bool mobius = false)
   {
     if (e_mobius_.size() >= internal::max_edges)
-      internal::check_mesh_size("add_edge()", grown_size(0, 1, 0));
-    // push_back, not resize(size + 2, value): Euler operations add edges one
-    // at a time, and a filling resize is an out-of-line call each time.
-    h_target_.push_back(t0);
-    h_target_.push_back(t1);
+      refuse_growth("add_edge()", 0, 1, 0);
+    // Euler operations add edges one at a time: one test for room in all the
+    // arrays, then stores without reallocation paths (growing is out of line).
+    if (!has_room(h_target_, 2) || !has_room(h_next_, 2) || !has_room(h_prev_, 2) || !has_room(h_face_, 2) ||
+        !has_room(e_mobius_, 1))
+      grow_edge_arrays();
+    using internal::push_within_capacity;
+    push_within_capacity(h_target_, t0);
+    push_within_capacity(h_target_, t1);
     for (int i = 0; i < 2; ++i) {
-      h_next_.push_back(Dart());
-      h_prev_.push_back(Dart());
-      h_face_.push_back(Face_index());
+      push_within_capacity(h_next_, Dart());
+      push_within_capacity(h_prev_, Dart());
+      push_within_capacity(h_face_, Face_index());
     }
     hprops_.resize(h_target_.size());
-    e_mobius_.push_back(mobius ? 1 : 0);
-    eprops_.resize(e_mobius_.size());
+    push_within_capacity(e_mobius_, std::uint8_t(mobius ? 1 : 0));
+    if (mobius)
+      count_mobius_change(false, true);
+    grow_properties(eprops_, removed_edges_.flags);
     return Edge_index(size_type(e_mobius_.size() - 1));
   }
   /// Adds a face whose stored halfedge is `h`; no halfedge is linked to it.
   Face_index add_face_record(Halfedge_index h = Halfedge_index())
   {
     if (f_halfedge_.size() >= internal::max_faces)
-      internal::check_mesh_size("add_face()", grown_size(0, 0, 1));
+      refuse_growth("add_face()", 0, 0, 1);
     f_halfedge_.push_back(h);
-    fprops_.resize(f_halfedge_.size());
+    grow_properties(fprops_, removed_faces_.flags);
     return Face_index(size_type(f_halfedge_.size() - 1));
   }
   /// Resizes all element arrays at once (new elements are unlinked).
@@ -710,6 +722,7 @@ public:
     h_face_.resize(2 * std::size_t(ne), Face_index());
     hprops_.resize(2 * std::size_t(ne));
     e_mobius_.resize(ne, 0);
+    recount_mobius_edges();
     eprops_.resize(ne);
     f_halfedge_.resize(nf, Halfedge_index());
     fprops_.resize(nf);
@@ -740,7 +753,11 @@ public:
   /// Sets the stored halfedge of `f`, which must be one of `f`'s halfedges.
   void set_halfedge(Face_index f, Halfedge_index h) { f_halfedge_[f.idx()] = h; }
   /// Sets the Möbius bit of `e`: whether its two faces run along it in the same direction.
-  void set_mobius(Edge_index e, bool m) { e_mobius_[e.idx()] = m ? 1 : 0; }
+  void set_mobius(Edge_index e, bool m)
+  {
+    count_mobius_change(e_mobius_[e.idx()] != 0, m);
+    e_mobius_[e.idx()] = m ? 1 : 0;
+  }
 
   // ---------------------------------------------------------------- validity
 
@@ -844,6 +861,8 @@ public:
 private:
   // Subdivision writes whole arrays, copies carry property arrays of any type.
   friend struct internal::Connectivity_access;
+  // Euler operations walk and edit orientable patches by halfedge index.
+  friend class internal::Plain_reader;
 
   // The removed elements of one kind: their flags, a property array created
   // at the first removal (so a mesh that never removes pays nothing), and
@@ -855,15 +874,74 @@ private:
     bool is_marked(size_type i) const { return flags != nullptr && flags->data()[i].value; }
   };
 
+  // The property arrays of one kind of element grow by one element. Most
+  // meshes have only the mesh's own arrays (the points, the removal flags):
+  // those grow inline, the others through the type-erased container.
+  static void grow_properties(internal::Property_container& props, internal::Property_array<bool>* flags,
+                              internal::Property_array<Point>* points = nullptr)
+  {
+    const std::size_t own = (flags != nullptr ? 1 : 0) + (points != nullptr ? 1 : 0);
+    if (props.arrays().size() != own) {
+      props.resize(props.size() + 1);
+      return;
+    }
+    if (flags != nullptr)
+      flags->push_default();
+    if (points != nullptr)
+      points->push_default();
+    props.grown_by_one();
+  }
+
+  // Keeping `mobius_edges_` (below) up to date.
+  void count_mobius_change(bool was, bool is)
+  {
+    if (mobius_edges_ != unknown_count)
+      mobius_edges_ += size_type(is) - size_type(was);
+  }
+  void recount_mobius_edges()
+  {
+    mobius_edges_ = size_type(std::count_if(e_mobius_.begin(), e_mobius_.end(), [](std::uint8_t b) { return b != 0; }));
+  }
+
+  template <class Array>
+  static bool has_room(const Array& a, std::size_t k)
+  {
+    return a.capacity() - a.size() >= k;
+  }
+  // Room for the next edges in every array of halfedges and edges, as
+  // push_back would make it (doubling).
+  [[gnu::noinline]] void grow_edge_arrays()
+  {
+    const std::size_t nh = h_target_.size() + 2, ne = e_mobius_.size() + 1;
+    h_target_.reserve((std::max)(nh, 2 * h_target_.capacity()));
+    h_next_.reserve((std::max)(nh, 2 * h_next_.capacity()));
+    h_prev_.reserve((std::max)(nh, 2 * h_prev_.capacity()));
+    h_face_.reserve((std::max)(nh, 2 * h_face_.capacity()));
+    e_mobius_.reserve((std::max)(ne, 2 * e_mobius_.capacity()));
+  }
+
+  // Throws the size error of an element added past the limits, out of line:
+  // the functions that add elements stay small enough to inline.
+  [[gnu::cold, gnu::noinline]] void refuse_growth(const char* function, std::size_t nv, std::size_t ne,
+                                                  std::size_t nf) const
+  {
+    internal::check_mesh_size(function, grown_size(nv, ne, nf));
+  }
+
+  // Euler operations mark elements at every step: the flags are created
+  // once, out of line, and the marking itself stays small enough to inline.
   static void mark(internal::Property_container& props, const char* name, Removal_marks& marks, size_type i)
   {
     if (marks.flags == nullptr)
-      marks.flags = props.template add<bool>(name, false).first;
-    bool& flag = (*marks.flags)[i];
-    if (!flag) {
-      flag = true;
-      ++marks.count;
-    }
+      create_marks(props, name, marks);
+    bool& flag = marks.flags->data()[i].value;
+    marks.count += flag ? 0 : 1;
+    flag = true;
+  }
+  [[gnu::noinline]] static void create_marks(internal::Property_container& props, const char* name,
+                                             Removal_marks& marks)
+  {
+    marks.flags = props.template add<bool>(name, false).first;
   }
   bool is_removal_mark(const void* array) const
   {
@@ -925,6 +1003,7 @@ private:
 
   void copy_connectivity(const Mobius_mesh& o)
   {
+    mobius_edges_ = o.mobius_edges_;
     v_halfedge_ = o.v_halfedge_;
     h_target_ = o.h_target_;
     h_next_ = o.h_next_;
@@ -996,6 +1075,13 @@ private:
   internal::Property_container vprops_, hprops_, eprops_, fprops_;
   Property_map<Vertex_index, Point> points_;
   Removal_marks removed_vertices_, removed_edges_, removed_faces_;
+  // How many edge slots (removed ones included) are Möbius, or
+  // `unknown_count` while arrays written from outside are not counted yet
+  // (`Connectivity_access::overwrite()` until `reset_property_maps()`).
+  // Zero means that no link of the mesh is flipped and opposite(h) is h ^ 1
+  // everywhere: Euler operations then skip their local checks for it.
+  static constexpr size_type unknown_count = (std::numeric_limits<size_type>::max)();
+  size_type mobius_edges_ = 0;
 };
 
 // ============================================================================
@@ -1320,7 +1406,7 @@ std::vector<Halfedge_index> Mobius_mesh<P>::add_face_halfedges(Face_index f, con
     // The old face runs along the edge a -> b as well: a Möbius connection.
     const bool mobius = h_target_[opposite_halfedge(g).idx()] == b;
     h_target_[g.idx()] = b;
-    e_mobius_[edge(g).idx()] = mobius ? 1 : 0;
+    set_mobius(edge(g), mobius);
     face_halfedges[i] = g;
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -1410,6 +1496,8 @@ typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
   append(h_face_, o.h_face_,
          [&off](Face_index f) { return f.is_valid() ? Face_index(size_type(f.idx() + off.faces)) : f; });
   e_mobius_.insert(e_mobius_.end(), o.e_mobius_.begin(), o.e_mobius_.end());
+  mobius_edges_ = (mobius_edges_ == unknown_count || o.mobius_edges_ == unknown_count) ? unknown_count
+                                                                                       : mobius_edges_ + o.mobius_edges_;
   append(f_halfedge_, o.f_halfedge_, [hoff](Halfedge_index h) { return Halfedge_index(size_type(h.idx() + hoff)); });
   vprops_.append(o.vprops_);
   hprops_.append(o.hprops_);
@@ -1458,7 +1546,7 @@ void Mobius_mesh<P>::reverse_face_orientation(Face_index f)
   for (Halfedge_index h : hs) {
     const Face_index other = face(opposite_halfedge(h));
     if (other.is_valid() && other != f)
-      e_mobius_[edge(h).idx()] ^= 1u;
+      set_mobius(edge(h), !is_mobius(edge(h)));
   }
   // A vertex dart on a turned halfedge names the same walk with the other bit.
   for (std::size_t i = 0; i < hs.size(); ++i) {
@@ -1514,6 +1602,7 @@ void Mobius_mesh<P>::collect_garbage(Garbage_collection_maps& maps)
   h_prev_.resize(kept_h.size());
   h_face_.resize(kept_h.size());
   e_mobius_.resize(kept_e.size());
+  recount_mobius_edges();
   f_halfedge_.resize(kept_f.size());
   vprops_.compact(kept_v);
   hprops_.compact(kept_h);

@@ -10,6 +10,7 @@
 
 #include <CGAL/assertions.h>
 #include <CGAL_ext/Mobius_mesh/internal/Euler_support.h>
+#include <CGAL_ext/Mobius_mesh/internal/Plain_links.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <boost/container/small_vector.hpp>
@@ -115,6 +116,29 @@ bool face_holds(Dart d, Vertex_index v, const Mobius_mesh<P>& m)
   return false;
 }
 
+using Plain = CGAL_ext::internal::Plain_reader;
+using Plain_links = CGAL_ext::internal::Plain_links;
+namespace encoding = CGAL_ext::internal::dart_encoding;
+
+// Walks the ring of `a` by halfedge index, as long as no link on the way is
+// flipped and no edge Möbius: 1 if `b` is a neighbour, 0 if not, -1 if the
+// walk met a flip (the walk of darts must decide).
+template <class P>
+int plain_are_adjacent(std::uint32_t start, Vertex_index b, const Mobius_mesh<P>& m)
+{
+  const Plain pl(m);
+  std::uint32_t c = start;
+  do {
+    const std::uint32_t out = pl.plain_step(c);
+    if (out == encoding::null)
+      return -1;
+    if (pl.target(out) == b.idx())
+      return 1;
+    c = Plain::opposite(out);
+  } while (c != start);
+  return 0;
+}
+
 // Walks the ring of `a` by its outgoing darts: the far end of next(c) is
 // one load where an unflipped dart's source would need its partner too.
 template <class P>
@@ -123,6 +147,11 @@ bool are_adjacent(Vertex_index a, Vertex_index b, const Mobius_mesh<P>& m)
   const Dart start = m.halfedge(a);
   if (!start.is_valid())
     return false;
+  if (!start.is_flipped()) {
+    const int plain = plain_are_adjacent(encoding::halfedge_of_dart(start.bits()), b, m);
+    if (plain >= 0)
+      return plain == 1;
+  }
   Dart c = start;
   do {
     const Dart out = m.next(c);
@@ -332,9 +361,104 @@ bool some_face_holds(Vertex_index a, Vertex_index b, Vertex_index c, const Mobiu
   return false;
 }
 
+// The ring of a vertex by halfedge index, in a buffer of fixed size: the
+// plain link condition gives up on larger rings.
+struct Plain_ring
+{
+  static constexpr std::size_t capacity = 32;
+  std::uint32_t v[capacity];
+  std::size_t n = 0;
+  bool p_on_border = false; // a border gap comes round
+  bool holds(std::uint32_t x) const
+  {
+    for (std::size_t i = 0; i < n; ++i)
+      if (v[i] == x)
+        return true;
+    return false;
+  }
+};
+
+// The star of p = source(h) walked by halfedge index for the link condition
+// (as `scan_source_star()`), from o = opposite(h): its ring but q and the
+// apexes into `ring` (p has no loop, so p is not there either). The ring
+// runs a1, ..., a0, q (the triangles of the edge are its first and last
+// faces); if q and the apexes come round nowhere else and every face is a
+// triangle, no face but those of the edge holds q and, p having four
+// neighbours at least, no face holds both apexes. False otherwise, or if the
+// walk meets a flip or a Möbius edge, or the ring is too large: the walk of
+// darts then decides.
+template <class P>
+bool plain_scan_source_star(std::uint32_t h, std::uint32_t a0, std::uint32_t a1, const Mobius_mesh<P>& m,
+                            Plain_ring& ring)
+{
+  const Plain pl(m);
+  const std::uint32_t o = Plain::opposite(h), q = pl.target(h);
+  std::uint32_t c = o, specials = 0, degree = 0;
+  do {
+    const std::uint32_t out = pl.plain_step(c);
+    if (out == encoding::null || ring.n == Plain_ring::capacity)
+      return false;
+    const std::uint32_t k = pl.target(out);
+    const bool special = k == q || k == a0 || k == a1;
+    specials += special ? 1 : 0;
+    ring.v[ring.n] = k;
+    ring.n += special ? 0 : 1;
+    if (pl.is_border(c))
+      ring.p_on_border = true;
+    else if (pl.next(pl.next(out)) != c)
+      return false; // not a triangle
+    ++degree;
+    c = Plain::opposite(out);
+  } while (c != o);
+  return specials == 3 && degree >= 4;
+}
+
+// True if the link condition surely holds for the edge of `d`, found by
+// halfedge index where the common case allows: `d` unflipped, two triangles
+// on the edge, the stars of both ends without flips, Möbius edges or faces
+// other than triangles around the removed end. False means "ask the walk of
+// darts", which also says why a collapse is refused.
+template <class P>
+bool plain_link_condition_holds(Dart d, const Mobius_mesh<P>& m)
+{
+  if (d.is_flipped())
+    return false;
+  const Plain pl(m);
+  const std::uint32_t h = encoding::halfedge_of_dart(d.bits()), o = Plain::opposite(h);
+  if (pl.is_mobius(h) || pl.is_border(h) || pl.is_border(o) ||
+      pl.face(h) == pl.face(o))
+    return false;
+  const std::uint32_t n1 = pl.next(h), n2 = pl.next(n1);
+  const std::uint32_t m1 = pl.next(o), m2 = pl.next(m1);
+  if (pl.next(n2) != h || pl.next(m2) != o)
+    return false; // not two triangles
+  const std::uint32_t a0 = pl.target(n1), a1 = pl.target(m1);
+  if (a0 == a1 || (pl.is_border(Plain::opposite(n1)) && pl.is_border(Plain::opposite(n2))) ||
+      (pl.is_border(Plain::opposite(m1)) && pl.is_border(Plain::opposite(m2))))
+    return false;
+  // q keeps its edges to a0 and a1 (distinct, as a0 != a1): three at least.
+  Plain_ring ring;
+  if (!plain_scan_source_star(h, a0, a1, m, ring))
+    return false;
+  if (ring.p_on_border && pl.is_border_vertex(pl.target(h)))
+    return false; // both ends on the border, the edge not
+  std::uint32_t c = h; // into q
+  do {
+    const std::uint32_t out = pl.plain_step(c);
+    if (out == encoding::null)
+      return false;
+    if (ring.holds(pl.target(out)))
+      return false;
+    c = Plain::opposite(out);
+  } while (c != h);
+  return true;
+}
+
 template <class P>
 const char* why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
 {
+  if (plain_link_condition_holds(d, m))
+    return nullptr;
   const Vertex_index p = m.source(d), q = m.target(d);
   Vertex_list apexes;
   if (const char* why = why_not_collapse_triangles(d, m, apexes))
@@ -396,60 +520,73 @@ Dart orient_edge(Dart d, Mobius_mesh<P>& mesh)
 // The operations without their checks: the public overloads check (or
 // assert) first, collapse_edge() checks once for its parts.
 
+// The bodies below run on unflipped darts of faces once the check of their
+// first line made them so (turning faces only near a Möbius edge): face
+// cycles never mix orientations, so their links are read and written by
+// halfedge index.
+
 template <class P>
 Dart flip_edge_unchecked(Dart d, Mobius_mesh<P>& mesh)
 {
   CGAL_ext::internal::make_edge_orientable(d, mesh);
-  // Work on the unflipped darts of both triangles: a0 = (a->b) in fa, b0 = (b->a) in fb.
-  const Dart a0(d.halfedge(), false);
-  const Dart b0(Mobius_mesh<P>::opposite_halfedge(d.halfedge()), false);
-  const Dart a1 = mesh.next(a0), a2 = mesh.next(a1);
-  const Dart b1 = mesh.next(b0), b2 = mesh.next(b1);
-  const Face_index f_a = mesh.face(a0), f_b = mesh.face(b0);
-  const Vertex_index va = mesh.target(b0), vb = mesh.target(a0);
-  const Vertex_index vc = mesh.target(a1), vd = mesh.target(b1);
-
-  mesh.set_target(a0.halfedge(), vc);
-  mesh.set_target(b0.halfedge(), vd);
-  mesh.set_next(a0, a2);
-  mesh.set_next(a2, b1);
-  mesh.set_next(b1, a0);
-  mesh.set_next(b0, b2);
-  mesh.set_next(b2, a1);
-  mesh.set_next(a1, b0);
-  mesh.set_face(b1.halfedge(), f_a);
-  mesh.set_face(a1.halfedge(), f_b);
-  mesh.set_halfedge(f_a, a0.halfedge());
-  mesh.set_halfedge(f_b, b0.halfedge());
+  const Plain_links pl(mesh);
+  // The triangles a0 = (a->b), a1, a2 in fa and b0 = (b->a), b1, b2 in fb.
+  // Each value is used soon after it is read (fewer of them live at once).
+  const std::uint32_t a0 = encoding::halfedge_of_dart(d.bits()), b0 = Plain::opposite(a0);
+  const std::uint32_t a1 = pl.next(a0), a2 = pl.next(a1);
+  const std::uint32_t b1 = pl.next(b0), b2 = pl.next(b1);
   // a and b lose the diagonal: keep their stored incoming darts off it.
-  if (mesh.halfedge(vb).halfedge() == a0.halfedge() || mesh.halfedge(vb).halfedge() == b0.halfedge())
-    mesh.set_halfedge(vb, b2);
-  if (mesh.halfedge(va).halfedge() == a0.halfedge() || mesh.halfedge(va).halfedge() == b0.halfedge())
-    mesh.set_halfedge(va, a2);
-  return a0;
+  const std::uint32_t e = encoding::edge_of_halfedge(a0), va = pl.target(b0), vb = pl.target(a0);
+  if (encoding::edge_of_dart(pl.vertex_dart(vb)) == e)
+    pl.set_vertex_halfedge(vb, b2);
+  if (encoding::edge_of_dart(pl.vertex_dart(va)) == e)
+    pl.set_vertex_halfedge(va, a2);
+  const std::uint32_t f_a = pl.face(a0), f_b = pl.face(b0);
+  pl.set_face(b1, f_a);
+  pl.set_face(a1, f_b);
+  pl.set_face_halfedge(f_a, a0);
+  pl.set_face_halfedge(f_b, b0);
+  pl.set_target(a0, pl.target(a1));
+  pl.set_target(b0, pl.target(b1));
+  pl.set_next(a0, a2);
+  pl.set_next(a2, b1);
+  pl.set_next(b1, a0);
+  pl.set_next(b0, b2);
+  pl.set_next(b2, a1);
+  pl.set_next(a1, b0);
+  return Dart::from_bits(encoding::dart(a0, false));
+}
+
+// join_face() once the edge of `h` is not Möbius and `h` unflipped.
+template <class P>
+Dart join_face_oriented(std::uint32_t h, Mobius_mesh<P>& mesh)
+{
+  const Plain_links pl(mesh);
+  const std::uint32_t o = Plain::opposite(h);
+  const std::uint32_t f = pl.face(h), g = pl.face(o);
+  const std::uint32_t hp = pl.prev(h), hn = pl.next(h);
+  const std::uint32_t op = pl.prev(o), on = pl.next(o);
+  for (std::uint32_t c = on; c != o; c = pl.next(c))
+    pl.set_face(c, f);
+  pl.set_next(hp, on);
+  pl.set_next(op, hn);
+  pl.set_face_halfedge(f, hp);
+  const std::uint32_t e = encoding::edge_of_halfedge(h);
+  for (std::uint32_t end : {hp, op}) {
+    const std::uint32_t v = pl.target(end);
+    if (encoding::edge_of_dart(pl.vertex_dart(v)) == e)
+      pl.set_vertex_halfedge(v, end);
+  }
+  mesh.remove_edge(Edge_index(e));
+  mesh.remove_face(Face_index(g));
+  return Dart::from_bits(encoding::dart(hp, false));
 }
 
 template <class P>
 Dart join_face_unchecked(Dart d, Mobius_mesh<P>& mesh)
 {
   d = orient_edge(d, mesh);
-  const Dart od(Mobius_mesh<P>::opposite_halfedge(d.halfedge()), false);
-  const Face_index f = mesh.face(d), g = mesh.face(od);
-  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
-  for (Dart c = on; c != od; c = mesh.next(c))
-    mesh.set_face(c.halfedge(), f);
-  mesh.set_next(dp, on);
-  mesh.set_next(op, dn);
-  mesh.set_halfedge(f, dp.halfedge());
-  for (const Dart& end : {dp, op}) {
-    const Vertex_index v = mesh.target(end);
-    const Halfedge_index stored = mesh.halfedge(v).halfedge();
-    if (stored == d.halfedge() || stored == od.halfedge())
-      mesh.set_halfedge(v, end);
-  }
-  mesh.remove_edge(mesh.edge(d));
-  mesh.remove_face(g);
-  return dp;
+  return join_face_oriented(encoding::halfedge_of_dart(d.bits()), mesh);
 }
 
 template <class P>
@@ -460,53 +597,80 @@ Dart split_face_unchecked(Dart h, Dart g, Mobius_mesh<P>& mesh)
     h = CGAL_ext::internal::unflip(h, mesh);
     g = dart_of(wg, mesh);
   }
-  const Face_index f = mesh.face(h);
-  const Dart hn = mesh.next(h), gn = mesh.next(g);
-  const Edge_index e = mesh.add_edge(mesh.target(g), mesh.target(h));
-  const Dart x(Mobius_mesh<P>::halfedge(e, 0), false), y(Mobius_mesh<P>::halfedge(e, 1), false);
-  const Face_index fn = mesh.add_face_record(g.halfedge());
-  mesh.set_next(h, x);
-  mesh.set_next(x, gn);
-  mesh.set_next(g, y);
-  mesh.set_next(y, hn);
-  mesh.set_face(x.halfedge(), f);
-  for (Dart c = y; c != g; c = mesh.next(c))
-    mesh.set_face(c.halfedge(), fn);
-  mesh.set_face(g.halfedge(), fn);
-  mesh.set_halfedge(f, h.halfedge());
-  return x;
+  const std::uint32_t hh = encoding::halfedge_of_dart(h.bits()), gh = encoding::halfedge_of_dart(g.bits());
+  const Plain before(mesh);
+  const std::uint32_t f = before.face(hh);
+  const std::uint32_t hn = before.next(hh), gn = before.next(gh);
+  const Edge_index e = mesh.add_edge(Vertex_index(before.target(gh)), Vertex_index(before.target(hh)));
+  const std::uint32_t x = encoding::halfedge_of_edge(e.idx(), 0), y = encoding::halfedge_of_edge(e.idx(), 1);
+  const std::uint32_t fn = mesh.add_face_record(Halfedge_index(gh)).idx();
+  const Plain_links pl(mesh); // after adding: the arrays may have moved
+  pl.set_next(hh, x);
+  pl.set_next(x, gn);
+  pl.set_next(gh, y);
+  pl.set_next(y, hn);
+  pl.set_face(x, f);
+  for (std::uint32_t c = y; c != gh; c = pl.next(c))
+    pl.set_face(c, fn);
+  pl.set_face(gh, fn);
+  pl.set_face_halfedge(f, hh);
+  return Dart::from_bits(encoding::dart(x, false));
+}
+
+// join_vertex() once the star of source(d) is oriented with `d` unflipped
+// (`orient_star()`): the walk round it is by halfedge index.
+template <class P>
+Dart join_vertex_oriented(Dart d, Mobius_mesh<P>& mesh)
+{
+  const Plain_links pl(mesh);
+  const std::uint32_t h = encoding::halfedge_of_dart(d.bits()), o = Plain::opposite(h);
+  const Dart od = Dart::from_bits(encoding::dart(o, false));
+  const std::uint32_t s = pl.target(o), t = pl.target(h);
+  const bool on_border = pl.is_border_vertex(s) || pl.is_border_vertex(t);
+  // Along a border the links round t may be flipped: darts there. Faces
+  // are linked by halfedge index.
+  const auto plain_dart = [](std::uint32_t x) { return Dart::from_bits(encoding::dart(x, false)); };
+  const Dart dp = on_border ? mesh.prev(d) : plain_dart(pl.prev(h));
+  const Dart dn = on_border ? mesh.next(d) : plain_dart(pl.next(h));
+  const Dart op = on_border ? mesh.prev(od) : plain_dart(pl.prev(o));
+  const Dart on = on_border ? mesh.next(od) : plain_dart(pl.next(o));
+  // The darts into s now end at t; the walk round s reads links only, not
+  // the targets it changes.
+  for (std::uint32_t c = Plain::opposite(pl.next(o)); c != o; c = Plain::opposite(pl.next(c)))
+    pl.set_target(c, t);
+  if (on_border) {
+    mesh.set_next(dp, dn);
+    mesh.set_next(op, on);
+  } else {
+    pl.set_next(encoding::halfedge_of_dart(dp.bits()), encoding::halfedge_of_dart(dn.bits()));
+    pl.set_next(encoding::halfedge_of_dart(op.bits()), encoding::halfedge_of_dart(on.bits()));
+  }
+  for (const std::uint32_t side : {h, o}) {
+    const std::uint32_t f = pl.face(side);
+    if (f != encoding::null && pl.face_halfedge(f) == side)
+      pl.set_face_halfedge(f, encoding::halfedge_of_dart((side == h ? dp : op).bits()));
+  }
+  mesh.remove_edge(Edge_index(encoding::edge_of_halfedge(h)));
+  mesh.remove_vertex(Vertex_index(s));
+  if (on_border) // t must store a border dart: look for it
+    CGAL_ext::internal::reset_vertex_halfedge(Vertex_index(t), op, mesh);
+  else
+    pl.set_vertex_halfedge(t, encoding::halfedge_of_dart(op.bits()));
+  return op;
 }
 
 template <class P>
 Dart join_vertex_unchecked(Dart d, Mobius_mesh<P>& mesh)
 {
-  const Walk wd = walk_of(d, mesh);
-  // Orient the star of source(d) so that opposite(d), and with it d, is unflipped.
-  CGAL_ext::internal::orient_star(mesh.opposite(d), mesh);
-  d = dart_of(wd, mesh);
-  CGAL_assertion(!d.is_flipped());
-  const Dart od = mesh.opposite(d);
-  const Vertex_index s = mesh.source(d), t = mesh.target(d);
-  const bool on_border = mesh.is_border(s) || mesh.is_border(t);
-  const Dart dp = mesh.prev(d), dn = mesh.next(d), op = mesh.prev(od), on = mesh.next(od);
-  // The darts into s (unflipped, after orient_star()) now end at t; the
-  // walk around s reads links only, not the targets it changes.
-  for (Dart c = mesh.opposite(mesh.next(od)); c != od; c = mesh.opposite(mesh.next(c)))
-    mesh.set_target(c.halfedge(), t);
-  mesh.set_next(dp, dn);
-  mesh.set_next(op, on);
-  for (const Dart& side : {d, od}) {
-    const Face_index f = mesh.face(side);
-    if (f.is_valid() && mesh.halfedge(f).halfedge() == side.halfedge())
-      mesh.set_halfedge(f, (side == d ? dp : op).halfedge());
+  if (d.is_flipped() ||
+      (!Plain::is_plain_everywhere(mesh) && CGAL_ext::internal::star_has_mobius_edge(mesh.opposite(d), mesh))) {
+    const Walk wd = walk_of(d, mesh);
+    // Orient the star of source(d) so that opposite(d), and with it d, is unflipped.
+    CGAL_ext::internal::orient_star(mesh.opposite(d), mesh);
+    d = dart_of(wd, mesh);
   }
-  mesh.remove_edge(mesh.edge(d));
-  mesh.remove_vertex(s);
-  if (on_border) // t must store a border dart: look for it
-    CGAL_ext::internal::reset_vertex_halfedge(t, op, mesh);
-  else
-    mesh.set_halfedge(t, op);
-  return op;
+  CGAL_assertion(!d.is_flipped());
+  return join_vertex_oriented(d, mesh);
 }
 
 template <class P>
@@ -581,9 +745,62 @@ Dart add_face_to_border_unchecked(Dart h1, Dart h2, Mobius_mesh<P>& mesh)
   return inner;
 }
 
+// True if the ring round the target of `into` (a halfedge into it, walked
+// unflipped) meets no flipped link and no Möbius edge: then its star is
+// oriented as `orient_star()` leaves it, and nothing there will turn.
+template <class P>
+bool is_plain_star(std::uint32_t into, const Mobius_mesh<P>& m)
+{
+  const Plain pl(m);
+  if (pl.is_plain_everywhere())
+    return true;
+  std::uint32_t c = into;
+  do {
+    const std::uint32_t out = pl.plain_step(c);
+    if (out == encoding::null)
+      return false;
+    c = Plain::opposite(out);
+  } while (c != into);
+  return true;
+}
+
+// collapse_edge() where no face turns: `d` unflipped, its edge and the sides
+// that go with the triangles not Möbius, and the star of the removed end
+// plain, which the joins and detaches keep so; `d` then names the same walk
+// throughout, and join_vertex() needs no orient_star().
+template <class P>
+Vertex_index collapse_plain_edge(Dart d, Mobius_mesh<P>& mesh)
+{
+  const Plain pl(mesh); // the joins and detaches add nothing: the arrays stay
+  const std::uint32_t h = encoding::halfedge_of_dart(d.bits());
+  const Vertex_index p(pl.target(Plain::opposite(h))), q(pl.target(h));
+  for (std::uint32_t side : {h, Plain::opposite(h)}) {
+    if (pl.is_border(side) || pl.next(pl.next(pl.next(side))) != side)
+      continue; // not a triangle (a face has three sides at least)
+    const std::uint32_t gone = pl.prev(side);
+    if (!pl.is_border(Plain::opposite(gone))) {
+      join_face_oriented(gone, mesh);
+    } else {
+      CGAL_ext::internal::detach_face(Face_index(pl.face(side)), mesh, true);
+      if (mesh.is_removed(p))
+        return q; // p had no other face
+    }
+  }
+  join_vertex_oriented(d, mesh);
+  return q;
+}
+
 template <class P>
 Vertex_index collapse_edge_unchecked(Dart d, Mobius_mesh<P>& mesh)
 {
+  if (!d.is_flipped()) {
+    // The side that goes on the edge's own side ends at p: in p's star.
+    const Plain pl(mesh);
+    const std::uint32_t h = encoding::halfedge_of_dart(d.bits()), o = Plain::opposite(h);
+    if (pl.is_plain_everywhere() ||
+        (!pl.is_mobius(h) && (pl.is_border(o) || !pl.is_mobius(pl.prev(o))) && is_plain_star(o, mesh)))
+      return collapse_plain_edge(d, mesh);
+  }
   const Walk wd = walk_of(d, mesh);
   const Vertex_index p = mesh.source(d), q = mesh.target(d);
   for (bool first_side : {true, false}) {
@@ -616,6 +833,21 @@ Vertex_index collapse_edge_unchecked(Dart d, Mobius_mesh<P>& mesh)
 template <class P>
 bool can_flip_edge(Dart d, const Mobius_mesh<P>& mesh)
 {
+  using Plain = internal::Plain;
+  const Plain pl(mesh);
+  if (!d.is_flipped() && !pl.is_mobius(internal::encoding::halfedge_of_dart(d.bits()))) {
+    // By halfedge index: the two faces run against each other along the edge.
+    const std::uint32_t h = internal::encoding::halfedge_of_dart(d.bits()), o = Plain::opposite(h);
+    const std::uint32_t f = pl.face(h), g = pl.face(o);
+    if (f == internal::encoding::null || g == internal::encoding::null || f == g)
+      return false;
+    const std::uint32_t hn = pl.next(h), on = pl.next(o);
+    if (pl.next(pl.next(hn)) != h || pl.next(pl.next(on)) != o ||
+        hn == h || on == o)
+      return false;
+    const Vertex_index c(pl.target(hn)), e(pl.target(on));
+    return c != e && !internal::are_adjacent(c, e, mesh);
+  }
   if (mesh.is_border(mesh.edge(d)))
     return false;
   const Dart o = mesh.opposite(d);
@@ -653,29 +885,45 @@ Dart flip_edge(Dart d, Mobius_mesh<P>& mesh, Unchecked_t)
 template <class P>
 Dart split_edge(Dart d, Mobius_mesh<P>& mesh)
 {
+  using Plain = internal::Plain;
+  namespace encoding = internal::encoding;
   d = internal::orient_edge(d, mesh);
-  const Halfedge_index h = d.halfedge(), o = Mobius_mesh<P>::opposite_halfedge(h);
-  const Dart od(o, false);
-  const Vertex_index a = mesh.source(d);
-  const Dart before = mesh.prev(d), after = mesh.next(od);
+  const std::uint32_t h = encoding::halfedge_of_dart(d.bits()), o = Plain::opposite(h);
+  const Dart od = Dart::from_bits(encoding::dart(o, false));
+  // The edge is not Möbius now: source(d) is the target of o. Faces are
+  // linked by halfedge index; a border side may be linked to flipped darts,
+  // and goes by darts.
+  const Plain plain(mesh);
+  const std::uint32_t a = plain.target(o);
+  const bool h_border = plain.is_border(h), o_border = plain.is_border(o);
+  const Dart before = h_border ? mesh.prev(d) : Dart::from_bits(encoding::dart(plain.prev(h), false));
+  const Dart after = o_border ? mesh.next(od) : Dart::from_bits(encoding::dart(plain.next(o), false));
 
-  const Vertex_index w = mesh.add_vertex();
-  const Edge_index e = mesh.add_edge(w, a);
-  const Halfedge_index h1 = Mobius_mesh<P>::halfedge(e, 0), o1 = Mobius_mesh<P>::halfedge(e, 1);
-  mesh.set_target(o, w);
-  mesh.set_face(h1, mesh.face(h));
-  mesh.set_face(o1, mesh.face(o));
-  mesh.set_next(before, Dart(h1, false));
-  mesh.set_next(Dart(h1, false), d);
-  mesh.set_next(od, Dart(o1, false));
-  mesh.set_next(Dart(o1, false), after);
-  mesh.set_halfedge(w, mesh.is_border(o) ? od : Dart(h1, false));
+  const std::uint32_t w = mesh.add_vertex().idx();
+  const std::uint32_t e = mesh.add_edge(Vertex_index(w), Vertex_index(a)).idx();
+  const internal::Plain_links pl(mesh); // after adding: the arrays may have moved
+  const std::uint32_t h1 = encoding::halfedge_of_edge(e, 0), o1 = encoding::halfedge_of_edge(e, 1);
+  pl.set_target(o, w);
+  pl.set_face(h1, pl.face(h));
+  pl.set_face(o1, pl.face(o));
+  if (h_border)
+    mesh.set_next(before, Dart::from_bits(encoding::dart(h1, false)));
+  else
+    pl.set_next(encoding::halfedge_of_dart(before.bits()), h1);
+  pl.set_next(h1, h);
+  pl.set_next(o, o1);
+  if (o_border)
+    mesh.set_next(Dart::from_bits(encoding::dart(o1, false)), after);
+  else
+    pl.set_next(o1, encoding::halfedge_of_dart(after.bits()));
+  pl.set_vertex_halfedge(w, o_border ? o : h1);
   // a's stored dart, if on the split edge, moves to the new edge on the same side.
-  if (mesh.halfedge(a).halfedge() == h)
-    mesh.set_halfedge(a, Dart(h1, true));
-  else if (mesh.halfedge(a).halfedge() == o)
-    mesh.set_halfedge(a, Dart(o1, false));
-  return Dart(h1, false);
+  const std::uint32_t stored = encoding::halfedge_of_dart(pl.vertex_dart(a));
+  if (stored == h)
+    mesh.set_halfedge(Vertex_index(a), Dart::from_bits(encoding::dart(h1, true)));
+  else if (stored == o)
+    pl.set_vertex_halfedge(a, o1);
+  return Dart::from_bits(encoding::dart(h1, false));
 }
 
 /// Tells whether `join_face(d, mesh)` can be done: the edge of `d` has two

@@ -55,6 +55,7 @@ struct Connectivity_access
     assign_values(m.e_mobius_, mobius, ne);
     assign_values(m.v_halfedge_, vertex_dart_bits, nv);
     assign_values(m.f_halfedge_, face_halfedge, nf);
+    m.recount_mobius_edges();
     resize_property_maps(m, nv, nh, ne, nf);
   }
 
@@ -75,6 +76,7 @@ struct Connectivity_access
     a.vertex_dart_bits = resize_for_overwrite(m.v_halfedge_, nv);
     a.face_halfedge = resize_for_overwrite(m.f_halfedge_, nf);
     a.mobius = resize_for_overwrite(m.e_mobius_, ne);
+    m.mobius_edges_ = Mobius_mesh<P>::unknown_count; // counted once written
     resize_property_maps(m, 0, 0, 0, 0);
     return a;
   }
@@ -84,6 +86,7 @@ struct Connectivity_access
   template <class P>
   static void reset_property_maps(Mobius_mesh<P>& m)
   {
+    m.recount_mobius_edges();
     resize_property_maps(m, m.num_vertices(), m.num_halfedges(), m.num_edges(), m.num_faces());
   }
 

@@ -11,6 +11,7 @@
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_EULER_SUPPORT_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Plain_links.h>
 
 #include <CGAL/assertions.h>
 
@@ -103,7 +104,7 @@ bool star_has_mobius_edge(Dart d, const Mobius_mesh<P>& m)
 template <class P>
 Dart orient_star(Dart d, Mobius_mesh<P>& m)
 {
-  if (!d.is_flipped() && !star_has_mobius_edge(d, m))
+  if (!d.is_flipped() && (Plain_reader::is_plain_everywhere(m) || !star_has_mobius_edge(d, m)))
     return d; // the usual case: nothing to turn, and d already runs the right way
   const Walk w = walk_of(d, m);
   CGAL_assertion_code(const Vertex_index v = m.target(d);)

@@ -9,6 +9,8 @@
 
 #include <CGAL_ext/internal/Huge_page_allocator.h>
 
+#include <CGAL/assertions.h>
+
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
@@ -82,6 +84,19 @@ struct Bool_cell
   Bool_cell(bool b) : value(b) {} // implicit, so that a vector of cells fills from a bool
 };
 
+// push_back() where the caller knows there is room: without the
+// reallocation path, the caller needs no stack frame.
+template <class Vector, class Value>
+void push_within_capacity(Vector& v, Value&& x)
+{
+  CGAL_precondition(v.size() < v.capacity());
+#if defined(__GNUC__) || defined(__clang__)
+  if (v.size() == v.capacity())
+    __builtin_unreachable();
+#endif
+  v.push_back(std::forward<Value>(x));
+}
+
 template <class T>
 using Stored_value = std::conditional_t<std::is_same_v<T, bool>, Bool_cell, T>;
 
@@ -97,16 +112,20 @@ public:
 
   void resize(std::size_t n) override
   {
-    // Euler operations grow the arrays by one or two elements at a time: a
-    // push_back is inline, a filling resize an out-of-line call.
-    if (n > data_.size() && n - data_.size() <= 2) {
-      while (data_.size() < n)
-        data_.push_back(Stored(default_));
-    } else {
-      if (n > data_.capacity())
-        grow_capacity((std::max)(n, 2 * data_.size())); // as the vector itself grows
-      data_.resize(n, Stored(default_));
-    }
+    if (n == data_.size() + 1)
+      push_default();
+    else
+      resize_slowly(n);
+  }
+  // One more element, with the default value. Euler operations grow the
+  // arrays by one element at a time: a push_back is inline, a filling
+  // resize an out-of-line call.
+  [[gnu::flatten]] void push_default()
+  {
+    if (data_.size() < data_.capacity())
+      push_within_capacity(data_, Stored(default_));
+    else
+      resize_slowly(data_.size() + 1);
   }
   void reserve(std::size_t n) override
   {
@@ -169,6 +188,13 @@ private:
   {
     data_.reserve(capacity);
     advise_huge_pages(data_.data() + data_.size(), (data_.capacity() - data_.size()) * sizeof(Stored));
+  }
+  // Out of line, so that growing by one within capacity needs no stack frame.
+  [[gnu::noinline]] void resize_slowly(std::size_t n)
+  {
+    if (n > data_.capacity())
+      grow_capacity((std::max)(n, 2 * data_.size())); // as the vector itself grows
+    data_.resize(n, Stored(default_));
   }
 
   std::vector<Stored> data_;
@@ -234,15 +260,20 @@ public:
       a->resize(n);
     size_ = n;
   }
+  // Records that the caller grew every array by one element itself (with
+  // `Property_array::push_default()`, knowing their types).
+  void grown_by_one() { ++size_; }
   void reserve(std::size_t n)
   {
     for (auto& a : arrays_)
       a->reserve(n);
+    reserved_ = n;
   }
   void shrink_to_fit()
   {
     for (auto& a : arrays_)
       a->shrink_to_fit();
+    reserved_ = 0;
   }
   void clear()
   {
@@ -294,6 +325,9 @@ public:
       return {nullptr, false};
     }
     auto array = std::make_unique<Property_array<T>>(name, default_value);
+    // Room for what reserve() asked of the others (the removal flags, made
+    // at the first removal, would otherwise grow by reallocation).
+    array->reserve(reserved_);
     array->resize(size_);
     Property_array<T>* raw = array.get();
     arrays_.push_back(std::move(array));
@@ -313,6 +347,7 @@ public:
     if (Base_property_array* a = find_by_name(like.name()))
       return a->value_type() == like.value_type() ? a : nullptr;
     auto array = like.empty_clone();
+    array->reserve(reserved_);
     array->resize(size_);
     arrays_.push_back(std::move(array));
     return arrays_.back().get();
@@ -358,6 +393,7 @@ private:
 
   std::vector<std::unique_ptr<Base_property_array>> arrays_;
   std::size_t size_ = 0;
+  std::size_t reserved_ = 0; // the last reserve()
 };
 
 } // namespace internal
