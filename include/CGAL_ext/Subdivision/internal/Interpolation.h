@@ -15,6 +15,7 @@
 #include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
 #include <CGAL_ext/Subdivision/internal/Weights.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -26,48 +27,54 @@ namespace internal {
 // which the serial pass adds their terms, so a gather gives the same bits.
 struct Incidence
 {
-  std::vector<u32> edge_offset, edges, face_offset, faces;
+  Array<u32> edge_offset, edges, face_offset, faces;
 
   bool empty() const { return edge_offset.empty(); }
   void clear() { *this = Incidence(); }
 };
 
-// Offsets from counts: offset[v + 1] holds the count of v on entry.
-inline void prefix_sum(std::vector<u32>& offset)
+// Lists, for each vertex, the items that touch it: `offset` and `items` as
+// in Incidence, from `for_each_item(add)`, which calls add(v, item) for each
+// pair, items in increasing order in a serial pass. The counts and the
+// slots are taken atomically by several threads, and each vertex's list is
+// then sorted: the lists are those of the serial pass.
+template <class ConcurrencyTag, class ForEachItem>
+void list_per_vertex(u32 nv, std::size_t n_items, Array<u32>& offset, Array<u32>& items,
+                     const ForEachItem& for_each_item)
 {
-  for (std::size_t v = 1; v < offset.size(); ++v)
-    offset[v] += offset[v - 1];
+  offset.clear();
+  offset.resize(std::size_t(nv) + 1);
+  for_each_index<ConcurrencyTag>(nv + 1, [&](u32 v) { offset[v] = 0; });
+  for_each_item([&](u32 v, u32) { atomic_add<ConcurrencyTag>(offset[v + 1], 1); });
+  prefix_sum<ConcurrencyTag>(offset.data(), nv);
+  items.clear();
+  items.resize(n_items);
+  Array<u32> fill(nv);
+  for_each_index<ConcurrencyTag>(nv, [&](u32 v) { fill[v] = offset[v]; });
+  for_each_item([&](u32 v, u32 item) { items[atomic_add<ConcurrencyTag>(fill[v], 1)] = item; });
+  if constexpr (is_parallel_tag<ConcurrencyTag>)
+    for_each_index<ConcurrencyTag>(
+      nv, [&](u32 v) { std::sort(items.begin() + offset[v], items.begin() + offset[v + 1]); });
 }
 
 // The incidence tables of level `p`.
-inline void build_incidence(const Level& p, Incidence& inc)
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void build_incidence(const Level& p, Incidence& inc)
 {
   namespace de = dart_encoding;
-  auto ends = [&](u32 e) {
-    const u32 h = de::halfedge_of_edge(e, 0);
-    return std::pair<u32, u32>(p.source(de::dart(h, false)), p.h_target[h]);
-  };
-  inc.edge_offset.assign(std::size_t(p.nv) + 1, 0);
-  for (u32 e = 0; e < p.ne; ++e) {
-    ++inc.edge_offset[ends(e).first + 1];
-    ++inc.edge_offset[ends(e).second + 1];
-  }
-  prefix_sum(inc.edge_offset);
-  inc.edges.resize(2 * std::size_t(p.ne));
-  std::vector<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
-  for (u32 e = 0; e < p.ne; ++e) {
-    inc.edges[fill[ends(e).first]++] = e;
-    inc.edges[fill[ends(e).second]++] = e;
-  }
-  inc.face_offset.assign(std::size_t(p.nv) + 1, 0);
-  for (u32 c = 0; c < p.nc; ++c)
-    ++inc.face_offset[p.h_target[p.corner_h[c]] + 1];
-  prefix_sum(inc.face_offset);
-  inc.faces.resize(p.nc);
-  fill.assign(inc.face_offset.begin(), inc.face_offset.end() - 1);
-  for (u32 f = 0; f < p.nf; ++f)
-    for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
-      inc.faces[fill[p.h_target[p.corner_h[c]]]++] = f;
+  list_per_vertex<ConcurrencyTag>(p.nv, 2 * std::size_t(p.ne), inc.edge_offset, inc.edges, [&](const auto& add) {
+    for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) {
+      const u32 h = de::halfedge_of_edge(e, 0);
+      add(p.source(de::dart(h, false)), e);
+      add(p.h_target[h], e);
+    });
+  });
+  list_per_vertex<ConcurrencyTag>(p.nv, p.nc, inc.face_offset, inc.faces, [&](const auto& add) {
+    for_each_index<ConcurrencyTag>(p.nf, [&](u32 f) {
+      for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+        add(p.h_target[p.corner_h[c]], f);
+    });
+  });
 }
 
 // The points both passes share, formed by the same expressions so that the

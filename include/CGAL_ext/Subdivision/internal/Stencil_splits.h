@@ -67,7 +67,9 @@ inline bool is_border_edge(const Level& p, u32 e)
 // Builds level `c` (nv vertices) from a face list, through the mesh's
 // connectivity builder, which pairs the faces' sides and sets a Möbius bit
 // where two faces run the same way.
-inline void level_from_faces(u32 nv, const Face_list& faces, Level& c)
+// (The builder is serial; the corner numbering runs as ConcurrencyTag says.)
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void level_from_faces(u32 nv, const Face_list& faces, Level& c)
 {
   CGAL_ext::internal::Connectivity_builder builder(faces.view(nv));
   c.resize(nv, builder.number_of_edges(), faces.size(), u32(faces.vertex.size()),
@@ -81,7 +83,7 @@ inline void level_from_faces(u32 nv, const Face_list& faces, Level& c)
   arrays.face_halfedge = c.f_first.data();
   arrays.mobius = c.e_mobius.data();
   builder.build(arrays, false);
-  index_corners(c);
+  index_corners<ConcurrencyTag>(c);
 }
 
 // The Doo–Sabin quad of interior edge e, oriented like its face h0 (the
