@@ -430,10 +430,11 @@ private:
       if (stencils_.size() < slot + 1)
         stencils_.resize(slot + 1);
       internal::Face_list faces;
+      using Tag = Weight_tag<ConcurrencyTag>;
       if constexpr (Mask::split == Split::dual)
-        internal::dual_split(levels_[slot], mask_, faces, stencils_[slot]);
+        internal::dual_split<Tag>(levels_[slot], mask_, faces, stencils_[slot]);
       else
-        internal::sqrt3_split(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
+        internal::sqrt3_split<Tag>(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
       internal::level_from_faces<ConcurrencyTag>(stencils_[slot].size(), faces, levels_[slot + 1]);
     } else {
       CGAL_USE(k);
@@ -445,13 +446,17 @@ private:
     }
   }
 
-  // The weights of levels_[slot] into weights_[slot], and the sharpness of
-  // its child into child_sharpness_. Exact weights are made serially: their
+  // How weights and stencils are made: serially for exact weights, whose
   // numbers may share representations between threads.
+  template <class ConcurrencyTag>
+  using Weight_tag = std::conditional_t<std::is_floating_point_v<W>, ConcurrencyTag, CGAL::Sequential_tag>;
+
+  // The weights of levels_[slot] into weights_[slot], and the sharpness of
+  // its child into child_sharpness_.
   template <class ConcurrencyTag>
   void compute_weights(unsigned slot)
   {
-    using Tag = std::conditional_t<std::is_floating_point_v<W>, ConcurrencyTag, CGAL::Sequential_tag>;
+    using Tag = Weight_tag<ConcurrencyTag>;
     weight_builder_.template build<Tag>(mask_, options_.crease_method, levels_[slot], child_vertex_count(slot),
                                         weights_[slot], child_sharpness_);
   }
