@@ -199,13 +199,17 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
         if (!from)
           return;
         std::vector<typename L::Value> base, result;
-        base.reserve(mesh.number_of_vertices());
-        for (Vertex_index v : mesh.vertices())
-          base.push_back(L::from((*from)[v]));
+        const u32 n = u32(mesh.number_of_vertices());
+        base.resize(n);
+        with_concurrency<ConcurrencyTag>(runs_in_parallel(n, refiner.options().parallel_min_vertices), [&](auto t) {
+          for_each_index<decltype(t)>(n, [&](u32 v) { base[v] = L::from((*from)[Vertex_index(v)]); });
+        });
         refiner.template interpolate<ConcurrencyTag>(base, result);
         auto to = out.template add_property_map<Vertex_index, T>(name, from->array()->default_value()).first;
-        for (Vertex_index v : out.vertices())
-          to[v] = L::to(result[v.idx()]);
+        const u32 m = u32(out.number_of_vertices());
+        with_concurrency<ConcurrencyTag>(runs_in_parallel(m, refiner.options().parallel_min_vertices), [&](auto t) {
+          for_each_index<decltype(t)>(m, [&](u32 v) { to[Vertex_index(v)] = L::to(result[v]); });
+        });
       }
     });
   }

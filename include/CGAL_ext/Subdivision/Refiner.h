@@ -314,8 +314,10 @@ public:
     for (unsigned k = 0; k < n; ++k) {
       Value* dst = ((n - 1 - k) % 2 == 0) ? result.data() : scratch.data();
       interpolate_level<ConcurrencyTag>(k, src, dst);
-      internal::for_each_index<ConcurrencyTag>(levels_[k + 1].nv,
-                                               [&](u32 v) { internal::normalize_value(dst[v], 0); });
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv), [&](auto tag) {
+        internal::for_each_index<decltype(tag)>(levels_[k + 1].nv,
+                                                [&](u32 v) { internal::normalize_value(dst[v], 0); });
+      });
       src = dst;
     }
   }
