@@ -22,6 +22,7 @@
 #include <CGAL/use.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -72,8 +73,8 @@ constexpr std::uint32_t parallel_vertices_per_thread = 8192;
 /// parallel under `CGAL::Parallel_tag`, given the option
 /// `Refinement_options::parallel_min_vertices`: with `automatic`, if the
 /// current task arena has more than one thread
-/// (`tbb::this_task_arena::max_concurrency()`, which `tbb::global_control`
-/// and `tbb::task_arena` limit) and each gets at least
+/// (`tbb::this_task_arena::max_concurrency()`, and at most the
+/// `max_allowed_parallelism` of a `tbb::global_control`) and each gets at least
 /// `parallel_vertices_per_thread` vertices; otherwise if `level_vertices`
 /// is at least the option. Always false without TBB.
 inline bool runs_in_parallel(std::uint32_t level_vertices, std::uint32_t parallel_min_vertices)
@@ -81,8 +82,11 @@ inline bool runs_in_parallel(std::uint32_t level_vertices, std::uint32_t paralle
 #ifdef CGAL_LINKED_WITH_TBB
   if (parallel_min_vertices != Refinement_options::automatic)
     return level_vertices >= parallel_min_vertices;
-  const int threads = tbb::this_task_arena::max_concurrency();
-  return threads > 1 && level_vertices / std::uint32_t(threads) >= parallel_vertices_per_thread;
+  // The arena's slots, within the cap of any tbb::global_control alive.
+  const std::size_t threads =
+    (std::min)(std::size_t(tbb::this_task_arena::max_concurrency()),
+               tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  return threads > 1 && level_vertices / threads >= parallel_vertices_per_thread;
 #else
   CGAL_USE(level_vertices);
   CGAL_USE(parallel_min_vertices);

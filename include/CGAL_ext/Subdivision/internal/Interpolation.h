@@ -33,48 +33,102 @@ struct Incidence
   void clear() { *this = Incidence(); }
 };
 
-// Lists, for each vertex, the items that touch it: `offset` and `items` as
-// in Incidence, from `for_each_item(add)`, which calls add(v, item) for each
-// pair, items in increasing order in a serial pass. The counts and the
-// slots are taken atomically by several threads, and each vertex's list is
-// then sorted: the lists are those of the serial pass.
-template <class ConcurrencyTag, class ForEachItem>
-void list_per_vertex(u32 nv, std::size_t n_items, Array<u32>& offset, Array<u32>& items,
-                     const ForEachItem& for_each_item)
+// Offsets from counts (offset[v + 1] holds the count of v on entry).
+inline void prefix_sum(Array<u32>& offset)
 {
-  offset.clear();
-  offset.resize(std::size_t(nv) + 1);
-  for_each_index<ConcurrencyTag>(nv + 1, [&](u32 v) { offset[v] = 0; });
-  for_each_item([&](u32 v, u32) { atomic_add<ConcurrencyTag>(offset[v + 1], 1); });
-  prefix_sum<ConcurrencyTag>(offset.data(), nv);
-  items.clear();
-  items.resize(n_items);
-  Array<u32> fill(nv);
-  for_each_index<ConcurrencyTag>(nv, [&](u32 v) { fill[v] = offset[v]; });
-  for_each_item([&](u32 v, u32 item) { items[atomic_add<ConcurrencyTag>(fill[v], 1)] = item; });
-  if constexpr (is_parallel_tag<ConcurrencyTag>)
-    for_each_index<ConcurrencyTag>(
-      nv, [&](u32 v) { std::sort(items.begin() + offset[v], items.begin() + offset[v + 1]); });
+  for (std::size_t v = 1; v < offset.size(); ++v)
+    offset[v] += offset[v - 1];
 }
 
-// The incidence tables of level `p`.
+// The incidence tables of level `p`, serially: a counting sort of the edges
+// and face corners by vertex.
+inline void build_incidence_serially(const Level& p, Incidence& inc)
+{
+  auto ends = [&](u32 e) {
+    const u32 h = dart_encoding::halfedge_of_edge(e, 0);
+    return std::pair<u32, u32>(p.source(dart_encoding::dart(h, false)), p.h_target[h]);
+  };
+  inc.edge_offset.assign(std::size_t(p.nv) + 1, 0);
+  for (u32 e = 0; e < p.ne; ++e) {
+    ++inc.edge_offset[ends(e).first + 1];
+    ++inc.edge_offset[ends(e).second + 1];
+  }
+  prefix_sum(inc.edge_offset);
+  inc.edges.resize(2 * std::size_t(p.ne));
+  Array<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
+  for (u32 e = 0; e < p.ne; ++e) {
+    inc.edges[fill[ends(e).first]++] = e;
+    inc.edges[fill[ends(e).second]++] = e;
+  }
+  inc.face_offset.assign(std::size_t(p.nv) + 1, 0);
+  for (u32 c = 0; c < p.nc; ++c)
+    ++inc.face_offset[p.h_target[p.corner_h[c]] + 1];
+  prefix_sum(inc.face_offset);
+  inc.faces.resize(p.nc);
+  fill.assign(inc.face_offset.begin(), inc.face_offset.end() - 1);
+  for (u32 f = 0; f < p.nf; ++f)
+    for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+      inc.faces[fill[p.h_target[p.corner_h[c]]]++] = f;
+}
+
+// Sorts a short list (the edges or faces at a vertex, a handful): insertion
+// sort, without the set-up of std::sort.
+inline void sort_short(u32* begin, u32* end)
+{
+  for (u32* i = begin + (begin != end ? 1 : 0); i < end; ++i) {
+    const u32 x = *i;
+    u32* j = i;
+    for (; j != begin && *(j - 1) > x; --j)
+      *j = *(j - 1);
+    *j = x;
+  }
+}
+
+// The incidence tables of level `p`, a vertex at a time (in parallel for
+// `CGAL::Parallel_tag`): the walk around a vertex meets each end of an edge
+// at it once, and each face corner at it once, as a dart that is not on
+// the border; its lists, sorted, are those of the counting sort. Counts
+// first, then offsets by a prefix sum, then the lists.
 template <class ConcurrencyTag = CGAL::Sequential_tag>
 void build_incidence(const Level& p, Incidence& inc)
 {
-  namespace de = dart_encoding;
-  list_per_vertex<ConcurrencyTag>(p.nv, 2 * std::size_t(p.ne), inc.edge_offset, inc.edges, [&](const auto& add) {
-    for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) {
-      const u32 h = de::halfedge_of_edge(e, 0);
-      add(p.source(de::dart(h, false)), e);
-      add(p.h_target[h], e);
+  if constexpr (!is_parallel_tag<ConcurrencyTag>) {
+    build_incidence_serially(p, inc);
+  } else {
+    namespace de = dart_encoding;
+    for (Array<u32>* offset : {&inc.edge_offset, &inc.face_offset}) {
+      offset->clear();
+      offset->resize(std::size_t(p.nv) + 1);
+      (*offset)[0] = 0;
+    }
+    for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
+      u32 edges = 0, faces = 0;
+      p.for_each_dart_at(v, [&](u32 d) {
+        ++edges;
+        faces += p.is_border_dart(d) ? 0 : 1;
+      });
+      inc.edge_offset[v + 1] = edges;
+      inc.face_offset[v + 1] = faces;
     });
-  });
-  list_per_vertex<ConcurrencyTag>(p.nv, p.nc, inc.face_offset, inc.faces, [&](const auto& add) {
-    for_each_index<ConcurrencyTag>(p.nf, [&](u32 f) {
-      for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
-        add(p.h_target[p.corner_h[c]], f);
+    prefix_sum<ConcurrencyTag>(inc.edge_offset.data(), p.nv);
+    prefix_sum<ConcurrencyTag>(inc.face_offset.data(), p.nv);
+    inc.edges.clear();
+    inc.edges.resize(inc.edge_offset[p.nv]);
+    inc.faces.clear();
+    inc.faces.resize(inc.face_offset[p.nv]);
+    for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
+      u32* edges = inc.edges.data() + inc.edge_offset[v];
+      u32* faces = inc.faces.data() + inc.face_offset[v];
+      u32 ne = 0, nf = 0;
+      p.for_each_dart_at(v, [&](u32 d) {
+        edges[ne++] = de::edge_of_dart(d);
+        if (!p.is_border_dart(d))
+          faces[nf++] = p.h_face[de::halfedge_of_dart(d)];
+      });
+      sort_short(edges, edges + ne);
+      sort_short(faces, faces + nf);
     });
-  });
+  }
 }
 
 // The points both passes share, formed by the same expressions so that the

@@ -153,14 +153,18 @@ u32 atomic_add(u32& x, u32 y)
   }
 }
 
-// x = 1, atomically for `CGAL::Parallel_tag` (a flag that several threads may raise).
+// x = 1, atomically for `CGAL::Parallel_tag` (a flag that several threads
+// may raise). A flag already raised is only read: the threads then share
+// its cache line instead of taking it from each other.
 template <class ConcurrencyTag>
 void mark(std::uint8_t& x)
 {
-  if constexpr (is_parallel_tag<ConcurrencyTag>)
-    __atomic_store_n(&x, std::uint8_t(1), __ATOMIC_RELAXED);
-  else
+  if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    if (!__atomic_load_n(&x, __ATOMIC_RELAXED))
+      __atomic_store_n(&x, std::uint8_t(1), __ATOMIC_RELAXED);
+  } else {
     x = 1;
+  }
 }
 
 // Arrays mirror Mobius_mesh: halfedges 2e and 2e+1 of edge e, `next`/`prev`
@@ -261,6 +265,20 @@ struct Level
     return dart_encoding::opposite_dart(d, e_mobius[dart_encoding::edge_of_dart(d)] != 0);
   }
   u32 degree(u32 f) const { return f_offset[f + 1] - f_offset[f]; }
+  // Calls body(d) for each dart d that ends at vertex v, in the order of the
+  // walk around v: one per end of an edge at v (an edge from v to v twice).
+  template <class Body>
+  void for_each_dart_at(u32 v, const Body& body) const
+  {
+    const u32 d0 = v_dart[v];
+    if (d0 == null_u32)
+      return;
+    u32 d = d0;
+    do {
+      body(d);
+      d = opposite(next(d));
+    } while (d != d0);
+  }
 
   // Child halfedges of parent halfedge h: the half at h's source and the half
   // at its target. Child edge 2e lies at source(2e), 2e+1 at target(2e); on a

@@ -179,49 +179,64 @@ private:
   };
 
   // Valence of every vertex and, with sharpness, its sharp and semi-sharp
-  // edges. The semi-sharp sum is formed in edge order, the order of the
-  // serial pass over the edges: the walk around the vertex, which meets each
-  // end of an edge once, is sorted by edge.
+  // edges, summed in edge order. Serially, a pass over the edges; in
+  // parallel, a walk around each vertex, which meets each end of an edge at
+  // it once (no two threads write one count), its sharp edges sorted by
+  // index so that the semi-sharp sum is formed in the same order.
   template <class ConcurrencyTag>
   void count_edges_at_vertices()
   {
     const Level& p = *p_;
     valence_.clear();
     valence_.resize(p.nv);
-    for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) { valence_[v] = 0; });
-    for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) {
-      atomic_add<ConcurrencyTag>(valence_[p.source(edge_dart(e))], 1);
-      atomic_add<ConcurrencyTag>(valence_[p.h_target[edge_halfedge(e)]], 1);
-    });
-    if (!p.sharp)
-      return;
-    sharp_count_.clear();
-    sharp_count_.resize(p.nv);
-    semi_sharp_.clear();
-    semi_sharp_.resize(p.nv);
-    for_each_block<ConcurrencyTag>(p.nv, [&](u32 begin, u32 end) {
-      std::vector<u32> sharp;
-      for (u32 v = begin; v < end; ++v) {
-        sharp_count_[v] = 0;
-        semi_sharp_[v] = Crease::Semi_sharp_edges();
-        const u32 d0 = p.v_dart[v];
-        if (d0 == null_u32)
+    if (p.sharp) {
+      sharp_count_.clear();
+      sharp_count_.resize(p.nv);
+      semi_sharp_.clear();
+      semi_sharp_.resize(p.nv);
+    }
+    if constexpr (!is_parallel_tag<ConcurrencyTag>) {
+      std::fill(valence_.begin(), valence_.end(), 0u);
+      for (u32 e = 0; e < p.ne; ++e) {
+        ++valence_[p.source(edge_dart(e))];
+        ++valence_[p.h_target[edge_halfedge(e)]];
+      }
+      if (!p.sharp)
+        return;
+      std::fill(sharp_count_.begin(), sharp_count_.end(), 0u);
+      std::fill(semi_sharp_.begin(), semi_sharp_.end(), Crease::Semi_sharp_edges());
+      for (u32 e = 0; e < p.ne; ++e) {
+        const float s = p.e_sharp[e];
+        if (!Crease::is_sharp(s))
           continue;
-        sharp.clear();
-        u32 d = d0;
-        do {
-          const u32 e = dart_encoding::edge_of_dart(d);
-          if (Crease::is_sharp(p.e_sharp[e]))
-            sharp.push_back(e);
-          d = p.opposite(p.next(d));
-        } while (d != d0);
-        std::sort(sharp.begin(), sharp.end());
-        for (u32 e : sharp) {
+        for (u32 v : {p.source(edge_dart(e)), p.h_target[edge_halfedge(e)]}) {
           ++sharp_count_[v];
-          semi_sharp_[v].add(p.e_sharp[e]);
+          semi_sharp_[v].add(s);
         }
       }
-    });
+    } else {
+      for_each_block<ConcurrencyTag>(p.nv, [&](u32 begin, u32 end) {
+        std::vector<u32> sharp;
+        for (u32 v = begin; v < end; ++v) {
+          u32 n = 0;
+          sharp.clear();
+          p.for_each_dart_at(v, [&](u32 d) {
+            ++n;
+            const u32 e = dart_encoding::edge_of_dart(d);
+            if (p.sharp && Crease::is_sharp(p.e_sharp[e]))
+              sharp.push_back(e);
+          });
+          valence_[v] = n;
+          if (!p.sharp)
+            continue;
+          std::sort(sharp.begin(), sharp.end());
+          sharp_count_[v] = u32(sharp.size());
+          semi_sharp_[v] = Crease::Semi_sharp_edges();
+          for (u32 e : sharp)
+            semi_sharp_[v].add(p.e_sharp[e]);
+        }
+      });
+    }
   }
 
   // The first halfedge of edge e, and its unflipped dart.
