@@ -825,8 +825,9 @@ void register_threshold()
       ->MinTime(0.2);
     if (!parallel_available())
       continue;
-    for (const auto& variant : {std::pair<const char*, std::uint32_t>{"parallel_always", 0u},
-                                std::pair<const char*, std::uint32_t>{"parallel_auto", Our_mesh::automatic_threshold()}}) {
+    using Variant = std::pair<const char*, std::uint32_t>;
+    for (const Variant& variant :
+         {Variant{"parallel_always", 0u}, Variant{"parallel_auto", Our_mesh::automatic_threshold()}}) {
       const std::string name = variant.first;
       const std::uint32_t min_vertices = variant.second;
       auto* b = benchmark::RegisterBenchmark((base + name).c_str(),
