@@ -59,12 +59,16 @@ struct Refinement_options
 /// With `Refinement_options::automatic`, the fewest vertices per thread of a
 /// level (the parent of a step) for the step to run in parallel.
 ///
-/// Measured on a 2-core machine (doc/benchmarks.md, "Parallel threshold"):
-/// one Catmull–Clark step of a torus, serial against two threads, at levels
-/// of 2^10 to 2^18 vertices; two threads began to win between
-/// 2 · 4096 and 2 · 16384 vertices. A level is therefore split among T threads
-/// when each gets at least this many of its vertices: the per-thread work
-/// then outweighs waking and joining the threads, whose cost grows with T.
+/// A level is split among T threads when each gets at least this many of
+/// its vertices: the per-thread work must outweigh waking and joining the
+/// threads, whose cost grows with T. The rows `parallel_threshold` of
+/// bench_subdivision time one Catmull–Clark step of tori of 2^10 to 2^18
+/// vertices, serially against T threads (doc/benchmarks.md, "Parallel
+/// threshold"); on the loaded 2-core machine where they ran, two threads
+/// won at no size consistently, so the value is chosen, not measured: it
+/// keeps the former fixed threshold, 131 072 = 16 · 8192, on 16 threads and
+/// lowers it in proportion on fewer. Rerun those rows on an idle machine to
+/// place it.
 constexpr std::uint32_t parallel_vertices_per_thread = 8192;
 
 /// \ingroup PkgSubdivision
