@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -156,6 +157,25 @@ auto normalize_value(V& v, int) -> decltype(v.exact(), void())
 template <class V>
 void normalize_value(V&, long)
 {}
+
+// Whether normalize_value() does something for V (lazy exact numbers): the
+// loops that call it are skipped otherwise.
+template <class V, class = void>
+struct Normalizes : std::false_type
+{};
+template <class V>
+struct Normalizes<V, std::void_t<decltype(std::declval<V&>().exact())>> : std::true_type
+{};
+
+// normalize_value() on the n values at `values`.
+template <class ConcurrencyTag, class V>
+void normalize_values(V* values, u32 n)
+{
+  if constexpr (Normalizes<V>::value)
+    for_each_index<ConcurrencyTag>(n, [&](u32 v) { normalize_value(values[v], 0); });
+  else
+    CGAL_USE(values), CGAL_USE(n);
+}
 
 // Calls body(ConcurrencyTag()) if `parallel` and ConcurrencyTag asks for
 // threads, body(CGAL::Sequential_tag()) otherwise: every stage of a step
@@ -323,8 +343,7 @@ public:
       Value* dst = ((n - 1 - k) % 2 == 0) ? result.data() : scratch.data();
       interpolate_level<ConcurrencyTag>(k, src, dst);
       internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv), [&](auto tag) {
-        internal::for_each_index<decltype(tag)>(levels_[k + 1].nv,
-                                                [&](u32 v) { internal::normalize_value(dst[v], 0); });
+        internal::normalize_values<decltype(tag)>(dst, levels_[k + 1].nv);
       });
       src = dst;
     }
@@ -423,8 +442,7 @@ private:
     Values next;
     next.resize(child_vertex_count(0));
     interpolate_level<ConcurrencyTag>(0, values.data(), next.data());
-    auto* dst = next.data();
-    internal::for_each_index<ConcurrencyTag>(u32(next.size()), [&](u32 v) { internal::normalize_value(dst[v], 0); });
+    internal::normalize_values<ConcurrencyTag>(next.data(), u32(next.size()));
     values.swap(next);
   }
 

@@ -428,7 +428,7 @@ void fill_level(const Mobius_mesh<P>& m, Level& L)
 template <class ConcurrencyTag, class Child>
 void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
 {
-  for_each_index<ConcurrencyTag>(2 * p.ne, [&](u32 h) {
+  auto split_halfedge = [&](u32 h) {
     const u32 h0 = p.first_child(h), h1 = p.second_child(h);
     c.h_target[h0] = edge_point_offset + dart_encoding::edge_of_halfedge(h);
     c.h_target[h1] = p.h_target[h];
@@ -441,11 +441,14 @@ void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
     c.h_prev[h1] = face_dart(h0);
     c.h_next[h1] = p.child_dart_from_source(p.h_next[h]);
     c.h_prev[h0] = p.child_dart_to_target(p.h_prev[h]);
-  });
+  };
+  // An edge and its two halfedges in one loop: one fork and join fewer.
   for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) {
+    const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
+    split_halfedge(h0);
+    split_halfedge(h1);
     c.e_mobius[2 * e] = c.e_mobius[2 * e + 1] = p.e_mobius[e];
     // The edge point's dart: on the border halfedge, if the edge has one.
-    const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
     const u32 g = p.h_face[h0] != null_u32 && p.h_face[h1] == null_u32 ? h1 : h0;
     c.v_dart[edge_point_offset + e] = face_dart(p.first_child(g));
   });
