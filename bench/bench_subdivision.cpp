@@ -58,6 +58,10 @@
 // checks its face and vertex counts against the closed form: a comparison of
 // different outputs would be worthless.
 //
+// And subdivision/parallel_threshold/...: one step of tori of 1 k to 262 k
+// vertices, serial against parallel, the measurement behind the automatic
+// parallel threshold (see register_threshold()).
+//
 // Names follow `group/case.../implementation`; scripts/bench.sh takes the
 // first implementation whose name starts with `CGAL_ext` as the reference.
 
@@ -786,6 +790,57 @@ void register_one(const Case& c, unsigned level, Heap_mode mode, const Implement
     b->MinTime(0.05);
 }
 
+// The measurement behind Subdivision::parallel_vertices_per_thread: one
+// Catmull–Clark step of an n x n torus (n² vertices), serially, in parallel
+// however small the level (`parallel_min_vertices` = 0) and with the
+// automatic choice, under a cap of N threads. Where `parallel_always` beats
+// `serial` at N = 2 is the threshold; `parallel_auto` should follow the
+// faster of the two.
+void register_threshold()
+{
+  for (std::size_t n : {32, 45, 64, 91, 128, 181, 256, 362, 512}) {
+    const std::string base = "subdivision/parallel_threshold/torus" + std::to_string(n) + "x" + std::to_string(n) +
+                             "/level_1/warm/";
+    auto bench = [n](benchmark::State& st, bool parallel, std::uint32_t min_vertices) {
+      std::optional<Thread_limit> limit;
+      if (parallel)
+        limit.emplace(int(st.range(0)));
+      set_heap_mode(Heap_mode::warm);
+      Our_mesh input, work;
+      input.assign(torus_soup(n, n));
+      for (auto _ : st) {
+        st.PauseTiming();
+        work.assign(input);
+        st.ResumeTiming();
+        const auto start = Clock::now();
+        work.refine_once(parallel, min_vertices);
+        st.SetIterationTime(std::chrono::duration<double>(Clock::now() - start).count());
+      }
+      st.counters["vertices"] = double(n * n);
+    };
+    benchmark::RegisterBenchmark((base + "serial").c_str(),
+                                 [=](benchmark::State& st) { bench(st, false, 0); })
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond)
+      ->MinTime(0.2);
+    if (!parallel_available())
+      continue;
+    using Variant = std::pair<const char*, std::uint32_t>;
+    for (const Variant& variant :
+         {Variant{"parallel_always", 0u}, Variant{"parallel_auto", Our_mesh::automatic_threshold()}}) {
+      const std::string name = variant.first;
+      const std::uint32_t min_vertices = variant.second;
+      auto* b = benchmark::RegisterBenchmark((base + name).c_str(),
+                                             [=](benchmark::State& st) { bench(st, true, min_vertices); });
+      b->ArgName("threads");
+      for (unsigned t : thread_counts())
+        if (t > 1)
+          b->Arg(t);
+      b->UseManualTime()->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+    }
+  }
+}
+
 void register_all()
 {
   // All cold benchmarks first: a warm run leaves its pages in the heap's free
@@ -805,7 +860,7 @@ void register_all()
         for (const Implementation& impl : implementations(in))
           register_one(c, level, mode, impl);
       }
-    }
+    }  register_threshold();
 }
 
 } // namespace

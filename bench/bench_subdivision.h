@@ -14,6 +14,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -49,6 +50,13 @@ public:
   /// `Subdivision::catmull_clark` / `loop` with `number_of_iterations(levels)`;
   /// with `parallel`, their `CGAL::Parallel_tag` form (see `parallel_available`).
   void subdivide(Scheme scheme, unsigned levels, bool parallel);
+  /// One Catmull–Clark step through `Subdivision::Refiner::refine_and_interpolate`
+  /// (the path of `catmull_clark()` for points alone), with
+  /// `Refinement_options::parallel_min_vertices` = `parallel_min_vertices`,
+  /// under `CGAL::Parallel_tag` if `parallel`.
+  void refine_once(bool parallel, std::uint32_t parallel_min_vertices);
+  /// `Subdivision::Refinement_options::automatic`.
+  static std::uint32_t automatic_threshold();
 
   std::size_t number_of_vertices() const;
   std::size_t number_of_faces() const;

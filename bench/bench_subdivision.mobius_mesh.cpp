@@ -65,6 +65,32 @@ void Our_mesh::subdivide(Scheme scheme, unsigned levels, bool parallel)
     S::loop(mesh, np);
 }
 
+void Our_mesh::refine_once(bool parallel, std::uint32_t parallel_min_vertices)
+{
+  namespace S = CGAL_ext::Subdivision;
+  using Mesh = CGAL_ext::Mobius_mesh<Point>;
+  Mesh& mesh = impl_->mesh;
+  S::Refinement_options options;
+  options.parallel_min_vertices = parallel_min_vertices;
+  S::Refiner<S::Catmull_clark_mask> refiner(S::Catmull_clark_mask(), options);
+  S::internal::Array<S::internal::Vec3> values(mesh.number_of_vertices());
+  for (auto v : mesh.vertices())
+    values[v.idx()] = {mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()};
+  Mesh out;
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+  if (parallel)
+    refiner.refine_and_interpolate<CGAL::Parallel_tag>(mesh, 1, values, out);
+  else
+#endif
+    refiner.refine_and_interpolate(mesh, 1, values, out);
+  (void)parallel;
+  for (auto v : out.vertices())
+    out.point(v) = Point(values[v.idx()].x, values[v.idx()].y, values[v.idx()].z);
+  mesh = std::move(out);
+}
+
+std::uint32_t Our_mesh::automatic_threshold() { return CGAL_ext::Subdivision::Refinement_options::automatic; }
+
 std::size_t Our_mesh::number_of_vertices() const { return impl_->mesh.number_of_vertices(); }
 std::size_t Our_mesh::number_of_faces() const { return impl_->mesh.number_of_faces(); }
 

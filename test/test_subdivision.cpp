@@ -14,6 +14,11 @@
 
 #include <gtest/gtest.h>
 
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -1247,6 +1252,232 @@ TEST(SubdivisionApi, OnePassEqualsLevelByLevel)
   check_one_pass<S::Loop_mask, CGAL::Parallel_tag>("opensubdiv/loop_icos_semisharp.obj", 3);
 #endif
 }
+
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+// ----------------------------------------------------------------- parallel stages
+
+// A mesh's connectivity, array by array, read through its public accessors.
+struct Connectivity
+{
+  std::vector<std::uint32_t> target, next, prev, face, vertex_dart, face_dart;
+  std::vector<std::uint8_t> mobius;
+};
+
+Connectivity connectivity_of(const Mesh& m)
+{
+  Connectivity c;
+  for (auto h : m.halfedges()) {
+    const CGAL_ext::Dart d(h, false);
+    c.target.push_back(m.target(d).idx());
+    c.next.push_back(m.next(d).bits());
+    c.prev.push_back(m.prev(d).bits());
+    c.face.push_back(m.face(h).is_valid() ? m.face(h).idx() : ~0u);
+  }
+  for (auto e : m.edges())
+    c.mobius.push_back(m.is_mobius(e) ? 1 : 0);
+  for (auto v : m.vertices())
+    c.vertex_dart.push_back(m.halfedge(v).bits());
+  for (auto f : m.faces())
+    c.face_dart.push_back(m.halfedge(f).bits());
+  return c;
+}
+
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b)
+{
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+struct Refined
+{
+  Mesh mesh;
+  std::vector<V3> points;
+};
+
+// `n` steps of `Mask` on `b` under `ConcurrencyTag`, by the two paths of the
+// free functions: one pass, or refine(), interpolate() and build_mesh().
+template <class Mask, class ConcurrencyTag>
+Refined refine_with(const Built& b, const S::Refinement_options& options, unsigned n, bool one_pass)
+{
+  Refined r;
+  std::vector<V3> base;
+  for (const Point& p : b.mesh.points().data())
+    base.push_back({p.x(), p.y(), p.z()});
+  S::Refiner<Mask> refiner(Mask(), options);
+  if (one_pass) {
+    r.points = base;
+    refiner.template refine_and_interpolate<ConcurrencyTag>(b.mesh, n, r.points, r.mesh, b.edge_sharpness,
+                                                            b.vertex_sharpness, true);
+  } else {
+    refiner.template refine<ConcurrencyTag>(b.mesh, n, b.edge_sharpness, b.vertex_sharpness);
+    refiner.template interpolate<ConcurrencyTag>(base, r.points);
+    refiner.template build_mesh<ConcurrencyTag>(r.mesh, true);
+  }
+  return r;
+}
+
+// Serial and parallel refinement of `b` (the parallel path forced on every
+// level) give the same mesh, array for array, the same points, sharpness
+// and holes, bit for bit.
+template <class Mask>
+void check_parallel_stages(const std::string& what, const Built& b, S::Refinement_options options, unsigned n)
+{
+  options.parallel_min_vertices = 0;
+  for (bool one_pass : {true, false}) {
+    SCOPED_TRACE(what + (one_pass ? ", one pass" : ", level by level"));
+    const Refined s = refine_with<Mask, CGAL::Sequential_tag>(b, options, n, one_pass);
+    const Refined p = refine_with<Mask, CGAL::Parallel_tag>(b, options, n, one_pass);
+    ASSERT_TRUE(p.mesh.is_valid(true));
+    ASSERT_EQ(p.mesh.number_of_faces(), s.mesh.number_of_faces());
+    const Connectivity cs = connectivity_of(s.mesh), cp = connectivity_of(p.mesh);
+    EXPECT_TRUE(same_bytes(cs.target, cp.target));
+    EXPECT_TRUE(same_bytes(cs.next, cp.next));
+    EXPECT_TRUE(same_bytes(cs.prev, cp.prev));
+    EXPECT_TRUE(same_bytes(cs.face, cp.face));
+    EXPECT_TRUE(same_bytes(cs.mobius, cp.mobius));
+    EXPECT_TRUE(same_bytes(cs.vertex_dart, cp.vertex_dart));
+    EXPECT_TRUE(same_bytes(cs.face_dart, cp.face_dart));
+    EXPECT_TRUE(same_bytes(s.points, p.points));
+    for (const char* name : {CGAL_ext::edge_sharpness_name, CGAL_ext::vertex_sharpness_name}) {
+      const bool on_edges = name == std::string(CGAL_ext::edge_sharpness_name);
+      std::vector<float> ss, sp;
+      if (on_edges) {
+        ss = s.mesh.property_map<CGAL_ext::Edge_index, float>(name)->data();
+        sp = p.mesh.property_map<CGAL_ext::Edge_index, float>(name)->data();
+      } else {
+        ss = s.mesh.property_map<CGAL_ext::Vertex_index, float>(name)->data();
+        sp = p.mesh.property_map<CGAL_ext::Vertex_index, float>(name)->data();
+      }
+      EXPECT_TRUE(same_bytes(ss, sp)) << name;
+    }
+    auto hs = s.mesh.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+    auto hp = p.mesh.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+    ASSERT_EQ(hs.has_value(), hp.has_value());
+    if (hs) {
+      EXPECT_TRUE(same_bytes(hs->data(), hp->data()));
+    }
+  }
+}
+
+// A generated mesh with, if `sharp`, a fixed mix of smooth, semi-sharp and
+// infinitely sharp edges and a few corners.
+Built generated(Mesh m, bool sharp)
+{
+  Built b;
+  b.mesh = std::move(m);
+  b.edge_sharpness.assign(b.mesh.number_of_edges(), 0.0f);
+  b.vertex_sharpness.assign(b.mesh.number_of_vertices(), 0.0f);
+  if (sharp) {
+    for (std::size_t e = 0; e < b.edge_sharpness.size(); ++e)
+      b.edge_sharpness[e] = e % 7 == 0 ? 10.0f : (e % 5 == 0 ? 0.25f + float(e % 11) / 4.0f : 0.0f);
+    for (std::size_t v = 0; v < b.vertex_sharpness.size(); v += 19)
+      b.vertex_sharpness[v] = 2.5f;
+  }
+  return b;
+}
+
+// A scheme with every crease method and, on a surface with a border, every
+// boundary rule (`all_rules`; else the defaults), on a one-sided surface
+// large enough that the loops of the last step are split among threads (a
+// TBB task takes 4096 elements at least), with and without sharpness.
+template <class Mask>
+void check_schemes_on(const std::string& name, const Mesh& m, unsigned n, bool all_rules)
+{
+  using B = Boundary_interpolation;
+  const std::vector<Crease_method> methods =
+    all_rules ? std::vector<Crease_method>{Crease_method::uniform, Crease_method::chaikin}
+              : std::vector<Crease_method>{Crease_method::uniform};
+  const auto edges = m.edges();
+  const bool border = std::any_of(edges.begin(), edges.end(), [&](CGAL_ext::Edge_index e) { return m.is_border(e); });
+  const std::vector<B> rules = all_rules && border
+                                 ? std::vector<B>{B::edge_only, B::edge_and_corner, B::none}
+                                 : std::vector<B>{B::edge_only};
+  for (bool sharp : {false, true}) {
+    const Built b = generated(m, sharp);
+    for (Crease_method c : methods)
+      for (Boundary_interpolation bi : rules) {
+        S::Refinement_options options;
+        options.crease_method = c;
+        options.boundary_interpolation = bi;
+        check_parallel_stages<Mask>(name + (sharp ? ", sharp" : ", smooth") + ", crease method " +
+                                      std::to_string(int(c)) + ", boundary " + std::to_string(int(bi)),
+                                    b, options, n);
+      }
+  }
+}
+
+TEST(SubdivisionParallel, EveryStageBitIdenticalToSerial)
+{
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
+  tbb::task_arena arena(4);
+  arena.execute([] {
+    Mesh strip, strip_tris, klein;
+    CGAL_ext::make_mobius_strip(strip, 64, 16);
+    CGAL_ext::make_mobius_strip(strip_tris, 64, 16, 1, 1.0, 0.5, false);
+    CGAL_ext::make_klein_bottle(klein, 40, 40);
+    // Doo–Sabin and √3 have border rules of their own and no creases.
+    check_schemes_on<S::Catmull_clark_mask>("Catmull-Clark, Moebius strip", strip, 2, true);
+    check_schemes_on<S::Catmull_clark_mask>("Catmull-Clark, Klein bottle", klein, 2, true);
+    check_schemes_on<S::Bilinear_mask>("bilinear, Moebius strip", strip, 2, true);
+    check_schemes_on<S::Doo_sabin_mask>("Doo-Sabin, Moebius strip", strip, 2, false);
+    check_schemes_on<S::Doo_sabin_mask>("Doo-Sabin, Klein bottle", klein, 2, false);
+    check_schemes_on<S::Loop_mask>("Loop, Moebius strip", strip_tris, 2, true);
+    check_schemes_on<S::Linear_mask>("linear, Moebius strip", strip_tris, 2, true);
+    check_schemes_on<S::Sqrt3_mask>("sqrt(3), Moebius strip", strip_tris, 3, false);
+  });
+}
+
+TEST(SubdivisionParallel, OpenSubdivShapesBitIdenticalToSerial)
+{
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
+  tbb::task_arena arena(4);
+  arena.execute([] {
+    auto check = [](auto mask, const std::string& file, unsigned n) {
+      using Mask = decltype(mask);
+      const Shape s = read_shape(test::data("opensubdiv/" + file));
+      S::Refinement_options options;
+      options.crease_method = s.crease_method;
+      options.boundary_interpolation = s.boundary;
+      check_parallel_stages<Mask>(file, build(s), options, n);
+    };
+    check(S::Catmull_clark_mask(), "catmark_cube_creases1.obj", 5);
+    check(S::Catmull_clark_mask(), "catmark_chaikin1.obj", 4);
+    check(S::Catmull_clark_mask(), "catmark_edgecorner.obj", 5);
+    check(S::Catmull_clark_mask(), "catmark_torus_creases1.obj", 4);
+    check(S::Bilinear_mask(), "catmark_cube_creases1.obj", 5);
+    check(S::Doo_sabin_mask(), "catmark_cube_creases1.obj", 5);
+    check(S::Loop_mask(), "loop_icos_semisharp.obj", 5);
+    check(S::Loop_mask(), "loop_triangle_edgeonly.obj", 6);
+    check(S::Linear_mask(), "loop_icos_semisharp.obj", 5);
+    check(S::Sqrt3_mask(), "loop_icos_semisharp.obj", 6);
+  });
+}
+
+// The automatic threshold is the documented rule: more than one thread, and
+// at least parallel_vertices_per_thread vertices per thread; any other value
+// of the option is a plain minimum.
+TEST(SubdivisionParallel, ThresholdFollowsThreadsAndSize)
+{
+  const std::uint32_t g = S::parallel_vertices_per_thread, automatic = S::Refinement_options::automatic;
+  EXPECT_EQ(S::Refinement_options().parallel_min_vertices, automatic);
+  {
+    tbb::task_arena one(1);
+    one.execute([&] { EXPECT_FALSE(S::runs_in_parallel(1u << 30, automatic)); });
+    one.execute([&] { EXPECT_TRUE(S::runs_in_parallel(5, 0)); }); // an explicit minimum is obeyed
+  }
+  tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 4);
+  for (int t : {2, 4}) {
+    tbb::task_arena arena(t);
+    arena.execute([&] {
+      EXPECT_FALSE(S::runs_in_parallel(std::uint32_t(t) * g - 1, automatic)) << t;
+      EXPECT_TRUE(S::runs_in_parallel(std::uint32_t(t) * g, automatic)) << t;
+    });
+  }
+  EXPECT_TRUE(S::runs_in_parallel(0, 0));
+  EXPECT_FALSE(S::runs_in_parallel(99, 100));
+  EXPECT_TRUE(S::runs_in_parallel(100, 100));
+}
+#endif
 
 TEST(SubdivisionApi, RefinerReinterpolatesOtherData)
 {

@@ -199,13 +199,17 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
         if (!from)
           return;
         std::vector<typename L::Value> base, result;
-        base.reserve(mesh.number_of_vertices());
-        for (Vertex_index v : mesh.vertices())
-          base.push_back(L::from((*from)[v]));
+        const u32 n = u32(mesh.number_of_vertices());
+        base.resize(n);
+        with_concurrency<ConcurrencyTag>(runs_in_parallel(n, refiner.options().parallel_min_vertices), [&](auto t) {
+          for_each_index<decltype(t)>(n, [&](u32 v) { base[v] = L::from((*from)[Vertex_index(v)]); });
+        });
         refiner.template interpolate<ConcurrencyTag>(base, result);
         auto to = out.template add_property_map<Vertex_index, T>(name, from->array()->default_value()).first;
-        for (Vertex_index v : out.vertices())
-          to[v] = L::to(result[v.idx()]);
+        const u32 m = u32(out.number_of_vertices());
+        with_concurrency<ConcurrencyTag>(runs_in_parallel(m, refiner.options().parallel_min_vertices), [&](auto t) {
+          for_each_index<decltype(t)>(m, [&](u32 v) { to[Vertex_index(v)] = L::to(result[v]); });
+        });
       }
     });
   }
@@ -252,6 +256,29 @@ bool gather_sharpness(const Mobius_mesh<P>& mesh, const NamedParameters& np, std
   return has_sharpness;
 }
 
+// The points of `mesh` as interpolated values, in parallel if the mesh is
+// large enough (`options`, as the refiner decides for a level).
+template <class ConcurrencyTag, class P, class VertexPointMap, class Values>
+void read_points(const Mobius_mesh<P>& mesh, const VertexPointMap& vpm, const Refinement_options& options,
+                 Values& values)
+{
+  const u32 n = u32(mesh.number_of_vertices());
+  values.resize(n);
+  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices), [&](auto tag) {
+    for_each_index<decltype(tag)>(n, [&](u32 v) { values[v] = Point_values<P>::from(get(vpm, Vertex_index(v))); });
+  });
+}
+
+// The interpolated `values` as the points of `out`.
+template <class ConcurrencyTag, class Values, class P>
+void write_points(const Values& values, const Refinement_options& options, Mobius_mesh<P>& out)
+{
+  const u32 n = u32(out.number_of_vertices());
+  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices), [&](auto tag) {
+    for_each_index<decltype(tag)>(n, [&](u32 v) { out.point(Vertex_index(v)) = Point_values<P>::to(values[v]); });
+  });
+}
+
 template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
 void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
 {
@@ -281,23 +308,17 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
   if (!has_carried_maps(mesh)) {
     // Points only: one pass, two levels alive at a time.
     internal::Array<Value> values; // each level's points are written in full: no zero-fill
-    values.reserve(mesh.number_of_vertices());
-    for (Vertex_index v : mesh.vertices())
-      values.push_back(Traits::from(get(vpm, v)));
+    read_points<Tag>(mesh, vpm, options, values);
     refiner.template refine_and_interpolate<Tag>(mesh, levels, values, out, es, vs, write_sharpness);
-    for (Vertex_index v : out.vertices())
-      out.point(v) = Traits::to(values[v.idx()]);
+    write_points<Tag>(values, options, out);
   } else {
     // Other maps too: every level is kept, and each map interpolated through them.
     refiner.template refine<Tag>(mesh, levels, es, vs);
     std::vector<Value> values, result;
-    values.reserve(mesh.number_of_vertices());
-    for (Vertex_index v : mesh.vertices())
-      values.push_back(Traits::from(get(vpm, v)));
+    read_points<Tag>(mesh, vpm, options, values);
     refiner.template interpolate<Tag>(values, result);
-    refiner.build_mesh(out, write_sharpness);
-    for (Vertex_index v : out.vertices())
-      out.point(v) = Traits::to(result[v.idx()]);
+    refiner.template build_mesh<Tag>(out, write_sharpness);
+    write_points<Tag>(result, options, out);
     carry_maps<Tag>(refiner, mesh, out);
   }
   mesh = std::move(out);
@@ -341,9 +362,11 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 /// vertex `nv + e`, face `f` gives vertex `nv + ne + f` (per step).
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, or `CGAL::Parallel_tag` to
-///   interpolate the points with TBB (if `CGAL_EXT_SUBDIVISION_PARALLEL` is
-///   defined), bit for bit as the serial result; the same for all schemes.
-///   Topology is refined serially; exact kernels are interpolated serially.
+///   refine and interpolate with TBB (if `CGAL_EXT_SUBDIVISION_PARALLEL` is
+///   defined), bit for bit as the serial result, each step whose level is
+///   large enough for the threads available (`Subdivision::runs_in_parallel()`);
+///   the same for all schemes. Exact kernels are refined and interpolated
+///   serially. The connectivity builder of the Doo–Sabin and √3 steps is serial.
 /// \param mesh the mesh, replaced by the result
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin

@@ -19,12 +19,19 @@
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/tags.h>
+#include <CGAL/use.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -37,16 +44,65 @@ struct Refinement_options
   Boundary_interpolation boundary_interpolation = Boundary_interpolation::edge_only;
   /// How semi-sharp creases decay from level to level (named parameter `crease_method`).
   Crease_method crease_method = Crease_method::uniform;
-  /// With `CGAL::Parallel_tag`, levels of fewer vertices are interpolated
-  /// serially (with the same result) and get no incidence tables: on small
-  /// levels the tables of the parallel pass cost more than the threads save.
-  std::uint32_t parallel_min_vertices = 1u << 17;
+  /// The value of `parallel_min_vertices` that leaves the choice to
+  /// `runs_in_parallel()`, from the level's size and the number of threads.
+  static constexpr std::uint32_t automatic = 0xFFFFFFFFu;
+  /// With `CGAL::Parallel_tag`, which levels are refined and interpolated
+  /// with threads: `automatic` (the default), those that give every thread
+  /// of the task arena enough work (see `runs_in_parallel()`); any other
+  /// value, those of at least that many vertices (0: every level, however
+  /// small). The other levels are done serially, with the same result: on
+  /// small levels the threads and the tables of the parallel passes cost
+  /// more than they save. `CGAL::Sequential_tag` never uses threads.
+  std::uint32_t parallel_min_vertices = automatic;
   /// The most bytes a refinement may take (named parameter `maximum_memory`
   /// of the subdivision functions); by default the machine's physical memory.
   /// A refinement whose estimated peak is larger is refused before anything
   /// is allocated.
   double maximum_memory = CGAL_ext::internal::physical_memory();
 };
+
+/// With `Refinement_options::automatic`, the fewest vertices per thread of a
+/// level (the parent of a step) for the step to run in parallel.
+///
+/// A level is split among T threads when each gets at least this many of
+/// its vertices: the per-thread work must outweigh waking and joining the
+/// threads, whose cost grows with T. The rows `parallel_threshold` of
+/// bench_subdivision time one Catmull–Clark step of tori of 2^10 to 2^18
+/// vertices, serially against T threads (doc/benchmarks.md, "Parallel
+/// threshold"); on the loaded 2-core machine where they ran, two threads
+/// won at no size consistently, so the value is chosen, not measured: it
+/// keeps the former fixed threshold, 131 072 = 16 · 8192, on 16 threads and
+/// lowers it in proportion on fewer. Rerun those rows on an idle machine to
+/// place it.
+constexpr std::uint32_t parallel_vertices_per_thread = 8192;
+
+/// \ingroup PkgSubdivision
+///
+/// Whether a step from a level of `level_vertices` vertices runs in
+/// parallel under `CGAL::Parallel_tag`, given the option
+/// `Refinement_options::parallel_min_vertices`: with `automatic`, if the
+/// current task arena has more than one thread
+/// (`tbb::this_task_arena::max_concurrency()`, and at most the
+/// `max_allowed_parallelism` of a `tbb::global_control`) and each gets at least
+/// `parallel_vertices_per_thread` vertices; otherwise if `level_vertices`
+/// is at least the option. Always false without TBB.
+inline bool runs_in_parallel(std::uint32_t level_vertices, std::uint32_t parallel_min_vertices)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if (parallel_min_vertices != Refinement_options::automatic)
+    return level_vertices >= parallel_min_vertices;
+  // The arena's slots, within the cap of any tbb::global_control alive.
+  const std::size_t threads =
+    (std::min)(std::size_t(tbb::this_task_arena::max_concurrency()),
+               tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  return threads > 1 && level_vertices / threads >= parallel_vertices_per_thread;
+#else
+  CGAL_USE(level_vertices);
+  CGAL_USE(parallel_min_vertices);
+  return false;
+#endif
+}
 
 /// \ingroup PkgSubdivision
 ///
@@ -107,6 +163,40 @@ template <class V>
 void normalize_value(V&, long)
 {}
 
+// Whether normalize_value() does something for V (lazy exact numbers): the
+// loops that call it are skipped otherwise.
+template <class V, class = void>
+struct Normalizes : std::false_type
+{};
+template <class V>
+struct Normalizes<V, std::void_t<decltype(std::declval<V&>().exact())>> : std::true_type
+{};
+
+// normalize_value() on the n values at `values`.
+template <class ConcurrencyTag, class V>
+void normalize_values(V* values, u32 n)
+{
+  if constexpr (Normalizes<V>::value)
+    for_each_index<ConcurrencyTag>(n, [&](u32 v) { normalize_value(values[v], 0); });
+  else
+    CGAL_USE(values), CGAL_USE(n);
+}
+
+// Calls body(ConcurrencyTag()) if `parallel` and ConcurrencyTag asks for
+// threads, body(CGAL::Sequential_tag()) otherwise: every stage of a step
+// then runs in one mode, chosen once for the step.
+template <class ConcurrencyTag, class Body>
+void with_concurrency(bool parallel, const Body& body)
+{
+  if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    if (parallel) {
+      body(ConcurrencyTag());
+      return;
+    }
+  }
+  body(CGAL::Sequential_tag());
+}
+
 } // namespace internal
 
 /// \ingroup PkgSubdivision
@@ -144,12 +234,15 @@ public:
   /// Refines `mesh` `levels` times. `edge_sharpness` and `vertex_sharpness`
   /// hold one value per edge / vertex (an empty vector means all 0).
   ///
-  /// With `ConcurrencyTag` = `CGAL::Parallel_tag` (TBB needed), the face
-  /// loops of the splits run in parallel (the topology is the same), and each
-  /// level of at least `Refinement_options::parallel_min_vertices` vertices
-  /// gets the incidence tables of the parallel interpolation: only then does
-  /// `interpolate<CGAL::Parallel_tag>()` run in parallel (without them it is
-  /// serial, with the same result).
+  /// With `ConcurrencyTag` = `CGAL::Parallel_tag` (TBB needed), every step
+  /// from a level that `runs_in_parallel()` (see
+  /// `Refinement_options::parallel_min_vertices`) runs all its stages in
+  /// parallel (the splits, the weights, the incidence tables), with the
+  /// serial numbering and bits, and gets the incidence tables of the
+  /// parallel interpolation: only then does
+  /// `interpolate<CGAL::Parallel_tag>()` run that level in parallel (without
+  /// them it is serial, with the same result). The mask's functions are then
+  /// called from several threads.
   /// \throws Parameter_error if a sharpness is NaN or negative, or if the mask splits
   /// triangles and `mesh` has a face that is not a triangle.
   /// \throws Size_error, before anything is allocated, if the last level
@@ -165,9 +258,10 @@ public:
     weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
     incidence_.assign(uses_stencils ? 0 : levels, internal::Incidence());
-    build_base(mesh, edge_sharpness, vertex_sharpness);
+    build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k)
-      step<ConcurrencyTag>(k, k);
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv),
+                                                 [&](auto tag) { step<decltype(tag)>(k, k); });
   }
 
   /// Refines `mesh` `levels` times into `out`, interpolating `values` (one
@@ -187,46 +281,17 @@ public:
   {
     check_size(mesh, levels, 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
-    build_base(mesh, edge_sharpness, vertex_sharpness);
-    Values next;
-    // Interpolates level 0 into level 1 and keeps only the new values: what
-    // a step needs of its parent level is its topology and its weights.
-    auto advance_values = [&]() {
-      next.clear(); // nothing to copy on growth
-      next.resize(child_vertex_count(0));
-      interpolate_level<ConcurrencyTag>(0, values.data(), next.data());
-      auto* dst = next.data();
-      internal::for_each_index<ConcurrencyTag>(u32(next.size()),
-                                               [&](u32 v) { internal::normalize_value(dst[v], 0); });
-      values.swap(next);
-      Values().swap(next);
-    };
+    build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k) {
-      const bool last = k + 1 == levels;
-      if constexpr (uses_stencils) {
-        step(0, k);
-        advance_values();
-      } else {
-        if (weights_.empty())
-          weights_.resize(1);
-        compute_weights(0);
-        prepare_interpolation<ConcurrencyTag>(0);
-        advance_values();
-        weights_[0] = internal::Step_weights<W>(); // the split does not need them
-        incidence_.clear();
-        if (last) {
-          split_into_mesh<ConcurrencyTag>(out, write_sharpness);
-          levels_.clear();
-          clear_scratch();
-          return;
-        }
-        split<ConcurrencyTag>(0, true);
-      }
-      std::swap(levels_[0], levels_[1]);
-      levels_[1] = Level(); // the parent: too small to hold the next level
+      bool done = false;
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[0].nv), [&](auto tag) {
+        done = one_pass_step<decltype(tag)>(k, k + 1 == levels, values, out, write_sharpness);
+      });
+      if (done)
+        return;
     }
     levels_.resize(1);
-    build_mesh(out, write_sharpness);
+    build_mesh<ConcurrencyTag>(out, write_sharpness);
     levels_.clear();
     clear_scratch();
   }
@@ -284,8 +349,9 @@ public:
     for (unsigned k = 0; k < n; ++k) {
       Value* dst = ((n - 1 - k) % 2 == 0) ? result.data() : scratch.data();
       interpolate_level<ConcurrencyTag>(k, src, dst);
-      internal::for_each_index<ConcurrencyTag>(levels_[k + 1].nv,
-                                               [&](u32 v) { internal::normalize_value(dst[v], 0); });
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv), [&](auto tag) {
+        internal::normalize_values<decltype(tag)>(dst, levels_[k + 1].nv);
+      });
       src = dst;
     }
   }
@@ -327,7 +393,9 @@ public:
   /// the sharpness of the last level (border edges: 0, as they are sharp by
   /// rule). If the base had holes (boundary interpolation `none`), the face
   /// property "f:hole" marks the faces that descend from them.
-  template <class P>
+  /// With `ConcurrencyTag` = `CGAL::Parallel_tag`, the arrays and maps are
+  /// written in parallel if the level `runs_in_parallel()`.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
 private:
@@ -354,8 +422,55 @@ private:
                                      options_.maximum_memory);
   }
 
+  // Whether the step from a level of `nv` vertices runs in parallel (if
+  // the tag asks for it).
+  bool parallel_level(u32 nv) const { return runs_in_parallel(nv, options_.parallel_min_vertices); }
+
+  // One step of refine_and_interpolate(): levels_[0] into levels_[1], or
+  // into `out` if `last` (then returns true, the refiner emptied), and
+  // `values` interpolated on the way.
+  template <class ConcurrencyTag, class Values, class Q>
+  bool one_pass_step(unsigned k, bool last, Values& values, Mobius_mesh<Q>& out, bool write_sharpness)
+  {
+    if constexpr (uses_stencils) {
+      step<ConcurrencyTag>(0, k);
+      advance_values<ConcurrencyTag>(values);
+    } else {
+      if (weights_.empty())
+        weights_.resize(1);
+      compute_weights<ConcurrencyTag>(0);
+      prepare_interpolation<ConcurrencyTag>(0);
+      advance_values<ConcurrencyTag>(values);
+      weights_[0] = internal::Step_weights<W>(); // the split does not need them
+      incidence_.clear();
+      if (last) {
+        split_into_mesh<ConcurrencyTag>(out, write_sharpness);
+        levels_.clear();
+        clear_scratch();
+        return true;
+      }
+      split<ConcurrencyTag>(0, true);
+    }
+    std::swap(levels_[0], levels_[1]);
+    levels_[1] = Level(); // the parent: too small to hold the next level
+    return false;
+  }
+
+  // Interpolates `values` (of level 0) into level 1 and keeps only the new
+  // values: what a step needs of its parent level is its topology and its weights.
+  template <class ConcurrencyTag, class Values>
+  void advance_values(Values& values) const
+  {
+    Values next;
+    next.resize(child_vertex_count(0));
+    interpolate_level<ConcurrencyTag>(0, values.data(), next.data());
+    internal::normalize_values<ConcurrencyTag>(next.data(), u32(next.size()));
+    values.swap(next);
+  }
+
   // Refines levels_[slot] into levels_[slot + 1] with the weights or
   // stencils of slot `slot`; `k` is the step's number (√3 alternates).
+  // Every stage runs as `ConcurrencyTag` says: the caller has chosen.
   template <class ConcurrencyTag = CGAL::Sequential_tag>
   void step(unsigned slot, unsigned k)
   {
@@ -365,27 +480,35 @@ private:
       if (stencils_.size() < slot + 1)
         stencils_.resize(slot + 1);
       internal::Face_list faces;
+      using Tag = Weight_tag<ConcurrencyTag>;
       if constexpr (Mask::split == Split::dual)
-        internal::dual_split(levels_[slot], mask_, faces, stencils_[slot]);
+        internal::dual_split<Tag>(levels_[slot], mask_, faces, stencils_[slot]);
       else
-        internal::sqrt3_split(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
-      internal::level_from_faces(stencils_[slot].size(), faces, levels_[slot + 1]);
+        internal::sqrt3_split<Tag>(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
+      internal::level_from_faces<ConcurrencyTag>(stencils_[slot].size(), faces, levels_[slot + 1]);
     } else {
       CGAL_USE(k);
       if (weights_.size() < slot + 1)
         weights_.resize(slot + 1);
-      compute_weights(slot);
+      compute_weights<ConcurrencyTag>(slot);
       prepare_interpolation<ConcurrencyTag>(slot);
       split<ConcurrencyTag>(slot, true);
     }
   }
 
+  // How weights and stencils are made: serially for exact weights, whose
+  // numbers may share representations between threads.
+  template <class ConcurrencyTag>
+  using Weight_tag = std::conditional_t<std::is_floating_point_v<W>, ConcurrencyTag, CGAL::Sequential_tag>;
+
   // The weights of levels_[slot] into weights_[slot], and the sharpness of
   // its child into child_sharpness_.
+  template <class ConcurrencyTag>
   void compute_weights(unsigned slot)
   {
-    weight_builder_.build(mask_, options_.crease_method, levels_[slot], child_vertex_count(slot), weights_[slot],
-                          child_sharpness_);
+    using Tag = Weight_tag<ConcurrencyTag>;
+    weight_builder_.template build<Tag>(mask_, options_.crease_method, levels_[slot], child_vertex_count(slot),
+                                        weights_[slot], child_sharpness_);
   }
 
   // The incidence tables of levels_[slot] if it is to be interpolated in
@@ -396,9 +519,8 @@ private:
     if (incidence_.size() < slot + 1)
       incidence_.resize(slot + 1);
     incidence_[slot].clear();
-    if constexpr (std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>)
-      if (levels_[slot].nv >= options_.parallel_min_vertices)
-        internal::build_incidence(levels_[slot], incidence_[slot]);
+    if constexpr (internal::is_parallel_tag<ConcurrencyTag>)
+      internal::build_incidence<ConcurrencyTag>(levels_[slot], incidence_[slot]);
   }
 
   // The topological split of levels_[slot] into levels_[slot + 1] (primal
@@ -435,9 +557,9 @@ private:
     levels_[0] = Level(); // freed before the maps are made
     CGAL_ext::internal::Connectivity_access::reset_property_maps(out);
     if (write_sharpness)
-      add_sharpness_maps(out, child_sharpness_.any ? child_sharpness_.edges.data() : nullptr,
-                         child_sharpness_.any ? child_sharpness_.vertices.data() : nullptr);
-    add_hole_map(out, c.f_hole);
+      add_sharpness_maps<ConcurrencyTag>(out, child_sharpness_.any ? child_sharpness_.edges.data() : nullptr,
+                                         child_sharpness_.any ? child_sharpness_.vertices.data() : nullptr);
+    add_hole_map<ConcurrencyTag>(out, c.f_hole);
   }
 
   // The number of vertices of the child of level `k` (primal schemes).
@@ -461,31 +583,36 @@ private:
   }
 
   // The maps build_mesh() documents; null sharpness means all 0.
-  template <class Q>
+  template <class ConcurrencyTag, class Q>
   static void add_sharpness_maps(Mobius_mesh<Q>& out, const float* edge_sharpness, const float* vertex_sharpness)
   {
     auto es = out.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first;
     auto vs = out.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first;
     if (edge_sharpness)
-      for (Edge_index e : out.edges())
-        if (!out.is_border(e))
-          es[e] = edge_sharpness[e.idx()]; // border edges are sharp by rule
+      internal::for_each_index<ConcurrencyTag>(u32(out.number_of_edges()), [&](u32 e) {
+        if (!out.is_border(Edge_index(e)))
+          es[Edge_index(e)] = edge_sharpness[e]; // border edges are sharp by rule
+      });
     if (vertex_sharpness)
-      for (Vertex_index v : out.vertices())
-        vs[v] = vertex_sharpness[v.idx()];
+      internal::for_each_index<ConcurrencyTag>(u32(out.number_of_vertices()),
+                                               [&](u32 v) { vs[Vertex_index(v)] = vertex_sharpness[v]; });
   }
-  template <class Q, class Holes>
+  template <class ConcurrencyTag, class Q, class Holes>
   static void add_hole_map(Mobius_mesh<Q>& out, const Holes& holes)
   {
     if (holes.empty())
       return;
     auto map = out.template add_property_map<Face_index, std::uint8_t>("f:hole", 0).first;
-    for (Face_index f : out.faces())
-      map[f] = holes[f.idx()];
+    internal::for_each_index<ConcurrencyTag>(u32(out.number_of_faces()),
+                                             [&](u32 f) { map[Face_index(f)] = holes[f]; });
   }
 
-  template <class P>
+  template <class ConcurrencyTag, class P>
   void build_base(const Mobius_mesh<P>& mesh, const std::vector<float>& es, const std::vector<float>& vs);
+  template <class ConcurrencyTag>
+  static void check_sharpness(Level& L, const std::vector<float>& es, const std::vector<float>& vs);
+  template <class ConcurrencyTag>
+  void mark_border(Level& L) const;
 
   static constexpr bool uses_stencils = Mask::split == Split::dual || Mask::split == Split::sqrt3;
 
@@ -505,64 +632,88 @@ private:
 // ---------------------------------------------------------------------------
 
 template <class Mask, class W>
-template <class P>
+template <class ConcurrencyTag, class P>
 void Refiner<Mask, W>::build_base(const Mobius_mesh<P>& m, const std::vector<float>& es,
                                   const std::vector<float>& vs)
 {
+  internal::with_concurrency<ConcurrencyTag>(parallel_level(u32(m.number_of_vertices())), [&](auto tag) {
+    using Tag = decltype(tag);
+    Level& L = levels_[0];
+    internal::fill_level<Tag>(m, L);
+    check_sharpness<Tag>(L, es, vs);
+    if constexpr (uses_stencils)
+      return; // Doo–Sabin and √3 have border rules of their own
+    mark_border<Tag>(L);
+    // A level without sharpness skips its bookkeeping, and so do its children.
+    auto positive = [](float s) { return s > 0.0f; };
+    if (internal::count_if<Tag>(L.ne, [&](u32 e) { return positive(L.e_sharp[e]); }) == 0 &&
+        internal::count_if<Tag>(L.nv, [&](u32 v) { return positive(L.v_sharp[v]); }) == 0)
+      L.drop_sharpness();
+  });
+}
+
+// The sharpness of the base level, border edges infinitely sharp; refuses
+// the first NaN or negative value (the first by index, as a serial pass
+// finds it), and a face that is not a triangle where the scheme needs them.
+template <class Mask, class W>
+template <class ConcurrencyTag>
+void Refiner<Mask, W>::check_sharpness(Level& L, const std::vector<float>& es, const std::vector<float>& vs)
+{
   using internal::null_u32;
-  Level& L = levels_[0];
-  internal::fill_level(m, L);
   const u32 nv = L.nv, ne = L.ne, nf = L.nf;
-  for (u32 e = 0; e < ne; ++e) {
-    float s = es.empty() ? 0.0f : es[e];
-    if (!(s >= 0)) // a number of levels: NaN or negative means nothing
-      throw Parameter_error("subdivision: the sharpness of edge e" + std::to_string(e) + " is " +
-                            std::to_string(s) + " (NaN or negative; 0 is smooth)");
-    if (L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32)
-      s = infinitely_sharp; // border edges are infinitely sharp, as in OpenSubdiv
-    L.e_sharp[e] = s;
-  }
-  for (u32 v = 0; v < nv; ++v) {
-    const float s = vs.empty() ? 0.0f : vs[v];
-    if (!(s >= 0))
-      throw Parameter_error("subdivision: the sharpness of vertex v" + std::to_string(v) + " is " +
-                            std::to_string(s) + " (NaN or negative; 0 is smooth)");
-    L.v_sharp[v] = s;
-  }
+  auto first = [](u32 n, const auto& bad) {
+    return internal::reduce<ConcurrencyTag>(
+      n, null_u32, [&](u32 i) { return bad(i) ? i : null_u32; }, [](u32 a, u32 b) { return (std::min)(a, b); });
+  };
+  auto value = [](const std::vector<float>& s, u32 i) { return s.empty() ? 0.0f : s[i]; };
+  // A number of levels: NaN or negative means nothing.
+  const u32 bad_edge = first(ne, [&](u32 e) { return !(value(es, e) >= 0); });
+  if (bad_edge != null_u32)
+    throw Parameter_error("subdivision: the sharpness of edge e" + std::to_string(bad_edge) + " is " +
+                          std::to_string(es[bad_edge]) + " (NaN or negative; 0 is smooth)");
+  const u32 bad_vertex = first(nv, [&](u32 v) { return !(value(vs, v) >= 0); });
+  if (bad_vertex != null_u32)
+    throw Parameter_error("subdivision: the sharpness of vertex v" + std::to_string(bad_vertex) + " is " +
+                          std::to_string(vs[bad_vertex]) + " (NaN or negative; 0 is smooth)");
+  internal::for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
+    const bool border = L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32;
+    L.e_sharp[e] = border ? infinitely_sharp : value(es, e); // border edges are infinitely sharp, as in OpenSubdiv
+  });
+  internal::for_each_index<ConcurrencyTag>(nv, [&](u32 v) { L.v_sharp[v] = value(vs, v); });
   if constexpr (Mask::split == Split::triangle || Mask::split == Split::sqrt3) {
-    for (u32 f = 0; f < nf; ++f)
-      if (L.degree(f) != 3)
-        throw Parameter_error("subdivision: the scheme needs a triangle mesh, but face f" + std::to_string(f) +
-                              " has " + std::to_string(L.degree(f)) + " sides");
+    const u32 f = first(nf, [&](u32 g) { return L.degree(g) != 3; });
+    if (f != null_u32)
+      throw Parameter_error("subdivision: the scheme needs a triangle mesh, but face f" + std::to_string(f) +
+                            " has " + std::to_string(L.degree(f)) + " sides");
   }
+}
 
-  if constexpr (uses_stencils)
-    return; // Doo–Sabin and √3 have border rules of their own
-
-  // Border vertices: corners (edge and corner), or their faces become holes (none).
+// Border vertices: corners (edge and corner), or their faces become holes (none).
+template <class Mask, class W>
+template <class ConcurrencyTag>
+void Refiner<Mask, W>::mark_border(Level& L) const
+{
+  using internal::null_u32;
   L.f_hole.clear();
-  if (options_.boundary_interpolation == Boundary_interpolation::none)
-    L.f_hole.assign(nf, 0);
-  for (u32 v = 0; v < nv; ++v) {
+  if (options_.boundary_interpolation == Boundary_interpolation::none) {
+    L.f_hole.resize(L.nf);
+    internal::for_each_index<ConcurrencyTag>(L.nf, [&](u32 f) { L.f_hole[f] = 0; });
+  }
+  internal::for_each_index<ConcurrencyTag>(L.nv, [&](u32 v) {
     const u32 d0 = L.v_dart[v];
     if (d0 == null_u32 || !L.is_border_dart(d0))
-      continue;
+      return;
     u32 edges = 0, d = d0;
     do {
       ++edges;
       const u32 f = L.h_face[internal::dart_encoding::halfedge_of_dart(d)];
       if (f != null_u32 && !L.f_hole.empty())
-        L.f_hole[f] = 1;
+        internal::mark<ConcurrencyTag>(L.f_hole[f]); // a face may be marked from several vertices
       d = L.opposite(L.next(d));
     } while (d != d0);
     if (options_.boundary_interpolation == Boundary_interpolation::edge_and_corner && edges == 2)
       L.v_sharp[v] = infinitely_sharp;
-  }
-  // A level without sharpness skips its bookkeeping, and so do its children.
-  auto positive = [](float s) { return s > 0.0f; };
-  if (std::none_of(L.e_sharp.begin(), L.e_sharp.end(), positive) &&
-      std::none_of(L.v_sharp.begin(), L.v_sharp.end(), positive))
-    L.drop_sharpness();
+  });
 }
 
 template <class Mask, class W>
@@ -582,7 +733,9 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
   if constexpr (!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>)
     interpolate_level(k, src, dst);
   else if constexpr (uses_stencils)
-    internal::interpolate_stencils<ConcurrencyTag>(stencils_[k], src, dst);
+    internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv), [&](auto tag) {
+      internal::interpolate_stencils<decltype(tag)>(stencils_[k], src, dst);
+    });
   else if (k >= incidence_.size() || incidence_[k].empty())
     interpolate_level(k, src, dst);
   else
@@ -590,18 +743,33 @@ void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* ds
 }
 
 template <class Mask, class W>
-template <class P>
+template <class ConcurrencyTag, class P>
 void Refiner<Mask, W>::build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const
 {
   const Level& L = levels_.back();
-  // The level already holds the mesh's arrays, index for index.
+  // The level already holds the mesh's arrays, index for index: copied in
+  // blocks, by several threads if the level is large enough.
   out.clear();
-  CGAL_ext::internal::Connectivity_access::assign(out, L.nv, L.ne, L.nf, L.h_target.data(), L.h_next.data(),
-                                                  L.h_prev.data(), L.h_face.data(), L.e_mobius.data(), L.v_dart.data(),
-                                                  L.f_first.data());
-  if (write_sharpness)
-    add_sharpness_maps(out, L.sharp ? L.e_sharp.data() : nullptr, L.sharp ? L.v_sharp.data() : nullptr);
-  add_hole_map(out, L.f_hole);
+  const auto a = CGAL_ext::internal::Connectivity_access::overwrite(out, L.nv, L.ne, L.nf);
+  internal::with_concurrency<ConcurrencyTag>(parallel_level(L.nv), [&](auto tag) {
+    using Tag = decltype(tag);
+    auto copy = [](const auto& from, auto* to, u32 n) {
+      internal::for_each_block<Tag>(n, [&](u32 begin, u32 end) {
+        std::copy(from.begin() + begin, from.begin() + end, to + begin);
+      });
+    };
+    copy(L.h_target, a.target, 2 * L.ne);
+    copy(L.h_next, a.next_bits, 2 * L.ne);
+    copy(L.h_prev, a.prev_bits, 2 * L.ne);
+    copy(L.h_face, a.face, 2 * L.ne);
+    copy(L.e_mobius, a.mobius, L.ne);
+    copy(L.v_dart, a.vertex_dart_bits, L.nv);
+    copy(L.f_first, a.face_halfedge, L.nf);
+    CGAL_ext::internal::Connectivity_access::reset_property_maps(out);
+    if (write_sharpness)
+      add_sharpness_maps<Tag>(out, L.sharp ? L.e_sharp.data() : nullptr, L.sharp ? L.v_sharp.data() : nullptr);
+    add_hole_map<Tag>(out, L.f_hole);
+  });
 }
 
 } // namespace Subdivision

@@ -15,6 +15,7 @@
 #include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
 #include <CGAL_ext/Subdivision/internal/Weights.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -26,26 +27,26 @@ namespace internal {
 // which the serial pass adds their terms, so a gather gives the same bits.
 struct Incidence
 {
-  std::vector<u32> edge_offset, edges, face_offset, faces;
+  Array<u32> edge_offset, edges, face_offset, faces;
 
   bool empty() const { return edge_offset.empty(); }
   void clear() { *this = Incidence(); }
 };
 
-// Offsets from counts: offset[v + 1] holds the count of v on entry.
-inline void prefix_sum(std::vector<u32>& offset)
+// Offsets from counts (offset[v + 1] holds the count of v on entry).
+inline void prefix_sum(Array<u32>& offset)
 {
   for (std::size_t v = 1; v < offset.size(); ++v)
     offset[v] += offset[v - 1];
 }
 
-// The incidence tables of level `p`.
-inline void build_incidence(const Level& p, Incidence& inc)
+// The incidence tables of level `p`, serially: a counting sort of the edges
+// and face corners by vertex.
+inline void build_incidence_serially(const Level& p, Incidence& inc)
 {
-  namespace de = dart_encoding;
   auto ends = [&](u32 e) {
-    const u32 h = de::halfedge_of_edge(e, 0);
-    return std::pair<u32, u32>(p.source(de::dart(h, false)), p.h_target[h]);
+    const u32 h = dart_encoding::halfedge_of_edge(e, 0);
+    return std::pair<u32, u32>(p.source(dart_encoding::dart(h, false)), p.h_target[h]);
   };
   inc.edge_offset.assign(std::size_t(p.nv) + 1, 0);
   for (u32 e = 0; e < p.ne; ++e) {
@@ -54,7 +55,7 @@ inline void build_incidence(const Level& p, Incidence& inc)
   }
   prefix_sum(inc.edge_offset);
   inc.edges.resize(2 * std::size_t(p.ne));
-  std::vector<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
+  Array<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
   for (u32 e = 0; e < p.ne; ++e) {
     inc.edges[fill[ends(e).first]++] = e;
     inc.edges[fill[ends(e).second]++] = e;
@@ -68,6 +69,66 @@ inline void build_incidence(const Level& p, Incidence& inc)
   for (u32 f = 0; f < p.nf; ++f)
     for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
       inc.faces[fill[p.h_target[p.corner_h[c]]]++] = f;
+}
+
+// Sorts a short list (the edges or faces at a vertex, a handful): insertion
+// sort, without the set-up of std::sort.
+inline void sort_short(u32* begin, u32* end)
+{
+  for (u32* i = begin + (begin != end ? 1 : 0); i < end; ++i) {
+    const u32 x = *i;
+    u32* j = i;
+    for (; j != begin && *(j - 1) > x; --j)
+      *j = *(j - 1);
+    *j = x;
+  }
+}
+
+// The incidence tables of level `p`, a vertex at a time (in parallel for
+// `CGAL::Parallel_tag`): the walk around a vertex meets each end of an edge
+// at it once, and each face corner at it once, as a dart that is not on
+// the border; its lists, sorted, are those of the counting sort. Counts
+// first, then offsets by a prefix sum, then the lists.
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void build_incidence(const Level& p, Incidence& inc)
+{
+  if constexpr (!is_parallel_tag<ConcurrencyTag>) {
+    build_incidence_serially(p, inc);
+  } else {
+    namespace de = dart_encoding;
+    for (Array<u32>* offset : {&inc.edge_offset, &inc.face_offset}) {
+      offset->clear();
+      offset->resize(std::size_t(p.nv) + 1);
+      (*offset)[0] = 0;
+    }
+    for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
+      u32 edges = 0, faces = 0;
+      p.for_each_dart_at(v, [&](u32 d) {
+        ++edges;
+        faces += p.is_border_dart(d) ? 0 : 1;
+      });
+      inc.edge_offset[v + 1] = edges;
+      inc.face_offset[v + 1] = faces;
+    });
+    prefix_sum<ConcurrencyTag>(inc.edge_offset.data(), p.nv);
+    prefix_sum<ConcurrencyTag>(inc.face_offset.data(), p.nv);
+    inc.edges.clear();
+    inc.edges.resize(inc.edge_offset[p.nv]);
+    inc.faces.clear();
+    inc.faces.resize(inc.face_offset[p.nv]);
+    for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
+      u32* edges = inc.edges.data() + inc.edge_offset[v];
+      u32* faces = inc.faces.data() + inc.face_offset[v];
+      u32 ne = 0, nf = 0;
+      p.for_each_dart_at(v, [&](u32 d) {
+        edges[ne++] = de::edge_of_dart(d);
+        if (!p.is_border_dart(d))
+          faces[nf++] = p.h_face[de::halfedge_of_dart(d)];
+      });
+      sort_short(edges, edges + ne);
+      sort_short(faces, faces + nf);
+    });
+  }
 }
 
 // The points both passes share, formed by the same expressions so that the

@@ -20,8 +20,11 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+#include <tbb/parallel_scan.h>
 #endif
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 #include <vector>
@@ -44,26 +47,125 @@ constexpr bool is_first_halfedge(u32 h)
 template <class T>
 using Array = CGAL_ext::internal::Uninitialized_array<T>;
 
+// Whether `ConcurrencyTag` asks for TBB.
+template <class ConcurrencyTag>
+constexpr bool is_parallel_tag = std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>;
+
+// The elements a TBB task takes at least: enough that scheduling costs
+// little next to the loop bodies, which are a few memory accesses each.
+constexpr u32 parallel_grain = 4096;
+
+// Calls body(begin, end) on blocks that cover [0, n), in parallel with TBB
+// for `CGAL::Parallel_tag` (one block, [0, n), otherwise): a body that needs
+// scratch space makes it once per block.
+template <class ConcurrencyTag, class Body>
+void for_each_block(u32 n, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    tbb::parallel_for(tbb::blocked_range<u32>(0, n, parallel_grain),
+                      [&](const tbb::blocked_range<u32>& r) { body(r.begin(), r.end()); });
+    return;
+  }
+#else
+  static_assert(!is_parallel_tag<ConcurrencyTag>, "CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB)");
+#endif
+  body(u32(0), n);
+}
+
 // Calls body(i) for i in [0, n): in parallel with TBB for `CGAL::Parallel_tag`.
 template <class ConcurrencyTag, class Body>
 void for_each_index(u32 n, const Body& body)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr (std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>) {
-    tbb::parallel_for(tbb::blocked_range<u32>(0, n, 4096), [&](const tbb::blocked_range<u32>& r) {
-      for (u32 i = r.begin(); i != r.end(); ++i)
-        body(i);
-    });
-    return;
-  }
-#else
-  static_assert(!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>,
-                "CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB)");
-#endif
-  for (u32 i = 0; i < n; ++i)
-    body(i);
+  for_each_block<ConcurrencyTag>(n, [&](u32 begin, u32 end) {
+    for (u32 i = begin; i != end; ++i)
+      body(i);
+  });
 }
 
+// Offsets from counts, in place: `offset[i + 1]` holds the count of element
+// i on entry, `offset[0]` is 0; on return `offset[i]` is the sum of the
+// counts before i. Integer sums, so the blocks of the parallel scan give the
+// serial numbering exactly.
+template <class ConcurrencyTag, class T>
+void prefix_sum(T* offset, u32 n)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    tbb::parallel_scan(
+      tbb::blocked_range<u32>(1, n + 1, parallel_grain), T(0),
+      [&](const tbb::blocked_range<u32>& r, T sum, bool is_final) {
+        for (u32 i = r.begin(); i != r.end(); ++i) {
+          sum += offset[i];
+          if (is_final)
+            offset[i] = sum;
+        }
+        return sum;
+      },
+      [](T a, T b) { return a + b; });
+    return;
+  }
+#endif
+  for (u32 i = 1; i <= n; ++i)
+    offset[i] += offset[i - 1];
+}
+
+// op(... op(op(init, f(0)), f(1)) ..., f(n - 1)) for an associative and
+// commutative `op` on integers (a sum, a maximum): the same whatever the
+// blocks of the parallel reduction.
+template <class ConcurrencyTag, class T, class F, class Op>
+T reduce(u32 n, T init, const F& f, const Op& op)
+{
+  auto run = [&](u32 begin, u32 end, T x) {
+    for (u32 i = begin; i != end; ++i)
+      x = op(x, f(i));
+    return x;
+  };
+#ifdef CGAL_LINKED_WITH_TBB
+  if constexpr (is_parallel_tag<ConcurrencyTag>)
+    return tbb::parallel_reduce(
+      tbb::blocked_range<u32>(0, n, parallel_grain), init,
+      [&](const tbb::blocked_range<u32>& r, T x) { return run(r.begin(), r.end(), x); }, op);
+#endif
+  return run(0, n, init);
+}
+
+// The number of i in [0, n) for which pred(i) holds.
+template <class ConcurrencyTag, class Pred>
+u32 count_if(u32 n, const Pred& pred)
+{
+  return reduce<ConcurrencyTag>(
+    n, u32(0), [&](u32 i) { return pred(i) ? 1u : 0u; }, [](u32 a, u32 b) { return a + b; });
+}
+
+// x += y, atomically for `CGAL::Parallel_tag`; returns the old x. Counts
+// made by several threads are integers, the same whatever the order of the
+// additions.
+template <class ConcurrencyTag>
+u32 atomic_add(u32& x, u32 y)
+{
+  if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    return __atomic_fetch_add(&x, y, __ATOMIC_RELAXED);
+  } else {
+    const u32 old = x;
+    x += y;
+    return old;
+  }
+}
+
+// x = 1, atomically for `CGAL::Parallel_tag` (a flag that several threads
+// may raise). A flag already raised is only read: the threads then share
+// its cache line instead of taking it from each other.
+template <class ConcurrencyTag>
+void mark(std::uint8_t& x)
+{
+  if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    if (!__atomic_load_n(&x, __ATOMIC_RELAXED))
+      __atomic_store_n(&x, std::uint8_t(1), __ATOMIC_RELAXED);
+  } else {
+    x = 1;
+  }
+}
 
 // Arrays mirror Mobius_mesh: halfedges 2e and 2e+1 of edge e, `next`/`prev`
 // hold dart bits (halfedge << 1 | flipped), face cycles are unflipped.
@@ -163,6 +265,20 @@ struct Level
     return dart_encoding::opposite_dart(d, e_mobius[dart_encoding::edge_of_dart(d)] != 0);
   }
   u32 degree(u32 f) const { return f_offset[f + 1] - f_offset[f]; }
+  // Calls body(d) for each dart d that ends at vertex v, in the order of the
+  // walk around v: one per end of an edge at v (an edge from v to v twice).
+  template <class Body>
+  void for_each_dart_at(u32 v, const Body& body) const
+  {
+    const u32 d0 = v_dart[v];
+    if (d0 == null_u32)
+      return;
+    u32 d = d0;
+    do {
+      body(d);
+      d = opposite(next(d));
+    } while (d != d0);
+  }
 
   // Child halfedges of parent halfedge h: the half at h's source and the half
   // at its target. Child edge 2e lies at source(2e), 2e+1 at target(2e); on a
@@ -251,81 +367,111 @@ struct Mesh_writer
 };
 
 // Completes a level whose connectivity is written: no sharpness, no holes,
-// corners numbered face by face from each face's first halfedge.
-inline void index_corners(Level& L)
+// corners numbered face by face from each face's first halfedge (the
+// offsets are the face degrees' prefix sums, so that the faces may be
+// walked in parallel).
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void index_corners(Level& L)
 {
-  for (u32 h = 0; h < 2 * L.ne; ++h)
-    L.h_corner[h] = null_u32;
-  std::fill(L.e_sharp.begin(), L.e_sharp.end(), 0.0f);
-  std::fill(L.v_sharp.begin(), L.v_sharp.end(), 0.0f);
-  u32 k = 0;
-  for (u32 f = 0; f < L.nf; ++f) {
-    const u32 first = L.f_first[f];
-    L.f_offset[f] = k;
-    u32 h = first;
+  namespace de = dart_encoding;
+  for_each_index<ConcurrencyTag>(2 * L.ne, [&](u32 h) { L.h_corner[h] = null_u32; });
+  for_each_index<ConcurrencyTag>(u32(L.e_sharp.size()), [&](u32 e) { L.e_sharp[e] = 0.0f; });
+  for_each_index<ConcurrencyTag>(u32(L.v_sharp.size()), [&](u32 v) { L.v_sharp[v] = 0.0f; });
+  L.f_offset[0] = 0;
+  for_each_index<ConcurrencyTag>(L.nf, [&](u32 f) {
+    u32 n = 0, h = L.f_first[f];
+    do {
+      ++n;
+      h = de::halfedge_of_dart(L.h_next[h]);
+    } while (h != L.f_first[f]);
+    L.f_offset[f + 1] = n;
+  });
+  prefix_sum<ConcurrencyTag>(L.f_offset.data(), L.nf);
+  for_each_index<ConcurrencyTag>(L.nf, [&](u32 f) {
+    u32 k = L.f_offset[f], h = L.f_first[f];
     do {
       L.corner_h[k] = h;
       L.h_corner[h] = k;
       ++k;
-      h = dart_encoding::halfedge_of_dart(L.h_next[h]);
-    } while (h != first);
-  }
-  L.f_offset[L.nf] = k;
+      h = de::halfedge_of_dart(L.h_next[h]);
+    } while (h != L.f_first[f]);
+  });
   L.f_hole.clear();
 }
 
 // The connectivity of `m` as a level (sharpness 0, no holes).
-template <class P>
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
 void fill_level(const Mobius_mesh<P>& m, Level& L)
 {
   const u32 nv = m.number_of_vertices(), ne = m.number_of_edges(), nf = m.number_of_faces();
-  u32 nc = 0;
-  for (u32 h = 0; h < 2 * ne; ++h)
-    nc += m.is_border(Halfedge_index(h)) ? 0 : 1;
+  const u32 nc = count_if<ConcurrencyTag>(2 * ne, [&](u32 h) { return !m.is_border(Halfedge_index(h)); });
   L.resize(nv, ne, nf, nc, Level::corner_table | Level::sharpness | Level::halfedge_corners);
-  for (u32 h = 0; h < 2 * ne; ++h) {
+  for_each_index<ConcurrencyTag>(2 * ne, [&](u32 h) {
     const Dart d(Halfedge_index(h), false);
     L.h_target[h] = m.target(d).idx();
     L.h_next[h] = m.next(d).bits();
     L.h_prev[h] = m.prev(d).bits();
     const Face_index f = m.face(d);
     L.h_face[h] = f.is_valid() ? f.idx() : null_u32;
-  }
-  for (u32 e = 0; e < ne; ++e)
-    L.e_mobius[e] = m.is_mobius(Edge_index(e)) ? 1 : 0;
-  for (u32 v = 0; v < nv; ++v)
-    L.v_dart[v] = m.halfedge(Vertex_index(v)).bits();
-  for (u32 f = 0; f < nf; ++f)
-    L.f_first[f] = m.halfedge(Face_index(f)).halfedge().idx();
-  index_corners(L);
+  });
+  for_each_index<ConcurrencyTag>(ne, [&](u32 e) { L.e_mobius[e] = m.is_mobius(Edge_index(e)) ? 1 : 0; });
+  for_each_index<ConcurrencyTag>(nv, [&](u32 v) { L.v_dart[v] = m.halfedge(Vertex_index(v)).bits(); });
+  for_each_index<ConcurrencyTag>(nf, [&](u32 f) { L.f_first[f] = m.halfedge(Face_index(f)).halfedge().idx(); });
+  index_corners<ConcurrencyTag>(L);
 }
 
 // What both splits share: parent edges split in two, parent vertices keep
-// their index, border loops and Möbius bits are inherited.
-template <class Child>
+// their index, border loops and Möbius bits are inherited. Each parent
+// halfedge writes only the entries of its own two children: a border link
+// also touches the neighbour's child, whose own iteration writes the same
+// value, so every entry has one writer and the loops may run in parallel.
+template <class ConcurrencyTag, class Child>
 void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
 {
-  const u32 nh = 2 * p.ne;
-  for (u32 h = 0; h < nh; ++h) {
+  auto split_halfedge = [&](u32 h) {
     const u32 h0 = p.first_child(h), h1 = p.second_child(h);
     c.h_target[h0] = edge_point_offset + dart_encoding::edge_of_halfedge(h);
     c.h_target[h1] = p.h_target[h];
     if (p.h_face[h] != null_u32)
-      continue;
+      return;
+    // The border loop h0 -> h1 -> (child of the next border halfedge), and
+    // (child of the previous one) -> h0, as link() would set them here.
     c.h_face[h0] = c.h_face[h1] = null_u32;
-    link(c, face_dart(h0), face_dart(h1));
-    link(c, face_dart(h1), p.child_dart_from_source(p.h_next[h]));
-    link(c, p.child_dart_to_target(p.h_prev[h]), face_dart(h0));
-  }
-  for (u32 e = 0; e < p.ne; ++e) {
+    c.h_next[h0] = face_dart(h1);
+    c.h_prev[h1] = face_dart(h0);
+    c.h_next[h1] = p.child_dart_from_source(p.h_next[h]);
+    c.h_prev[h0] = p.child_dart_to_target(p.h_prev[h]);
+  };
+  // An edge and its two halfedges in one loop: one fork and join fewer.
+  for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) {
+    const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
+    split_halfedge(h0);
+    split_halfedge(h1);
     c.e_mobius[2 * e] = c.e_mobius[2 * e + 1] = p.e_mobius[e];
     // The edge point's dart: on the border halfedge, if the edge has one.
-    const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
     const u32 g = p.h_face[h0] != null_u32 && p.h_face[h1] == null_u32 ? h1 : h0;
     c.v_dart[edge_point_offset + e] = face_dart(p.first_child(g));
+  });
+  for_each_index<ConcurrencyTag>(
+    p.nv, [&](u32 v) { c.v_dart[v] = p.v_dart[v] == null_u32 ? null_u32 : p.child_dart_to_target(p.v_dart[v]); });
+}
+
+// The holes of a child: each child face of a parent face that is a hole
+// (corner faces c, and the centre faces nc + f of the triangle split).
+template <class ConcurrencyTag, class Child>
+void inherit_holes(const Level& p, Child& c, u32 child_faces, bool centres)
+{
+  if (p.f_hole.empty()) {
+    c.f_hole.clear();
+    return;
   }
-  for (u32 v = 0; v < p.nv; ++v)
-    c.v_dart[v] = p.v_dart[v] == null_u32 ? null_u32 : p.child_dart_to_target(p.v_dart[v]);
+  c.f_hole.resize(child_faces);
+  for_each_index<ConcurrencyTag>(p.nf, [&](u32 f) {
+    for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
+      c.f_hole[k] = p.f_hole[f];
+    if (centres)
+      c.f_hole[p.nc + f] = p.f_hole[f];
+  });
 }
 
 // Calls body(std::true_type()) or body(std::false_type()), so that a flag
@@ -350,7 +496,7 @@ void quad_split(const Level& p, Child& c, bool corner_table)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
   c.resize(nv + ne + nf, 2 * ne + nc, nc, 4 * nc, corner_table ? Level::corner_table : 0u);
-  split_edges_and_border(p, c, nv);
+  split_edges_and_border<ConcurrencyTag>(p, c, nv);
   const u32 fp = nv + ne;
   with_flag(corner_table, [&](auto with_corners) {
     for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
@@ -385,14 +531,7 @@ void quad_split(const Level& p, Child& c, bool corner_table)
   });
   if (corner_table)
     c.f_offset[nc] = 4 * nc;
-  if (!p.f_hole.empty()) {
-    c.f_hole.resize(nc);
-    for (u32 f = 0; f < nf; ++f)
-      for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
-        c.f_hole[k] = p.f_hole[f];
-  } else {
-    c.f_hole.clear();
-  }
+  inherit_holes<ConcurrencyTag>(p, c, nc, false);
 }
 
 // Loop / linear triangle split (triangles only): child vertices [vertex
@@ -404,7 +543,7 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
   c.resize(nv + ne, 2 * ne + nc, nc + nf, 3 * (nc + nf), corner_table ? Level::corner_table : 0u);
-  split_edges_and_border(p, c, nv);
+  split_edges_and_border<ConcurrencyTag>(p, c, nv);
   with_flag(corner_table, [&](auto with_corners) {
     constexpr bool corners = decltype(with_corners)::value;
     for_each_index<ConcurrencyTag>(nf, [&](u32 f) {
@@ -447,16 +586,7 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
   });
   if (corner_table)
     c.f_offset[nc + nf] = 3 * (nc + nf);
-  if (!p.f_hole.empty()) {
-    c.f_hole.resize(nc + nf);
-    for (u32 f = 0; f < nf; ++f) {
-      for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
-        c.f_hole[k] = p.f_hole[f];
-      c.f_hole[nc + f] = p.f_hole[f];
-    }
-  } else {
-    c.f_hole.clear();
-  }
+  inherit_holes<ConcurrencyTag>(p, c, nc + nf, true);
 }
 
 } // namespace internal

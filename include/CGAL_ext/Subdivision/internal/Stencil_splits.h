@@ -18,6 +18,7 @@
 
 #include <CGAL/assertions.h>
 
+#include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <utility>
@@ -67,7 +68,9 @@ inline bool is_border_edge(const Level& p, u32 e)
 // Builds level `c` (nv vertices) from a face list, through the mesh's
 // connectivity builder, which pairs the faces' sides and sets a Möbius bit
 // where two faces run the same way.
-inline void level_from_faces(u32 nv, const Face_list& faces, Level& c)
+// (The builder is serial; the corner numbering runs as ConcurrencyTag says.)
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void level_from_faces(u32 nv, const Face_list& faces, Level& c)
 {
   CGAL_ext::internal::Connectivity_builder builder(faces.view(nv));
   c.resize(nv, builder.number_of_edges(), faces.size(), u32(faces.vertex.size()),
@@ -81,7 +84,7 @@ inline void level_from_faces(u32 nv, const Face_list& faces, Level& c)
   arrays.face_halfedge = c.f_first.data();
   arrays.mobius = c.e_mobius.data();
   builder.build(arrays, false);
-  index_corners(c);
+  index_corners<ConcurrencyTag>(c);
 }
 
 // The Doo–Sabin quad of interior edge e, oriented like its face h0 (the
@@ -130,153 +133,318 @@ inline std::pair<u32, u32> dual_vertex_ring(const Level& p, u32 v, std::vector<u
   return {shared, along};
 }
 
+// Appends to a list of lists (`offset`, whose last entry is where the
+// entries end) the lists of elements [0, n): count(i, scratch) gives the
+// number of lists and of entries of element i, resize(m) makes room for m
+// entries in all, and write(i, list, entry, scratch) writes element i's
+// lists from list number `list` and entry `entry` on, setting
+// offset[list + j + 1] at the end of its list j. The lists lie in element
+// order, as appending them in a loop over the elements lays them: both
+// counts are prefix-summed, so that the elements may be written in
+// parallel. `Scratch` is made once per block of elements.
+template <class ConcurrencyTag, class Scratch, class Offsets, class Count, class Resize, class Write>
+void append_lists(u32 n, Offsets& offset, const Count& count, const Resize& resize, const Write& write)
+{
+  Array<u32> lists(std::size_t(n) + 1), entries(std::size_t(n) + 1);
+  lists[0] = entries[0] = 0;
+  for_each_block<ConcurrencyTag>(n, [&](u32 begin, u32 end) {
+    Scratch scratch;
+    for (u32 i = begin; i < end; ++i) {
+      const std::pair<u32, u32> c = count(i, scratch);
+      lists[i + 1] = c.first;
+      entries[i + 1] = c.second;
+    }
+  });
+  prefix_sum<ConcurrencyTag>(lists.data(), n);
+  prefix_sum<ConcurrencyTag>(entries.data(), n);
+  const u32 list0 = u32(offset.size() - 1), entry0 = offset.back();
+  offset.resize(offset.size() + lists[n]);
+  resize(std::size_t(entry0) + entries[n]);
+  for_each_block<ConcurrencyTag>(n, [&](u32 begin, u32 end) {
+    Scratch scratch;
+    for (u32 i = begin; i < end; ++i)
+      write(i, list0 + lists[i], entry0 + entries[i], scratch);
+  });
+}
+
+// The same for stencils and faces.
+template <class ConcurrencyTag, class Scratch, class W, class Count, class Write>
+void append_stencils(u32 n, Stencils<W>& st, const Count& count, const Write& write)
+{
+  append_lists<ConcurrencyTag, Scratch>(
+    n, st.offset, count,
+    [&](std::size_t m) {
+      st.source.resize(m);
+      st.weight.resize(m);
+    },
+    write);
+}
+template <class ConcurrencyTag, class Scratch, class Count, class Write>
+void append_faces(u32 n, Face_list& faces, const Count& count, const Write& write)
+{
+  append_lists<ConcurrencyTag, Scratch>(
+    n, faces.offset, count, [&](std::size_t m) { faces.vertex.resize(m); }, write);
+}
+
+// Doo–Sabin, the stencil of corner i of face f (of n corners from k0):
+// writes its parent vertices and weights from `j` on and returns where it
+// ends; `w` holds the face's smooth weights, made by the first interior
+// corner (`made`).
+template <class Mask, class W>
+u32 dual_corner_stencil(const Level& p, const Mask& mask, u32 k0, u32 n, u32 i, std::vector<W>& w, bool& made,
+                        Stencils<W>& st, u32 j)
+{
+  const u32 h_in = p.corner_h[k0 + i], h_out = p.corner_h[k0 + (i + 1) % n];
+  const u32 v = p.h_target[h_in];
+  const bool in_border = p.h_face[h_in ^ 1u] == null_u32, out_border = p.h_face[h_out ^ 1u] == null_u32;
+  auto add = [&](u32 s, const W& x) {
+    st.source[j] = s;
+    st.weight[j] = x;
+    ++j;
+  };
+  if (in_border && out_border) {
+    add(v, W(1));
+  } else if (in_border || out_border) {
+    // Chaikin on the border edge: the border tends to a quadratic B-spline.
+    add(v, W(3) / W(4));
+    add(in_border ? p.source_of(h_in) : p.h_target[h_out], W(1) / W(4));
+  } else {
+    if (!made) {
+      w.resize(n);
+      mask.corner(n, w.data());
+      made = true;
+    }
+    for (u32 t = 0; t < n; ++t)
+      add(p.h_target[p.corner_h[k0 + (i + t) % n]], w[t]);
+  }
+  return j;
+}
+
+// The number of entries of the stencil of dual_corner_stencil().
+inline u32 dual_corner_size(const Level& p, u32 k0, u32 n, u32 i)
+{
+  const bool in_border = p.h_face[p.corner_h[k0 + i] ^ 1u] == null_u32,
+             out_border = p.h_face[p.corner_h[k0 + (i + 1) % n] ^ 1u] == null_u32;
+  return in_border && out_border ? 1 : (in_border || out_border ? 2 : n);
+}
+
 // Doo–Sabin: child vertex k is parent corner k. Child faces: one per face
 // (its corners), one quad per interior edge, one per vertex with three or
-// more faces (interior or border).
-template <class Mask, class W>
+// more faces (interior or border). Faces, edges and vertices each give
+// their stencils and faces in index order, in parallel for `CGAL::Parallel_tag`.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Mask, class W>
 void dual_split(const Level& p, const Mask& mask, Face_list& faces, Stencils<W>& st)
 {
   st.clear(p.nc);
   faces.clear();
-  std::vector<W> w;
-  std::vector<u32> ring;
-  const W three_quarters = W(3) / W(4), quarter = W(1) / W(4);
-  for (u32 f = 0; f < p.nf; ++f) {
-    const u32 k0 = p.f_offset[f], n = p.degree(f);
-    w.resize(n);
-    bool smooth_weights = false;
-    for (u32 i = 0; i < n; ++i) {
-      const u32 h_in = p.corner_h[k0 + i], h_out = p.corner_h[k0 + (i + 1) % n];
-      const u32 v = p.h_target[h_in];
-      const bool in_border = p.h_face[h_in ^ 1u] == null_u32, out_border = p.h_face[h_out ^ 1u] == null_u32;
-      if (in_border && out_border) {
-        st.add(v, W(1));
-      } else if (in_border || out_border) {
-        // Chaikin on the border edge: the border tends to a quadratic B-spline.
-        st.add(v, three_quarters);
-        st.add(in_border ? p.source_of(h_in) : p.h_target[h_out], quarter);
-      } else {
-        if (!smooth_weights) {
-          mask.corner(n, w.data());
-          smooth_weights = true;
-        }
-        for (u32 j = 0; j < n; ++j)
-          st.add(p.h_target[p.corner_h[k0 + (i + j) % n]], w[j]);
+  append_stencils<ConcurrencyTag, std::vector<W>>(
+    p.nf, st,
+    [&](u32 f, std::vector<W>&) {
+      const u32 k0 = p.f_offset[f], n = p.degree(f);
+      u32 entries = 0;
+      for (u32 i = 0; i < n; ++i)
+        entries += dual_corner_size(p, k0, n, i);
+      return std::pair<u32, u32>(n, entries);
+    },
+    [&](u32 f, u32 list, u32 entry, std::vector<W>& w) {
+      const u32 k0 = p.f_offset[f], n = p.degree(f);
+      bool made = false;
+      for (u32 i = 0; i < n; ++i) {
+        entry = dual_corner_stencil(p, mask, k0, n, i, w, made, st, entry);
+        st.offset[list + i + 1] = entry;
       }
-      st.close();
-    }
-    ring.clear();
-    for (u32 i = 0; i < n; ++i)
-      ring.push_back(k0 + i);
-    faces.add(ring.begin(), ring.end());
-  }
-  for (u32 e = 0; e < p.ne; ++e) {
-    if (is_border_edge(p, e))
-      continue;
-    const std::array<u32, 4> q = dual_edge_quad(p, e);
-    faces.add(q.begin(), q.end());
-  }
-  for (u32 v = 0; v < p.nv; ++v) {
+    });
+  using Ring = std::vector<u32>;
+  append_faces<ConcurrencyTag, Ring>(
+    p.nf, faces, [&](u32 f, Ring&) { return std::pair<u32, u32>(1, p.degree(f)); },
+    [&](u32 f, u32 list, u32 entry, Ring&) {
+      for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
+        faces.vertex[entry++] = k;
+      faces.offset[list + 1] = entry;
+    });
+  append_faces<ConcurrencyTag, Ring>(
+    p.ne, faces,
+    [&](u32 e, Ring&) { return is_border_edge(p, e) ? std::pair<u32, u32>(0, 0) : std::pair<u32, u32>(1, 4); },
+    [&](u32 e, u32 list, u32 entry, Ring&) {
+      if (is_border_edge(p, e))
+        return;
+      const std::array<u32, 4> q = dual_edge_quad(p, e);
+      std::copy(q.begin(), q.end(), faces.vertex.begin() + entry);
+      faces.offset[list + 1] = entry + 4;
+    });
+  // A vertex face: two corners are already joined by the quads of the edges
+  // between them, so it needs three. Its sides are shared with edge quads
+  // only: it is oriented against most of them, so that as few sides as can
+  // be become Möbius edges (none on an orientable mesh, where the quads all
+  // run along the walk).
+  auto vertex_face = [&](u32 v, Ring& ring) {
     if (p.v_dart[v] == null_u32)
-      continue;
+      return false;
     const auto [shared, along] = dual_vertex_ring(p, v, ring);
-    // Two corners are already joined by the quads of the edges between them.
     if (ring.size() < 3)
-      continue;
-    // The polygon's sides are shared with edge quads only: orient it against
-    // most of them, so that as few sides as can be become Möbius edges (none
-    // on an orientable mesh, where the quads all run along the walk).
+      return false;
     if (2 * along > shared)
-      faces.add(ring.rbegin(), ring.rend());
-    else
-      faces.add(ring.begin(), ring.end());
+      std::reverse(ring.begin(), ring.end());
+    return true;
+  };
+  append_faces<ConcurrencyTag, Ring>(
+    p.nv, faces,
+    [&](u32 v, Ring& ring) {
+      return vertex_face(v, ring) ? std::pair<u32, u32>(1, u32(ring.size())) : std::pair<u32, u32>(0, 0);
+    },
+    [&](u32 v, u32 list, u32 entry, Ring& ring) {
+      if (!vertex_face(v, ring))
+        return;
+      std::copy(ring.begin(), ring.end(), faces.vertex.begin() + entry);
+      faces.offset[list + 1] = entry + u32(ring.size());
+    });
+}
+
+// The child vertices of a √3 step that are not parent vertices: the
+// centroid of each face (null for none) and the first of the two points of
+// each border edge (refining steps), numbered in face and edge order.
+struct Sqrt3_points
+{
+  std::vector<u32> face_border, centroid, border_point;
+  u32 count = 0; // child vertices
+};
+
+// The child vertices of a √3 step of `p` (see sqrt3_split()).
+template <class ConcurrencyTag>
+void number_sqrt3_points(const Level& p, bool refine_border, Sqrt3_points& pts)
+{
+  const u32 nv = p.nv, ne = p.ne, nf = p.nf;
+  // Border face -> its border halfedge (refining steps).
+  pts.face_border.assign(refine_border ? nf : 0, null_u32);
+  if (refine_border)
+    for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
+      if (!is_border_edge(p, e))
+        return;
+      const u32 h = p.h_face[2 * e] == null_u32 ? 2 * e + 1 : 2 * e;
+      CGAL_assertion(pts.face_border[p.h_face[h]] == null_u32); // true after a non-refining step
+      pts.face_border[p.h_face[h]] = h;
+    });
+  // Numbers from flags: first[i + 1] holds element i's count, then its number.
+  auto number = [&](u32 n, u32 start, u32 step, const auto& has, std::vector<u32>& out) {
+    Array<u32> first(std::size_t(n) + 1);
+    first[0] = 0;
+    for_each_index<ConcurrencyTag>(n, [&](u32 i) { first[i + 1] = has(i) ? step : 0; });
+    prefix_sum<ConcurrencyTag>(first.data(), n);
+    out.resize(n);
+    for_each_index<ConcurrencyTag>(n, [&](u32 i) { out[i] = has(i) ? start + first[i] : null_u32; });
+    return start + first[n];
+  };
+  pts.count = number(
+    nf, nv, 1, [&](u32 f) { return !refine_border || pts.face_border[f] == null_u32; }, pts.centroid);
+  pts.border_point.clear();
+  if (refine_border)
+    pts.count = number(
+      ne, pts.count, 2, [&](u32 e) { return is_border_edge(p, e); }, pts.border_point);
+}
+
+// The √3 stencil of parent vertex v from entry `j` on; returns where it ends.
+template <class Mask, class W>
+u32 sqrt3_vertex_stencil(const Level& p, const Mask& mask, bool refine_border, u32 v, Stencils<W>& st, u32 j)
+{
+  auto add = [&](u32 s, const W& x) {
+    st.source[j] = s;
+    st.weight[j] = x;
+    ++j;
+  };
+  const u32 d0 = p.v_dart[v];
+  if (d0 == null_u32 || (p.is_border_dart(d0) && !refine_border)) {
+    add(v, W(1));
+  } else if (p.is_border_dart(d0)) {
+    add(p.source(d0), W(4) / W(27));
+    add(v, W(19) / W(27));
+    add(p.target(p.next(d0)), W(4) / W(27));
+  } else {
+    u32 n = 0, d = d0;
+    do {
+      ++n;
+      d = p.opposite(p.next(d));
+    } while (d != d0);
+    Vertex_weights<W> vw;
+    vw.vertex = vw.edge = W(0);
+    mask.smooth_vertex(n, vw);
+    add(v, vw.vertex);
+    do {
+      add(p.source(d), vw.edge);
+      d = p.opposite(p.next(d));
+    } while (d != d0);
   }
+  return j;
+}
+
+// The number of entries of sqrt3_vertex_stencil().
+inline u32 sqrt3_vertex_stencil_size(const Level& p, bool refine_border, u32 v)
+{
+  const u32 d0 = p.v_dart[v];
+  if (d0 == null_u32 || (p.is_border_dart(d0) && !refine_border))
+    return 1;
+  if (p.is_border_dart(d0))
+    return 3;
+  u32 n = 0, d = d0;
+  do {
+    ++n;
+    d = p.opposite(p.next(d));
+  } while (d != d0);
+  return n + 1;
 }
 
 // √3 step `refine_border` (every second step): child vertices are
 // [parent vertices | centroids | two points per border edge (refining
 // steps only)]. A face with a border edge gets no centroid in a refining
-// step: its border edge is trisected instead.
-template <class Mask, class W>
+// step: its border edge is trisected instead. Stencils in child vertex
+// order, faces in edge order, in parallel for `CGAL::Parallel_tag`.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Mask, class W>
 void sqrt3_split(const Level& p, const Mask& mask, bool refine_border, Face_list& faces, Stencils<W>& st)
 {
-  const u32 nv = p.nv, ne = p.ne, nf = p.nf;
-  // Border face -> its border halfedge (refining steps), and the centroids.
-  std::vector<u32> face_border(refine_border ? nf : 0, null_u32);
-  if (refine_border) {
-    for (u32 e = 0; e < ne; ++e) {
-      if (!is_border_edge(p, e))
-        continue;
-      const u32 h = p.h_face[2 * e] == null_u32 ? 2 * e + 1 : 2 * e;
-      CGAL_assertion(face_border[p.h_face[h]] == null_u32); // true after a non-refining step
-      face_border[p.h_face[h]] = h;
-    }
-  }
-  std::vector<u32> centroid(nf, null_u32);
-  u32 next_vertex = nv;
-  for (u32 f = 0; f < nf; ++f)
-    if (!refine_border || face_border[f] == null_u32)
-      centroid[f] = next_vertex++;
-  std::vector<u32> border_point(refine_border ? ne : 0, null_u32); // first of the two points
-  if (refine_border)
-    for (u32 e = 0; e < ne; ++e)
-      if (is_border_edge(p, e)) {
-        border_point[e] = next_vertex;
-        next_vertex += 2;
+  Sqrt3_points pts;
+  number_sqrt3_points<ConcurrencyTag>(p, refine_border, pts);
+  const std::vector<u32>&face_border = pts.face_border, &centroid = pts.centroid, &border_point = pts.border_point;
+  st.clear(pts.count);
+  struct None
+  {};
+  append_stencils<ConcurrencyTag, None>(
+    p.nv, st, [&](u32 v, None&) { return std::pair<u32, u32>(1, sqrt3_vertex_stencil_size(p, refine_border, v)); },
+    [&](u32 v, u32 list, u32 entry, None&) {
+      st.offset[list + 1] = sqrt3_vertex_stencil(p, mask, refine_border, v, st, entry);
+    });
+  append_stencils<ConcurrencyTag, None>(
+    p.nf, st,
+    [&](u32 f, None&) { return centroid[f] == null_u32 ? std::pair<u32, u32>(0, 0) : std::pair<u32, u32>(1, 3); },
+    [&](u32 f, u32 list, u32 entry, None&) {
+      if (centroid[f] == null_u32)
+        return;
+      for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k, ++entry) {
+        st.source[entry] = p.h_target[p.corner_h[k]];
+        st.weight[entry] = W(1) / W(3);
       }
-
-  // Stencils, in child vertex order.
-  st.clear(next_vertex);
-  Vertex_weights<W> vw;
-  for (u32 v = 0; v < nv; ++v) {
-    const u32 d0 = p.v_dart[v];
-    if (d0 == null_u32 || (p.is_border_dart(d0) && !refine_border)) {
-      st.add(v, W(1));
-    } else if (p.is_border_dart(d0)) {
-      st.add(p.source(d0), W(4) / W(27));
-      st.add(v, W(19) / W(27));
-      st.add(p.target(p.next(d0)), W(4) / W(27));
-    } else {
-      u32 n = 0, d = d0;
-      do {
-        ++n;
-        d = p.opposite(p.next(d));
-      } while (d != d0);
-      vw.vertex = vw.edge = W(0);
-      mask.smooth_vertex(n, vw);
-      st.add(v, vw.vertex);
-      do {
-        st.add(p.source(d), vw.edge);
-        d = p.opposite(p.next(d));
-      } while (d != d0);
-    }
-    st.close();
-  }
-  const W third = W(1) / W(3);
-  for (u32 f = 0; f < nf; ++f) {
-    if (centroid[f] == null_u32)
-      continue;
-    for (u32 k = p.f_offset[f]; k < p.f_offset[f + 1]; ++k)
-      st.add(p.h_target[p.corner_h[k]], third);
-    st.close();
-  }
+      st.offset[list + 1] = entry;
+    });
   if (refine_border) {
-    for (u32 e = 0; e < ne; ++e) {
-      if (border_point[e] == null_u32)
-        continue;
-      const u32 d = (p.h_face[2 * e] == null_u32 ? 2 * e : 2 * e + 1) << 1; // the border dart
-      const u32 s = p.source(d), t = p.target(d);
-      st.add(p.source(p.prev(d)), W(1) / W(27));
-      st.add(s, W(16) / W(27));
-      st.add(t, W(10) / W(27));
-      st.close();
-      st.add(s, W(10) / W(27));
-      st.add(t, W(16) / W(27));
-      st.add(p.target(p.next(d)), W(1) / W(27));
-      st.close();
-    }
+    append_stencils<ConcurrencyTag, None>(
+      p.ne, st,
+      [&](u32 e, None&) {
+        return border_point[e] == null_u32 ? std::pair<u32, u32>(0, 0) : std::pair<u32, u32>(2, 6);
+      },
+      [&](u32 e, u32 list, u32 j, None&) {
+        if (border_point[e] == null_u32)
+          return;
+        const u32 d = (p.h_face[2 * e] == null_u32 ? 2 * e : 2 * e + 1) << 1; // the border dart
+        const u32 s = p.source(d), t = p.target(d);
+        const u32 src[6] = {p.source(p.prev(d)), s, t, s, t, p.target(p.next(d))};
+        const int w27[6] = {1, 16, 10, 10, 16, 1};
+        for (int i = 0; i < 6; ++i) {
+          st.source[j + i] = src[i];
+          st.weight[j + i] = W(w27[i]) / W(27);
+        }
+        st.offset[list + 1] = j + 3;
+        st.offset[list + 2] = j + 6;
+      });
   }
-  CGAL_assertion(st.size() == next_vertex);
+  CGAL_assertion(st.size() == pts.count);
 
   // The border point of edge e nearest its end `x`.
   auto point_near = [&](u32 e, u32 x) {
@@ -293,25 +461,34 @@ void sqrt3_split(const Level& p, const Mask& mask, bool refine_border, Face_list
     return point_near(eb, shared);
   };
   faces.clear();
-  for (u32 e = 0; e < ne; ++e) {
-    const u32 h0 = 2 * e, h1 = 2 * e + 1;
-    if (!is_border_edge(p, e)) {
-      const u32 a = p.source_of(h0), b = p.h_target[h0];
-      const u32 o0 = apex(p.h_face[h0], a, b), o1 = apex(p.h_face[h1], a, b);
-      // The flipped edge o0–o1, oriented like face h0.
-      faces.add({a, o1, o0});
-      faces.add({o1, b, o0});
-      continue;
-    }
-    const u32 h = p.h_face[h0] == null_u32 ? h1 : h0, f = p.h_face[h];
-    const u32 a = p.source_of(h), b = p.h_target[h];
-    if (centroid[f] != null_u32) {
-      faces.add({a, b, centroid[f]});
-    } else {
-      const u32 x = p.h_target[p.h_next[h] >> 1];
-      faces.add({point_near(e, a), point_near(e, b), x});
-    }
-  }
+  append_faces<ConcurrencyTag, None>(
+    p.ne, faces,
+    [&](u32 e, None&) { return is_border_edge(p, e) ? std::pair<u32, u32>(1, 3) : std::pair<u32, u32>(2, 6); },
+    [&](u32 e, u32 list, u32 j, None&) {
+      const u32 h0 = 2 * e, h1 = 2 * e + 1;
+      u32 t[6];
+      u32 n = 3;
+      if (!is_border_edge(p, e)) {
+        const u32 a = p.source_of(h0), b = p.h_target[h0];
+        const u32 o0 = apex(p.h_face[h0], a, b), o1 = apex(p.h_face[h1], a, b);
+        // The flipped edge o0–o1, oriented like face h0.
+        const u32 two[6] = {a, o1, o0, o1, b, o0};
+        std::copy(two, two + 6, t);
+        n = 6;
+      } else {
+        const u32 h = p.h_face[h0] == null_u32 ? h1 : h0, f = p.h_face[h];
+        const u32 a = p.source_of(h), b = p.h_target[h];
+        if (centroid[f] != null_u32) {
+          t[0] = a, t[1] = b, t[2] = centroid[f];
+        } else {
+          t[0] = point_near(e, a), t[1] = point_near(e, b), t[2] = p.h_target[p.h_next[h] >> 1];
+        }
+      }
+      std::copy(t, t + n, faces.vertex.begin() + j);
+      faces.offset[list + 1] = j + 3;
+      if (n == 6)
+        faces.offset[list + 2] = j + 6;
+    });
 }
 
 } // namespace internal

@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -30,6 +32,10 @@ namespace internal {
 // a copy would take 24 (edge) or 56 (vertex). Smooth weights depend only on
 // face degrees or valence and are shared; crease, corner and semi-sharp
 // weights, rarer, get entries of their own or share the constant ones.
+// The shared entries come first, in the order of their keys, then the
+// entries of single elements in element order: a numbering that does not
+// depend on the order in which the elements are visited, so that the
+// threads of a parallel build make the serial table.
 template <class W>
 struct Step_weights
 {
@@ -38,8 +44,6 @@ struct Step_weights
   std::vector<Edge_weights<W>> edges;
   std::vector<Vertex_weights<W>> vertices;
   Array<u32> edge_class, vertex_class;
-  std::vector<u32> smooth_edge, smooth_vertex; // by degree pair / valence; null_u32 if not yet made
-  u32 crease_edge = null_u32, corner_vertex = null_u32;
 
   void reset(u32 ne, u32 nv)
   {
@@ -49,26 +53,20 @@ struct Step_weights
     edge_class.resize(ne);
     vertex_class.clear();
     vertex_class.resize(nv);
-    smooth_edge.assign(max_shared_degree * max_shared_degree, null_u32);
-    smooth_vertex.clear();
-    crease_edge = corner_vertex = null_u32;
   }
-  // Adds `w`, noting which of its terms are non-zero: the interpolation
-  // passes skip the others.
-  u32 add(Edge_weights<W> w)
+  // Notes which terms of `w` are non-zero: the interpolation passes skip the others.
+  static Edge_weights<W> finish(Edge_weights<W> w)
   {
     w.has_face = !CGAL::is_zero(w.face);
-    edges.push_back(w);
-    return u32(edges.size() - 1);
+    return w;
   }
-  u32 add(Vertex_weights<W> w)
+  static Vertex_weights<W> finish(Vertex_weights<W> w)
   {
     w.has_edge = !CGAL::is_zero(w.edge);
     w.has_face = !CGAL::is_zero(w.face);
     w.has_edge_point = !CGAL::is_zero(w.edge_point);
     w.has_crease = !CGAL::is_zero(w.crease);
-    vertices.push_back(w);
-    return u32(vertices.size() - 1);
+    return w;
   }
   const Edge_weights<W>& edge(u32 e) const { return edges[edge_class[e]]; }
   const Vertex_weights<W>& vertex(u32 v) const { return vertices[vertex_class[v]]; }
@@ -119,13 +117,19 @@ void smooth_weights(const Mask& mask, unsigned valence, Vertex_weights<W>& w)
 }
 
 // Builds the weights of a step, one parent level at a time; keeps its
-// per-vertex scratch arrays between steps.
+// per-vertex scratch arrays between steps. Edges and vertices are each
+// weighted in two passes over their elements, which may run in parallel:
+// the first finds the child sharpness and a key (a shared entry of the
+// table, or `own_entry`), then the shared entries are made, and the second
+// pass numbers the elements' own entries by a prefix sum and fills them.
+// The mask's functions are called from several threads: they are const.
 template <class Mask, class W>
 class Weight_builder
 {
 public:
   // The weights of parent level `p` into `sw`, and the sharpness of its
   // child (of `child_nv` vertices) into `child`.
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
   void build(const Mask& mask, Crease_method method, const Level& p, u32 child_nv, Step_weights<W>& sw,
              Child_sharpness& child)
   {
@@ -134,21 +138,20 @@ public:
     p_ = &p;
     sw_ = &sw;
     sw.reset(p.ne, p.nv);
-    const u32 child_ne = 2 * p.ne + p.nc;
     child.edges.clear();
     child.vertices.clear();
     if (p.sharp) {
-      child.edges.resize(child_ne);
+      child.edges.resize(2 * p.ne + p.nc);
       child.vertices.resize(child_nv);
     }
-    count_edges_at_vertices();
-    bool any = add_edge_weights(child.edges.data());
+    count_edges_at_vertices<ConcurrencyTag>();
+    bool any = add_edge_weights<ConcurrencyTag>(child.edges.data());
     if (p.sharp)
-      std::fill(child.edges.data() + 2 * p.ne, child.edges.data() + child_ne, 0.0f);
-    any = add_vertex_weights(child.vertices.data()) || any;
+      for_each_index<ConcurrencyTag>(p.nc, [&](u32 c) { child.edges[2 * p.ne + c] = 0.0f; });
+    any = add_vertex_weights<ConcurrencyTag>(child.vertices.data()) || any;
     child.any = any;
     if (any)
-      std::fill(child.vertices.data() + p.nv, child.vertices.data() + child_nv, 0.0f);
+      for_each_index<ConcurrencyTag>(child_nv - p.nv, [&](u32 i) { child.vertices[p.nv + i] = 0.0f; });
     else
       child.release();
   }
@@ -159,31 +162,80 @@ public:
     decltype(valence_)().swap(valence_);
     decltype(sharp_count_)().swap(sharp_count_);
     decltype(semi_sharp_)().swap(semi_sharp_);
+    decltype(own_before_)().swap(own_before_);
   }
 
 private:
+  static constexpr u32 D = Step_weights<W>::max_shared_degree;
+  // The key of an element whose weights are its own entry of the table.
+  static constexpr u32 own_entry = null_u32;
+
+  // The neighbours of a vertex and the sharpness of the edges to them, now
+  // and in the child level, in the order of the walk around it.
+  struct Ring
+  {
+    std::vector<u32> vertex;
+    std::vector<float> sharpness, child_sharpness;
+  };
+
   // Valence of every vertex and, with sharpness, its sharp and semi-sharp
-  // edges, summed in edge order.
+  // edges, summed in edge order. Serially, a pass over the edges; in
+  // parallel, a walk around each vertex, which meets each end of an edge at
+  // it once (no two threads write one count), its sharp edges sorted by
+  // index so that the semi-sharp sum is formed in the same order.
+  template <class ConcurrencyTag>
   void count_edges_at_vertices()
   {
     const Level& p = *p_;
-    valence_.assign(p.nv, 0);
-    for (u32 e = 0; e < p.ne; ++e) {
-      ++valence_[p.source(edge_dart(e))];
-      ++valence_[p.h_target[edge_halfedge(e)]];
+    valence_.clear();
+    valence_.resize(p.nv);
+    if (p.sharp) {
+      sharp_count_.clear();
+      sharp_count_.resize(p.nv);
+      semi_sharp_.clear();
+      semi_sharp_.resize(p.nv);
     }
-    if (!p.sharp)
-      return;
-    sharp_count_.assign(p.nv, 0);
-    semi_sharp_.assign(p.nv, Crease::Semi_sharp_edges());
-    for (u32 e = 0; e < p.ne; ++e) {
-      const float s = p.e_sharp[e];
-      if (!Crease::is_sharp(s))
-        continue;
-      for (u32 v : {p.source(edge_dart(e)), p.h_target[edge_halfedge(e)]}) {
-        ++sharp_count_[v];
-        semi_sharp_[v].add(s);
+    if constexpr (!is_parallel_tag<ConcurrencyTag>) {
+      std::fill(valence_.begin(), valence_.end(), 0u);
+      for (u32 e = 0; e < p.ne; ++e) {
+        ++valence_[p.source(edge_dart(e))];
+        ++valence_[p.h_target[edge_halfedge(e)]];
       }
+      if (!p.sharp)
+        return;
+      std::fill(sharp_count_.begin(), sharp_count_.end(), 0u);
+      std::fill(semi_sharp_.begin(), semi_sharp_.end(), Crease::Semi_sharp_edges());
+      for (u32 e = 0; e < p.ne; ++e) {
+        const float s = p.e_sharp[e];
+        if (!Crease::is_sharp(s))
+          continue;
+        for (u32 v : {p.source(edge_dart(e)), p.h_target[edge_halfedge(e)]}) {
+          ++sharp_count_[v];
+          semi_sharp_[v].add(s);
+        }
+      }
+    } else {
+      for_each_block<ConcurrencyTag>(p.nv, [&](u32 begin, u32 end) {
+        std::vector<u32> sharp;
+        for (u32 v = begin; v < end; ++v) {
+          u32 n = 0;
+          sharp.clear();
+          p.for_each_dart_at(v, [&](u32 d) {
+            ++n;
+            const u32 e = dart_encoding::edge_of_dart(d);
+            if (p.sharp && Crease::is_sharp(p.e_sharp[e]))
+              sharp.push_back(e);
+          });
+          valence_[v] = n;
+          if (!p.sharp)
+            continue;
+          std::sort(sharp.begin(), sharp.end());
+          sharp_count_[v] = u32(sharp.size());
+          semi_sharp_[v] = Crease::Semi_sharp_edges();
+          for (u32 e : sharp)
+            semi_sharp_[v].add(p.e_sharp[e]);
+        }
+      });
     }
   }
 
@@ -197,168 +249,236 @@ private:
     return Crease::subdivide_edge_sharpness_at_vertex(method_, s, valence_[v], semi_sharp_[v]);
   }
 
-  // Edge weights, each edge on its own; the child edges' sharpness into
-  // `child` (2e at the source, 2e+1 at the target) if the parent is sharp.
-  // Returns whether a child edge keeps some sharpness.
-  bool add_edge_weights(float* child)
+  // The degrees of the faces of edge e (0 for none).
+  std::pair<u32, u32> face_degrees(u32 e) const
   {
     const Level& p = *p_;
-    bool any = false;
-    for (u32 e = 0; e < p.ne; ++e) {
-      const float s = p.sharp ? p.e_sharp[e] : 0.0f;
-      float sa = 0.0f, sb = 0.0f;
-      if (Crease::is_sharp(s)) {
-        sa = child_edge_sharpness(s, p.source(edge_dart(e)));
-        sb = child_edge_sharpness(s, p.h_target[edge_halfedge(e)]);
-        any = any || Crease::is_sharp(sa) || Crease::is_sharp(sb);
-      }
-      if (p.sharp) {
-        child[2 * e] = sa;
-        child[2 * e + 1] = sb;
-      }
-      sw_->edge_class[e] = Mask::creases && Crease::edge_point_is_crease(method_, s, sa, sb)
-                             ? crease_edge_class()
-                             : smooth_edge_class(e, Mask::creases ? s : 0.0f);
-    }
-    return any;
+    const u32 f0 = p.h_face[edge_halfedge(e)], f1 = p.h_face[dart_encoding::halfedge_of_edge(e, 1)];
+    return {f0 == null_u32 ? 0u : p.degree(f0), f1 == null_u32 ? 0u : p.degree(f1)};
   }
 
-  u32 crease_edge_class()
+  // Edge keys: 0 the crease mask, 1 + d0 * D + d1 the smooth mask between
+  // faces of degrees d0 and d1 (both below D); a semi-sharp blend is an
+  // entry of its own. `s` is the edge's sharpness, `sa` and `sb` its children's.
+  u32 edge_key(u32 e, float s, float sa, float sb) const
   {
-    if (sw_->crease_edge == null_u32)
-      sw_->crease_edge = sw_->add(Edge_weights<W>{W(0.5), W(0), false});
-    return sw_->crease_edge;
+    if (Mask::creases && Crease::edge_point_is_crease(method_, s, sa, sb))
+      return 0;
+    if (Mask::creases && Crease::is_sharp(s))
+      return own_entry;
+    const auto [d0, d1] = face_degrees(e);
+    return d0 < D && d1 < D ? 1 + d0 * D + d1 : own_entry;
   }
 
   // The smooth mask of edge e; if it is semi-sharp (`s > 0`), OpenSubdiv's
   // blend with the crease mask, weighted by `s` (not clamped).
-  u32 smooth_edge_class(u32 e, float s)
+  Edge_weights<W> smooth_edge_weights(u32 d0, u32 d1, float s) const
   {
-    const Level& p = *p_;
-    Step_weights<W>& sw = *sw_;
-    const u32 f0 = p.h_face[edge_halfedge(e)], f1 = p.h_face[dart_encoding::halfedge_of_edge(e, 1)];
-    const u32 d0 = f0 == null_u32 ? 0u : p.degree(f0), d1 = f1 == null_u32 ? 0u : p.degree(f1);
-    const bool blended = Crease::is_sharp(s);
-    constexpr u32 D = Step_weights<W>::max_shared_degree;
-    const bool shared = !blended && d0 < D && d1 < D;
-    if (shared && sw.smooth_edge[d0 * D + d1] != null_u32)
-      return sw.smooth_edge[d0 * D + d1];
     Edge_weights<W> w{};
     mask_->smooth_edge(d0, d1, w);
-    if (blended) {
+    if (Crease::is_sharp(s)) {
       const W pw = W(double(s)), cw = W(1) - pw;
       w.vertex = pw * W(0.5) + cw * w.vertex;
       w.face = cw * w.face;
     }
-    const u32 cls = sw.add(w);
-    if (shared)
-      sw.smooth_edge[d0 * D + d1] = cls;
-    return cls;
+    return w;
   }
 
-  u32 smooth_vertex_class(u32 n)
+  // Edge weights, each edge on its own; the child edges' sharpness into
+  // `child` (2e at the source, 2e+1 at the target) if the parent is sharp.
+  // Returns whether a child edge keeps some sharpness.
+  template <class ConcurrencyTag>
+  bool add_edge_weights(float* child)
   {
+    const Level& p = *p_;
     Step_weights<W>& sw = *sw_;
-    if (sw.smooth_vertex.size() <= n)
-      sw.smooth_vertex.resize(n + 1, null_u32);
-    if (sw.smooth_vertex[n] == null_u32) {
-      Vertex_weights<W> w{};
-      smooth_weights(*mask_, n, w);
-      sw.smooth_vertex[n] = sw.add(w);
+    std::vector<std::uint8_t> used(1 + D * D, 0);
+    u32 any = 0, own = 0;
+    for_each_block<ConcurrencyTag>(p.ne, [&](u32 begin, u32 end) {
+      u32 block_any = 0, block_own = 0;
+      for (u32 e = begin; e < end; ++e) {
+        const float s = p.sharp ? p.e_sharp[e] : 0.0f;
+        float sa = 0.0f, sb = 0.0f;
+        if (Crease::is_sharp(s)) {
+          sa = child_edge_sharpness(s, p.source(edge_dart(e)));
+          sb = child_edge_sharpness(s, p.h_target[edge_halfedge(e)]);
+          block_any |= Crease::is_sharp(sa) || Crease::is_sharp(sb) ? 1u : 0u;
+        }
+        if (p.sharp) {
+          child[2 * e] = sa;
+          child[2 * e + 1] = sb;
+        }
+        const u32 key = edge_key(e, s, sa, sb);
+        sw.edge_class[e] = key;
+        if (key == own_entry)
+          ++block_own;
+        else
+          mark<ConcurrencyTag>(used[key]);
+      }
+      atomic_add<ConcurrencyTag>(any, block_any);
+      atomic_add<ConcurrencyTag>(own, block_own);
+    });
+    std::vector<u32> class_of(used.size(), null_u32);
+    for (u32 key = 0; key < used.size(); ++key) {
+      if (!used[key])
+        continue;
+      class_of[key] = u32(sw.edges.size());
+      sw.edges.push_back(Step_weights<W>::finish(key == 0 ? Edge_weights<W>{W(0.5), W(0), false}
+                                                          : smooth_edge_weights((key - 1) / D, (key - 1) % D, 0.0f)));
     }
-    return sw.smooth_vertex[n];
+    assign_classes<ConcurrencyTag>(p.ne, sw.edge_class, class_of, own, sw.edges,
+                                   [&](u32 e, Ring&, Edge_weights<W>& w) {
+                                     const auto [d0, d1] = face_degrees(e);
+                                     w = smooth_edge_weights(d0, d1, Mask::creases && p.sharp ? p.e_sharp[e] : 0.0f);
+                                   });
+    return any != 0;
   }
 
-  u32 corner_vertex_class()
+  // Replaces each key in `cls` by its class: `class_of[key]` for the shared
+  // entries, which `table` holds, and for the elements of key `own_entry`
+  // (`own` of them) new entries appended to `table` in element order, each
+  // made by entry(i, ring, weights).
+  template <class ConcurrencyTag, class Table, class Entry>
+  void assign_classes(u32 n, Array<u32>& cls, const std::vector<u32>& class_of, u32 own, Table& table,
+                      const Entry& entry)
   {
-    if (sw_->corner_vertex == null_u32) {
-      Vertex_weights<W> w{};
-      corner_weights(w);
-      sw_->corner_vertex = sw_->add(w);
+    if (own == 0) {
+      for_each_index<ConcurrencyTag>(n, [&](u32 i) { cls[i] = class_of[cls[i]]; });
+      return;
     }
-    return sw_->corner_vertex;
+    const u32 base = u32(table.size());
+    table.resize(std::size_t(base) + own);
+    own_before_.clear();
+    own_before_.resize(std::size_t(n) + 1);
+    own_before_[0] = 0;
+    for_each_index<ConcurrencyTag>(n, [&](u32 i) { own_before_[i + 1] = cls[i] == own_entry ? 1 : 0; });
+    prefix_sum<ConcurrencyTag>(own_before_.data(), n);
+    for_each_block<ConcurrencyTag>(n, [&](u32 begin, u32 end) {
+      Ring ring;
+      for (u32 i = begin; i < end; ++i) {
+        if (cls[i] != own_entry) {
+          cls[i] = class_of[cls[i]];
+          continue;
+        }
+        cls[i] = base + own_before_[i];
+        typename Table::value_type w{};
+        entry(i, ring, w);
+        table[cls[i]] = Step_weights<W>::finish(w);
+      }
+    });
   }
 
   // Vertex weights; the child vertices' sharpness into `child` if the parent
-  // is sharp. Returns whether a child vertex keeps some sharpness.
+  // is sharp. Returns whether a child vertex keeps some sharpness. Keys: 0
+  // the corner mask, 1 + n the smooth mask of valence n.
+  template <class ConcurrencyTag>
   bool add_vertex_weights(float* child)
   {
     const Level& p = *p_;
-    bool any = false;
-    for (u32 v = 0; v < p.nv; ++v) {
-      u32& cls = sw_->vertex_class[v];
-      const u32 n = valence_[v];
-      if (!p.sharp) {
-        cls = n == 0 ? corner_vertex_class() : smooth_vertex_class(n);
-        continue;
+    Step_weights<W>& sw = *sw_;
+    const u32 max_valence =
+      reduce<ConcurrencyTag>(p.nv, u32(0), [&](u32 v) { return valence_[v]; }, [](u32 a, u32 b) {
+        return (std::max)(a, b);
+      });
+    std::vector<std::uint8_t> used(std::size_t(max_valence) + 2, 0);
+    u32 any = 0, own = 0;
+    for_each_block<ConcurrencyTag>(p.nv, [&](u32 begin, u32 end) {
+      Ring ring;
+      u32 block_any = 0, block_own = 0;
+      for (u32 v = begin; v < end; ++v) {
+        const u32 n = valence_[v];
+        u32 key = n == 0 ? 0 : 1 + n;
+        if (p.sharp) {
+          const float vs = p.v_sharp[v];
+          child[v] = Crease::subdivide_vertex_sharpness(vs);
+          block_any |= Crease::is_sharp(child[v]) ? 1u : 0u;
+          if (n != 0 && Mask::creases && !(Crease::is_smooth(vs) && sharp_count_[v] == 0))
+            key = sharp_vertex_key(v, vs, child[v], ring, nullptr);
+        }
+        sw.vertex_class[v] = key;
+        if (key == own_entry)
+          ++block_own;
+        else
+          mark<ConcurrencyTag>(used[key]);
       }
-      const float vs = p.v_sharp[v];
-      child[v] = Crease::subdivide_vertex_sharpness(vs);
-      any = any || Crease::is_sharp(child[v]);
-      if (n == 0)
-        cls = corner_vertex_class();
-      else if (!Mask::creases || (Crease::is_smooth(vs) && sharp_count_[v] == 0))
-        cls = smooth_vertex_class(n);
+      atomic_add<ConcurrencyTag>(any, block_any);
+      atomic_add<ConcurrencyTag>(own, block_own);
+    });
+    std::vector<u32> class_of(used.size(), null_u32);
+    for (u32 key = 0; key < used.size(); ++key) {
+      if (!used[key])
+        continue;
+      Vertex_weights<W> w{};
+      if (key == 0)
+        corner_weights(w);
       else
-        cls = sharp_vertex_class(v, vs, child[v]);
+        smooth_weights(*mask_, key - 1, w);
+      class_of[key] = u32(sw.vertices.size());
+      sw.vertices.push_back(Step_weights<W>::finish(w));
     }
-    return any;
+    assign_classes<ConcurrencyTag>(p.nv, sw.vertex_class, class_of, own, sw.vertices,
+                                   [&](u32 v, Ring& ring, Vertex_weights<W>& w) {
+                                     sharp_vertex_key(v, p.v_sharp[v], child[v], ring, &w);
+                                   });
+    return any != 0;
   }
 
-  // A vertex with sharpness or sharp edges: the mask of its rule, blended
-  // with the mask of its child's rule where they differ.
-  u32 sharp_vertex_class(u32 v, float vs, float child_vs)
+  // A vertex with sharpness or sharp edges: the key of the mask of its
+  // rule, or `own_entry` if it is blended with the mask of its child's rule
+  // where they differ; that blend is then written into `*w` if `w` is given.
+  u32 sharp_vertex_key(u32 v, float vs, float child_vs, Ring& ring, Vertex_weights<W>* w) const
   {
     const Crease::Rule rule = Crease::vertex_rule(vs, sharp_count_[v]);
     if (rule == Crease::Rule::smooth || rule == Crease::Rule::dart)
-      return smooth_vertex_class(valence_[v]);
-    walk_ring(v);
-    const u32 m = u32(ring_vertex_.size());
-    const Crease::Rule child_rule = Crease::vertex_rule(child_vs, m, ring_child_sharpness_.data());
+      return 1 + valence_[v];
+    walk_ring(v, ring);
+    const u32 m = u32(ring.vertex.size());
+    const Crease::Rule child_rule = Crease::vertex_rule(child_vs, m, ring.child_sharpness.data());
     if (rule == Crease::Rule::corner && child_rule == Crease::Rule::corner)
-      return corner_vertex_class();
-    Vertex_weights<W> w{};
-    rule_weights(rule, ring_sharpness_, valence_[v], w);
+      return 0;
+    if (!w)
+      return own_entry;
+    rule_weights(rule, ring, ring.sharpness, valence_[v], *w);
     if (child_rule != rule) {
-      const float fraction = Crease::fractional_weight_at_vertex(vs, child_vs, m, ring_sharpness_.data(),
-                                                                 ring_child_sharpness_.data());
+      const float fraction = Crease::fractional_weight_at_vertex(vs, child_vs, m, ring.sharpness.data(),
+                                                                 ring.child_sharpness.data());
       Vertex_weights<W> c{};
-      rule_weights(child_rule, ring_child_sharpness_, valence_[v], c);
-      blend(w, c, fraction);
+      rule_weights(child_rule, ring, ring.child_sharpness, valence_[v], c);
+      blend(*w, c, fraction);
     }
-    return sw_->add(w);
+    return own_entry;
   }
 
-  // The neighbours of `v` and the sharpness of the edges to them, now and in
-  // the child level, in the order of the walk around `v`.
-  void walk_ring(u32 v)
+  // The ring of `v` into `ring`.
+  void walk_ring(u32 v, Ring& ring) const
   {
     const Level& p = *p_;
-    ring_vertex_.clear();
-    ring_sharpness_.clear();
-    ring_child_sharpness_.clear();
+    ring.vertex.clear();
+    ring.sharpness.clear();
+    ring.child_sharpness.clear();
     const u32 d0 = p.v_dart[v];
     u32 d = d0;
     do {
       const float s = p.e_sharp[dart_encoding::edge_of_dart(d)];
-      ring_vertex_.push_back(p.source(d));
-      ring_sharpness_.push_back(s);
-      ring_child_sharpness_.push_back(Crease::is_sharp(s) ? child_edge_sharpness(s, v) : 0.0f);
+      ring.vertex.push_back(p.source(d));
+      ring.sharpness.push_back(s);
+      ring.child_sharpness.push_back(Crease::is_sharp(s) ? child_edge_sharpness(s, v) : 0.0f);
       d = p.opposite(p.next(d));
     } while (d != d0);
   }
 
   // The mask of `rule`, its crease ends taken from the edge sharpness
-  // `ring` of the walk.
-  void rule_weights(Crease::Rule rule, const std::vector<float>& ring, u32 valence, Vertex_weights<W>& w) const
+  // `sharpness` of the walk `ring`.
+  void rule_weights(Crease::Rule rule, const Ring& ring, const std::vector<float>& sharpness, u32 valence,
+                    Vertex_weights<W>& w) const
   {
     if (rule == Crease::Rule::corner) {
       corner_weights(w);
     } else if (rule == Crease::Rule::crease) {
       u32 ends[2] = {null_u32, null_u32};
-      for (std::size_t i = 0, j = 0; i < ring.size() && j < 2; ++i)
-        if (Crease::is_sharp(ring[i]))
-          ends[j++] = ring_vertex_[i];
+      for (std::size_t i = 0, j = 0; i < sharpness.size() && j < 2; ++i)
+        if (Crease::is_sharp(sharpness[i]))
+          ends[j++] = ring.vertex[i];
       crease_weights(w, ends[0], ends[1]);
     } else {
       smooth_weights(*mask_, valence, w);
@@ -387,12 +507,9 @@ private:
   Crease_method method_ = Crease_method::uniform;
   const Level* p_ = nullptr;
   Step_weights<W>* sw_ = nullptr;
-  // per vertex
-  std::vector<u32> valence_, sharp_count_;
-  std::vector<Crease::Semi_sharp_edges> semi_sharp_;
-  // around the vertex being weighted
-  std::vector<u32> ring_vertex_;
-  std::vector<float> ring_sharpness_, ring_child_sharpness_;
+  // per vertex (own_before_: per element of the pass being numbered)
+  Array<u32> valence_, sharp_count_, own_before_;
+  Array<Crease::Semi_sharp_edges> semi_sharp_;
 };
 
 } // namespace internal
