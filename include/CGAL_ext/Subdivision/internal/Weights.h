@@ -294,29 +294,19 @@ private:
     Step_weights<W>& sw = *sw_;
     std::vector<std::uint8_t> used(1 + D * D, 0);
     u32 any = 0, own = 0;
-    for_each_block<ConcurrencyTag>(p.ne, [&](u32 begin, u32 end) {
-      u32 block_any = 0, block_own = 0;
-      for (u32 e = begin; e < end; ++e) {
-        const float s = p.sharp ? p.e_sharp[e] : 0.0f;
-        float sa = 0.0f, sb = 0.0f;
-        if (Crease::is_sharp(s)) {
-          sa = child_edge_sharpness(s, p.source(edge_dart(e)));
-          sb = child_edge_sharpness(s, p.h_target[edge_halfedge(e)]);
-          block_any |= Crease::is_sharp(sa) || Crease::is_sharp(sb) ? 1u : 0u;
-        }
-        if (p.sharp) {
-          child[2 * e] = sa;
-          child[2 * e + 1] = sb;
-        }
-        const u32 key = edge_key(e, s, sa, sb);
-        sw.edge_class[e] = key;
-        if (key == own_entry)
-          ++block_own;
-        else
-          mark<ConcurrencyTag>(used[key]);
+    classify<ConcurrencyTag>(p.ne, sw.edge_class, used, any, own, [&](u32 e, Ring&, u32& block_any) {
+      const float s = p.sharp ? p.e_sharp[e] : 0.0f;
+      float sa = 0.0f, sb = 0.0f;
+      if (Crease::is_sharp(s)) {
+        sa = child_edge_sharpness(s, p.source(edge_dart(e)));
+        sb = child_edge_sharpness(s, p.h_target[edge_halfedge(e)]);
+        block_any |= Crease::is_sharp(sa) || Crease::is_sharp(sb) ? 1u : 0u;
       }
-      atomic_add<ConcurrencyTag>(any, block_any);
-      atomic_add<ConcurrencyTag>(own, block_own);
+      if (p.sharp) {
+        child[2 * e] = sa;
+        child[2 * e + 1] = sb;
+      }
+      return edge_key(e, s, sa, sb);
     });
     std::vector<u32> class_of(used.size(), null_u32);
     for (u32 key = 0; key < used.size(); ++key) {
@@ -332,6 +322,29 @@ private:
                                      w = smooth_edge_weights(d0, d1, Mask::creases && p.sharp ? p.e_sharp[e] : 0.0f);
                                    });
     return any != 0;
+  }
+
+  // Gives each element of [0, n) its class key, key_of(i, ring, any) (which
+  // sets `any` if a child keeps some sharpness), into `cls`; marks the keys
+  // of shared entries in `used` and counts in `own` the elements of key
+  // `own_entry`. Blocks of elements may run in parallel.
+  template <class ConcurrencyTag, class KeyOf>
+  void classify(u32 n, Array<u32>& cls, std::vector<std::uint8_t>& used, u32& any, u32& own, const KeyOf& key_of)
+  {
+    for_each_block<ConcurrencyTag>(n, [&](u32 begin, u32 end) {
+      Ring ring;
+      u32 block_any = 0, block_own = 0;
+      for (u32 i = begin; i < end; ++i) {
+        const u32 key = key_of(i, ring, block_any);
+        cls[i] = key;
+        if (key == own_entry)
+          ++block_own;
+        else
+          mark<ConcurrencyTag>(used[key]);
+      }
+      atomic_add<ConcurrencyTag>(any, block_any);
+      atomic_add<ConcurrencyTag>(own, block_own);
+    });
   }
 
   // Replaces each key in `cls` by its class: `class_of[key]` for the shared
@@ -382,27 +395,17 @@ private:
       });
     std::vector<std::uint8_t> used(std::size_t(max_valence) + 2, 0);
     u32 any = 0, own = 0;
-    for_each_block<ConcurrencyTag>(p.nv, [&](u32 begin, u32 end) {
-      Ring ring;
-      u32 block_any = 0, block_own = 0;
-      for (u32 v = begin; v < end; ++v) {
-        const u32 n = valence_[v];
-        u32 key = n == 0 ? 0 : 1 + n;
-        if (p.sharp) {
-          const float vs = p.v_sharp[v];
-          child[v] = Crease::subdivide_vertex_sharpness(vs);
-          block_any |= Crease::is_sharp(child[v]) ? 1u : 0u;
-          if (n != 0 && Mask::creases && !(Crease::is_smooth(vs) && sharp_count_[v] == 0))
-            key = sharp_vertex_key(v, vs, child[v], ring, nullptr);
-        }
-        sw.vertex_class[v] = key;
-        if (key == own_entry)
-          ++block_own;
-        else
-          mark<ConcurrencyTag>(used[key]);
+    classify<ConcurrencyTag>(p.nv, sw.vertex_class, used, any, own, [&](u32 v, Ring& ring, u32& block_any) {
+      const u32 n = valence_[v];
+      u32 key = n == 0 ? 0 : 1 + n;
+      if (p.sharp) {
+        const float vs = p.v_sharp[v];
+        child[v] = Crease::subdivide_vertex_sharpness(vs);
+        block_any |= Crease::is_sharp(child[v]) ? 1u : 0u;
+        if (n != 0 && Mask::creases && !(Crease::is_smooth(vs) && sharp_count_[v] == 0))
+          key = sharp_vertex_key(v, vs, child[v], ring, nullptr);
       }
-      atomic_add<ConcurrencyTag>(any, block_any);
-      atomic_add<ConcurrencyTag>(own, block_own);
+      return key;
     });
     std::vector<u32> class_of(used.size(), null_u32);
     for (u32 key = 0; key < used.size(); ++key) {
