@@ -181,6 +181,16 @@ bool has_carried_maps(const Mobius_mesh<P>& mesh)
   return false;
 }
 
+// Calls body(v) for the vertices v in [0, n): in parallel under
+// `CGAL::Parallel_tag` where a level of n vertices would be refined so
+// (runs_in_parallel()), serially otherwise.
+template <class ConcurrencyTag, class Body>
+void for_each_vertex(u32 n, const Refinement_options& options, const Body& body)
+{
+  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices),
+                                   [&](auto tag) { for_each_index<decltype(tag)>(n, body); });
+}
+
 // Interpolates the vertex maps of `mesh` through the levels of `refiner`
 // into new maps of `out`, and gives each face of `out` the face maps' values
 // of the base face it lies in (quad and triangle splits).
@@ -201,15 +211,11 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
         std::vector<typename L::Value> base, result;
         const u32 n = u32(mesh.number_of_vertices());
         base.resize(n);
-        with_concurrency<ConcurrencyTag>(runs_in_parallel(n, refiner.options().parallel_min_vertices), [&](auto t) {
-          for_each_index<decltype(t)>(n, [&](u32 v) { base[v] = L::from((*from)[Vertex_index(v)]); });
-        });
+        for_each_vertex<ConcurrencyTag>(n, refiner.options(), [&](u32 v) { base[v] = L::from((*from)[Vertex_index(v)]); });
         refiner.template interpolate<ConcurrencyTag>(base, result);
         auto to = out.template add_property_map<Vertex_index, T>(name, from->array()->default_value()).first;
         const u32 m = u32(out.number_of_vertices());
-        with_concurrency<ConcurrencyTag>(runs_in_parallel(m, refiner.options().parallel_min_vertices), [&](auto t) {
-          for_each_index<decltype(t)>(m, [&](u32 v) { to[Vertex_index(v)] = L::to(result[v]); });
-        });
+        for_each_vertex<ConcurrencyTag>(m, refiner.options(), [&](u32 v) { to[Vertex_index(v)] = L::to(result[v]); });
       }
     });
   }
@@ -264,9 +270,7 @@ void read_points(const Mobius_mesh<P>& mesh, const VertexPointMap& vpm, const Re
 {
   const u32 n = u32(mesh.number_of_vertices());
   values.resize(n);
-  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices), [&](auto tag) {
-    for_each_index<decltype(tag)>(n, [&](u32 v) { values[v] = Point_values<P>::from(get(vpm, Vertex_index(v))); });
-  });
+  for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { values[v] = Point_values<P>::from(get(vpm, Vertex_index(v))); });
 }
 
 // The interpolated `values` as the points of `out`.
@@ -274,9 +278,7 @@ template <class ConcurrencyTag, class Values, class P>
 void write_points(const Values& values, const Refinement_options& options, Mobius_mesh<P>& out)
 {
   const u32 n = u32(out.number_of_vertices());
-  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices), [&](auto tag) {
-    for_each_index<decltype(tag)>(n, [&](u32 v) { out.point(Vertex_index(v)) = Point_values<P>::to(values[v]); });
-  });
+  for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { out.point(Vertex_index(v)) = Point_values<P>::to(values[v]); });
 }
 
 template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
