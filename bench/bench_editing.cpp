@@ -8,9 +8,10 @@
 // the mesh as large as it was. Ours run twice: with the operations' own
 // checks (each throws rather than break the mesh), and with
 // `Euler::unchecked`, as CGAL::Euler's operations run (the round still asks
-// can_flip_edge() and the link condition once). Surface_mesh reuses the
-// slots of removed elements; Mobius_mesh appends, so its rounds collect the
-// garbage every 2^16 rounds, inside the timing.
+// can_flip_edge() and the link condition once). Both meshes reuse the slots
+// of removed elements (Surface_mesh by default, Mobius_mesh with
+// set_recycle_garbage(true)); one more row runs Mobius_mesh's default,
+// appending, which collects the garbage every 2^16 rounds inside the timing.
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
@@ -113,8 +114,10 @@ template <class... Unchecked>
   return ops;
 }
 
-template <class M, class Round, class Collect>
-void random_rounds(benchmark::State& state, M mesh, Round round, Collect collect)
+// Rounds on `mesh`; `collect`: collect the garbage every 2^16 rounds (a mesh
+// that appends would otherwise grow without end).
+template <class M, class Round>
+void random_rounds(benchmark::State& state, M mesh, Round round, bool collect)
 {
   std::mt19937 rng(1);
   std::int64_t ops = 0, rounds = 0;
@@ -126,30 +129,41 @@ void random_rounds(benchmark::State& state, M mesh, Round round, Collect collect
                mesh.number_of_faces() + 2 * (1 << 16));
   for (auto _ : state) {
     ops += round(mesh, rng);
-    if ((++rounds & 0xffff) == 0)
-      collect(mesh);
+    if ((++rounds & 0xffff) == 0 && collect)
+      mesh.collect_garbage();
   }
   state.SetItemsProcessed(ops);
   state.counters["ops_per_round"] = double(ops) / double(rounds);
 }
 
+Mesh recycling(Mesh m)
+{
+  m.set_recycle_garbage(true);
+  return m;
+}
+
 void Euler_random_rounds_CGAL_ext(benchmark::State& state)
 {
   random_rounds(
-    state, ours(torus(std::size_t(state.range(0)))), [](Mesh& m, std::mt19937& r) { return round(m, r); },
-    [](Mesh& m) { m.collect_garbage(); });
+    state, recycling(ours(torus(std::size_t(state.range(0))))),
+    [](Mesh& m, std::mt19937& r) { return round(m, r); }, false);
 }
 void Euler_random_rounds_CGAL_ext_unchecked(benchmark::State& state)
 {
   random_rounds(
+    state, recycling(ours(torus(std::size_t(state.range(0))))),
+    [](Mesh& m, std::mt19937& r) { return round(m, r, CGAL_ext::Euler::unchecked); }, false);
+}
+void Euler_random_rounds_CGAL_ext_appending(benchmark::State& state)
+{
+  random_rounds(
     state, ours(torus(std::size_t(state.range(0)))),
-    [](Mesh& m, std::mt19937& r) { return round(m, r, CGAL_ext::Euler::unchecked); },
-    [](Mesh& m) { m.collect_garbage(); });
+    [](Mesh& m, std::mt19937& r) { return round(m, r, CGAL_ext::Euler::unchecked); }, true);
 }
 void Euler_random_rounds_CGAL(benchmark::State& state)
 {
   random_rounds(state, theirs(torus(std::size_t(state.range(0)))), [](SM& m, std::mt19937& r) { return round(m, r); },
-                [](SM&) {});
+                false);
 }
 
 // Removes about a tenth of the elements by collapses, then times the compaction.
@@ -210,6 +224,8 @@ int main(int argc, char** argv)
   add("euler/random_rounds_unchecked/torus_256x256/CGAL_ext", Euler_random_rounds_CGAL_ext_unchecked, 256,
       benchmark::kMicrosecond);
   add("euler/random_rounds_unchecked/torus_256x256/CGAL_Surface_mesh", Euler_random_rounds_CGAL, 256,
+      benchmark::kMicrosecond);
+  add("euler/random_rounds_appending/torus_256x256/CGAL_ext", Euler_random_rounds_CGAL_ext_appending, 256,
       benchmark::kMicrosecond);
   add("euler/random_rounds/torus_256x256/CGAL_Surface_mesh", Euler_random_rounds_CGAL, 256, benchmark::kMicrosecond);
   add("collect_garbage/torus_512x512_tenth_collapsed/CGAL_ext", Collect_garbage_CGAL_ext, 512,

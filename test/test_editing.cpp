@@ -209,13 +209,69 @@ TEST(Removal, RangesSkipRemovedElementsAndCountsExcludeThem)
   EXPECT_EQ(joined.number_of_faces(), 11u);
   EXPECT_TRUE(joined.is_removed(Face_index(off.faces + 2)));
 
-  // Adding appends: removed slots are not reused before collect_garbage().
+  // Adding appends by default: removed slots are not reused before collect_garbage().
   const Vertex_index v = m.add_vertex(Point(5, 5, 5));
   EXPECT_EQ(v.idx(), 7u);
   // The flags are the mesh's own: they cannot be removed as a property map.
   auto flags = m.property_map<Face_index, bool>("f:removed");
   ASSERT_TRUE(flags.has_value());
   EXPECT_FALSE(m.remove_property_map(*flags));
+}
+
+TEST(Removal, RecyclingTakesBackTheLastRemovedSlotsWithDefaultValues)
+{
+  Mesh m = hexagon_fan();
+  auto weight = m.add_property_map<Vertex_index, int>("v:weight", 7).first;
+  auto mark = m.add_property_map<Halfedge_index, int>("h:mark", -1).first;
+  weight[Vertex_index(3u)] = 42;
+  mark[Halfedge_index(5u)] = 9;
+  m.remove_vertex(Vertex_index(3u));
+  m.remove_vertex(Vertex_index(5u));
+  m.remove_edge(Edge_index(2u));
+  m.remove_face(Face_index(4u));
+  EXPECT_FALSE(m.does_recycle_garbage()); // appending is the default
+
+  // A copy keeps the free slots and the choice.
+  m.set_recycle_garbage(true);
+  Mesh copy = m;
+  EXPECT_TRUE(copy.does_recycle_garbage());
+  for (Mesh* mesh : {&m, &copy}) {
+    auto w = mesh->property_map<Vertex_index, int>("v:weight").value();
+    auto hm = mesh->property_map<Halfedge_index, int>("h:mark").value();
+    // Last removed, first taken: vertex 5, then vertex 3, then appended.
+    EXPECT_EQ(mesh->add_vertex(Point(1, 2, 3)).idx(), 5u);
+    const Vertex_index v = mesh->add_vertex(Point(4, 5, 6));
+    EXPECT_EQ(v.idx(), 3u);
+    EXPECT_FALSE(mesh->is_removed(v));
+    EXPECT_EQ(w[v], 7); // the default again, not 42
+    EXPECT_EQ(mesh->point(v), Point(4, 5, 6));
+    EXPECT_EQ(mesh->add_vertex().idx(), 7u);
+    EXPECT_EQ(mesh->number_of_removed_vertices(), 0u);
+
+    const Edge_index e = mesh->add_edge(Vertex_index(0u), v);
+    EXPECT_EQ(e.idx(), 2u);
+    const Halfedge_index h0(4u), h1(5u);
+    EXPECT_EQ(mesh->target(mesh->dart(h0)), Vertex_index(0u));
+    EXPECT_EQ(mesh->target(mesh->dart(h1)), v);
+    EXPECT_FALSE(mesh->next(mesh->dart(h0)).is_valid());
+    EXPECT_FALSE(mesh->face(h1).is_valid());
+    EXPECT_FALSE(mesh->is_mobius(e));
+    EXPECT_EQ(hm[h1], -1);
+    EXPECT_EQ(mesh->add_face_record(h0).idx(), 4u);
+    EXPECT_FALSE(mesh->has_garbage());
+    EXPECT_EQ(mesh->num_faces(), 6u);
+  }
+
+  // A join shifts the other's free slots; collect_garbage() empties the lists.
+  Mesh joined = hexagon_fan(), other = hexagon_fan();
+  other.remove_face(Face_index(1u));
+  joined.set_recycle_garbage(true);
+  const auto off = joined.join(other);
+  EXPECT_EQ(joined.add_face_record().idx(), off.faces + 1);
+  joined.remove_face(Face_index(0u));
+  joined.collect_garbage();
+  const std::size_t faces = joined.num_faces();
+  EXPECT_EQ(joined.add_face_record().idx(), faces); // appended: no free slot left
 }
 
 TEST(GarbageCollection, CompactsArraysAndPropertyMapsFollowTheirElements)
@@ -791,13 +847,17 @@ TEST(Euler, RefusalsThrowAndLeaveTheMeshAlone)
 
 // Runs the same random operations through CGAL::Euler on a Surface_mesh and
 // through ours, with their checks or (`unchecked`) without.
-void same_sequence_as_cgal_euler(bool unchecked)
+// `recycle`: both meshes take removed slots back (Surface_mesh's default),
+// else both append; either way they hold the same numbers of slots.
+void same_sequence_as_cgal_euler(bool unchecked, bool recycle)
 {
   using SM = CGAL::Surface_mesh<Point>;
   Mesh m;
   CGAL_ext::make_torus(m, 7, 5);
+  m.set_recycle_garbage(recycle);
   // Triangulate it the same way in both, so that collapses and flips apply.
   SM sm;
+  sm.set_recycle_garbage(recycle);
   std::map<Key, SM::Vertex_index> sm_vertex;
   for (Vertex_index v : m.vertices())
     sm_vertex[key_of(m.point(v))] = sm.add_vertex(m.point(v));
@@ -917,6 +977,9 @@ void same_sequence_as_cgal_euler(bool unchecked)
     ASSERT_TRUE(m.is_valid(true)) << "step " << step;
     ASSERT_TRUE(sm.is_valid(true)) << "step " << step;
     ASSERT_EQ(face_signature(m), face_signature(sm)) << "step " << step;
+    ASSERT_EQ(m.num_vertices(), sm.num_vertices()) << "step " << step;
+    ASSERT_EQ(m.num_edges(), sm.num_edges()) << "step " << step;
+    ASSERT_EQ(m.num_faces(), sm.num_faces()) << "step " << step;
   }
   EXPECT_GT(applied, 150);
   m.collect_garbage();
@@ -924,9 +987,15 @@ void same_sequence_as_cgal_euler(bool unchecked)
   EXPECT_EQ(face_signature(m), face_signature(sm));
 }
 
-TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh) { same_sequence_as_cgal_euler(false); }
+TEST(Euler, SameSequenceAsCgalEulerOnSurfaceMesh) { same_sequence_as_cgal_euler(false, false); }
 
-TEST(Euler, UncheckedSameSequenceAsCgalEulerOnSurfaceMesh) { same_sequence_as_cgal_euler(true); }
+TEST(Euler, UncheckedSameSequenceAsCgalEulerOnSurfaceMesh) { same_sequence_as_cgal_euler(true, false); }
+
+TEST(Euler, SameSequenceAsCgalEulerRecyclingTheSlots)
+{
+  same_sequence_as_cgal_euler(false, true);
+  same_sequence_as_cgal_euler(true, true);
+}
 
 #if !defined(NDEBUG) && !defined(CGAL_NO_PRECONDITIONS)
 // Without their checks, the operations still assert them where CGAL's
@@ -947,11 +1016,15 @@ TEST(Euler, UncheckedOverloadsAssertTheirChecksInDebugBuilds)
 
 // Random valid operations on a one-sided surface, with the mesh checked after
 // each: χ and orientability never change but by the holes made and filled.
+// `recycle`: the mesh takes removed slots back; it then never holds more
+// slots than it had live elements at its largest.
 template <class P>
-void stress(CGAL_ext::Mobius_mesh<P> m, int steps, unsigned seed)
+void stress(CGAL_ext::Mobius_mesh<P> m, int steps, unsigned seed, bool recycle = false)
 {
   using M = CGAL_ext::Mobius_mesh<P>;
   std::mt19937 rng(seed);
+  m.set_recycle_garbage(recycle);
+  std::size_t peak_v = m.number_of_vertices(), peak_e = m.number_of_edges(), peak_f = m.number_of_faces();
   Counts expected = counts(m);
   auto tag = m.template add_property_map<Vertex_index, int>("v:tag", -1).first;
   int next_tag = 0;
@@ -1006,6 +1079,14 @@ void stress(CGAL_ext::Mobius_mesh<P> m, int steps, unsigned seed)
     ASSERT_EQ(now.chi, expected.chi) << "step " << s;
     ASSERT_EQ(now.borders, expected.borders) << "step " << s;
     ASSERT_EQ(now.orientable, expected.orientable) << "step " << s;
+    peak_v = (std::max)(peak_v, std::size_t(m.number_of_vertices()));
+    peak_e = (std::max)(peak_e, std::size_t(m.number_of_edges()));
+    peak_f = (std::max)(peak_f, std::size_t(m.number_of_faces()));
+  }
+  if (recycle) {
+    EXPECT_EQ(m.num_vertices(), peak_v);
+    EXPECT_EQ(m.num_edges(), peak_e);
+    EXPECT_EQ(m.num_faces(), peak_f);
   }
   for (Vertex_index v : m.vertices())
     point_of_tag[tag[v]] = key_of(m.point(v));
@@ -1029,6 +1110,8 @@ TEST(EulerStress, MobiusStripKleinBottleAndBoysSurfaceDouble)
   stress(triangles, 1500, 2);
   stress(klein, 1500, 3);
   stress(boy, 1500, 4);
+  stress(strip, 1500, 7, true);
+  stress(klein, 1500, 8, true);
 }
 
 TEST(EulerStress, KleinBottleAndBoysSurfaceEpeck)
@@ -1037,7 +1120,7 @@ TEST(EulerStress, KleinBottleAndBoysSurfaceEpeck)
   CGAL_ext::make_klein_bottle(klein, 6, 5);
   CGAL_ext::make_projective_plane(boy, 2);
   stress(klein, 500, 5);
-  stress(boy, 500, 6);
+  stress(boy, 500, 6, true);
 }
 
 // ---------------------------------------------------------------- offsets

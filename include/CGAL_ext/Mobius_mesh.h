@@ -333,6 +333,10 @@ public:
       fprops_ = o.fprops_;
       points_ = Property_map<Vertex_index, Point>(vprops_.template get<Point>("v:point"));
       find_removal_marks(o.removed_vertices_.count, o.removed_edges_.count, o.removed_faces_.count);
+      removed_vertices_.free = o.removed_vertices_.free;
+      removed_edges_.free = o.removed_edges_.free;
+      removed_faces_.free = o.removed_faces_.free;
+      recycle_ = o.recycle_;
     }
     return *this;
   }
@@ -352,10 +356,11 @@ public:
       eprops_ = std::move(o.eprops_);
       fprops_ = std::move(o.fprops_);
       points_ = o.points_;
-      removed_vertices_ = o.removed_vertices_;
-      removed_edges_ = o.removed_edges_;
-      removed_faces_ = o.removed_faces_;
+      removed_vertices_ = std::move(o.removed_vertices_);
+      removed_edges_ = std::move(o.removed_edges_);
+      removed_faces_ = std::move(o.removed_faces_);
       mobius_edges_ = o.mobius_edges_;
+      recycle_ = o.recycle_;
       o.clear();
     }
     return *this;
@@ -670,6 +675,11 @@ public:
   /// Adds a vertex with no halfedge and a default point.
   Vertex_index add_vertex_record()
   {
+    if (recycle_ && !removed_vertices_.free.empty()) {
+      const size_type v = reuse_slot(vprops_, removed_vertices_);
+      v_halfedge_[v] = Dart();
+      return Vertex_index(v);
+    }
     if (v_halfedge_.size() >= internal::max_vertices)
       refuse_growth("add_vertex()", 1, 0, 0);
     v_halfedge_.push_back(Dart());
@@ -679,6 +689,8 @@ public:
   /// Adds an edge with two unlinked halfedges `2e` (target `t0`) and `2e+1` (target `t1`).
   Edge_index add_edge(Vertex_index t0, Vertex_index t1, bool mobius = false)
   {
+    if (recycle_ && !removed_edges_.free.empty())
+      return reuse_edge(t0, t1, mobius);
     if (e_mobius_.size() >= internal::max_edges)
       refuse_growth("add_edge()", 0, 1, 0);
     // Euler operations add edges one at a time: one test for room in all the
@@ -704,6 +716,11 @@ public:
   /// Adds a face whose stored halfedge is `h`; no halfedge is linked to it.
   Face_index add_face_record(Halfedge_index h = Halfedge_index())
   {
+    if (recycle_ && !removed_faces_.free.empty()) {
+      const size_type f = reuse_slot(fprops_, removed_faces_);
+      f_halfedge_[f] = h;
+      return Face_index(f);
+    }
     if (f_halfedge_.size() >= internal::max_faces)
       refuse_growth("add_face()", 0, 0, 1);
     f_halfedge_.push_back(h);
@@ -781,9 +798,23 @@ public:
   /// usually) keeps the rest of the mesh consistent. Removed elements are
   /// skipped by the ranges and not counted by `number_of_*()`, but keep their
   /// indices until `collect_garbage()` compacts every array and every property
-  /// map. Elements added later are appended: removed slots are not reused, so
-  /// indices handed out stay unique until the garbage is collected.
+  /// map.
+  ///
+  /// Elements added after a removal are appended by default, so indices
+  /// handed out stay unique until the garbage is collected: an algorithm may
+  /// keep the indices of removed elements (in a priority queue, say) and
+  /// find them still removed. `set_recycle_garbage(true)` makes the adders
+  /// take the most recently removed slot of their kind instead, as
+  /// `Surface_mesh` does by default: a mesh edited for a long time then
+  /// stays as large as its live elements, with no collection, and the slots
+  /// in use stay in the cache. A recycled slot is unlinked and its property
+  /// values are the defaults again.
   /// @{
+
+  /// Whether the adders reuse the slots of removed elements (default: false).
+  void set_recycle_garbage(bool recycle) { recycle_ = recycle; }
+  /// True if the adders reuse the slots of removed elements.
+  bool does_recycle_garbage() const { return recycle_; }
 
   /// Marks `v` removed.
   void remove_vertex(Vertex_index v) { mark(vprops_, "v:removed", removed_vertices_, v.idx()); }
@@ -835,6 +866,8 @@ public:
     /// The new index of `h` (halfedges move with their edge); null if removed or null.
     Halfedge_index operator()(Halfedge_index h) const
     {
+      if (!h.is_valid())
+        return h;
       const Edge_index e = (*this)(Edge_index(internal::dart_encoding::edge_of_halfedge(h.idx())));
       return e.is_valid() ? Halfedge_index(internal::dart_encoding::halfedge_of_edge(e.idx(), h.idx() & 1u))
                           : Halfedge_index();
@@ -865,12 +898,15 @@ private:
   friend class internal::Plain_reader;
 
   // The removed elements of one kind: their flags, a property array created
-  // at the first removal (so a mesh that never removes pays nothing), and
-  // their number.
+  // at the first removal (so a mesh that never removes pays nothing), their
+  // number, and their indices in the order of removal (the slots recycling
+  // takes back, last first). Removal changes no link, so the free slots are
+  // listed here rather than threaded through the links as Surface_mesh does.
   struct Removal_marks
   {
     internal::Property_array<bool>* flags = nullptr;
     size_type count = 0;
+    std::vector<size_type> free;
     bool is_marked(size_type i) const { return flags != nullptr && flags->data()[i].value; }
   };
 
@@ -935,8 +971,35 @@ private:
     if (marks.flags == nullptr)
       create_marks(props, name, marks);
     bool& flag = marks.flags->data()[i].value;
-    marks.count += flag ? 0 : 1;
+    if (!flag) {
+      ++marks.count;
+      marks.free.push_back(i);
+    }
     flag = true;
+  }
+  // Takes back the most recently removed slot of one kind: its property
+  // values (the removal flag among them) go back to their defaults.
+  static size_type reuse_slot(internal::Property_container& props, Removal_marks& marks)
+  {
+    const size_type i = marks.free.back();
+    marks.free.pop_back();
+    --marks.count;
+    props.reset(i);
+    return i;
+  }
+  // add_edge() on a recycled slot: two unlinked halfedges, as a new edge has.
+  Edge_index reuse_edge(Vertex_index t0, Vertex_index t1, bool mobius)
+  {
+    const Edge_index e(reuse_slot(eprops_, removed_edges_));
+    for (unsigned k = 0; k < 2; ++k) {
+      const size_type h = internal::dart_encoding::halfedge_of_edge(e.idx(), k);
+      h_target_[h] = k == 0 ? t0 : t1;
+      h_next_[h] = h_prev_[h] = Dart();
+      h_face_[h] = Face_index();
+      hprops_.reset(h);
+    }
+    set_mobius(e, mobius);
+    return e;
   }
   [[gnu::noinline]] static void create_marks(internal::Property_container& props, const char* name,
                                              Removal_marks& marks)
@@ -954,9 +1017,12 @@ private:
   // are found again by name, with the numbers of removed elements given.
   void find_removal_marks(size_type nv, size_type ne, size_type nf)
   {
-    removed_vertices_ = {vprops_.template get<bool>("v:removed"), nv};
-    removed_edges_ = {eprops_.template get<bool>("e:removed"), ne};
-    removed_faces_ = {fprops_.template get<bool>("f:removed"), nf};
+    removed_vertices_.flags = vprops_.template get<bool>("v:removed");
+    removed_edges_.flags = eprops_.template get<bool>("e:removed");
+    removed_faces_.flags = fprops_.template get<bool>("f:removed");
+    removed_vertices_.count = nv;
+    removed_edges_.count = ne;
+    removed_faces_.count = nf;
   }
   // Forgets every removal (the arrays are replaced or compacted).
   void drop_removal_marks()
@@ -1075,6 +1141,8 @@ private:
   internal::Property_container vprops_, hprops_, eprops_, fprops_;
   Property_map<Vertex_index, Point> points_;
   Removal_marks removed_vertices_, removed_edges_, removed_faces_;
+  // Whether the adders take removed slots back (set_recycle_garbage()).
+  bool recycle_ = false;
   // How many edge slots (removed ones included) are Möbius, or
   // `unknown_count` while arrays written from outside are not counted yet
   // (`Connectivity_access::overwrite()` until `reset_property_maps()`).
@@ -1506,6 +1574,13 @@ typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
   points_ = Property_map<Vertex_index, Point>(vprops_.template get<Point>("v:point"));
   find_removal_marks(removed_vertices_.count + o.removed_vertices_.count,
                      removed_edges_.count + o.removed_edges_.count, removed_faces_.count + o.removed_faces_.count);
+  auto append_free = [](std::vector<size_type>& to, const std::vector<size_type>& from, size_type shift) {
+    for (size_type i : from)
+      to.push_back(i + shift);
+  };
+  append_free(removed_vertices_.free, o.removed_vertices_.free, off.vertices);
+  append_free(removed_edges_.free, o.removed_edges_.free, off.edges);
+  append_free(removed_faces_.free, o.removed_faces_.free, off.faces);
   return off;
 }
 

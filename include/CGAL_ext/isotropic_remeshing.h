@@ -128,7 +128,18 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
   const internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
   triangulate_faces(mesh);
-  internal::Isotropic_remesher<P>(mesh, options).run();
+  {
+    // The remesher keeps edge indices across splits and collapses: added
+    // elements must not take the slots of removed ones while it runs.
+    struct Appending
+    {
+      Mobius_mesh<P>& mesh;
+      const bool recycled = mesh.does_recycle_garbage();
+      explicit Appending(Mobius_mesh<P>& m) : mesh(m) { mesh.set_recycle_garbage(false); }
+      ~Appending() { mesh.set_recycle_garbage(recycled); }
+    } appending(mesh);
+    internal::Isotropic_remesher<P>(mesh, options).run();
+  }
   mesh.collect_garbage();
 }
 

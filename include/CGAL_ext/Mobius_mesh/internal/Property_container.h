@@ -65,6 +65,8 @@ public:
   // Element `to` takes the value of element `from`: an element moved into
   // another's slot (in-place edits that keep the arrays compact).
   virtual void copy(std::size_t from, std::size_t to) = 0;
+  // Element `i` takes the default value again (a recycled slot).
+  virtual void reset(std::size_t i) = 0;
   virtual std::unique_ptr<Base_property_array> clone() const = 0;
   virtual std::unique_ptr<Base_property_array> empty_clone() const = 0;
   virtual const std::type_info& value_type() const = 0;
@@ -157,6 +159,7 @@ public:
     data_.resize(kept.size(), Stored(default_));
   }
   void copy(std::size_t from, std::size_t to) override { data_[to] = data_[from]; }
+  void reset(std::size_t i) override { data_[i] = Stored(default_); }
   std::unique_ptr<Base_property_array> clone() const override
   {
     return std::make_unique<Property_array>(*this);
@@ -307,6 +310,13 @@ public:
     for (auto& a : arrays_)
       a->compact(kept);
     size_ = kept.size();
+  }
+
+  // Element `i` of every array takes its default value again.
+  void reset(std::size_t i)
+  {
+    for (auto& a : arrays_)
+      a->reset(i);
   }
 
   // Element `to` of every array takes the value of element `from`.
