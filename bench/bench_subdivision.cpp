@@ -8,6 +8,10 @@
 //   catmull_clark/octahedron   6 vertices, 8 triangles, levels 1-8
 //   catmull_clark/torus100x100 CGAL_ext::make_torus(mesh, 100, 100), 10 000 quads, levels 1-5
 //   loop/icosahedron           12 vertices, 20 triangles, levels 1-8
+//   bilinear/torus100x100      the same torus, levels 1-5 (CGAL: PQQ with Linear_mask_3;
+//                              OpenSubdiv: its bilinear scheme)
+//   doo_sabin/torus100x100     the same torus, levels 1-4 (CGAL only: OpenSubdiv has none)
+//   sqrt3/icosahedron          levels 1-10 (CGAL only)
 // and, ours alone (the peers take no one-sided surface), Catmull–Clark of
 //   catmull_clark/mobius_strip625x25   make_mobius_strip(mesh, 625, 25), 15 625 quads, level 3: 1 M quads
 //   catmull_clark/mobius_strip625x64   make_mobius_strip(mesh, 625, 64), 40 000 quads, level 4: 10.24 M quads
@@ -107,6 +111,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <tuple>
 #include <optional>
 #include <string>
 #include <thread>
@@ -168,7 +173,10 @@ enum class Input {
   mobius_strip_625x25,
   mobius_strip_625x64,
   klein_bottle_125x125,
-  klein_bottle_200x200
+  klein_bottle_200x200,
+  torus_bilinear,
+  torus_doo_sabin,
+  icosahedron_sqrt3
 };
 
 struct Input_data
@@ -194,6 +202,9 @@ Input_data make_input(Input which)
   case Input::mobius_strip_625x64: return {mobius_strip_soup(625, 64), Scheme::catmull_clark, 0, 2 * 625, false};
   case Input::klein_bottle_125x125: return {klein_bottle_soup(125, 125), Scheme::catmull_clark, 0, 0, false};
   case Input::klein_bottle_200x200: return {klein_bottle_soup(200, 200), Scheme::catmull_clark, 0, 0, false};
+  case Input::torus_bilinear: return {torus_soup(100, 100), Scheme::bilinear, 0, 0, true};
+  case Input::torus_doo_sabin: return {torus_soup(100, 100), Scheme::doo_sabin, 0, 0, true};
+  case Input::icosahedron_sqrt3: return {icosahedron(), Scheme::sqrt3, 2, 0, true};
   }
   std::abort();
 }
@@ -213,13 +224,30 @@ struct Size
 };
 
 // Counts of the result after `levels` >= 1 steps: a step of Catmull–Clark
-// turns a face of n sides into n quads, of Loop a triangle into 4, and halves
-// every border edge. Every halfedge with a face is one corner, so
-// 4F = 2E - B (quads) or 3F = 2E - B (triangles); then V = χ + E - F.
+// (or bilinear) turns a face of n sides into n quads, of Loop a triangle
+// into 4, and halves every border edge. Every halfedge with a face is one
+// corner, so 4F = 2E - B (quads) or 3F = 2E - B (triangles); then
+// V = χ + E - F. On closed meshes: a Doo–Sabin step makes a vertex per
+// corner (V' = 2E, each of valence 4: E' = 4E) and a face per face, edge and
+// vertex (F' = F + E + V); a √3 step a vertex per triangle (V' = V + F), three
+// triangles per triangle (F' = 3F) and three edges per triangle (E' = E + 3F).
 Size expected_size(const Input_data& in, unsigned levels)
 {
+  if (in.scheme == Scheme::doo_sabin || in.scheme == Scheme::sqrt3) {
+    std::size_t f = in.soup.polygons.size(), e = 0, v = in.soup.points.size();
+    for (const Polygon& p : in.soup.polygons)
+      e += p.size();
+    e /= 2; // closed: every edge has two corners
+    for (unsigned l = 0; l < levels; ++l) {
+      if (in.scheme == Scheme::doo_sabin)
+        std::tie(v, e, f) = std::make_tuple(2 * e, 4 * e, f + e + v);
+      else
+        std::tie(v, e, f) = std::make_tuple(v + f, e + 3 * f, 3 * f);
+    }
+    return {v, e, f};
+  }
   std::size_t f = 0;
-  if (in.scheme == Scheme::catmull_clark) {
+  if (in.scheme == Scheme::catmull_clark || in.scheme == Scheme::bilinear) {
     for (const Polygon& p : in.soup.polygons)
       f += p.size();
     f <<= 2 * (levels - 1);
@@ -227,7 +255,7 @@ Size expected_size(const Input_data& in, unsigned levels)
     f = in.soup.polygons.size() << (2 * levels);
   }
   const std::size_t b = in.border_edges << levels;
-  const std::size_t e = ((in.scheme == Scheme::catmull_clark ? 4 : 3) * f + b) / 2;
+  const std::size_t e = ((in.scheme == Scheme::loop ? 3 : 4) * f + b) / 2;
   return {std::size_t(in.euler_characteristic + (long long)e - (long long)f), e, f};
 }
 
@@ -302,10 +330,15 @@ public:
   {
     namespace SM = CGAL::Subdivision_method_3;
     const auto np = CGAL::parameters::number_of_iterations(levels_);
-    if (scheme_ == Scheme::catmull_clark)
-      SM::CatmullClark_subdivision(*work_, np);
-    else
-      SM::Loop_subdivision(*work_, np);
+    switch (scheme_) {
+    case Scheme::catmull_clark: SM::CatmullClark_subdivision(*work_, np); return;
+    case Scheme::loop: SM::Loop_subdivision(*work_, np); return;
+    case Scheme::bilinear: // CGAL's bilinear: the quad split with its linear mask
+      SM::PQQ(*work_, CGAL::Linear_mask_3<Mesh>(&*work_, get(CGAL::vertex_point, *work_)), np);
+      return;
+    case Scheme::doo_sabin: SM::DooSabin_subdivision(*work_, np); return;
+    case Scheme::sqrt3: SM::Sqrt3_subdivision(*work_, np); return;
+    }
   }
   void release() override { work_.reset(); }
   Result result() const override { return {work_->number_of_vertices(), work_->number_of_faces()}; }
@@ -356,7 +389,9 @@ public:
     }
     for (const Point& p : in.soup.points)
       base_.push_back({p.x(), p.y(), p.z()});
-    type_ = in.scheme == Scheme::catmull_clark ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP;
+    type_ = in.scheme == Scheme::catmull_clark ? Sdc::SCHEME_CATMARK
+            : in.scheme == Scheme::loop        ? Sdc::SCHEME_LOOP
+                                               : Sdc::SCHEME_BILINEAR;
     options_.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY); // ours' default
   }
   void reset() override
@@ -532,6 +567,10 @@ void add_peers(Scheme scheme, std::vector<Implementation>& all)
 {
   all.push_back(
     {"CGAL_Surface_mesh", [](const Input_data& d, unsigned n, unsigned) { return std::make_unique<Cgal>(d, n); }});
+  // OpenSubdiv has no Doo–Sabin or √3, OpenMesh's uniform subdividers here
+  // are its Catmull–Clark and Loop.
+  if (scheme == Scheme::doo_sabin || scheme == Scheme::sqrt3)
+    return;
 #if CGAL_EXT_HAVE_OPENSUBDIV
   all.push_back({"OpenSubdiv_Far",
                  [](const Input_data& d, unsigned n, unsigned) { return std::make_unique<Osd>(d, n, false); }});
@@ -540,6 +579,8 @@ void add_peers(Scheme scheme, std::vector<Implementation>& all)
 #endif
 #if CGAL_EXT_HAVE_OPENMESH
   using namespace OpenMesh::Subdivider::Uniform;
+  if (scheme == Scheme::bilinear)
+    return;
   if (scheme == Scheme::catmull_clark)
     all.push_back({"OpenMesh_PolyMesh", [](const Input_data& d, unsigned n, unsigned) {
                      return std::make_unique<Om<Om_poly_mesh, CatmullClarkT>>(d, n);
@@ -632,7 +673,10 @@ const std::vector<Case>& cases()
                                         {Input::mobius_strip_625x25, "catmull_clark/mobius_strip625x25", 3, 3},
                                         {Input::mobius_strip_625x64, "catmull_clark/mobius_strip625x64", 4, 4},
                                         {Input::klein_bottle_125x125, "catmull_clark/klein_bottle125x125", 3, 3},
-                                        {Input::klein_bottle_200x200, "catmull_clark/klein_bottle200x200", 4, 4}};
+                                        {Input::klein_bottle_200x200, "catmull_clark/klein_bottle200x200", 4, 4},
+                                        {Input::torus_bilinear, "bilinear/torus100x100", 1, 5},
+                                        {Input::torus_doo_sabin, "doo_sabin/torus100x100", 1, 4},
+                                        {Input::icosahedron_sqrt3, "sqrt3/icosahedron", 1, 10}};
   return all;
 }
 

@@ -30,7 +30,7 @@ struct Soup
   std::vector<Polygon> polygons;
 };
 
-enum class Scheme { catmull_clark, loop };
+enum class Scheme { catmull_clark, loop, bilinear, doo_sabin, sqrt3 };
 
 /// A `CGAL_ext::Mobius_mesh<Point>`.
 class Our_mesh
@@ -47,7 +47,8 @@ public:
   void assign(const Our_mesh& other);
   void clear();
 
-  /// `Subdivision::catmull_clark` / `loop` with `number_of_iterations(levels)`;
+  /// `Subdivision::catmull_clark` / `loop` / `bilinear` / `doo_sabin` / `sqrt3`
+  /// with `number_of_iterations(levels)`;
   /// with `parallel`, their `CGAL::Parallel_tag` form (see `parallel_available`).
   void subdivide(Scheme scheme, unsigned levels, bool parallel);
   /// One Catmull–Clark step through `Subdivision::Refiner::refine_and_interpolate`

@@ -48,21 +48,25 @@ void Our_mesh::subdivide(Scheme scheme, unsigned levels, bool parallel)
   namespace S = CGAL_ext::Subdivision;
   const auto np = CGAL_ext::parameters::number_of_iterations(levels);
   auto& mesh = impl_->mesh;
+  auto run = [&](auto tag) {
+    using Tag = decltype(tag);
+    switch (scheme) {
+    case Scheme::catmull_clark: S::catmull_clark<Tag>(mesh, np); return;
+    case Scheme::loop: S::loop<Tag>(mesh, np); return;
+    case Scheme::bilinear: S::bilinear<Tag>(mesh, np); return;
+    case Scheme::doo_sabin: S::doo_sabin<Tag>(mesh, np); return;
+    case Scheme::sqrt3: S::sqrt3<Tag>(mesh, np); return;
+    }
+  };
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
   if (parallel) {
-    if (scheme == Scheme::catmull_clark)
-      S::catmull_clark<CGAL::Parallel_tag>(mesh, np);
-    else
-      S::loop<CGAL::Parallel_tag>(mesh, np);
+    run(CGAL::Parallel_tag());
     return;
   }
 #else
   (void)parallel; // registered only when parallel_available()
 #endif
-  if (scheme == Scheme::catmull_clark)
-    S::catmull_clark(mesh, np);
-  else
-    S::loop(mesh, np);
+  run(CGAL::Sequential_tag());
 }
 
 void Our_mesh::refine_once(bool parallel, std::uint32_t parallel_min_vertices)
