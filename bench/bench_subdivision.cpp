@@ -11,7 +11,7 @@
 //   bilinear/torus100x100      the same torus, levels 1-5 (CGAL: PQQ with Linear_mask_3;
 //                              OpenSubdiv: its bilinear scheme)
 //   doo_sabin/torus100x100     the same torus, levels 1-4 (CGAL only: OpenSubdiv has none)
-//   sqrt3/icosahedron          levels 1-10 (CGAL only)
+//   sqrt3/icosahedron          levels 1-10 (CGAL and OpenMesh)
 // and, ours alone (the peers take no one-sided surface), Catmull–Clark of
 //   catmull_clark/mobius_strip625x25   make_mobius_strip(mesh, 625, 25), 15 625 quads, level 3: 1 M quads
 //   catmull_clark/mobius_strip625x64   make_mobius_strip(mesh, 625, 64), 40 000 quads, level 4: 10.24 M quads
@@ -93,6 +93,7 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 #pragma GCC diagnostic pop
 #endif
 
@@ -460,7 +461,7 @@ struct Om_traits : OpenMesh::DefaultTraits
 using Om_poly_mesh = OpenMesh::PolyMesh_ArrayKernelT<Om_traits>;
 using Om_tri_mesh = OpenMesh::TriMesh_ArrayKernelT<Om_traits>;
 
-// Catmull–Clark needs a PolyMesh, Loop a TriMesh.
+// Catmull–Clark needs a PolyMesh, Loop and √3 a TriMesh.
 template <class Mesh, template <class, class> class Subdivider>
 class Om final : public Runner
 {
@@ -567,27 +568,32 @@ void add_peers(Scheme scheme, std::vector<Implementation>& all)
 {
   all.push_back(
     {"CGAL_Surface_mesh", [](const Input_data& d, unsigned n, unsigned) { return std::make_unique<Cgal>(d, n); }});
-  // OpenSubdiv has no Doo–Sabin or √3, OpenMesh's uniform subdividers here
-  // are its Catmull–Clark and Loop.
-  if (scheme == Scheme::doo_sabin || scheme == Scheme::sqrt3)
-    return;
+  // OpenSubdiv has no Doo–Sabin or √3; OpenMesh has Catmull–Clark, Loop and
+  // √3 among its uniform subdividers.
+  const bool opensubdiv = scheme != Scheme::doo_sabin && scheme != Scheme::sqrt3;
 #if CGAL_EXT_HAVE_OPENSUBDIV
+  if (opensubdiv) {
   all.push_back({"OpenSubdiv_Far",
                  [](const Input_data& d, unsigned n, unsigned) { return std::make_unique<Osd>(d, n, false); }});
   all.push_back({"OpenSubdiv_Far_full_topology",
                  [](const Input_data& d, unsigned n, unsigned) { return std::make_unique<Osd>(d, n, true); }});
+  }
+#else
+  (void)opensubdiv;
 #endif
 #if CGAL_EXT_HAVE_OPENMESH
   using namespace OpenMesh::Subdivider::Uniform;
-  if (scheme == Scheme::bilinear)
-    return;
   if (scheme == Scheme::catmull_clark)
     all.push_back({"OpenMesh_PolyMesh", [](const Input_data& d, unsigned n, unsigned) {
                      return std::make_unique<Om<Om_poly_mesh, CatmullClarkT>>(d, n);
                    }});
-  else
+  else if (scheme == Scheme::loop)
     all.push_back({"OpenMesh_TriMesh", [](const Input_data& d, unsigned n, unsigned) {
                      return std::make_unique<Om<Om_tri_mesh, LoopT>>(d, n);
+                   }});
+  else if (scheme == Scheme::sqrt3)
+    all.push_back({"OpenMesh_TriMesh", [](const Input_data& d, unsigned n, unsigned) {
+                     return std::make_unique<Om<Om_tri_mesh, Sqrt3T>>(d, n);
                    }});
 #else
   (void)scheme;
