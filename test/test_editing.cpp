@@ -238,7 +238,8 @@ TEST(Removal, RecyclingTakesBackTheLastRemovedSlotsWithDefaultValues)
   for (Mesh* mesh : {&m, &copy}) {
     auto w = mesh->property_map<Vertex_index, int>("v:weight").value();
     auto hm = mesh->property_map<Halfedge_index, int>("h:mark").value();
-    // Last removed, first taken: vertex 5, then vertex 3, then appended.
+    // Slots removed before recycling was turned on come back highest index
+    // first: vertex 5, then vertex 3; then new slots are appended.
     EXPECT_EQ(mesh->add_vertex(Point(1, 2, 3)).idx(), 5u);
     const Vertex_index v = mesh->add_vertex(Point(4, 5, 6));
     EXPECT_EQ(v.idx(), 3u);
@@ -262,7 +263,15 @@ TEST(Removal, RecyclingTakesBackTheLastRemovedSlotsWithDefaultValues)
     EXPECT_EQ(mesh->num_faces(), 6u);
   }
 
-  // A join shifts the other's free slots; collect_garbage() empties the lists.
+  // Slots removed while recycling come back last removed first.
+  Mesh recycling = hexagon_fan();
+  recycling.set_recycle_garbage(true);
+  for (unsigned f : {1u, 4u, 2u})
+    recycling.remove_face(Face_index(f));
+  for (unsigned f : {2u, 4u, 1u})
+    EXPECT_EQ(recycling.add_face_record().idx(), f);
+
+  // A join lists the other's removed slots too; collect_garbage() empties the lists.
   Mesh joined = hexagon_fan(), other = hexagon_fan();
   other.remove_face(Face_index(1u));
   joined.set_recycle_garbage(true);

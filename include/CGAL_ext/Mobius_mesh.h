@@ -805,23 +805,32 @@ public:
   /// keep the indices of removed elements (in a priority queue, say) and
   /// find them still removed. `set_recycle_garbage(true)` makes the adders
   /// take the most recently removed slot of their kind instead, as
-  /// `Surface_mesh` does by default: a mesh edited for a long time then
+  /// `Surface_mesh` does by default (a mesh that appends does not list its
+  /// removed slots: turning recycling on lists them, highest index taken
+  /// first): a mesh edited for a long time then
   /// stays as large as its live elements, with no collection, and the slots
   /// in use stay in the cache. A recycled slot is unlinked and its property
   /// values are the defaults again.
   /// @{
 
   /// Whether the adders reuse the slots of removed elements (default: false).
-  void set_recycle_garbage(bool recycle) { recycle_ = recycle; }
+  /// Turning it on lists the slots already removed (highest index taken
+  /// first); later removals are taken back last removed first.
+  void set_recycle_garbage(bool recycle)
+  {
+    if (recycle && !recycle_)
+      list_free_slots();
+    recycle_ = recycle;
+  }
   /// True if the adders reuse the slots of removed elements.
   bool does_recycle_garbage() const { return recycle_; }
 
   /// Marks `v` removed.
-  void remove_vertex(Vertex_index v) { mark(vprops_, "v:removed", removed_vertices_, v.idx()); }
+  void remove_vertex(Vertex_index v) { mark(vprops_, "v:removed", removed_vertices_, v.idx(), recycle_); }
   /// Marks `e` and its two halfedges removed.
-  void remove_edge(Edge_index e) { mark(eprops_, "e:removed", removed_edges_, e.idx()); }
+  void remove_edge(Edge_index e) { mark(eprops_, "e:removed", removed_edges_, e.idx(), recycle_); }
   /// Marks `f` removed.
-  void remove_face(Face_index f) { mark(fprops_, "f:removed", removed_faces_, f.idx()); }
+  void remove_face(Face_index f) { mark(fprops_, "f:removed", removed_faces_, f.idx(), recycle_); }
 
   /// True if `v` is marked removed.
   bool is_removed(Vertex_index v) const { return removed_vertices_.is_marked(v.idx()); }
@@ -899,9 +908,11 @@ private:
 
   // The removed elements of one kind: their flags, a property array created
   // at the first removal (so a mesh that never removes pays nothing), their
-  // number, and their indices in the order of removal (the slots recycling
-  // takes back, last first). Removal changes no link, so the free slots are
-  // listed here rather than threaded through the links as Surface_mesh does.
+  // number, and, while the mesh recycles, their indices in the order of
+  // removal (the slots recycling takes back, last first). Removal changes no
+  // link, so the free slots are listed here rather than threaded through the
+  // links as Surface_mesh does; a mesh that appends lists none, so that a
+  // long decimation does not hold a list of everything it removed.
   struct Removal_marks
   {
     internal::Property_array<bool>* flags = nullptr;
@@ -966,16 +977,32 @@ private:
 
   // Euler operations mark elements at every step: the flags are created
   // once, out of line, and the marking itself stays small enough to inline.
-  static void mark(internal::Property_container& props, const char* name, Removal_marks& marks, size_type i)
+  static void mark(internal::Property_container& props, const char* name, Removal_marks& marks, size_type i,
+                   bool list_free)
   {
     if (marks.flags == nullptr)
       create_marks(props, name, marks);
     bool& flag = marks.flags->data()[i].value;
     if (!flag) {
       ++marks.count;
-      marks.free.push_back(i);
+      if (list_free)
+        marks.free.push_back(i);
     }
     flag = true;
+  }
+  // Lists every removed slot as free, in index order (recycling turned on,
+  // or a join while recycling).
+  void list_free_slots()
+  {
+    for (Removal_marks* marks : {&removed_vertices_, &removed_edges_, &removed_faces_}) {
+      marks->free.clear();
+      if (marks->flags == nullptr)
+        continue;
+      const auto& flags = marks->flags->data();
+      for (size_type i = 0; i < size_type(flags.size()); ++i)
+        if (flags[i].value)
+          marks->free.push_back(i);
+    }
   }
   // Takes back the most recently removed slot of one kind: its property
   // values (the removal flag among them) go back to their defaults.
@@ -1574,13 +1601,8 @@ typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
   points_ = Property_map<Vertex_index, Point>(vprops_.template get<Point>("v:point"));
   find_removal_marks(removed_vertices_.count + o.removed_vertices_.count,
                      removed_edges_.count + o.removed_edges_.count, removed_faces_.count + o.removed_faces_.count);
-  auto append_free = [](std::vector<size_type>& to, const std::vector<size_type>& from, size_type shift) {
-    for (size_type i : from)
-      to.push_back(i + shift);
-  };
-  append_free(removed_vertices_.free, o.removed_vertices_.free, off.vertices);
-  append_free(removed_edges_.free, o.removed_edges_.free, off.edges);
-  append_free(removed_faces_.free, o.removed_faces_.free, off.faces);
+  if (recycle_)
+    list_free_slots(); // the other mesh's removed slots too, whether it recycled or not
   return off;
 }
 
