@@ -122,9 +122,10 @@ void random_rounds(benchmark::State& state, M mesh, Round round, bool collect)
   std::mt19937 rng(1);
   std::int64_t ops = 0, rounds = 0;
   // Room for the rounds between two collections (a round adds a vertex,
-  // three edges and two faces), so that the first round does not pay the
-  // arrays' first growth, a copy of the whole mesh: that would weigh on
-  // short runs only (as under callgrind).
+  // three edges and two faces; a recycling mesh grows in its first round
+  // only), so that the first round does not pay the arrays' first growth, a
+  // copy of the whole mesh: that would weigh on short runs only (as under
+  // callgrind).
   mesh.reserve(mesh.number_of_vertices() + (1 << 16), mesh.number_of_edges() + 3 * (1 << 16),
                mesh.number_of_faces() + 2 * (1 << 16));
   for (auto _ : state) {
