@@ -58,8 +58,10 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
 /// `target_edge_length` (L), by Botsch and Kobbelt's loop, as
 /// `CGAL::Polygon_mesh_processing::isotropic_remeshing()` does: each
 /// iteration splits the edges longer than 4/3 L at their midpoints (longest
-/// first), collapses the edges shorter than 4/5 L (shortest first) where no
-/// edge would become longer than 4/3 L, flips edges to bring valences
+/// first), collapses the edges shorter than 4/5 L (shortest first) into
+/// their midpoints where no edge would become longer than 4/3 L (an edge
+/// from a border or a fixed vertex goes into that vertex, which keeps its
+/// point), flips edges to bring valences
 /// towards 6 (4 on the border), moves each vertex to the area-weighted
 /// centroid of its triangles in its tangent plane, and projects it back onto
 /// the input surface (the closest point, through an AABB tree of the input's

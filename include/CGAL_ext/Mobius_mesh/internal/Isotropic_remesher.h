@@ -283,14 +283,28 @@ private:
     }
   }
 
-  // Would joining source(d) into target(d) make an edge longer than 4/3 L?
-  bool collapse_makes_long_edge(Dart d) const
+  // Would moving both ends of the edge of d to `to` make an edge longer than 4/3 L?
+  bool collapse_makes_long_edge(Dart d, const P& to) const
   {
-    const P& kept = mesh_.point(mesh_.target(d));
-    for (Vertex_index k : CGAL_ext::vertices_around_target(mesh_.opposite(d), mesh_))
-      if (CGAL::to_double(CGAL::squared_distance(kept, mesh_.point(k))) > high2_)
-        return true;
+    for (Dart side : {d, mesh_.opposite(d)})
+      for (Vertex_index k : CGAL_ext::vertices_around_target(side, mesh_))
+        if (CGAL::to_double(CGAL::squared_distance(to, mesh_.point(k))) > high2_)
+          return true;
     return false;
+  }
+
+  // Where the collapse of d (source into target) puts the kept vertex: the
+  // edge's midpoint, as Botsch and Kobbelt do, where both ends may move along
+  // the same surface (two inner vertices, or the two ends of a border edge);
+  // otherwise the target's point, so that borders, chords between two border
+  // points and fixed vertices keep their places. CGAL always keeps one end:
+  // then the edges around the removed end grow by the whole edge, not half
+  // of it, and the long-edge rule refuses most collapses next to the border.
+  P collapsed_point(Dart d) const
+  {
+    const Vertex_index gone = mesh_.source(d), kept = mesh_.target(d);
+    const bool both_move = !is_fixed(kept) && (mesh_.is_border(mesh_.edge(d)) || !mesh_.is_border(kept));
+    return both_move ? CGAL::midpoint(mesh_.point(gone), mesh_.point(kept)) : mesh_.point(kept);
   }
 
   // For each triangle of the edge of d, the side that stays after
@@ -307,7 +321,7 @@ private:
     return merged;
   }
 
-  // Joins one end of e into the other, which keeps its point, if some
+  // Joins one end of e into the other, placed at collapsed_point(), if some
   // direction is allowed; returns the kept vertex, or null if none is.
   Vertex_index collapse(Edge_index e)
   {
@@ -315,12 +329,14 @@ private:
     for (Dart c : {d, mesh_.opposite(d)}) {
       const Vertex_index gone = mesh_.source(c), kept = mesh_.target(c);
       // A border vertex joined into an inner one would pull the border inwards.
-      if (is_fixed(gone) || (mesh_.is_border(gone) && !mesh_.is_border(kept)) || collapse_makes_long_edge(c))
+      if (is_fixed(gone) || (mesh_.is_border(gone) && !mesh_.is_border(kept)))
         continue;
-      if (check_collapse(c, mesh_.point(kept), mesh_, collapse_options_) != Collapse_verdict::allowed)
+      const P to = collapsed_point(c);
+      if (collapse_makes_long_edge(c, to) || check_collapse(c, to, mesh_, collapse_options_) != Collapse_verdict::allowed)
         continue;
       const auto merged = merged_edges(c);
       Euler::collapse_edge(c, mesh_, Euler::unchecked); // check_collapse() checked the link condition
+      mesh_.point(kept) = to;
       // Of two sides of a triangle that become one edge, collapse_edge()
       // keeps one index: it keeps the sharpness of both.
       if (sharpness_)
