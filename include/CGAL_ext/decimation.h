@@ -16,14 +16,15 @@
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/internal/Quadric.h>
 
+#include <CGAL/Modifiable_priority_queue.h>
 #include <CGAL/assertions.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <optional>
-#include <queue>
 #include <string>
 #include <vector>
 
@@ -122,16 +123,16 @@ struct Collapse_candidate
 };
 
 // The Garland–Heckbert state of a decimation: per-vertex quadrics and plane
-// areas, feature flags per edge, and a heap of candidates with lazy deletion
-// (an entry is stale once its edge's stamp has moved on).
+// areas, feature flags and costs per edge, and CGAL's modifiable priority
+// queue of the edges by cost (one entry per edge, updated in place).
 template <class P>
 class Decimator
 {
 public:
   Decimator(Mobius_mesh<P>& mesh, const Decimation_settings& settings, std::vector<char> feature)
-    : m_(mesh), s_(settings), feature_(std::move(feature)), stamp_(mesh.num_edges(), 0),
-      refused_(mesh.num_edges(), 0),
-      quadric_(mesh.num_vertices()), area_(mesh.num_vertices(), 0.0)
+    : m_(mesh), s_(settings), feature_(std::move(feature)), cost_(mesh.num_edges(), 0.0),
+      refused_(mesh.num_edges(), 0), quadric_(mesh.num_vertices()), area_(mesh.num_vertices(), 0.0),
+      queue_(mesh.num_edges(), Cheaper{&cost_})
   {
     options_.min_cos_normal_turn = settings.min_cos_normal_turn;
     options_.is_protected = [this](Edge_index e) { return feature_[e.idx()] != 0; };
@@ -146,16 +147,14 @@ public:
     result.faces_before = m_.number_of_faces();
     for (Edge_index e : m_.edges())
       push(e);
-    while (m_.number_of_faces() > s_.target_faces && !heap_.empty()) {
-      const Entry top = heap_.top();
-      heap_.pop();
-      if (m_.is_removed(top.edge) || top.stamp != stamp_[top.edge.idx()])
-        continue;
-      const Collapse_candidate c = candidate(top.edge);
-      const double error = error_of(top.edge, c);
+    while (m_.number_of_faces() > s_.target_faces && !queue_.empty()) {
+      const Edge_index top = queue_.top_and_pop();
+      CGAL_assertion(!m_.is_removed(top));
+      const Collapse_candidate c = candidate(top);
+      const double error = error_of(top, c);
       if (error > s_.maximum_error)
         break;
-      if (collapse(top.edge, c)) {
+      if (collapse(top, c)) {
         ++result.collapses;
         result.largest_error = (std::max)(result.largest_error, error);
       }
@@ -165,12 +164,20 @@ public:
   }
 
 private:
-  struct Entry
+  // The queue's order: the cheapest edge on top.
+  struct Cheaper
   {
-    double cost; // error_of() the edge's candidate
-    Edge_index edge;
-    std::uint32_t stamp;
-    bool operator<(const Entry& o) const { return cost > o.cost; } // the cheapest on top
+    const std::vector<double>* cost;
+    bool operator()(Edge_index a, Edge_index b) const { return (*cost)[a.idx()] < (*cost)[b.idx()]; }
+  };
+  // The queue's index of an edge.
+  struct Edge_id
+  {
+    using key_type = Edge_index;
+    using value_type = std::size_t;
+    using reference = std::size_t;
+    using category = boost::readable_property_map_tag;
+    friend std::size_t get(Edge_id, Edge_index e) { return e.idx(); }
   };
 
   void init_quadrics()
@@ -260,12 +267,16 @@ private:
                                std::numeric_limits<double>::min());
   }
 
+  // Queues `e` at its current cost, or moves it there if it is queued.
   void push(Edge_index e)
   {
     if (feature_[e.idx()])
       return; // a feature edge is never collapsed
-    const std::uint32_t stamp = ++stamp_[e.idx()];
-    heap_.push(Entry{error_of(e, candidate(e)), e, stamp});
+    cost_[e.idx()] = error_of(e, candidate(e));
+    if (queue_.contains(e))
+      queue_.update(e);
+    else
+      queue_.push(e);
   }
 
   P placement(const Collapse_candidate& c) const
@@ -290,13 +301,13 @@ private:
   Mobius_mesh<P>& m_;
   Decimation_settings s_;
   std::vector<char> feature_;
-  std::vector<std::uint32_t> stamp_;
+  std::vector<double> cost_; // error_of() each queued edge's candidate
   std::vector<char> refused_; // edges whose last try was refused: tried again when their neighbourhood changes
   std::vector<Quadric> quadric_;
   std::vector<double> area_;
   std::optional<typename Mobius_mesh<P>::template Property_map<Edge_index, float>> sharpness_;
   Collapse_options options_;
-  std::priority_queue<Entry> heap_;
+  CGAL::Modifiable_priority_queue<Edge_index, Cheaper, Edge_id> queue_;
 };
 
 // Collapses the edge `e` to `c` if check_collapse() allows it one way or the
@@ -327,6 +338,9 @@ bool Decimator<P>::collapse(Edge_index e, const Collapse_candidate& c)
   for (Edge_index s : sides)
     side_values.emplace_back(feature_[s.idx()], sharpness_ ? (*sharpness_)[s] : 0.f);
   Euler::collapse_edge(d, m_, Euler::unchecked); // check_collapse() checked the link condition
+  for (Edge_index s : sides) // one side of each collapsed triangle is gone
+    if (m_.is_removed(s) && queue_.contains(s))
+      queue_.erase(s);
   m_.points()[q] = point;
   quadric_[q.idx()] += quadric_[p.idx()];
   area_[q.idx()] += area_[p.idx()];
