@@ -140,6 +140,9 @@ public:
       sharpness_ = *own;
     init_quadrics();
   }
+  // The queue's order reads cost_ through a pointer: not to be copied or moved.
+  Decimator(const Decimator&) = delete;
+  Decimator& operator=(const Decimator&) = delete;
 
   Decimation_result run()
   {
