@@ -293,18 +293,18 @@ private:
     return false;
   }
 
-  // Where the collapse of d (source into target) puts the kept vertex: the
-  // edge's midpoint, as Botsch and Kobbelt do, where both ends may move along
-  // the same surface (two inner vertices, or the two ends of a border edge);
-  // otherwise the target's point, so that borders, chords between two border
-  // points and fixed vertices keep their places. CGAL always keeps one end:
-  // then the edges around the removed end grow by the whole edge, not half
-  // of it, and the long-edge rule refuses most collapses next to the border.
-  P collapsed_point(Dart d) const
+  // Whether the collapse of d (source into target) puts the kept vertex at
+  // the edge's midpoint, as Botsch and Kobbelt do: where both ends may move
+  // along the same surface (two inner vertices, or the two ends of a border
+  // edge). Otherwise the target keeps its point, so that borders, chords
+  // between two border points and fixed vertices keep their places. CGAL
+  // always keeps one end: then the edges around the removed end grow by the
+  // whole edge, not half of it, and the long-edge rule refuses most
+  // collapses next to the border.
+  bool meets_at_midpoint(Dart d) const
   {
-    const Vertex_index gone = mesh_.source(d), kept = mesh_.target(d);
-    const bool both_move = !is_fixed(kept) && (mesh_.is_border(mesh_.edge(d)) || !mesh_.is_border(kept));
-    return both_move ? CGAL::midpoint(mesh_.point(gone), mesh_.point(kept)) : mesh_.point(kept);
+    const Vertex_index kept = mesh_.target(d);
+    return !is_fixed(kept) && (mesh_.is_border(mesh_.edge(d)) || !mesh_.is_border(kept));
   }
 
   // For each triangle of the edge of d, the side that stays after
@@ -321,8 +321,9 @@ private:
     return merged;
   }
 
-  // Joins one end of e into the other, placed at collapsed_point(), if some
-  // direction is allowed; returns the kept vertex, or null if none is.
+  // Joins one end of e into the other, at the midpoint or the kept end's
+  // point (meets_at_midpoint()), if some direction is allowed; returns the
+  // kept vertex, or null if none is.
   Vertex_index collapse(Edge_index e)
   {
     const Dart d = Mesh::halfedge(e);
@@ -331,9 +332,13 @@ private:
       // A border vertex joined into an inner one would pull the border inwards.
       if (is_fixed(gone) || (mesh_.is_border(gone) && !mesh_.is_border(kept)))
         continue;
-      const P to = collapsed_point(c);
-      if (collapse_makes_long_edge(c, to) || check_collapse(c, to, mesh_, collapse_options_) != Collapse_verdict::allowed)
+      const bool midpoint = meets_at_midpoint(c);
+      const P to = midpoint ? CGAL::midpoint(mesh_.point(gone), mesh_.point(kept)) : mesh_.point(kept);
+      if (collapse_makes_long_edge(c, to) || check_collapse(c, to, mesh_, collapse_options_) != Collapse_verdict::allowed) {
+        if (midpoint)
+          break; // the other direction would meet at the same point and be refused the same way
         continue;
+      }
       const auto merged = merged_edges(c);
       Euler::collapse_edge(c, mesh_, Euler::unchecked); // check_collapse() checked the link condition
       mesh_.point(kept) = to;
