@@ -2,15 +2,19 @@
 // test meshes' headers, and each kind of bad input.
 #include "test_util.h"
 
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace {
@@ -334,3 +338,109 @@ TEST(PolygonSoup, AppendsToANonEmptyMesh)
 }
 
 } // namespace
+
+// The connectivity builder with CGAL::Parallel_tag writes the arrays the
+// serial builder writes, byte for byte, and fails with the same error.
+namespace {
+
+namespace ci = CGAL_ext::internal;
+
+struct Builder_output
+{
+  std::vector<std::uint32_t> target, next, prev, face, vertex_dart, face_halfedge, copies;
+  std::vector<std::uint8_t> mobius;
+  std::string error;
+
+  bool operator==(const Builder_output& o) const
+  {
+    return target == o.target && next == o.next && prev == o.prev && face == o.face &&
+           vertex_dart == o.vertex_dart && face_halfedge == o.face_halfedge && copies == o.copies &&
+           mobius == o.mobius && error == o.error;
+  }
+};
+
+template <class Tag>
+Builder_output build_with(const ci::Face_list& faces, std::uint32_t nv, bool split)
+{
+  Builder_output r;
+  try {
+    ci::Connectivity_builder builder(faces.view(nv), Tag());
+    const std::size_t ne = builder.number_of_edges(), nf = builder.number_of_faces();
+    r.target.resize(2 * ne);
+    r.next.resize(2 * ne);
+    r.prev.resize(2 * ne);
+    r.face.resize(2 * ne);
+    r.mobius.resize(ne);
+    r.vertex_dart.resize(nv);
+    r.face_halfedge.resize(nf);
+    const ci::Connectivity_arrays arrays{r.target.data(),      r.next.data(),          r.prev.data(), r.face.data(),
+                                         r.vertex_dart.data(), r.face_halfedge.data(), r.mobius.data()};
+    for (const ci::Split_vertex& c : builder.build(arrays, split)) {
+      r.copies.push_back(c.original);
+      r.copies.push_back(c.dart);
+    }
+  } catch (const CGAL_ext::Soup_error& e) {
+    r.error = e.what();
+  }
+  return r;
+}
+
+// A strip of n x m quads closed into a band, every `flip`-th quad listed
+// backwards (a Möbius edge on each of its sides that meets a forward one),
+// with a border on both sides.
+ci::Face_list band_of_quads(std::uint32_t n, std::uint32_t m, std::uint32_t flip)
+{
+  ci::Face_list faces;
+  auto vertex = [&](std::uint32_t i, std::uint32_t j) { return (i % n) * (m + 1) + j; };
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < m; ++j) {
+      const std::uint32_t q[4] = {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)};
+      if ((i * m + j) % flip == 0)
+        faces.add({q[3], q[2], q[1], q[0]});
+      else
+        faces.add(q, q + 4);
+    }
+  return faces;
+}
+
+void expect_same_builds(const std::string& what, const ci::Face_list& faces, std::uint32_t nv, bool split)
+{
+  SCOPED_TRACE(what);
+  const Builder_output s = build_with<CGAL::Sequential_tag>(faces, nv, split);
+  const Builder_output p = build_with<CGAL::Parallel_tag>(faces, nv, split);
+  EXPECT_TRUE(s == p) << "serial: '" << s.error << "', parallel: '" << p.error << "'";
+}
+
+} // namespace
+
+TEST(ConnectivityBuilder, ParallelBuildIsTheSerialBuild)
+{
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
+  tbb::task_arena arena(4);
+  arena.execute([] {
+    const std::uint32_t n = 300, m = 100, nv = n * (m + 1);
+    ci::Face_list band = band_of_quads(n, m, 7);
+    const Builder_output built = build_with<CGAL::Sequential_tag>(band, nv, false);
+    ASSERT_EQ(built.error, "");
+    // 7 does not divide m: forward and backward quads meet across both kinds of edges.
+    EXPECT_GT(std::count(built.mobius.begin(), built.mobius.end(), 1), 0);
+    expect_same_builds("band", band, nv, false);
+
+    // A third quad on an edge deep inside: the serial build's error.
+    ci::Face_list fin = band;
+    fin.add({5 * (m + 1) + 7, 5 * (m + 1) + 8, nv});
+    expect_same_builds("edge of three faces", fin, nv + 1, false);
+    EXPECT_NE(build_with<CGAL::Parallel_tag>(fin, nv + 1, false).error.find("shared by 3"), std::string::npos);
+
+    ci::Face_list repeated = band;
+    repeated.add({nv, nv + 1, nv});
+    expect_same_builds("repeated vertex", repeated, nv + 2, false);
+
+    // A triangle touching the band at one inner vertex only: refused, or split.
+    ci::Face_list touching = band;
+    touching.add({200 * (m + 1) + 50, nv, nv + 1});
+    expect_same_builds("non-manifold vertex", touching, nv + 2, false);
+    expect_same_builds("non-manifold vertex split", touching, nv + 2, true);
+    EXPECT_EQ(build_with<CGAL::Parallel_tag>(touching, nv + 2, true).copies.size(), 2u);
+  });
+}

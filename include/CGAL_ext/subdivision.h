@@ -368,7 +368,7 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 ///   defined), bit for bit as the serial result, each step whose level is
 ///   large enough for the threads available (`Subdivision::runs_in_parallel()`);
 ///   the same for all schemes. Exact kernels are refined and interpolated
-///   serially. The connectivity builder of the Doo–Sabin and √3 steps is serial.
+///   serially.
 /// \param mesh the mesh, replaced by the result
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin

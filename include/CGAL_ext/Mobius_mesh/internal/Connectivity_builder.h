@@ -16,8 +16,10 @@
 #include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/internal/Huge_page_allocator.h>
+#include <CGAL_ext/internal/Parallel_loops.h>
 
 #include <CGAL/assertions.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -85,12 +87,19 @@ class Connectivity_builder
 public:
   using u32 = std::uint32_t;
 
-  explicit Connectivity_builder(const Face_lists& faces) : faces_(faces)
+  /// With `CGAL::Parallel_tag` (and TBB), every phase runs in parallel and
+  /// gives the same arrays, bit for bit, as the serial build.
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
+  explicit Connectivity_builder(const Face_lists& faces, ConcurrencyTag = ConcurrencyTag())
+      : faces_(faces), parallel_(is_parallel_tag<ConcurrencyTag>)
   {
-    number_corners();
-    check_repeated_vertices();
-    pair_sides();
-    number_edges();
+    parallel_if(parallel_, [&](auto tag) {
+      using Tag = decltype(tag);
+      number_corners<Tag>();
+      check_repeated_vertices<Tag>();
+      pair_sides<Tag>();
+      number_edges<Tag>();
+    });
     check_mesh_size("the faces", Mesh_size{faces_.n_vertices, n_edges_, faces_.n_faces, 0});
   }
 
@@ -106,7 +115,20 @@ public:
   std::vector<Split_vertex> build(const Connectivity_arrays& out, bool split_non_manifold_vertices)
   {
     out_ = out;
-    link_faces();
+    if (parallel_) {
+      bool manifold = true;
+      parallel_if(true, [&](auto tag) {
+        link_faces<decltype(tag)>();
+        manifold = link_fans_in_parallel<decltype(tag)>();
+      });
+      if (manifold) {
+        Array().swap(partner_);
+        return {};
+      }
+      // The serial build names the fans at fault, or splits them.
+    }
+    link_faces<CGAL::Sequential_tag>();
+    Array().swap(partner_);
     return link_fans(split_non_manifold_vertices);
   }
 
@@ -140,17 +162,42 @@ private:
   u32 side_high(std::size_t t) const { return (std::max)(corner_vertex(t), corner_vertex(next_corner(t))); }
 
   // Faces have at least one corner each, so no two faces start at the same one.
+  template <class Tag>
   void number_corners()
   {
     n_corners_ = faces_.offset[faces_.n_faces];
     face_start_.assign((n_corners_ + 63) / 64, 0);
-    for (u32 f = 0; f < faces_.n_faces; ++f) {
+    for_each_index<Tag>(faces_.n_faces, [&](u32 f) {
       CGAL_precondition(faces_.offset[f] < faces_.offset[f + 1]);
-      face_start_[faces_.offset[f] >> 6] |= std::uint64_t(1) << (faces_.offset[f] & 63);
-    }
+      atomic_or<Tag>(face_start_[faces_.offset[f] >> 6], std::uint64_t(1) << (faces_.offset[f] & 63));
+    });
   }
 
+  // The threads only look for a face that visits a vertex twice, each in
+  // its faces; the serial pass then names the first, as it always does. A
+  // long face, which a quadratic look would take too long over, is left to
+  // the serial pass too.
+  template <class Tag>
   void check_repeated_vertices() const
+  {
+    if constexpr (is_parallel_tag<Tag>) {
+      auto repeats = [&](u32 f) {
+        const u32* begin = faces_.vertex + faces_.offset[f];
+        const u32* end = faces_.vertex + faces_.offset[f + 1];
+        if (end - begin > 64)
+          return true;
+        for (const u32* a = begin; a != end; ++a)
+          if (std::find(a + 1, end, *a) != end)
+            return true;
+        return false;
+      };
+      if (count_if<Tag>(faces_.n_faces, repeats) == 0)
+        return;
+    }
+    check_repeated_vertices_serially();
+  }
+
+  void check_repeated_vertices_serially() const
   {
     Array seen_in_face(faces_.n_vertices, null);
     for (u32 f = 0; f < faces_.n_faces; ++f) {
@@ -165,9 +212,19 @@ private:
     }
   }
 
+  // Each side's partner: the other side with the same two ends.
+  template <class Tag>
+  void pair_sides()
+  {
+    if constexpr (is_parallel_tag<Tag>)
+      pair_sides_in_parallel<Tag>();
+    else
+      pair_sides_serially();
+  }
+
   // Sides are bucketed by their lower vertex; within a bucket a stamped slot
   // per upper vertex finds the partner in O(1).
-  void pair_sides()
+  void pair_sides_serially()
   {
     const u32 nv = faces_.n_vertices;
     Array bucket_start(std::size_t(nv) + 1, 0);
@@ -211,52 +268,149 @@ private:
                      offenders, {std::size_t(lo), std::size_t(hi)});
   }
 
+  // The same pairs by threads: each bucket sorted by upper vertex (threads
+  // fill the buckets in any order), two sides with the same ends pair up,
+  // a third makes a non-manifold edge, which the serial pass then names.
+  template <class Tag>
+  void pair_sides_in_parallel()
+  {
+    const u32 nv = faces_.n_vertices, nt = u32(n_corners_);
+    Array bucket_start(std::size_t(nv) + 1, 0);
+    for_each_index<Tag>(nt, [&](u32 t) { atomic_add<Tag>(bucket_start[side_low(t) + 1], 1); });
+    prefix_sum<Tag>(bucket_start.data(), nv);
+    // Entries are (upper vertex, corner) in one word, sorted as numbers.
+    Huge_page_vector<std::uint64_t> bucket(n_corners_);
+    {
+      Array fill(bucket_start.begin(), bucket_start.end() - 1);
+      for_each_index<Tag>(nt, [&](u32 t) {
+        bucket[atomic_add<Tag>(fill[side_low(t)], 1)] = std::uint64_t(side_high(t)) << 32 | t;
+      });
+    }
+    partner_.assign(n_corners_, null);
+    auto pairs = [&](u32 lo) {
+      return pair_bucket(bucket.data() + bucket_start[lo], bucket.data() + bucket_start[lo + 1]);
+    };
+    const u32 bad = reduce<Tag>(
+      nv, null, [&](u32 lo) { return pairs(lo) ? null : lo; }, [](u32 a, u32 b) { return (std::min)(a, b); });
+    if (bad != null)
+      pair_sides_serially();
+  }
+
+  static u32 high_of(std::uint64_t entry) { return u32(entry >> 32); }
+  static u32 corner_of(std::uint64_t entry) { return u32(entry); }
+
+  // Pairs the sides of one bucket; false if three share their ends.
+  bool pair_bucket(std::uint64_t* begin, std::uint64_t* end)
+  {
+    // Buckets hold a few sides each: insertion sort, without std::sort's
+    // set-up, but for the fans of vertices of high degree.
+    if (end - begin > 32)
+      std::sort(begin, end);
+    for (std::uint64_t* i = begin + (begin != end ? 1 : 0); i < end; ++i) {
+      const std::uint64_t x = *i;
+      std::uint64_t* j = i;
+      for (; j != begin && *(j - 1) > x; --j)
+        *j = *(j - 1);
+      *j = x;
+    }
+    for (std::uint64_t* s = begin; s != end;) {
+      std::uint64_t* run_end = s + 1;
+      while (run_end != end && high_of(*run_end) == high_of(*s))
+        ++run_end;
+      if (run_end - s > 2)
+        return false;
+      if (run_end - s == 2) {
+        partner_[corner_of(s[0])] = corner_of(s[1]);
+        partner_[corner_of(s[1])] = corner_of(s[0]);
+      }
+      s = run_end;
+    }
+    return true;
+  }
+
   // Edges are numbered in order of first use; the corner that uses an edge
   // first gets its halfedge 2e, the partner 2e+1. Edges past what darts
   // index are only counted (the constructor then refuses them): their
-  // halfedge numbers would wrap.
+  // halfedge numbers would wrap. Threads number alike: an edge's number is
+  // the count of first uses before it, a prefix sum.
+  template <class Tag>
   void number_edges()
   {
-    corner_halfedge_.assign(n_corners_, null);
-    n_edges_ = 0;
-    for (std::size_t t = 0; t < n_corners_; ++t) {
-      if (corner_halfedge_[t] != null)
-        continue;
-      const bool indexable = n_edges_ < max_edges;
-      corner_halfedge_[t] = indexable ? dart_encoding::halfedge_of_edge(n_edges_, 0) : 0;
-      if (partner_[t] != null)
-        corner_halfedge_[partner_[t]] = indexable ? dart_encoding::halfedge_of_edge(n_edges_, 1) : 0;
-      ++n_edges_;
+    auto first_use = [&](u32 t) { return partner_[t] == null || t < partner_[t]; };
+    auto halfedge = [](u32 e, int i) { return e < max_edges ? dart_encoding::halfedge_of_edge(e, i) : 0; };
+    const u32 nt = u32(n_corners_);
+    if constexpr (!is_parallel_tag<Tag>) {
+      corner_halfedge_.assign(n_corners_, null);
+      n_edges_ = 0;
+      for (u32 t = 0; t < nt; ++t) {
+        if (!first_use(t))
+          continue;
+        corner_halfedge_[t] = halfedge(n_edges_, 0);
+        if (partner_[t] != null)
+          corner_halfedge_[partner_[t]] = halfedge(n_edges_, 1);
+        ++n_edges_;
+      }
+      return;
     }
+    // Entry t + 1 counts t's first use; summed, entry t is t's edge number.
+    corner_halfedge_.resize(n_corners_ + 1);
+    corner_halfedge_[0] = 0;
+    for_each_index<Tag>(nt, [&](u32 t) { corner_halfedge_[t + 1] = first_use(t) ? 1 : 0; });
+    prefix_sum<Tag>(corner_halfedge_.data(), nt);
+    n_edges_ = corner_halfedge_[nt];
+    // Partners read the number of their first corner before it is replaced.
+    for_each_index<Tag>(nt, [&](u32 t) {
+      if (!first_use(t))
+        corner_halfedge_[t] = halfedge(corner_halfedge_[partner_[t]], 1);
+    });
+    for_each_index<Tag>(nt, [&](u32 t) {
+      if (first_use(t))
+        corner_halfedge_[t] = halfedge(corner_halfedge_[t], 0);
+    });
+    corner_halfedge_.pop_back();
   }
 
-  // Face cycles, border targets, Möbius bits.
+  // Face cycles, border targets, Möbius bits. A vertex's dart is the one of
+  // its last corner (the largest), whichever thread writes it.
+  template <class Tag>
   void link_faces()
   {
-    const std::size_t nh = 2 * std::size_t(n_edges_);
-    std::fill(out_.next_bits, out_.next_bits + nh, null);
-    std::fill(out_.prev_bits, out_.prev_bits + nh, null);
-    std::fill(out_.face, out_.face + nh, null);
-    std::fill(out_.mobius, out_.mobius + n_edges_, std::uint8_t(0));
-    std::fill(out_.vertex_dart_bits, out_.vertex_dart_bits + faces_.n_vertices, null);
-    corners_at_.assign(faces_.n_vertices, 0);
-    for (u32 f = 0; f < faces_.n_faces; ++f) {
+    const u32 nh = 2 * n_edges_, nv = faces_.n_vertices;
+    for_each_index<Tag>(nh, [&](u32 h) {
+      out_.next_bits[h] = out_.prev_bits[h] = out_.face[h] = null;
+    });
+    for_each_index<Tag>(n_edges_, [&](u32 e) { out_.mobius[e] = 0; });
+    corners_at_.assign(nv, 0);
+    if constexpr (is_parallel_tag<Tag>)
+      last_corner_.assign(nv, 0); // 1 + the corner, 0 for none
+    else
+      std::fill(out_.vertex_dart_bits, out_.vertex_dart_bits + nv, null);
+    for_each_index<Tag>(faces_.n_faces, [&](u32 f) {
       out_.face_halfedge[f] = corner_halfedge_[faces_.offset[f]];
       for (u32 t = faces_.offset[f]; t < faces_.offset[f + 1]; ++t) {
-        const std::size_t u = next_corner(t);
+        const u32 u = t + 1 < faces_.offset[f + 1] ? t + 1 : faces_.offset[f];
         const u32 h = corner_halfedge_[t], target = corner_vertex(u);
         out_.target[h] = target;
         out_.face[h] = f;
         set_next(dart_encoding::dart(h, false), dart_encoding::dart(corner_halfedge_[u], false));
-        ++corners_at_[target];
-        out_.vertex_dart_bits[target] = dart_encoding::dart(h, false);
+        atomic_add<Tag>(corners_at_[target], 1);
+        if constexpr (is_parallel_tag<Tag>)
+          atomic_max<Tag>(last_corner_[target], t + 1);
+        else
+          out_.vertex_dart_bits[target] = dart_encoding::dart(h, false);
         if (partner_[t] == null)
           out_.target[dart_encoding::opposite_halfedge(h)] = corner_vertex(t);
         else if (t < partner_[t])
           out_.mobius[dart_encoding::edge_of_halfedge(h)] = corner_vertex(partner_[t]) == corner_vertex(t);
       }
+    });
+    if constexpr (is_parallel_tag<Tag>) {
+      for_each_index<Tag>(nv, [&](u32 v) {
+        out_.vertex_dart_bits[v] =
+          last_corner_[v] == 0 ? null : dart_encoding::dart(corner_halfedge_[last_corner_[v] - 1], false);
+      });
+      Array().swap(last_corner_);
     }
-    Array().swap(partner_);
   }
 
   // Dart navigation on the output arrays, as in Mobius_mesh.
@@ -287,14 +441,15 @@ private:
   }
 
   // Walks the fan of incoming darts from `start` through its faces, stamping
-  // them with `stamp`; on the border, links the fan's two border darts to
+  // them with `stamp` (unless null); on the border, links the fan's two border darts to
   // each other. Returns the fan's first dart (the border dart, if any) and
   // how many faces it has; `touched` receives its halfedges if given.
   std::pair<u32, u32> walk_fan(u32 start, u32 stamp, std::vector<u32>* touched)
   {
     u32 visited = 0;
     auto visit = [&](u32 d) {
-      face_stamp_[face(d)] = stamp;
+      if (stamp != null)
+        face_stamp_[face(d)] = stamp;
       ++visited;
       if (touched) {
         touched->push_back(dart_encoding::halfedge_of_dart(d));
@@ -342,6 +497,22 @@ private:
       split_vertex(v, copies);
     }
     return copies;
+  }
+
+  // link_fans() by threads, a vertex each: a walk reads only face links and
+  // writes only the links of its own border darts. Without stamps (faces
+  // are shared between vertices), so a vertex with several fans is only
+  // detected: false, and the serial pass then deals with it.
+  template <class Tag>
+  bool link_fans_in_parallel()
+  {
+    return count_if<Tag>(faces_.n_vertices, [&](u32 v) {
+             if (corners_at_[v] == 0)
+               return false;
+             const auto [first, visited] = walk_fan(out_.vertex_dart_bits[v], null, nullptr);
+             out_.vertex_dart_bits[v] = first;
+             return visited != corners_at_[v];
+           }) == 0;
   }
 
   // The corners whose side ends at each vertex, indexed only once a vertex
@@ -400,7 +571,8 @@ private:
   std::size_t n_corners_ = 0;
   u32 n_edges_ = 0;
   Huge_page_vector<std::uint64_t> face_start_;
-  Array partner_, corner_halfedge_, corners_at_, face_stamp_;
+  bool parallel_ = false;
+  Array partner_, corner_halfedge_, corners_at_, last_corner_, face_stamp_;
   Array incoming_start_, incoming_corner_;
 };
 

@@ -11,18 +11,12 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
+#include <CGAL_ext/internal/Parallel_loops.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/tags.h>
 #include <CGAL/use.h>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
-#include <tbb/parallel_scan.h>
-#endif
 
 #include <algorithm>
 #include <cstdint>
@@ -47,125 +41,15 @@ constexpr bool is_first_halfedge(u32 h)
 template <class T>
 using Array = CGAL_ext::internal::Uninitialized_array<T>;
 
-// Whether `ConcurrencyTag` asks for TBB.
-template <class ConcurrencyTag>
-constexpr bool is_parallel_tag = std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>;
-
-// The elements a TBB task takes at least: enough that scheduling costs
-// little next to the loop bodies, which are a few memory accesses each.
-constexpr u32 parallel_grain = 4096;
-
-// Calls body(begin, end) on blocks that cover [0, n), in parallel with TBB
-// for `CGAL::Parallel_tag` (one block, [0, n), otherwise): a body that needs
-// scratch space makes it once per block.
-template <class ConcurrencyTag, class Body>
-void for_each_block(u32 n, const Body& body)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr (is_parallel_tag<ConcurrencyTag>) {
-    tbb::parallel_for(tbb::blocked_range<u32>(0, n, parallel_grain),
-                      [&](const tbb::blocked_range<u32>& r) { body(r.begin(), r.end()); });
-    return;
-  }
-#else
-  static_assert(!is_parallel_tag<ConcurrencyTag>, "CGAL::Parallel_tag needs TBB (CGAL_LINKED_WITH_TBB)");
-#endif
-  body(u32(0), n);
-}
-
-// Calls body(i) for i in [0, n): in parallel with TBB for `CGAL::Parallel_tag`.
-template <class ConcurrencyTag, class Body>
-void for_each_index(u32 n, const Body& body)
-{
-  for_each_block<ConcurrencyTag>(n, [&](u32 begin, u32 end) {
-    for (u32 i = begin; i != end; ++i)
-      body(i);
-  });
-}
-
-// Offsets from counts, in place: `offset[i + 1]` holds the count of element
-// i on entry, `offset[0]` is 0; on return `offset[i]` is the sum of the
-// counts before i. Integer sums, so the blocks of the parallel scan give the
-// serial numbering exactly.
-template <class ConcurrencyTag, class T>
-void prefix_sum(T* offset, u32 n)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr (is_parallel_tag<ConcurrencyTag>) {
-    tbb::parallel_scan(
-      tbb::blocked_range<u32>(1, n + 1, parallel_grain), T(0),
-      [&](const tbb::blocked_range<u32>& r, T sum, bool is_final) {
-        for (u32 i = r.begin(); i != r.end(); ++i) {
-          sum += offset[i];
-          if (is_final)
-            offset[i] = sum;
-        }
-        return sum;
-      },
-      [](T a, T b) { return a + b; });
-    return;
-  }
-#endif
-  for (u32 i = 1; i <= n; ++i)
-    offset[i] += offset[i - 1];
-}
-
-// op(... op(op(init, f(0)), f(1)) ..., f(n - 1)) for an associative and
-// commutative `op` on integers (a sum, a maximum): the same whatever the
-// blocks of the parallel reduction.
-template <class ConcurrencyTag, class T, class F, class Op>
-T reduce(u32 n, T init, const F& f, const Op& op)
-{
-  auto run = [&](u32 begin, u32 end, T x) {
-    for (u32 i = begin; i != end; ++i)
-      x = op(x, f(i));
-    return x;
-  };
-#ifdef CGAL_LINKED_WITH_TBB
-  if constexpr (is_parallel_tag<ConcurrencyTag>)
-    return tbb::parallel_reduce(
-      tbb::blocked_range<u32>(0, n, parallel_grain), init,
-      [&](const tbb::blocked_range<u32>& r, T x) { return run(r.begin(), r.end(), x); }, op);
-#endif
-  return run(0, n, init);
-}
-
-// The number of i in [0, n) for which pred(i) holds.
-template <class ConcurrencyTag, class Pred>
-u32 count_if(u32 n, const Pred& pred)
-{
-  return reduce<ConcurrencyTag>(
-    n, u32(0), [&](u32 i) { return pred(i) ? 1u : 0u; }, [](u32 a, u32 b) { return a + b; });
-}
-
-// x += y, atomically for `CGAL::Parallel_tag`; returns the old x. Counts
-// made by several threads are integers, the same whatever the order of the
-// additions.
-template <class ConcurrencyTag>
-u32 atomic_add(u32& x, u32 y)
-{
-  if constexpr (is_parallel_tag<ConcurrencyTag>) {
-    return __atomic_fetch_add(&x, y, __ATOMIC_RELAXED);
-  } else {
-    const u32 old = x;
-    x += y;
-    return old;
-  }
-}
-
-// x = 1, atomically for `CGAL::Parallel_tag` (a flag that several threads
-// may raise). A flag already raised is only read: the threads then share
-// its cache line instead of taking it from each other.
-template <class ConcurrencyTag>
-void mark(std::uint8_t& x)
-{
-  if constexpr (is_parallel_tag<ConcurrencyTag>) {
-    if (!__atomic_load_n(&x, __ATOMIC_RELAXED))
-      __atomic_store_n(&x, std::uint8_t(1), __ATOMIC_RELAXED);
-  } else {
-    x = 1;
-  }
-}
+using CGAL_ext::internal::atomic_add;
+using CGAL_ext::internal::count_if;
+using CGAL_ext::internal::for_each_block;
+using CGAL_ext::internal::for_each_index;
+using CGAL_ext::internal::is_parallel_tag;
+using CGAL_ext::internal::mark;
+using CGAL_ext::internal::parallel_grain;
+using CGAL_ext::internal::prefix_sum;
+using CGAL_ext::internal::reduce;
 
 // Arrays mirror Mobius_mesh: halfedges 2e and 2e+1 of edge e, `next`/`prev`
 // hold dart bits (halfedge << 1 | flipped), face cycles are unflipped.

@@ -67,12 +67,11 @@ inline bool is_border_edge(const Level& p, u32 e)
 
 // Builds level `c` (nv vertices) from a face list, through the mesh's
 // connectivity builder, which pairs the faces' sides and sets a Möbius bit
-// where two faces run the same way.
-// (The builder is serial; the corner numbering runs as ConcurrencyTag says.)
+// where two faces run the same way; in parallel for `CGAL::Parallel_tag`.
 template <class ConcurrencyTag = CGAL::Sequential_tag>
 void level_from_faces(u32 nv, const Face_list& faces, Level& c)
 {
-  CGAL_ext::internal::Connectivity_builder builder(faces.view(nv));
+  CGAL_ext::internal::Connectivity_builder builder(faces.view(nv), ConcurrencyTag());
   c.resize(nv, builder.number_of_edges(), faces.size(), u32(faces.vertex.size()),
            Level::corner_table | Level::sharpness | Level::halfedge_corners);
   CGAL_ext::internal::Connectivity_arrays arrays;
