@@ -279,7 +279,7 @@ public:
                               const std::vector<float>& edge_sharpness = {},
                               const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
   {
-    check_size(mesh, levels, 1.25, double(sizeof(typename Values::value_type)));
+    check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k) {
@@ -405,7 +405,10 @@ private:
   // mesh's arrays, plus `value_bytes` per result vertex. The factors are
   // measured peaks: a one-pass refinement holds its last two levels, a
   // quarter more than the result (123 bytes per quad of double points
-  // against the result's 98); one that keeps every level, two and a half.
+  // against the result's 98); by Doo–Sabin or √3, whose last step also holds
+  // the child's face list and the builder's tables, twice (212 and 136
+  // bytes per face against 98 and 68); one that keeps every level, two and
+  // a half.
   template <class P>
   void check_size(const Mobius_mesh<P>& mesh, unsigned levels, double kept, double value_bytes) const
   {
@@ -433,6 +436,13 @@ private:
   bool one_pass_step(unsigned k, bool last, Values& values, Mobius_mesh<Q>& out, bool write_sharpness)
   {
     if constexpr (uses_stencils) {
+      if (last) {
+        stencil_split_into_mesh<ConcurrencyTag>(k, out, write_sharpness);
+        advance_values<ConcurrencyTag>(values);
+        levels_.clear();
+        clear_scratch();
+        return true;
+      }
       step<ConcurrencyTag>(0, k);
       advance_values<ConcurrencyTag>(values);
     } else {
@@ -477,14 +487,8 @@ private:
     if (levels_.size() < slot + 2)
       levels_.resize(slot + 2);
     if constexpr (uses_stencils) {
-      if (stencils_.size() < slot + 1)
-        stencils_.resize(slot + 1);
       internal::Face_list faces;
-      using Tag = Weight_tag<ConcurrencyTag>;
-      if constexpr (Mask::split == Split::dual)
-        internal::dual_split<Tag>(levels_[slot], mask_, faces, stencils_[slot]);
-      else
-        internal::sqrt3_split<Tag>(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
+      stencil_split<ConcurrencyTag>(slot, k, faces);
       internal::level_from_faces<ConcurrencyTag>(stencils_[slot].size(), faces, levels_[slot + 1]);
     } else {
       CGAL_USE(k);
@@ -494,6 +498,37 @@ private:
       prepare_interpolation<ConcurrencyTag>(slot);
       split<ConcurrencyTag>(slot, true);
     }
+  }
+
+  // The stencils of slot `slot` and the child faces (Doo–Sabin and √3);
+  // `k` is the step's number (√3 alternates).
+  template <class ConcurrencyTag>
+  void stencil_split(unsigned slot, unsigned k, internal::Face_list& faces)
+  {
+    if (stencils_.size() < slot + 1)
+      stencils_.resize(slot + 1);
+    using Tag = Weight_tag<ConcurrencyTag>;
+    if constexpr (Mask::split == Split::dual)
+      internal::dual_split<Tag>(levels_[slot], mask_, faces, stencils_[slot]);
+    else
+      internal::sqrt3_split<Tag>(levels_[slot], mask_, k % 2 == 1, faces, stencils_[slot]);
+  }
+
+  // The last step of a one-pass refinement by Doo–Sabin or √3: the child
+  // built from its faces straight into the arrays of `out`, with no level
+  // of its own (no corner table, no copy), the parent freed first. Its
+  // sharpness, if asked for, is 0 (these schemes have no creases), and it
+  // has no holes, as build_mesh() would give it.
+  template <class ConcurrencyTag, class Q>
+  void stencil_split_into_mesh(unsigned k, Mobius_mesh<Q>& out, bool write_sharpness)
+  {
+    internal::Face_list faces;
+    stencil_split<ConcurrencyTag>(0, k, faces);
+    levels_.clear();
+    out.clear();
+    CGAL_ext::internal::build_connectivity_from_faces<ConcurrencyTag>(faces.view(stencils_[0].size()), false, out);
+    if (write_sharpness)
+      add_sharpness_maps<ConcurrencyTag>(out, nullptr, nullptr);
   }
 
   // How weights and stencils are made: serially for exact weights, whose

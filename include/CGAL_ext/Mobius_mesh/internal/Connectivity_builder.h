@@ -577,6 +577,29 @@ private:
 };
 
 
+/// Replaces the connectivity of `out` by that of the face lists, written
+/// through the builder straight into the mesh's arrays (in parallel for
+/// `CGAL::Parallel_tag`), its property maps reset; the points are left to
+/// the caller. Returns the vertices split off (see `Connectivity_builder`).
+/// On a `Soup_error` `out` is emptied: its arrays were half written.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
+std::vector<Split_vertex> build_connectivity_from_faces(const Face_lists& faces, bool split_non_manifold_vertices,
+                                                        Mobius_mesh<P>& out)
+{
+  Connectivity_builder builder(faces, ConcurrencyTag());
+  const Connectivity_arrays arrays = Connectivity_access::overwrite(
+    out, builder.number_of_vertices(), builder.number_of_edges(), builder.number_of_faces());
+  std::vector<Split_vertex> copies;
+  try {
+    copies = builder.build(arrays, split_non_manifold_vertices);
+  } catch (...) {
+    out = Mobius_mesh<P>();
+    throw;
+  }
+  Connectivity_access::reset_property_maps(out);
+  return copies;
+}
+
 /// Builds `out` (empty) from face lists: the connectivity through the
 /// builder, written straight into the mesh's arrays, and the point of each
 /// vertex from `point_of(v)` (a copy made by splitting a non-manifold vertex
@@ -585,17 +608,7 @@ template <class P, class PointOf>
 std::size_t build_mesh_from_faces(const Face_lists& faces, PointOf point_of, bool split_non_manifold_vertices,
                                   Mobius_mesh<P>& out)
 {
-  Connectivity_builder builder(faces);
-  const Connectivity_arrays arrays = Connectivity_access::overwrite(
-    out, builder.number_of_vertices(), builder.number_of_edges(), builder.number_of_faces());
-  std::vector<Split_vertex> copies;
-  try {
-    copies = builder.build(arrays, split_non_manifold_vertices);
-  } catch (...) {
-    out = Mobius_mesh<P>(); // the arrays are half written
-    throw;
-  }
-  Connectivity_access::reset_property_maps(out);
+  const std::vector<Split_vertex> copies = build_connectivity_from_faces(faces, split_non_manifold_vertices, out);
   auto points = out.points();
   for (std::uint32_t v = 0; v < faces.n_vertices; ++v)
     points[Vertex_index(v)] = point_of(v);

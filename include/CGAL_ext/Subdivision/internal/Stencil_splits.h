@@ -72,8 +72,9 @@ template <class ConcurrencyTag = CGAL::Sequential_tag>
 void level_from_faces(u32 nv, const Face_list& faces, Level& c)
 {
   CGAL_ext::internal::Connectivity_builder builder(faces.view(nv), ConcurrencyTag());
+  // No sharpness: Doo–Sabin and √3 have no creases.
   c.resize(nv, builder.number_of_edges(), faces.size(), u32(faces.vertex.size()),
-           Level::corner_table | Level::sharpness | Level::halfedge_corners);
+           Level::corner_table | Level::halfedge_corners);
   CGAL_ext::internal::Connectivity_arrays arrays;
   arrays.target = c.h_target.data();
   arrays.next_bits = c.h_next.data();
