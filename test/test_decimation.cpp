@@ -355,7 +355,7 @@ TEST(Quadric, SumsWeightedSquaredDistancesAndIsMinimalWhereThePlanesMeet)
   EXPECT_NEAR(x[0], 1, 1e-14);
   EXPECT_NEAR(x[1], 1, 1e-14);
   EXPECT_NEAR(x[2], 5, 1e-14);
-  // Nearly parallel planes (normals 1e-3 apart, eigenvalues ~1e-6 of the
+  // Nearly parallel planes (normals 1e-3 apart, eigenvalues ~2.5e-7 of the
   // largest) meet far away, at z = -1000 / 1e-3 ~ -1e6 for this pair; the
   // truncated minimiser keeps to the centre's neighbourhood on the planes.
   const Quadric flat = Quadric::of_plane({0, 0, 1}, {0, 0, 0}, 1) + Quadric::of_plane({1e-3, 0, 1}, {0, 0, 1e-3}, 1);
