@@ -10,7 +10,9 @@
 //   one_mesh:   CGAL_ext::merge_borders(m, tolerance(0)) on one Mobius_mesh
 //               holding both tubes.
 //   CGAL_stitch_borders: PMP::stitch_borders on one Surface_mesh holding both
-//   tubes (CGAL has no two-mesh stitch), in both cases.
+//   tubes (CGAL has no two-mesh stitch), in both cases; and for two meshes
+//   CGAL_copy_face_graph_and_stitch_borders: copy_face_graph of the second
+//   tube into the first, then stitch_borders, both timed.
 // convert/to_surface_mesh/..., convert/from_surface_mesh/...: a torus of
 //   N x N quads (orientable) and a Möbius strip of 2N x N/2 quads, converted
 //   into an empty target; peers: CGAL::copy_face_graph Surface_mesh ->
@@ -135,8 +137,9 @@ void add_tube(std::size_t i0, std::size_t i1, std::size_t n, std::vector<Point>&
 
 struct Halves
 {
-  Mesh a, b, both; // the tubes, and both in one mesh
-  SM sm_both;      // both tubes in one Surface_mesh
+  Mesh a, b, both;   // the tubes, and both in one mesh
+  SM sm_a, sm_b;     // the tubes as Surface_meshes
+  SM sm_both;        // both tubes in one Surface_mesh
   Counts closed;   // the closed torus
 };
 
@@ -158,6 +161,8 @@ const Halves& halves()
     std::vector<Polygon> f = fa;
     add_tube(half, n, n, p, f);
     PMP::polygon_soup_to_polygon_mesh(p, f, h->sm_both);
+    PMP::polygon_soup_to_polygon_mesh(pa, fa, h->sm_a);
+    PMP::polygon_soup_to_polygon_mesh(pb, fb, h->sm_b);
     h->closed = {n * n, 2 * n * n, n * n};
     const Counts tubes{h->closed.v + 2 * n, h->closed.e + 2 * n, h->closed.f};
     require_counts(h->both, tubes, "the two tubes");
@@ -306,7 +311,9 @@ void register_merge()
   };
 
   // Two meshes: ours takes them as they are; CGAL's stitch takes one mesh, so
-  // it gets the disjoint union (built beforehand).
+  // it gets the disjoint union, built beforehand (CGAL_stitch_borders) or in
+  // the timing by copying the second tube into the first, as a user of CGAL
+  // merging two meshes would (CGAL_copy_face_graph_and_stitch_borders).
   add(base + "/two_meshes/CGAL_ext_merge_borders", iterations(4), [=](benchmark::State& st) {
     const Halves& h = halves();
     Mesh m;
@@ -316,6 +323,21 @@ void register_merge()
       [&] { check_merge(m, r, "merge_borders (two meshes)"); });
   });
   add(base + "/two_meshes/CGAL_stitch_borders", iterations(10), stitch);
+  add(base + "/two_meshes/CGAL_copy_face_graph_and_stitch_borders", iterations(4), [](benchmark::State& st) {
+    const Halves& h = halves();
+    SM sm;
+    std::size_t stitched = 0;
+    timed(
+      st, [&] { sm = h.sm_a; },
+      [&] {
+        CGAL::copy_face_graph(h.sm_b, sm);
+        stitched = PMP::stitch_borders(sm);
+      },
+      [&] {
+        require_counts(sm, h.closed, "copy_face_graph + stitch_borders");
+        require(stitched == 2 * grid, "stitch_borders stitched " + std::to_string(stitched) + " edge pairs");
+      });
+  });
 
   // One mesh holding both tubes on either side: like for like.
   add(base + "/one_mesh/CGAL_ext_merge_borders", iterations(4), [=](benchmark::State& st) {
