@@ -197,7 +197,16 @@ private:
   {
     if (n > data_.capacity())
       grow_capacity((std::max)(n, 2 * data_.size())); // as the vector itself grows
-    data_.resize(n, Stored(default_));
+    if (n <= data_.size()) {
+      data_.resize(n, Stored(default_));
+      return;
+    }
+    // Within the capacity: appended one by one, not by resize(n, value),
+    // whose in-place fill (vector::_M_fill_insert) is ~15 % of a warm
+    // subdivision's time on the result's points.
+    const Stored value(default_);
+    for (std::size_t i = data_.size(); i < n; ++i)
+      push_within_capacity(data_, value);
   }
 
   std::vector<Stored> data_;
