@@ -182,21 +182,6 @@ void normalize_values(V* values, u32 n)
     CGAL_USE(values), CGAL_USE(n);
 }
 
-// Calls body(ConcurrencyTag()) if `parallel` and ConcurrencyTag asks for
-// threads, body(CGAL::Sequential_tag()) otherwise: every stage of a step
-// then runs in one mode, chosen once for the step.
-template <class ConcurrencyTag, class Body>
-void with_concurrency(bool parallel, const Body& body)
-{
-  if constexpr (is_parallel_tag<ConcurrencyTag>) {
-    if (parallel) {
-      body(ConcurrencyTag());
-      return;
-    }
-  }
-  body(CGAL::Sequential_tag());
-}
-
 } // namespace internal
 
 /// \ingroup PkgSubdivision

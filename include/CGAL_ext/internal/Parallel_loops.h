@@ -156,19 +156,19 @@ void atomic_or(std::uint64_t& x, std::uint64_t y)
     x |= y;
 }
 
-// Calls body(CGAL::Parallel_tag()) if `parallel` and TBB is there, else
-// body(CGAL::Sequential_tag()): a choice made at run time, with loops whose
-// tag is a constant.
-template <class Body>
-void parallel_if(bool parallel, const Body& body)
+// Calls body(ConcurrencyTag()) if `parallel` and ConcurrencyTag asks for
+// threads, body(CGAL::Sequential_tag()) otherwise: every loop of the body
+// then runs in one mode, chosen at run time, with a tag that is a constant
+// in it.
+template <class ConcurrencyTag, class Body>
+void with_concurrency(bool parallel, const Body& body)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  if (parallel) {
-    body(CGAL::Parallel_tag());
-    return;
+  if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    if (parallel) {
+      body(ConcurrencyTag());
+      return;
+    }
   }
-#endif
-  (void)parallel;
   body(CGAL::Sequential_tag());
 }
 

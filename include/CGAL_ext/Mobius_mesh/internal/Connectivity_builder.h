@@ -93,7 +93,7 @@ public:
   explicit Connectivity_builder(const Face_lists& faces, ConcurrencyTag = ConcurrencyTag())
       : faces_(faces), parallel_(is_parallel_tag<ConcurrencyTag>)
   {
-    parallel_if(parallel_, [&](auto tag) {
+    with_concurrency<ConcurrencyTag>(true, [&](auto tag) {
       using Tag = decltype(tag);
       number_corners<Tag>();
       check_repeated_vertices<Tag>();
@@ -115,18 +115,16 @@ public:
   std::vector<Split_vertex> build(const Connectivity_arrays& out, bool split_non_manifold_vertices)
   {
     out_ = out;
+#ifdef CGAL_LINKED_WITH_TBB
     if (parallel_) {
-      bool manifold = true;
-      parallel_if(true, [&](auto tag) {
-        link_faces<decltype(tag)>();
-        manifold = link_fans_in_parallel<decltype(tag)>();
-      });
-      if (manifold) {
+      link_faces<CGAL::Parallel_tag>();
+      if (link_fans_in_parallel<CGAL::Parallel_tag>()) {
         Array().swap(partner_);
         return {};
       }
       // The serial build names the fans at fault, or splits them.
     }
+#endif
     link_faces<CGAL::Sequential_tag>();
     Array().swap(partner_);
     return link_fans(split_non_manifold_vertices);
