@@ -389,9 +389,10 @@ void quad_split(const Level& p, Child& c, bool corner_table)
       namespace de = dart_encoding;
       c.v_dart[fp + f] = face_dart(de::halfedge_of_edge(2 * ne + k0, 0));
       for (u32 k = k0; k < k1; ++k) {
-        const u32 h = p.corner_h[k];
-        const u32 hn = de::halfedge_of_dart(p.h_next[h]);
         const u32 kn = (k + 1 == k1) ? k0 : k + 1;
+        // Corners run in cycle order: the next halfedge is the next corner's,
+        // read in order rather than through h_next at a scattered index.
+        const u32 h = p.corner_h[k], hn = p.corner_h[kn];
         const u32 ie = 2 * ne + k;
         // Inner edge ie: halfedge 0 to the face point, 1 to the edge point of h.
         c.h_target[de::halfedge_of_edge(ie, 0)] = fp + f;
