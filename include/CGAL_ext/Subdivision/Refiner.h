@@ -70,11 +70,13 @@ struct Refinement_options
 /// threads, whose cost grows with T. The rows `parallel_threshold` of
 /// bench_subdivision time one Catmull–Clark step of tori of 2^10 to 2^18
 /// vertices, serially against T threads (doc/benchmarks.md, "Parallel
-/// threshold"); on the loaded 2-core machine where they ran, two threads
-/// won at no size consistently, so the value is chosen, not measured: it
-/// keeps the former fixed threshold, 131 072 = 16 · 8192, on 16 threads and
-/// lowers it in proportion on fewer. Rerun those rows on an idle machine to
-/// place it.
+/// threshold"). On 2 idle cores, in three runs, two threads lose below
+/// 8 192 vertices (0.63–0.69× the serial speed), are as often slower as
+/// faster at 8 281 (0.55–1.11×) and win from 16 384 on in every run
+/// (1.12–1.55×): a level needs
+/// 16 384 vertices on two threads. How the crossover moves with T was not
+/// measured; keeping the work per thread fixed is the conservative guess,
+/// since the threads' start-up grows with T while the serial time does not.
 constexpr std::uint32_t parallel_vertices_per_thread = 8192;
 
 /// \ingroup PkgSubdivision
