@@ -71,12 +71,12 @@ struct Refinement_options
 /// bench_subdivision time one Catmull–Clark step of tori of 2^10 to 2^18
 /// vertices, serially against T threads (doc/benchmarks.md, "Parallel
 /// threshold"). On 2 idle cores, in three runs, two threads lose below
-/// 8 192 vertices (0.63–0.69× the serial speed), are as often slower as
+/// 8 192 vertices (0.54–0.69× the serial speed), are as often slower as
 /// faster at 8 281 (0.55–1.11×) and win from 16 384 on in every run
-/// (1.12–1.55×): a level needs
-/// 16 384 vertices on two threads. How the crossover moves with T was not
-/// measured; keeping the work per thread fixed is the conservative guess,
-/// since the threads' start-up grows with T while the serial time does not.
+/// (1.12–1.55×): a level needs 16 384 vertices on two threads. How the
+/// crossover moves with T was not measured; keeping the work per thread
+/// fixed is the conservative guess, since the threads' start-up grows with T
+/// while the serial time does not.
 constexpr std::uint32_t parallel_vertices_per_thread = 8192;
 
 /// \ingroup PkgSubdivision
