@@ -300,17 +300,7 @@ private:
   // Pairs the sides of one bucket; false if three share their ends.
   bool pair_bucket(std::uint64_t* begin, std::uint64_t* end)
   {
-    // Buckets hold a few sides each: insertion sort, without std::sort's
-    // set-up, but for the fans of vertices of high degree.
-    if (end - begin > 32)
-      std::sort(begin, end);
-    for (std::uint64_t* i = begin + (begin != end ? 1 : 0); i < end; ++i) {
-      const std::uint64_t x = *i;
-      std::uint64_t* j = i;
-      for (; j != begin && *(j - 1) > x; --j)
-        *j = *(j - 1);
-      *j = x;
-    }
+    sort_short(begin, end); // a few sides each
     for (std::uint64_t* s = begin; s != end;) {
       std::uint64_t* run_end = s + 1;
       while (run_end != end && high_of(*run_end) == high_of(*s))

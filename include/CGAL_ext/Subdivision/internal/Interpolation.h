@@ -71,19 +71,6 @@ inline void build_incidence_serially(const Level& p, Incidence& inc)
       inc.faces[fill[p.h_target[p.corner_h[c]]]++] = f;
 }
 
-// Sorts a short list (the edges or faces at a vertex, a handful): insertion
-// sort, without the set-up of std::sort.
-inline void sort_short(u32* begin, u32* end)
-{
-  for (u32* i = begin + (begin != end ? 1 : 0); i < end; ++i) {
-    const u32 x = *i;
-    u32* j = i;
-    for (; j != begin && *(j - 1) > x; --j)
-      *j = *(j - 1);
-    *j = x;
-  }
-}
-
 // The incidence tables of level `p`, a vertex at a time (in parallel for
 // `CGAL::Parallel_tag`): the walk around a vertex meets each end of an edge
 // at it once, and each face corner at it once, as a dart that is not on

@@ -50,6 +50,7 @@ using CGAL_ext::internal::mark;
 using CGAL_ext::internal::parallel_grain;
 using CGAL_ext::internal::prefix_sum;
 using CGAL_ext::internal::reduce;
+using CGAL_ext::internal::sort_short;
 using CGAL_ext::internal::with_concurrency;
 
 // Arrays mirror Mobius_mesh: halfedges 2e and 2e+1 of edge e, `next`/`prev`
