@@ -1406,6 +1406,29 @@ void check_schemes_on(const std::string& name, const Mesh& m, unsigned n, bool a
   }
 }
 
+// A double cone over a regular n-gon: two apexes of valence n, whose
+// incidence lists (n > 32) the parallel pass sorts with std::sort rather
+// than its insertion sort for short lists.
+Mesh bipyramid(std::size_t n)
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * CGAL_PI * double(i) / double(n);
+    points.emplace_back(std::cos(a), std::sin(a), 0.0);
+  }
+  points.emplace_back(0.0, 0.0, 1.0);
+  points.emplace_back(0.0, 0.0, -1.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    faces.push_back({i, j, n});
+    faces.push_back({j, i, n + 1});
+  }
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
+  return m;
+}
+
 TEST(SubdivisionParallel, EveryStageBitIdenticalToSerial)
 {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
@@ -1424,6 +1447,9 @@ TEST(SubdivisionParallel, EveryStageBitIdenticalToSerial)
     check_schemes_on<S::Loop_mask>("Loop, Moebius strip", strip_tris, 2, true);
     check_schemes_on<S::Linear_mask>("linear, Moebius strip", strip_tris, 2, true);
     check_schemes_on<S::Sqrt3_mask>("sqrt(3), Moebius strip", strip_tris, 3, false);
+    const Mesh cone = bipyramid(48);
+    check_schemes_on<S::Catmull_clark_mask>("Catmull-Clark, vertices of valence 48", cone, 3, false);
+    check_schemes_on<S::Loop_mask>("Loop, vertices of valence 48", cone, 3, false);
   });
 }
 
