@@ -31,6 +31,8 @@
 #include <string>
 #include <vector>
 
+namespace conversion_tests {
+
 namespace {
 
 using Kd = test::Kd;
@@ -841,3 +843,5 @@ TEST(Transform, ExactOnEpeck)
 }
 
 } // namespace
+
+} // namespace conversion_tests

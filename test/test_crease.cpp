@@ -14,6 +14,8 @@
 #include <opensubdiv/sdc/crease.h>
 #endif
 
+namespace crease_tests {
+
 namespace {
 
 namespace C = CGAL_ext::Subdivision::Crease;
@@ -281,3 +283,5 @@ TEST(CreaseOpenSubdiv, FractionalWeight)
 #endif // CGAL_EXT_HAVE_OPENSUBDIV
 
 } // namespace
+
+} // namespace crease_tests

@@ -31,6 +31,8 @@
 #include <set>
 #include <vector>
 
+namespace decimation_tests {
+
 namespace {
 
 using Point = test::Kd::Point_3;
@@ -563,3 +565,5 @@ TEST(Decimation, BadParametersThrowBeforeTheMeshIsTouched)
   m.remove_face(*m.faces().begin());
   EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(10)), CGAL_ext::Parameter_error);
 }
+
+} // namespace decimation_tests

@@ -39,6 +39,8 @@
 #include <tuple>
 #include <vector>
 
+namespace editing_tests {
+
 namespace {
 
 using CGAL_ext::Dart;
@@ -1341,3 +1343,5 @@ TEST(Offset, DisplacementFieldIsExactOnExactKernels)
                CGAL_ext::Parameter_error);
   EXPECT_EQ(out.number_of_faces(), kept.number_of_faces());
 }
+
+} // namespace editing_tests

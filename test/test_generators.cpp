@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+namespace generators_tests {
+
 namespace {
 
 namespace X = CGAL_ext;
@@ -713,3 +715,5 @@ TEST(Orientation, ComponentsOfJoinedMeshes)
 }
 
 } // namespace
+
+} // namespace generators_tests

@@ -43,6 +43,8 @@
 #include <unordered_set>
 #include <vector>
 
+namespace graph_traits_tests {
+
 namespace {
 
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -573,3 +575,5 @@ TEST(GraphTraits, OrientationGuard)
 }
 
 } // namespace
+
+} // namespace graph_traits_tests

@@ -18,6 +18,8 @@
 #include <type_traits>
 #include <vector>
 
+namespace huge_page_allocator_tests {
+
 namespace {
 
 using CGAL_ext::internal::can_advise_huge_pages;
@@ -187,3 +189,5 @@ TEST(HugePageAllocator, PropertyArraysGrowOntoAdvisedPages)
 }
 
 } // namespace
+
+} // namespace huge_page_allocator_tests

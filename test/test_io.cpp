@@ -39,6 +39,8 @@
 
 #include <unistd.h>
 
+namespace io_tests {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -1257,3 +1259,5 @@ TEST(IO_errors, non_finite_coordinates_are_not_written)
   }
   fs::remove_all(dir);
 }
+
+} // namespace io_tests

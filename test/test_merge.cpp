@@ -25,6 +25,8 @@
 #include <string>
 #include <vector>
 
+namespace merge_tests {
+
 namespace {
 
 using Kd = test::Kd;
@@ -1290,3 +1292,5 @@ TEST(MergeInPlace, RandomSplitsOfClosedSurfacesGlueBack)
     }
   EXPECT_GT(split, 0u); // the splits were exercised
 }
+
+} // namespace merge_tests

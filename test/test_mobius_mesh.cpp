@@ -21,6 +21,8 @@
 #include <utility>
 #include <vector>
 
+namespace mobius_mesh_tests {
+
 namespace {
 
 using Point = test::Kd::Point_3;
@@ -559,3 +561,5 @@ TEST(MobiusMesh, ReversingFacesKeepsTheSurface)
 }
 
 } // namespace
+
+} // namespace mobius_mesh_tests

@@ -29,6 +29,8 @@
 #include <utility>
 #include <vector>
 
+namespace normals_tests {
+
 namespace {
 
 namespace X = CGAL_ext;
@@ -801,3 +803,5 @@ TEST(TwoSidedScene, BadInputIsRefused)
 }
 
 } // namespace
+
+} // namespace normals_tests

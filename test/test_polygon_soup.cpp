@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+namespace polygon_soup_tests {
+
 namespace {
 
 using Point = test::Kd::Point_3;
@@ -444,3 +446,5 @@ TEST(ConnectivityBuilder, ParallelBuildIsTheSerialBuild)
     EXPECT_EQ(build_with<CGAL::Parallel_tag>(touching, nv + 2, true).copies.size(), 2u);
   });
 }
+
+} // namespace polygon_soup_tests

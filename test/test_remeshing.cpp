@@ -37,6 +37,8 @@
 #include <tuple>
 #include <vector>
 
+namespace remeshing_tests {
+
 namespace {
 
 using CGAL_ext::Edge_index;
@@ -646,3 +648,5 @@ TEST(IsotropicRemeshing, BadParametersLeaveTheMeshUntouched)
 }
 
 } // namespace
+
+} // namespace remeshing_tests

@@ -41,6 +41,8 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 #endif
 
+namespace subdivision_tests {
+
 namespace {
 
 namespace S = CGAL_ext::Subdivision;
@@ -1959,3 +1961,5 @@ TEST(SubdivisionLimit, ExactClosedForms)
   EXPECT_GT(CGAL::to_double(n.x()), 0.0);
   EXPECT_LE(std::abs(CGAL::to_double(n.y())) + std::abs(CGAL::to_double(n.z())), 1e-12 * CGAL::to_double(n.x()));
 }
+
+} // namespace subdivision_tests

@@ -35,6 +35,8 @@ extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
 #include <tbb/global_control.h>
 #endif
 
+namespace subdivision_peers_tests {
+
 namespace {
 
 namespace S = CGAL_ext::Subdivision;
@@ -394,3 +396,5 @@ TEST(SubdivisionParallel, BitIdenticalToSerial)
 #endif
 
 } // namespace
+
+} // namespace subdivision_peers_tests
