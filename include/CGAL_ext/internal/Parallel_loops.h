@@ -189,12 +189,14 @@ void mark(std::uint8_t& x)
 // Sorts the short lists that the per-element passes sort (the edges or
 // faces at a vertex, the sides in a vertex's bucket): insertion sort,
 // without std::sort's set-up, but std::sort for a long one (a vertex of
-// high degree), which the insertion sort then only checks.
+// high degree).
 template <class T>
 void sort_short(T* begin, T* end)
 {
-  if (end - begin > 32)
+  if (end - begin > 32) {
     std::sort(begin, end);
+    return;
+  }
   for (T* i = begin + (begin != end ? 1 : 0); i < end; ++i) {
     const T x = *i;
     T* j = i;
