@@ -23,6 +23,11 @@ cmake --build "$build" -j "$(nproc)"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0:malloc_limit_mb=2048}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 mkdir -p "$build/findings"
+# The targets write each input to a file for the readers to open: there, not
+# in the system's temporary directory, and removed at the end.
+export TMPDIR="$(cd "$build" && pwd)/scratch"
+mkdir -p "$TMPDIR"
+trap 'rm -rf "$TMPDIR"' EXIT
 for format in obj off ply; do
   target="$build/test/fuzz/fuzz_$format"
   seeds=test/fuzz/corpus/$format

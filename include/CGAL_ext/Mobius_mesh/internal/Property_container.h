@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
@@ -138,6 +139,8 @@ public:
   void append_from(const Base_property_array& other, std::size_t from, std::size_t n) override
   {
     const auto& o = static_cast<const Property_array&>(other);
+    if (data_.size() + n > data_.capacity())
+      grow_capacity((std::max)(data_.size() + n, 2 * data_.size())); // as insert() would grow it
     data_.insert(data_.end(), o.data_.begin() + from, o.data_.begin() + from + n);
   }
   bool transfer(const Base_property_array& source, const Transfer_sources& sources) override
@@ -182,15 +185,25 @@ public:
   const T& default_value() const { return default_; }
 
 private:
-  // Moves the values to a buffer of `capacity` elements and advises its
-  // fresh part onto huge pages before anything touches it (see
-  // Huge_page_allocator.h). The array stays a `std::vector<Stored>`, the
+  // Moves the values to a buffer of `capacity` elements advised onto huge
+  // pages before anything touches it (see Huge_page_allocator.h), the part
+  // the values move into included: vector::reserve() would write them before
+  // the buffer could be advised, leaving them on 4 KiB pages, one fault per
+  // page (half of an array doubled). The array stays a `std::vector<Stored>`, the
   // type `Property_map::data()` gives users, so the advice covers only the
   // whole huge pages inside the buffer, not its unaligned ends.
   void grow_capacity(std::size_t capacity)
   {
-    data_.reserve(capacity);
-    advise_huge_pages(data_.data() + data_.size(), (data_.capacity() - data_.size()) * sizeof(Stored));
+    std::vector<Stored> grown;
+    grown.reserve(capacity);
+    advise_huge_pages(grown.data(), capacity * sizeof(Stored));
+    // Moved only if moving cannot throw, as vector::reserve() does: a
+    // failure then leaves the values as they were.
+    if constexpr (std::is_nothrow_move_constructible_v<Stored>)
+      grown.insert(grown.end(), std::make_move_iterator(data_.begin()), std::make_move_iterator(data_.end()));
+    else
+      grown.insert(grown.end(), data_.begin(), data_.end());
+    data_.swap(grown);
   }
   // Out of line, so that growing by one within capacity needs no stack frame.
   [[gnu::noinline]] void resize_slowly(std::size_t n)
