@@ -74,6 +74,9 @@ struct Level
   bool sharp = false;
   Array<float> e_sharp, v_sharp;
   Array<std::uint8_t> f_hole; // empty if no face is a hole
+  // The degree of every face, where the split that made the level gives all
+  // its faces one (quads, triangles); 0 otherwise.
+  u32 face_degree = 0;
 
   // What resize() allocates besides the connectivity.
   enum Parts : unsigned { corner_table = 1, sharpness = 2, halfedge_corners = 4 };
@@ -84,6 +87,7 @@ struct Level
     ne = e;
     nf = f;
     nc = c;
+    face_degree = 0;
     sharp = (parts & sharpness) != 0;
     // Old contents are not kept: cleared first, a growing array is not copied.
     for (auto* a : {&h_target, &h_next, &h_prev, &h_face, &h_corner, &v_dart, &f_first, &f_offset, &corner_h})
@@ -232,6 +236,7 @@ struct Mesh_writer
   u32 *v_dart = nullptr, *f_first = nullptr;
   u32 *f_offset = nullptr, *corner_h = nullptr;
   Array<std::uint8_t> f_hole;
+  u32 face_degree = 0;
 
   void resize(u32 v, u32 e, u32 f, u32 c, unsigned parts)
   {
@@ -382,6 +387,7 @@ void quad_split(const Level& p, Child& c, bool corner_table)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
   c.resize(nv + ne + nf, 2 * ne + nc, nc, 4 * nc, corner_table ? Level::corner_table : 0u);
+  c.face_degree = 4;
   split_edges_and_border<ConcurrencyTag>(p, c, nv);
   const u32 fp = nv + ne;
   with_flag(corner_table, [&](auto with_corners) {
@@ -430,6 +436,7 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
 {
   const u32 ne = p.ne, nv = p.nv, nf = p.nf, nc = p.nc;
   c.resize(nv + ne, 2 * ne + nc, nc + nf, 3 * (nc + nf), corner_table ? Level::corner_table : 0u);
+  c.face_degree = 3;
   split_edges_and_border<ConcurrencyTag>(p, c, nv);
   with_flag(corner_table, [&](auto with_corners) {
     constexpr bool corners = decltype(with_corners)::value;

@@ -292,6 +292,14 @@ private:
   {
     const Level& p = *p_;
     Step_weights<W>& sw = *sw_;
+    if (!p.sharp && p.face_degree != 0 && p.face_degree < D) {
+      // No crease and no border, and faces of one degree: every edge has the
+      // same smooth mask, which needs no look at its faces.
+      const u32 d = p.face_degree, cls = u32(sw.edges.size());
+      sw.edges.push_back(Step_weights<W>::finish(smooth_edge_weights(d, d, 0.0f)));
+      for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) { sw.edge_class[e] = cls; });
+      return false;
+    }
     std::vector<std::uint8_t> used(1 + D * D, 0);
     u32 any = 0, own = 0;
     classify<ConcurrencyTag>(p.ne, sw.edge_class, used, any, own, [&](u32 e, Ring&, u32& block_any) {
