@@ -523,6 +523,34 @@ TEST(MobiusMesh, JoinIsADisjointUnion)
   EXPECT_EQ(a.point(Vertex_index(100u + 5u)), b.point(Vertex_index(5u)));
 }
 
+// Joining grows every array of the first mesh: each value of both meshes
+// comes through, points and a map of strings (moved, not copied, into the
+// grown array) alike.
+TEST(MobiusMesh, JoinKeepsEveryValue)
+{
+  Mesh a = load("nonorientable/mobius_20x4_quads.obj");
+  Mesh b = load("nonorientable/torus_24x12_quads.obj");
+  auto label_a = a.add_property_map<Vertex_index, std::string>("v:label", "none").first;
+  auto label_b = b.add_property_map<Vertex_index, std::string>("v:label", "none").first;
+  const auto name = [](const char* mesh, Vertex_index v) { return mesh + std::to_string(v.idx()); };
+  for (Vertex_index v : a.vertices())
+    label_a[v] = name("a", v);
+  for (Vertex_index v : b.vertices())
+    label_b[v] = name("b", v);
+  const Mesh before = a;
+  const auto offsets = a.join(b);
+  ASSERT_TRUE(a.is_valid(true));
+  for (Vertex_index v : before.vertices()) {
+    EXPECT_EQ(a.point(v), before.point(v));
+    EXPECT_EQ(label_a[v], name("a", v));
+  }
+  for (Vertex_index v : b.vertices()) {
+    const Vertex_index w(offsets.vertices + v.idx());
+    EXPECT_EQ(a.point(w), b.point(v));
+    EXPECT_EQ(label_a[w], name("b", v));
+  }
+}
+
 // Reversing faces moves Möbius edges but never changes the surface.
 TEST(MobiusMesh, ReversingFacesKeepsTheSurface)
 {
