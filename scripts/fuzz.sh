@@ -25,7 +25,7 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 mkdir -p "$build/findings"
 # The targets write each input to a file for the readers to open: there, not
 # in the system's temporary directory, and removed at the end.
-export TMPDIR="$(cd "$build" && pwd)/scratch"
+export TMPDIR="$(cd -- "$build" >/dev/null && pwd)/scratch"
 mkdir -p "$TMPDIR"
 trap 'rm -rf "$TMPDIR"' EXIT
 for format in obj off ply; do

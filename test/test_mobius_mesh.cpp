@@ -524,30 +524,42 @@ TEST(MobiusMesh, JoinIsADisjointUnion)
 }
 
 // Joining grows every array of the first mesh: each value of both meshes
-// comes through, points and a map of strings (moved, not copied, into the
-// grown array) alike.
+// comes through, in the points, in a map of strings both have, and in maps
+// only one of them has (the other's part then takes the map's default).
 TEST(MobiusMesh, JoinKeepsEveryValue)
 {
   Mesh a = load("nonorientable/mobius_20x4_quads.obj");
   Mesh b = load("nonorientable/torus_24x12_quads.obj");
   auto label_a = a.add_property_map<Vertex_index, std::string>("v:label", "none").first;
   auto label_b = b.add_property_map<Vertex_index, std::string>("v:label", "none").first;
+  auto flag = a.add_property_map<Vertex_index, bool>("v:flag", false).first;
+  auto weight = b.add_property_map<Vertex_index, double>("v:weight", -1.0).first;
   const auto name = [](const char* mesh, Vertex_index v) { return mesh + std::to_string(v.idx()); };
-  for (Vertex_index v : a.vertices())
+  for (Vertex_index v : a.vertices()) {
     label_a[v] = name("a", v);
-  for (Vertex_index v : b.vertices())
+    flag[v] = v.idx() % 2 == 0;
+  }
+  for (Vertex_index v : b.vertices()) {
     label_b[v] = name("b", v);
+    weight[v] = 0.5 * v.idx();
+  }
   const Mesh before = a;
   const auto offsets = a.join(b);
   ASSERT_TRUE(a.is_valid(true));
+  const auto joined_weight = a.property_map<Vertex_index, double>("v:weight");
+  ASSERT_TRUE(joined_weight.has_value());
   for (Vertex_index v : before.vertices()) {
     EXPECT_EQ(a.point(v), before.point(v));
     EXPECT_EQ(label_a[v], name("a", v));
+    EXPECT_EQ(flag[v], v.idx() % 2 == 0);
+    EXPECT_EQ((*joined_weight)[v], -1.0);
   }
   for (Vertex_index v : b.vertices()) {
     const Vertex_index w(offsets.vertices + v.idx());
     EXPECT_EQ(a.point(w), b.point(v));
     EXPECT_EQ(label_a[w], name("b", v));
+    EXPECT_FALSE(flag[w]);
+    EXPECT_EQ((*joined_weight)[w], 0.5 * v.idx());
   }
 }
 

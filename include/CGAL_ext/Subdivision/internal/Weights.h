@@ -292,7 +292,7 @@ private:
   {
     const Level& p = *p_;
     Step_weights<W>& sw = *sw_;
-    if (!p.sharp && p.face_degree != 0 && p.face_degree < D) {
+    if (!p.sharp && p.face_degree != 0 && p.face_degree < D && p.ne != 0) {
       // No crease and no border, and faces of one degree: every edge has the
       // same smooth mask, which needs no look at its faces.
       const u32 d = p.face_degree, cls = u32(sw.edges.size());
