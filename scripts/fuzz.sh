@@ -20,12 +20,15 @@ cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="${CLANGXX:-clang++}" -DCMAKE_BUILD_
       -DCMAKE_CXX_FLAGS_DEBUG="" -DCGAL_EXT_BUILD_TESTS=OFF -DCGAL_EXT_BUILD_EXAMPLES=OFF \
       -DCGAL_EXT_BUILD_FUZZERS=ON "${launcher[@]}" >/dev/null
 cmake --build "$build" -j "$(nproc)"
+# Absolute paths from here on: the fuzzers run inside the findings directory.
+root=$PWD
+build=$(cd -- "$build" >/dev/null && pwd)
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0:malloc_limit_mb=2048}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 mkdir -p "$build/findings"
 # The targets write each input to a file for the readers to open: there, not
 # in the system's temporary directory, and removed at the end.
-export TMPDIR="$(cd -- "$build" >/dev/null && pwd)/scratch"
+export TMPDIR="$build/scratch"
 mkdir -p "$TMPDIR"
 trap 'rm -rf "$TMPDIR"' EXIT
 for format in obj off ply; do
@@ -41,9 +44,9 @@ for format in obj off ply; do
   parallel=()
   # Several jobs log to fuzz-<n>.log in the working directory.
   if [ "$jobs" -gt 1 ]; then parallel=(-jobs="$jobs" -workers="$jobs"); fi
-  (cd "$build/findings" && "$OLDPWD/$target" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=2048 \
-      -timeout=10 -dict="$OLDPWD/test/fuzz/$format.dict" -artifact_prefix="$format-" "${parallel[@]}" \
-      -print_final_stats=1 "${seed[@]}" "$OLDPWD/$corpus" "$OLDPWD/$seeds") >"$build/findings/fuzz_$format.log" 2>&1 ||
+  (cd "$build/findings" && "$target" -max_total_time="$seconds" -max_len=8192 -rss_limit_mb=2048 \
+      -timeout=10 -dict="$root/test/fuzz/$format.dict" -artifact_prefix="$format-" "${parallel[@]}" \
+      -print_final_stats=1 "${seed[@]}" "$corpus" "$root/$seeds") >"$build/findings/fuzz_$format.log" 2>&1 ||
     { tail -60 "$build/findings/fuzz_$format.log"; exit 1; }
   grep -h "stat::number_of_executed_units\|cov:" "$build/findings/fuzz_$format.log" | tail -2 || true
 done
