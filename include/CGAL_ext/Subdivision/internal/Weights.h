@@ -267,7 +267,14 @@ private:
     if (Mask::creases && Crease::is_sharp(s))
       return own_entry;
     const auto [d0, d1] = face_degrees(e);
-    return d0 < D && d1 < D ? 1 + d0 * D + d1 : own_entry;
+    return d0 < D && d1 < D ? smooth_edge_key(d0, d1) : own_entry;
+  }
+  static u32 smooth_edge_key(u32 d0, u32 d1) { return 1 + d0 * D + d1; }
+  // The shared table entry of an edge key other than `own_entry`.
+  Edge_weights<W> shared_edge_entry(u32 key) const
+  {
+    return Step_weights<W>::finish(key == 0 ? Edge_weights<W>{W(0.5), W(0), false}
+                                            : smooth_edge_weights((key - 1) / D, (key - 1) % D, 0.0f));
   }
 
   // The smooth mask of edge e; if it is semi-sharp (`s > 0`), OpenSubdiv's
@@ -295,8 +302,8 @@ private:
     if (!p.sharp && p.face_degree != 0 && p.face_degree < D && p.ne != 0) {
       // No crease and no border, and faces of one degree: every edge has the
       // same smooth mask, which needs no look at its faces.
-      const u32 d = p.face_degree, cls = u32(sw.edges.size());
-      sw.edges.push_back(Step_weights<W>::finish(smooth_edge_weights(d, d, 0.0f)));
+      const u32 cls = u32(sw.edges.size());
+      sw.edges.push_back(shared_edge_entry(smooth_edge_key(p.face_degree, p.face_degree)));
       for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) { sw.edge_class[e] = cls; });
       return false;
     }
@@ -321,8 +328,7 @@ private:
       if (!used[key])
         continue;
       class_of[key] = u32(sw.edges.size());
-      sw.edges.push_back(Step_weights<W>::finish(key == 0 ? Edge_weights<W>{W(0.5), W(0), false}
-                                                          : smooth_edge_weights((key - 1) / D, (key - 1) % D, 0.0f)));
+      sw.edges.push_back(shared_edge_entry(key));
     }
     assign_classes<ConcurrencyTag>(p.ne, sw.edge_class, class_of, own, sw.edges,
                                    [&](u32 e, Ring&, Edge_weights<W>& w) {
