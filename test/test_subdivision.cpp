@@ -1178,6 +1178,53 @@ TEST(SubdivisionApi, EdgePointsVertexRule)
   EXPECT_EQ(m.point(CGAL_ext::Vertex_index(0)), K::Point_3(c, c, c));
 }
 
+// A quad mask whose smooth vertex rule weights the neighbours, the face
+// points and the new edge points apart: with `Sums` 3 the three weights
+// differ, with 2 the last two are equal, so that the interpolation keeps
+// three or two sums per vertex where the standard masks need one. The
+// weights sum to 1: (n − 2)/n of the standard rule is here 1/2.
+template <int Sums>
+struct Unequal_weights_mask
+{
+  static constexpr S::Split split = S::Split::quad;
+  static constexpr bool creases = true;
+  template <class W>
+  void smooth_edge(unsigned, unsigned, S::Edge_weights<W>& w) const
+  {
+    w.vertex = W(1) / W(4);
+    w.face = W(1) / W(4);
+  }
+  template <class W>
+  void smooth_vertex(unsigned n, S::Vertex_weights<W>& w) const
+  {
+    const W k = W(int(n));
+    w.vertex = W(1) / W(2);
+    w.edge = W(1) / (W(4) * k);
+    w.face = W(Sums == 3 ? 3 : 2) / (W(16) * k);
+    w.edge_point = W(Sums == 3 ? 1 : 2) / (W(16) * k);
+  }
+};
+
+TEST(SubdivisionApi, VertexRuleOfUnequalWeightsByHand)
+{
+  // Cube corners of valence 3. At (0,0,0) the neighbours and the face centres
+  // each sum to (1,1,1), the new edge points to (3/4,3/4,3/4) (as in
+  // EdgePointsVertexRule); at (1,1,1), to (2,2,2), (2,2,2) and (9/4,9/4,9/4).
+  // Three weights 1/12, 1/16, 1/48: 1/12 + 1/16 + 3/4 · 1/48 = 31/192, and
+  // 1/2 + 2/12 + 2/16 + 9/4 · 1/48 = 161/192. Two weights 1/12, 1/24, 1/24:
+  // 1/12 + 1/24 + 3/4 · 1/24 = 5/32 and 1/2 + 2/12 + 2/24 + 9/4 · 1/24 = 27/32.
+  using K = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  using Q = CGAL::Gmpq;
+  auto check = [](auto mask, const Q& low, const Q& high) {
+    auto m = unit_cube<K>();
+    S::subdivide(m, mask);
+    EXPECT_EQ(m.point(CGAL_ext::Vertex_index(0)), K::Point_3(low, low, low));
+    EXPECT_EQ(m.point(CGAL_ext::Vertex_index(6)), K::Point_3(high, high, high));
+  };
+  check(Unequal_weights_mask<3>(), Q(31, 192), Q(161, 192));
+  check(Unequal_weights_mask<2>(), Q(5, 32), Q(27, 32));
+}
+
 // The one-pass path (used by the free functions) against refine(),
 // interpolate_level() and build_mesh(): the same mesh, bit for bit the same
 // points, the same sharpness and hole maps.
@@ -1446,6 +1493,8 @@ TEST(SubdivisionParallel, EveryStageBitIdenticalToSerial)
     check_schemes_on<S::Bilinear_mask>("bilinear, Moebius strip", strip, 2, true);
     check_schemes_on<S::Doo_sabin_mask>("Doo-Sabin, Moebius strip", strip, 2, false);
     check_schemes_on<S::Doo_sabin_mask>("Doo-Sabin, Klein bottle", klein, 2, false);
+    check_schemes_on<Unequal_weights_mask<3>>("three vertex sums, Moebius strip", strip, 2, true);
+    check_schemes_on<Unequal_weights_mask<2>>("two vertex sums, Klein bottle", klein, 2, false);
     check_schemes_on<S::Loop_mask>("Loop, Moebius strip", strip_tris, 2, true);
     check_schemes_on<S::Linear_mask>("linear, Moebius strip", strip_tris, 2, true);
     check_schemes_on<S::Sqrt3_mask>("sqrt(3), Moebius strip", strip_tris, 3, false);

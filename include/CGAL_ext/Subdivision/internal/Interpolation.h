@@ -171,54 +171,89 @@ void interpolate_stencils(const Stencils<W>& st, const Value* src, Value* dst)
   for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { dst[i] = stencil_point(st, i, src); });
 }
 
-// The serial pass of a primal step: vertex points start from their own
-// terms, then each edge and each face corner adds its terms to the vertex
-// points it touches, in edge and face order.
+// The point of parent vertex v, its sums of terms made (Vertex_sums):
+// `sum(s)` gives sum s. Both passes form it with this expression.
+template <class W, class Value, class Sum>
+inline Value vertex_point(const Vertex_weights<W>& w, const Vertex_sums& vs, u32 v, const Value* src, const Sum& sum)
+{
+  Value x = w.vertex * src[v];
+  if (w.has_crease)
+    x = x + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
+  for (int s = 0; s < vs.count; ++s)
+    if (Vertex_sums::has(w, vs.weight_of[s]))
+      x = x + Vertex_sums::weight(w, vs.weight_of[s]) * sum(s);
+  return x;
+}
+
+// Whether the point of a vertex with weights `w` takes any sum.
+template <class W>
+inline bool takes_sums(const Vertex_weights<W>& w)
+{
+  return w.has_edge || w.has_face || w.has_edge_point;
+}
+
+// The serial pass of a primal step: each edge and each face corner adds
+// its terms, unweighted, to the sums of the vertices it touches, in edge
+// and then face order; then each vertex point weights its sums. Sum 0 is
+// kept in the vertex points themselves, the others in scratch arrays.
 template <Split split, class W, class Value>
 void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* src, Value* dst)
 {
   namespace de = dart_encoding;
   const u32 nv = p.nv, ne = p.ne, nf = p.nf;
   const u32 fp = nv + ne;
+  if (nv == 0)
+    return; // no edges, no faces
+  const Vertex_sums& vs = sw.sums;
+  const Value zero = W(0) * src[0];
+  std::vector<Value> scratch[2];
+  Value* sums[3] = {dst, nullptr, nullptr};
+  for (int s = 1; s < vs.count; ++s) {
+    scratch[s - 1].assign(nv, zero);
+    sums[s] = scratch[s - 1].data();
+  }
+  auto sum_of = [&](Vertex_sums::Term t) { return vs.sum_of[t] == Vertex_sums::none ? nullptr : sums[vs.sum_of[t]]; };
+  Value *neighbours = sum_of(Vertex_sums::neighbours), *edge_points = sum_of(Vertex_sums::edge_points),
+        *face_points = sum_of(Vertex_sums::face_points);
   if constexpr (split == Split::quad) {
     for (u32 f = 0; f < nf; ++f)
       dst[fp + f] = face_point<W>(p, f, src);
   }
-  for (u32 v = 0; v < nv; ++v) {
-    const Vertex_weights<W>& w = sw.vertex(v);
-    dst[v] = w.vertex * src[v];
-    if (w.has_crease)
-      dst[v] = dst[v] + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
-  }
-  for (u32 e = 0; e < ne; ++e) {
-    const u32 h0 = de::halfedge_of_edge(e, 0);
-    const u32 a = p.source(de::dart(h0, false)), b = p.h_target[h0];
-    const Value x = edge_point<split>(p, sw.edge(e), e, src, dst + fp);
-    dst[nv + e] = x;
-    const Vertex_weights<W>&wa = sw.vertex(a), &wb = sw.vertex(b);
-    if (wa.has_edge)
-      dst[a] = dst[a] + wa.edge * src[b];
-    if (wb.has_edge)
-      dst[b] = dst[b] + wb.edge * src[a];
-    if (wa.has_edge_point)
-      dst[a] = dst[a] + wa.edge_point * x;
-    if (wb.has_edge_point)
-      dst[b] = dst[b] + wb.edge_point * x;
-  }
-  if constexpr (split == Split::quad) {
-    for (u32 f = 0; f < nf; ++f) {
-      for (u32 i = p.f_offset[f], i1 = p.f_offset[f + 1]; i < i1; ++i) {
-        const u32 v = p.h_target[p.corner_h[i]];
-        const Vertex_weights<W>& w = sw.vertex(v);
-        if (w.has_face)
-          dst[v] = dst[v] + w.face * dst[fp + f];
+  if (vs.count > 0)
+    std::fill(dst, dst + nv, zero);
+  // Which sums the edges add to, as constants in the loop.
+  with_flag(neighbours != nullptr, [&](auto to_neighbours) {
+    with_flag(edge_points != nullptr, [&](auto to_edge_points) {
+      for (u32 e = 0; e < ne; ++e) {
+        const u32 h0 = de::halfedge_of_edge(e, 0);
+        const u32 a = p.source(de::dart(h0, false)), b = p.h_target[h0];
+        const Value x = edge_point<split>(p, sw.edge(e), e, src, dst + fp);
+        dst[nv + e] = x;
+        if constexpr (decltype(to_neighbours)::value) {
+          neighbours[a] = neighbours[a] + src[b];
+          neighbours[b] = neighbours[b] + src[a];
+        }
+        if constexpr (decltype(to_edge_points)::value) {
+          edge_points[a] = edge_points[a] + x;
+          edge_points[b] = edge_points[b] + x;
+        }
       }
-    }
+    });
+  });
+  if constexpr (split == Split::quad) {
+    if (face_points)
+      for (u32 f = 0; f < nf; ++f)
+        for (u32 i = p.f_offset[f], i1 = p.f_offset[f + 1]; i < i1; ++i) {
+          const u32 v = p.h_target[p.corner_h[i]];
+          face_points[v] = face_points[v] + dst[fp + f];
+        }
   }
+  for (u32 v = 0; v < nv; ++v)
+    dst[v] = vertex_point(sw.vertex(v), vs, v, src, [&](int s) -> const Value& { return sums[s][v]; });
 }
 
-// The serial pass's three loops as gathers over `inc` (the incidence tables
-// of `p`), in the same order of terms; each loop may run in parallel.
+// The serial pass as gathers over `inc` (the incidence tables of `p`), in
+// the same order of terms; each loop may run in parallel.
 template <class ConcurrencyTag, Split split, class W, class Value>
 void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Incidence& inc, const Value* src,
                         Value* dst)
@@ -226,28 +261,38 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
   namespace de = dart_encoding;
   const u32 nv = p.nv, ne = p.ne, nf = p.nf;
   const u32 fp = nv + ne;
+  if (nv == 0)
+    return;
   if constexpr (split == Split::quad)
     for_each_index<ConcurrencyTag>(nf, [&](u32 f) { dst[fp + f] = face_point<W>(p, f, src); });
   for_each_index<ConcurrencyTag>(ne,
                                  [&](u32 e) { dst[nv + e] = edge_point<split>(p, sw.edge(e), e, src, dst + fp); });
-  for_each_index<ConcurrencyTag>(nv, [&](u32 v) {
-    const Vertex_weights<W>& w = sw.vertex(v);
-    Value x = w.vertex * src[v];
-    if (w.has_crease)
-      x = x + w.crease * (src[w.crease_ends[0]] + src[w.crease_ends[1]]);
-    for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
-      const u32 e = inc.edges[i];
-      const u32 h0 = de::halfedge_of_edge(e, 0);
-      const u32 a = p.source(de::dart(h0, false));
-      if (w.has_edge)
-        x = x + w.edge * src[a == v ? p.h_target[h0] : a];
-      if (w.has_edge_point)
-        x = x + w.edge_point * dst[nv + e];
-    }
-    if (w.has_face)
-      for (u32 i = inc.face_offset[v]; i < inc.face_offset[v + 1]; ++i)
-        x = x + w.face * dst[fp + inc.faces[i]];
-    dst[v] = x;
+  const Vertex_sums& vs = sw.sums;
+  const int neighbours = vs.sum_of[Vertex_sums::neighbours], edge_points = vs.sum_of[Vertex_sums::edge_points],
+            face_points = vs.sum_of[Vertex_sums::face_points];
+  const Value zero = W(0) * src[0];
+  // One sum (the standard masks) in one variable, which stays in registers.
+  with_flag(vs.count == 1, [&](auto one_sum) {
+    auto index = [](int s) { return decltype(one_sum)::value ? 0 : s; };
+    for_each_index<ConcurrencyTag>(nv, [&](u32 v) {
+      const Vertex_weights<W>& w = sw.vertex(v);
+      Value sums[3] = {zero, zero, zero};
+      if (takes_sums(w)) {
+        for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
+          const u32 e = inc.edges[i];
+          const u32 h0 = de::halfedge_of_edge(e, 0);
+          const u32 a = p.source(de::dart(h0, false));
+          if (neighbours != Vertex_sums::none)
+            sums[index(neighbours)] = sums[index(neighbours)] + src[a == v ? p.h_target[h0] : a];
+          if (edge_points != Vertex_sums::none)
+            sums[index(edge_points)] = sums[index(edge_points)] + dst[nv + e];
+        }
+        if (face_points != Vertex_sums::none)
+          for (u32 i = inc.face_offset[v]; i < inc.face_offset[v + 1]; ++i)
+            sums[index(face_points)] = sums[index(face_points)] + dst[fp + inc.faces[i]];
+      }
+      dst[v] = vertex_point(w, vs, v, src, [&](int s) -> const Value& { return sums[index(s)]; });
+    });
   });
 }
 

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -180,6 +181,9 @@ struct Level
       return dart_encoding::halfedge_of_edge(2 * e, 0);
     return e_mobius[e] ? dart_encoding::halfedge_of_edge(2 * e, 1) : dart_encoding::halfedge_of_edge(2 * e + 1, 1);
   }
+  // The other child of the parent halfedge of `child`: the children of a
+  // halfedge of edge e are 4e + i and 4e + 2 + i, which differ in bit 1.
+  static u32 other_child(u32 child) { return child ^ 2u; }
   u32 second_child(u32 h) const
   {
     const u32 e = dart_encoding::edge_of_halfedge(h);
@@ -320,7 +324,7 @@ template <class ConcurrencyTag, class Child>
 void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
 {
   auto split_halfedge = [&](u32 h) {
-    const u32 h0 = p.first_child(h), h1 = p.second_child(h);
+    const u32 h0 = p.first_child(h), h1 = Level::other_child(h0);
     c.h_target[h0] = edge_point_offset + dart_encoding::edge_of_halfedge(h);
     c.h_target[h1] = p.h_target[h];
     if (p.h_face[h] != null_u32)
@@ -374,6 +378,19 @@ void with_flag(bool flag, const Body& body)
     body(std::true_type());
   else
     body(std::false_type());
+}
+
+// Calls body(std::integral_constant<u32, i>()) for i = 0, ..., N − 1: a loop
+// whose index is a constant in each copy of its body.
+template <class Body, u32... I>
+void unroll(const Body& body, std::integer_sequence<u32, I...>)
+{
+  (body(std::integral_constant<u32, I>()), ...);
+}
+template <u32 N, class Body>
+void unroll(const Body& body)
+{
+  unroll(body, std::make_integer_sequence<u32, N>());
 }
 
 // Catmull–Clark / bilinear split: child vertices [vertex points | edge points
@@ -444,8 +461,9 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
       namespace de = dart_encoding;
       const u32 k0 = p.f_offset[f];
       const u32 centre = nc + f;
-      for (u32 i = 0; i < 3; ++i) {
-        const u32 k = k0 + i, kn = k0 + (i + 1) % 3;
+      unroll<3>([&](auto corner) {
+        constexpr u32 i = decltype(corner)::value, i_next = (i + 1) % 3;
+        const u32 k = k0 + i, kn = k0 + i_next;
         const u32 h = p.corner_h[k], hn = p.corner_h[kn];
         const u32 ie = 2 * ne + k;
         // Inner edge ie, across corner k: halfedge 0 to the edge point of h
@@ -472,7 +490,7 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
         c.h_face[in] = centre;
         if constexpr (corners)
           c.corner_h[3 * centre + i] = in;
-      }
+      });
       c.f_first[centre] = de::halfedge_of_edge(2 * ne + k0, 1);
       if constexpr (corners)
         c.f_offset[centre] = 3 * centre;

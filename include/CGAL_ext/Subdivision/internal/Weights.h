@@ -36,6 +36,52 @@ namespace internal {
 // entries of single elements in element order: a numbering that does not
 // depend on the order in which the elements are visited, so that the
 // threads of a parallel build make the serial table.
+// How the interpolation passes add up the terms of a vertex point
+// (Interpolation.h). Each kind of term (the neighbours, the face points,
+// the new edge points) is summed unweighted and its sum weighted once per
+// vertex: a product per vertex, where weighting every term costs one per
+// term and a look-up of both ends' weights per edge. Kinds weighted alike
+// at every vertex share a sum (the standard masks need only one); the
+// others get one of their own.
+struct Vertex_sums
+{
+  enum Term : int { neighbours, face_points, edge_points };
+  static constexpr int none = -1;
+
+  int sum_of[3] = {none, none, none}; // the sum each kind of term is added to
+  Term weight_of[3] = {};             // for each sum, the kind whose weight it takes
+  int count = 0;                      // the sums, at most 3
+
+  template <class W>
+  static const W& weight(const Vertex_weights<W>& w, Term t)
+  {
+    return t == neighbours ? w.edge : t == face_points ? w.face : w.edge_point;
+  }
+  template <class W>
+  static bool has(const Vertex_weights<W>& w, Term t)
+  {
+    return t == neighbours ? w.has_edge : t == face_points ? w.has_face : w.has_edge_point;
+  }
+  // Groups the kinds of terms of the weights in `table`.
+  template <class W>
+  void group(const std::vector<Vertex_weights<W>>& table)
+  {
+    *this = Vertex_sums();
+    for (Term t : {neighbours, face_points, edge_points}) {
+      if (std::none_of(table.begin(), table.end(), [&](const auto& w) { return has(w, t); }))
+        continue;
+      for (int s = 0; s < count && sum_of[t] == none; ++s)
+        if (std::all_of(table.begin(), table.end(),
+                        [&](const auto& w) { return weight(w, t) == weight(w, weight_of[s]); }))
+          sum_of[t] = s;
+      if (sum_of[t] == none) {
+        weight_of[count] = t;
+        sum_of[t] = count++;
+      }
+    }
+  }
+};
+
 template <class W>
 struct Step_weights
 {
@@ -44,6 +90,7 @@ struct Step_weights
   std::vector<Edge_weights<W>> edges;
   std::vector<Vertex_weights<W>> vertices;
   Array<u32> edge_class, vertex_class;
+  Vertex_sums sums; // made from `vertices` once they are all in
 
   void reset(u32 ne, u32 nv)
   {
@@ -149,6 +196,7 @@ public:
     if (p.sharp)
       for_each_index<ConcurrencyTag>(p.nc, [&](u32 c) { child.edges[2 * p.ne + c] = 0.0f; });
     any = add_vertex_weights<ConcurrencyTag>(child.vertices.data()) || any;
+    sw.sums.group(sw.vertices);
     child.any = any;
     if (any)
       for_each_index<ConcurrencyTag>(child_nv - p.nv, [&](u32 i) { child.vertices[p.nv + i] = 0.0f; });
