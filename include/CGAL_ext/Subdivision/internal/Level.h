@@ -210,6 +210,18 @@ struct Level
 // The unflipped dart of halfedge h: how face cycles are linked.
 constexpr u32 face_dart(u32 h) { return dart_encoding::dart(h, false); }
 
+// The first element of an array of a Level or a Mesh_writer.
+template <class T>
+T* data_of(Array<T>& a)
+{
+  return a.data();
+}
+template <class T>
+T* data_of(T* a)
+{
+  return a;
+}
+
 // Links dart `a` to dart `b` in a level or a Mesh_writer, as Mobius_mesh::set_next().
 template <class Child>
 void link(Child& c, u32 a, u32 b)
@@ -323,8 +335,9 @@ void fill_level(const Mobius_mesh<P>& m, Level& L)
 template <class ConcurrencyTag, class Child>
 void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
 {
-  auto split_halfedge = [&](u32 h) {
-    const u32 h0 = p.first_child(h), h1 = Level::other_child(h0);
+  // Parent halfedge h, h0 its first child.
+  auto split_halfedge = [&](u32 h, u32 h0) {
+    const u32 h1 = Level::other_child(h0);
     c.h_target[h0] = edge_point_offset + dart_encoding::edge_of_halfedge(h);
     c.h_target[h1] = p.h_target[h];
     if (p.h_face[h] != null_u32)
@@ -340,15 +353,29 @@ void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
   // An edge and its two halfedges in one loop: one fork and join fewer.
   for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) {
     const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
-    split_halfedge(h0);
-    split_halfedge(h1);
-    c.e_mobius[2 * e] = c.e_mobius[2 * e + 1] = p.e_mobius[e];
+    const u32 first0 = p.first_child(h0), first1 = p.first_child(h1);
+    split_halfedge(h0, first0);
+    split_halfedge(h1, first1);
     // The edge point's dart: on the border halfedge, if the edge has one.
-    const u32 g = p.h_face[h0] != null_u32 && p.h_face[h1] == null_u32 ? h1 : h0;
-    c.v_dart[edge_point_offset + e] = face_dart(p.first_child(g));
+    const bool on_h1 = p.h_face[h0] != null_u32 && p.h_face[h1] == null_u32;
+    c.v_dart[edge_point_offset + e] = face_dart(on_h1 ? first1 : first0);
   });
   for_each_index<ConcurrencyTag>(
     p.nv, [&](u32 v) { c.v_dart[v] = p.v_dart[v] == null_u32 ? null_u32 : p.child_dart_to_target(p.v_dart[v]); });
+  // The Möbius bits in loops of their own, through addresses held in local
+  // variables: a store of a byte may alias any object, so the compiler
+  // reloads after it every address it reads from memory. The inner edges
+  // (one per parent corner) have none.
+  for_each_block<ConcurrencyTag>(p.ne, [&](u32 begin, u32 end) {
+    const std::uint8_t* const parent = p.e_mobius.data();
+    std::uint8_t* const child = data_of(c.e_mobius);
+    for (u32 e = begin; e != end; ++e)
+      child[2 * e] = child[2 * e + 1] = parent[e];
+  });
+  for_each_block<ConcurrencyTag>(p.nc, [&](u32 begin, u32 end) {
+    std::uint8_t* const inner = data_of(c.e_mobius) + 2 * std::size_t(p.ne);
+    std::fill(inner + begin, inner + end, std::uint8_t(0));
+  });
 }
 
 // The holes of a child: each child face of a parent face that is a hole
@@ -421,7 +448,6 @@ void quad_split(const Level& p, Child& c, bool corner_table)
         // Inner edge ie: halfedge 0 to the face point, 1 to the edge point of h.
         c.h_target[de::halfedge_of_edge(ie, 0)] = fp + f;
         c.h_target[de::halfedge_of_edge(ie, 1)] = nv + de::edge_of_halfedge(h);
-        c.e_mobius[ie] = 0;
         // Quad at the corner where h ends: vertex point, edge point of hn,
         // face point, edge point of h.
         const u32 q[4] = {p.first_child(hn), de::halfedge_of_edge(2 * ne + kn, 0), de::halfedge_of_edge(ie, 1),
@@ -470,7 +496,6 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
         // (in the corner triangle), 1 to that of hn (in the centre one).
         c.h_target[de::halfedge_of_edge(ie, 0)] = nv + de::edge_of_halfedge(h);
         c.h_target[de::halfedge_of_edge(ie, 1)] = nv + de::edge_of_halfedge(hn);
-        c.e_mobius[ie] = 0;
         const u32 q[3] = {p.first_child(hn), de::halfedge_of_edge(ie, 0), p.second_child(h)};
         for (u32 j = 0; j < 3; ++j) {
           c.h_next[q[j]] = face_dart(q[(j + 1) % 3]);
