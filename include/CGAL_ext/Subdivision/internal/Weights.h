@@ -27,15 +27,6 @@ namespace CGAL_ext {
 namespace Subdivision {
 namespace internal {
 
-// The weights of one step, each distinct set stored once: every parent edge
-// and vertex holds the index of its weights in a small table, 4 bytes where
-// a copy would take 24 (edge) or 56 (vertex). Smooth weights depend only on
-// face degrees or valence and are shared; crease, corner and semi-sharp
-// weights, rarer, get entries of their own or share the constant ones.
-// The shared entries come first, in the order of their keys, then the
-// entries of single elements in element order: a numbering that does not
-// depend on the order in which the elements are visited, so that the
-// threads of a parallel build make the serial table.
 // How the interpolation passes add up the terms of a vertex point
 // (Interpolation.h). Each kind of term (the neighbours, the face points,
 // the new edge points) is summed unweighted and its sum weighted once per
@@ -82,6 +73,15 @@ struct Vertex_sums
   }
 };
 
+// The weights of one step, each distinct set stored once: every parent edge
+// and vertex holds the index of its weights in a small table, 4 bytes where
+// a copy would take 24 (edge) or 56 (vertex). Smooth weights depend only on
+// face degrees or valence and are shared; crease, corner and semi-sharp
+// weights, rarer, get entries of their own or share the constant ones.
+// The shared entries come first, in the order of their keys, then the
+// entries of single elements in element order: a numbering that does not
+// depend on the order in which the elements are visited, so that the
+// threads of a parallel build make the serial table.
 template <class W>
 struct Step_weights
 {
