@@ -27,6 +27,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <random>
 #include <set>
@@ -1476,6 +1477,31 @@ Mesh bipyramid(std::size_t n)
   Mesh m;
   CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
   return m;
+}
+
+// A non-finite point spoils only the child points made from it, in both
+// passes. Catmull–Clark of an 8 × 8 torus of quads (every vertex of valence
+// 4) with vertex 0 at NaN: its own vertex point, those of the 8 vertices that
+// share a face with it, the 12 edge points and the 4 face points of its 4
+// faces read it, 25 points of 256; every other stays finite.
+TEST(SubdivisionParallel, NonFinitePointSpoilsOnlyThePointsMadeFromIt)
+{
+  Mesh torus;
+  CGAL_ext::make_torus(torus, 8, 8);
+  torus.point(CGAL_ext::Vertex_index(0)) = Point(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0);
+  const Built b = generated(torus, false);
+  S::Refinement_options options;
+  options.parallel_min_vertices = 0; // the gather on the level, however small
+  auto count_non_finite = [](const std::vector<V3>& points) {
+    return std::count_if(points.begin(), points.end(), [](const V3& p) {
+      return !(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+    });
+  };
+  const Refined s = refine_with<S::Catmull_clark_mask, CGAL::Sequential_tag>(b, options, 1, true);
+  const Refined p = refine_with<S::Catmull_clark_mask, CGAL::Parallel_tag>(b, options, 1, true);
+  ASSERT_EQ(s.points.size(), 256u);
+  EXPECT_EQ(count_non_finite(s.points), 25);
+  EXPECT_EQ(count_non_finite(p.points), 25);
 }
 
 TEST(SubdivisionParallel, EveryStageBitIdenticalToSerial)

@@ -205,11 +205,10 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
   if (nv == 0)
     return; // no edges, no faces
   const Vertex_sums& vs = sw.sums;
-  const Value zero = W(0) * src[0];
   std::vector<Value> scratch[2];
   Value* sums[3] = {dst, nullptr, nullptr};
   for (int s = 1; s < vs.count; ++s) {
-    scratch[s - 1].assign(nv, zero);
+    scratch[s - 1].resize(nv, src[0]); // each element is set below
     sums[s] = scratch[s - 1].data();
   }
   auto sum_of = [&](Vertex_sums::Term t) { return vs.sum_of[t] == Vertex_sums::none ? nullptr : sums[vs.sum_of[t]]; };
@@ -219,8 +218,12 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
     for (u32 f = 0; f < nf; ++f)
       dst[fp + f] = face_point<W>(p, f, src);
   }
-  if (vs.count > 0)
-    std::fill(dst, dst + nv, zero);
+  // Each sum starts from 0 · the vertex's own point, as in the gather (a
+  // zero made from one point would spread that point's infinities and NaNs
+  // to every vertex, where now they stay at the vertex, as its own term does).
+  for (int s = 0; s < vs.count; ++s)
+    for (u32 v = 0; v < nv; ++v)
+      sums[s][v] = W(0) * src[v];
   // Which sums the edges add to, as constants in the loop.
   with_flag(neighbours != nullptr, [&](auto to_neighbours) {
     with_flag(edge_points != nullptr, [&](auto to_edge_points) {
@@ -229,14 +232,15 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
         const u32 a = p.source(de::dart(h0, false)), b = p.h_target[h0];
         const Value x = edge_point<split>(p, sw.edge(e), e, src, dst + fp);
         dst[nv + e] = x;
-        if constexpr (decltype(to_neighbours)::value) {
+        // All of a's terms, then b's: the gather's order where a = b.
+        if constexpr (decltype(to_neighbours)::value)
           neighbours[a] = neighbours[a] + src[b];
-          neighbours[b] = neighbours[b] + src[a];
-        }
-        if constexpr (decltype(to_edge_points)::value) {
+        if constexpr (decltype(to_edge_points)::value)
           edge_points[a] = edge_points[a] + x;
+        if constexpr (decltype(to_neighbours)::value)
+          neighbours[b] = neighbours[b] + src[a];
+        if constexpr (decltype(to_edge_points)::value)
           edge_points[b] = edge_points[b] + x;
-        }
       }
     });
   });
@@ -270,12 +274,12 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
   const Vertex_sums& vs = sw.sums;
   const int neighbours = vs.sum_of[Vertex_sums::neighbours], edge_points = vs.sum_of[Vertex_sums::edge_points],
             face_points = vs.sum_of[Vertex_sums::face_points];
-  const Value zero = W(0) * src[0];
   // One sum (the standard masks) in one variable, which stays in registers.
   with_flag(vs.count == 1, [&](auto one_sum) {
     auto index = [](int s) { return decltype(one_sum)::value ? 0 : s; };
     for_each_index<ConcurrencyTag>(nv, [&](u32 v) {
       const Vertex_weights<W>& w = sw.vertex(v);
+      const Value zero = W(0) * src[v];
       Value sums[3] = {zero, zero, zero};
       if (takes_sums(w)) {
         for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
@@ -287,7 +291,7 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
           if (edge_points != Vertex_sums::none)
             sums[index(edge_points)] = sums[index(edge_points)] + dst[nv + e];
         }
-        if (face_points != Vertex_sums::none)
+        if (split == Split::quad && face_points != Vertex_sums::none) // the triangle split has no face points
           for (u32 i = inc.face_offset[v]; i < inc.face_offset[v + 1]; ++i)
             sums[index(face_points)] = sums[index(face_points)] + dst[fp + inc.faces[i]];
       }
