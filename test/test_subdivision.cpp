@@ -1332,8 +1332,8 @@ Connectivity connectivity_of(const Mesh& m)
   return c;
 }
 
-template <class T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b)
+template <class T, class A, class B>
+bool same_bytes(const std::vector<T, A>& a, const std::vector<T, B>& b)
 {
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
@@ -1528,6 +1528,79 @@ TEST(SubdivisionParallel, EveryStageBitIdenticalToSerial)
     check_schemes_on<S::Catmull_clark_mask>("Catmull-Clark, vertices of valence 48", cone, 3, false);
     check_schemes_on<S::Loop_mask>("Loop, vertices of valence 48", cone, 3, false);
   });
+}
+
+// The faces of the corners of level `L`, from its corner table.
+std::vector<std::uint32_t> faces_of_corners(const Level& L)
+{
+  std::vector<std::uint32_t> faces(L.nc);
+  for (std::uint32_t f = 0; f < L.nf; ++f)
+    for (std::uint32_t k = L.f_offset[f]; k < L.f_offset[f + 1]; ++k)
+      faces[k] = f;
+  return faces;
+}
+
+// The tables `t` of level `L` are `reference`'s (a counting sort over `L`),
+// and give each corner its face.
+void expect_incidence(const Level& L, const S::internal::Incidence& t, const S::internal::Incidence& reference)
+{
+  EXPECT_TRUE(same_bytes(t.edge_offset, reference.edge_offset));
+  EXPECT_TRUE(same_bytes(t.edge_ends, reference.edge_ends));
+  EXPECT_TRUE(same_bytes(t.corner_offset, reference.corner_offset));
+  EXPECT_TRUE(same_bytes(t.corners, reference.corners));
+  if (t.corners.empty())
+    return;
+  const std::vector<std::uint32_t> faces = faces_of_corners(L);
+  std::size_t wrong = 0;
+  for (std::uint32_t k = 0; k < L.nc; ++k)
+    wrong += t.face_of_corner(k) == faces[k] ? 0 : 1;
+  EXPECT_EQ(wrong, 0u);
+}
+
+// Each level's incidence tables, walked around its vertices in parallel and
+// derived by the split from its parent's, are those of a counting sort over
+// the level itself: every list in order, every corner's face.
+template <class Mask>
+void check_incidence_tables(const std::string& what, const Mesh& m, unsigned n)
+{
+  SCOPED_TRACE(what);
+  constexpr bool corners = Mask::split == S::Split::quad;
+  S::Refiner<Mask> r{Mask()};
+  r.refine(m, n);
+  ASSERT_EQ(r.number_of_levels(), n);
+  for (unsigned k = 0; k <= n; ++k) {
+    SCOPED_TRACE("level " + std::to_string(k));
+    const Level& L = r.level(k);
+    S::internal::Incidence reference, walked;
+    S::internal::build_incidence_serially(L, corners, reference);
+    ASSERT_EQ(reference.edge_ends.size(), 2 * std::size_t(L.ne));
+    ASSERT_EQ(reference.corners.size(), corners ? std::size_t(L.nc) : 0u);
+    S::internal::build_incidence<CGAL::Parallel_tag>(L, corners, walked);
+    expect_incidence(L, walked, reference);
+    if (k == 0)
+      continue;
+    S::internal::Incidence parent, derived;
+    S::internal::build_incidence_serially(r.level(k - 1), corners, parent);
+    S::internal::derive_incidence<CGAL::Parallel_tag, Mask::split>(r.level(k - 1), parent, derived);
+    expect_incidence(L, derived, reference);
+  }
+}
+
+TEST(SubdivisionParallel, IncidenceTablesOfEveryLevelAsACountingSort)
+{
+  Mesh strip, strip_tris, klein;
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  CGAL_ext::make_mobius_strip(strip_tris, 12, 3, 1, 1.0, 0.5, false);
+  CGAL_ext::make_klein_bottle(klein, 6, 6);
+  check_incidence_tables<S::Catmull_clark_mask>("Catmull-Clark, Moebius strip", strip, 3);
+  check_incidence_tables<S::Catmull_clark_mask>("Catmull-Clark, Klein bottle", klein, 3);
+  check_incidence_tables<S::Loop_mask>("Loop, Moebius strip", strip_tris, 3);
+  check_incidence_tables<S::Catmull_clark_mask>("Catmull-Clark, vertices of valence 48", bipyramid(48), 2);
+  check_incidence_tables<S::Loop_mask>("Loop, vertices of valence 48", bipyramid(48), 2);
+  for (const char* file : {"catmark_nonquads.obj", "catmark_pole64.obj", "catmark_edgecorner.obj", "catmark_smoothtris1.obj"})
+    check_incidence_tables<S::Catmull_clark_mask>(file, build(read_shape(test::data(std::string("opensubdiv/") + file))).mesh, 2);
+  for (const char* file : {"loop_tetrahedron.obj", "loop_triangle_edgeonly.obj"})
+    check_incidence_tables<S::Loop_mask>(file, build(read_shape(test::data(std::string("opensubdiv/") + file))).mesh, 2);
 }
 
 TEST(SubdivisionParallel, OpenSubdivShapesBitIdenticalToSerial)

@@ -268,6 +268,7 @@ public:
   {
     check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
+    incidence_.clear();
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k) {
       bool done = false;
@@ -435,18 +436,21 @@ private:
     } else {
       if (weights_.empty())
         weights_.resize(1);
-      compute_weights<ConcurrencyTag>(0);
       prepare_interpolation<ConcurrencyTag>(0);
+      compute_weights<ConcurrencyTag>(0);
       advance_values<ConcurrencyTag>(values);
       weights_[0] = internal::Step_weights<W>(); // the split does not need them
-      incidence_.clear();
       if (last) {
+        incidence_.clear();
         split_into_mesh<ConcurrencyTag>(out, write_sharpness);
         levels_.clear();
         clear_scratch();
         return true;
       }
+      incidence_.resize(2); // a slot for the child's tables, which the split derives
       split<ConcurrencyTag>(0, true);
+      incidence_[0] = std::move(incidence_[1]);
+      incidence_.resize(1);
     }
     std::swap(levels_[0], levels_[1]);
     levels_[1] = Level(); // the parent: too small to hold the next level
@@ -481,8 +485,8 @@ private:
       CGAL_USE(k);
       if (weights_.size() < slot + 1)
         weights_.resize(slot + 1);
-      compute_weights<ConcurrencyTag>(slot);
       prepare_interpolation<ConcurrencyTag>(slot);
+      compute_weights<ConcurrencyTag>(slot);
       split<ConcurrencyTag>(slot, true);
     }
   }
@@ -524,34 +528,46 @@ private:
   using Weight_tag = std::conditional_t<std::is_floating_point_v<W>, ConcurrencyTag, CGAL::Sequential_tag>;
 
   // The weights of levels_[slot] into weights_[slot], and the sharpness of
-  // its child into child_sharpness_.
+  // its child into child_sharpness_; after prepare_interpolation(slot), whose
+  // tables, if any, give the edges at each vertex.
   template <class ConcurrencyTag>
   void compute_weights(unsigned slot)
   {
     using Tag = Weight_tag<ConcurrencyTag>;
+    const internal::Incidence* incidence =
+      slot < incidence_.size() && !incidence_[slot].empty() ? &incidence_[slot] : nullptr;
     weight_builder_.template build<Tag>(mask_, options_.crease_method, levels_[slot], child_vertex_count(slot),
-                                        weights_[slot], child_sharpness_);
+                                        weights_[slot], child_sharpness_, incidence);
   }
 
   // The incidence tables of levels_[slot] if it is to be interpolated in
-  // parallel; the tables of an older refinement are dropped.
+  // parallel, unless the split that made it derived them (refine() and
+  // refine_and_interpolate() start without tables).
   template <class ConcurrencyTag>
   void prepare_interpolation(unsigned slot)
   {
     if (incidence_.size() < slot + 1)
       incidence_.resize(slot + 1);
-    incidence_[slot].clear();
-    if constexpr (internal::is_parallel_tag<ConcurrencyTag>)
-      internal::build_incidence<ConcurrencyTag>(levels_[slot], incidence_[slot]);
+    if constexpr (internal::is_parallel_tag<ConcurrencyTag>) {
+      if (incidence_[slot].empty())
+        internal::build_incidence<ConcurrencyTag>(levels_[slot], Mask::split == Split::quad, incidence_[slot]);
+    } else {
+      incidence_[slot].clear();
+    }
   }
 
   // The topological split of levels_[slot] into levels_[slot + 1] (primal
   // schemes), after compute_weights(slot), whose child sharpness it takes.
+  // A level interpolated in parallel passes its incidence tables on to its
+  // child if the child has a slot for them (it is interpolated in turn, and
+  // in parallel too, being larger).
   template <class ConcurrencyTag>
   void split(unsigned slot, bool corner_table)
   {
     Level& c = levels_[slot + 1];
     split_level<ConcurrencyTag>(levels_[slot], c, corner_table);
+    if (slot + 1 < incidence_.size() && !incidence_[slot].empty())
+      internal::derive_incidence<ConcurrencyTag, Mask::split>(levels_[slot], incidence_[slot], incidence_[slot + 1]);
     if (child_sharpness_.any) {
       c.sharp = true;
       c.e_sharp.swap(child_sharpness_.edges);

@@ -11,6 +11,7 @@
 
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/internal/Incidence.h>
 #include <CGAL_ext/Subdivision/internal/Level.h>
 #include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
 #include <CGAL_ext/Subdivision/internal/Weights.h>
@@ -22,101 +23,6 @@
 namespace CGAL_ext {
 namespace Subdivision {
 namespace internal {
-
-// Vertex -> incident edges and faces, each in increasing order: the order in
-// which the serial pass adds their terms, so a gather gives the same bits.
-struct Incidence
-{
-  Array<u32> edge_offset, edges, face_offset, faces;
-
-  bool empty() const { return edge_offset.empty(); }
-  void clear() { *this = Incidence(); }
-};
-
-// Offsets from counts (offset[v + 1] holds the count of v on entry).
-inline void prefix_sum(Array<u32>& offset)
-{
-  for (std::size_t v = 1; v < offset.size(); ++v)
-    offset[v] += offset[v - 1];
-}
-
-// The incidence tables of level `p`, serially: a counting sort of the edges
-// and face corners by vertex.
-inline void build_incidence_serially(const Level& p, Incidence& inc)
-{
-  auto ends = [&](u32 e) {
-    const u32 h = dart_encoding::halfedge_of_edge(e, 0);
-    return std::pair<u32, u32>(p.source(dart_encoding::dart(h, false)), p.h_target[h]);
-  };
-  inc.edge_offset.assign(std::size_t(p.nv) + 1, 0);
-  for (u32 e = 0; e < p.ne; ++e) {
-    ++inc.edge_offset[ends(e).first + 1];
-    ++inc.edge_offset[ends(e).second + 1];
-  }
-  prefix_sum(inc.edge_offset);
-  inc.edges.resize(2 * std::size_t(p.ne));
-  Array<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
-  for (u32 e = 0; e < p.ne; ++e) {
-    inc.edges[fill[ends(e).first]++] = e;
-    inc.edges[fill[ends(e).second]++] = e;
-  }
-  inc.face_offset.assign(std::size_t(p.nv) + 1, 0);
-  for (u32 c = 0; c < p.nc; ++c)
-    ++inc.face_offset[p.h_target[p.corner_h[c]] + 1];
-  prefix_sum(inc.face_offset);
-  inc.faces.resize(p.nc);
-  fill.assign(inc.face_offset.begin(), inc.face_offset.end() - 1);
-  for (u32 f = 0; f < p.nf; ++f)
-    for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
-      inc.faces[fill[p.h_target[p.corner_h[c]]]++] = f;
-}
-
-// The incidence tables of level `p`, a vertex at a time (in parallel for
-// `CGAL::Parallel_tag`): the walk around a vertex meets each end of an edge
-// at it once, and each face corner at it once, as a dart that is not on
-// the border; its lists, sorted, are those of the counting sort. Counts
-// first, then offsets by a prefix sum, then the lists.
-template <class ConcurrencyTag = CGAL::Sequential_tag>
-void build_incidence(const Level& p, Incidence& inc)
-{
-  if constexpr (!is_parallel_tag<ConcurrencyTag>) {
-    build_incidence_serially(p, inc);
-  } else {
-    namespace de = dart_encoding;
-    for (Array<u32>* offset : {&inc.edge_offset, &inc.face_offset}) {
-      offset->clear();
-      offset->resize(std::size_t(p.nv) + 1);
-      (*offset)[0] = 0;
-    }
-    for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
-      u32 edges = 0, faces = 0;
-      p.for_each_dart_at(v, [&](u32 d) {
-        ++edges;
-        faces += p.is_border_dart(d) ? 0 : 1;
-      });
-      inc.edge_offset[v + 1] = edges;
-      inc.face_offset[v + 1] = faces;
-    });
-    prefix_sum<ConcurrencyTag>(inc.edge_offset.data(), p.nv);
-    prefix_sum<ConcurrencyTag>(inc.face_offset.data(), p.nv);
-    inc.edges.clear();
-    inc.edges.resize(inc.edge_offset[p.nv]);
-    inc.faces.clear();
-    inc.faces.resize(inc.face_offset[p.nv]);
-    for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
-      u32* edges = inc.edges.data() + inc.edge_offset[v];
-      u32* faces = inc.faces.data() + inc.face_offset[v];
-      u32 ne = 0, nf = 0;
-      p.for_each_dart_at(v, [&](u32 d) {
-        edges[ne++] = de::edge_of_dart(d);
-        if (!p.is_border_dart(d))
-          faces[nf++] = p.h_face[de::halfedge_of_dart(d)];
-      });
-      sort_short(edges, edges + ne);
-      sort_short(faces, faces + nf);
-    });
-  }
-}
 
 // The points both passes share, formed by the same expressions so that the
 // passes agree bit for bit. Declared inline: they run once per child vertex,
@@ -283,17 +189,17 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
       Value sums[3] = {zero, zero, zero};
       if (takes_sums(w)) {
         for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
-          const u32 e = inc.edges[i];
+          const u32 end = inc.edge_ends[i], e = end >> 1;
           const u32 h0 = de::halfedge_of_edge(e, 0);
-          const u32 a = p.source(de::dart(h0, false));
-          if (neighbours != Vertex_sums::none)
-            sums[index(neighbours)] = sums[index(neighbours)] + src[a == v ? p.h_target[h0] : a];
+          if (neighbours != Vertex_sums::none) // the vertex at the other end
+            sums[index(neighbours)] =
+              sums[index(neighbours)] + src[(end & 1u) ? p.source(de::dart(h0, false)) : p.h_target[h0]];
           if (edge_points != Vertex_sums::none)
             sums[index(edge_points)] = sums[index(edge_points)] + dst[nv + e];
         }
         if (split == Split::quad && face_points != Vertex_sums::none) // the triangle split has no face points
-          for (u32 i = inc.face_offset[v]; i < inc.face_offset[v + 1]; ++i)
-            sums[index(face_points)] = sums[index(face_points)] + dst[fp + inc.faces[i]];
+          for (u32 i = inc.corner_offset[v]; i < inc.corner_offset[v + 1]; ++i)
+            sums[index(face_points)] = sums[index(face_points)] + dst[fp + inc.face_of_corner(inc.corners[i])];
       }
       dst[v] = vertex_point(w, vs, v, src, [&](int s) -> const Value& { return sums[index(s)]; });
     });

@@ -13,6 +13,7 @@
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Crease.h>
 #include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/internal/Incidence.h>
 #include <CGAL_ext/Subdivision/internal/Level.h>
 
 #include <CGAL/number_utils.h>
@@ -175,14 +176,16 @@ class Weight_builder
 {
 public:
   // The weights of parent level `p` into `sw`, and the sharpness of its
-  // child (of `child_nv` vertices) into `child`.
+  // child (of `child_nv` vertices) into `child`. `incidence`, the tables of
+  // `p` if it has them (else null), gives the edges at each vertex.
   template <class ConcurrencyTag = CGAL::Sequential_tag>
   void build(const Mask& mask, Crease_method method, const Level& p, u32 child_nv, Step_weights<W>& sw,
-             Child_sharpness& child)
+             Child_sharpness& child, const Incidence* incidence = nullptr)
   {
     mask_ = &mask;
     method_ = method;
     p_ = &p;
+    incidence_ = incidence;
     sw_ = &sw;
     sw.reset(p.ne, p.nv);
     child.edges.clear();
@@ -262,6 +265,27 @@ private:
           semi_sharp_[v].add(s);
         }
       }
+    } else if (incidence_ != nullptr) {
+      // The incidence tables list the edge ends at each vertex in edge
+      // order: no walk, no sort.
+      const Incidence& inc = *incidence_;
+      for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
+        const u32 i0 = inc.edge_offset[v], i1 = inc.edge_offset[v + 1];
+        valence_[v] = i1 - i0;
+        if (!p.sharp)
+          return;
+        u32 sharp = 0;
+        Crease::Semi_sharp_edges semi_sharp;
+        for (u32 i = i0; i < i1; ++i) {
+          const float s = p.e_sharp[inc.edge_ends[i] >> 1];
+          if (Crease::is_sharp(s)) {
+            ++sharp;
+            semi_sharp.add(s);
+          }
+        }
+        sharp_count_[v] = sharp;
+        semi_sharp_[v] = semi_sharp;
+      });
     } else {
       for_each_block<ConcurrencyTag>(p.nv, [&](u32 begin, u32 end) {
         std::vector<u32> sharp;
@@ -571,6 +595,7 @@ private:
   const Mask* mask_ = nullptr;
   Crease_method method_ = Crease_method::uniform;
   const Level* p_ = nullptr;
+  const Incidence* incidence_ = nullptr;
   Step_weights<W>* sw_ = nullptr;
   // per vertex (own_before_: per element of the pass being numbered)
   Array<u32> valence_, sharp_count_, own_before_;
