@@ -658,8 +658,9 @@ private:
   Refinement_options options_;
   std::vector<Level> levels_;
   std::vector<internal::Stencils<W>> stencils_;
-  // The vertex-to-edge and vertex-to-face tables of each level that is to be
-  // interpolated in parallel (empty for the others), made with its weights.
+  // The vertex-to-edge and vertex-to-corner tables of each level that is to
+  // be interpolated in parallel (empty for the others): derived by the split
+  // that made the level, or made before its weights (prepare_interpolation()).
   std::vector<internal::Incidence> incidence_;
   std::vector<internal::Step_weights<W>> weights_;
   internal::Weight_builder<Mask, W> weight_builder_;

@@ -31,9 +31,10 @@ namespace internal {
 struct Incidence
 {
   Array<u32> edge_offset, edge_ends, corner_offset, corners;
-  // The face of each corner, where the faces' degrees differ (a base level).
+  // The face of each corner, where the level does not give all its faces
+  // one degree (`Level::face_degree` is 0: a base level).
   Array<u32> corner_face;
-  u32 face_degree = 0; // the level's, 0 if the faces' degrees differ
+  u32 face_degree = 0; // the level's `face_degree`
 
   bool empty() const { return edge_offset.empty(); }
   void clear() { *this = Incidence(); }
@@ -62,7 +63,8 @@ inline u32 edge_end_of_dart(const Level& p, u32 d)
   return 2 * e + (along ? 1u : 0u);
 }
 
-// The face of every corner of `p` into `inc`, if its faces' degrees differ.
+// The face of every corner of `p` into `inc`, unless the level gives all its
+// faces one degree.
 template <class ConcurrencyTag>
 void index_corner_faces(const Level& p, Incidence& inc)
 {
@@ -122,13 +124,16 @@ void build_incidence(const Level& p, bool with_corners, Incidence& inc)
     build_incidence_serially(p, with_corners, inc);
   } else {
     namespace de = dart_encoding;
-    // The corner of each face halfedge. A dart at v on a face ends its
-    // corner at v if it runs along the face cycle; a flipped one starts
-    // there, and the corner at v is that of the halfedge before it.
-    Array<u32> h_corner;
-    if (with_corners) {
-      h_corner.resize(2 * std::size_t(p.ne));
-      for_each_index<ConcurrencyTag>(p.nc, [&](u32 k) { h_corner[p.corner_h[k]] = k; });
+    // The corner of each face halfedge (a base level has them). A dart at v
+    // on a face ends its corner at v if it runs along the face cycle; a
+    // flipped one starts there, and the corner at v is that of the halfedge
+    // before it.
+    Array<u32> own_corners;
+    const u32* h_corner = p.h_corner.data();
+    if (with_corners && p.h_corner.size() != 2 * std::size_t(p.ne)) {
+      own_corners.resize(2 * std::size_t(p.ne));
+      for_each_index<ConcurrencyTag>(p.nc, [&](u32 k) { own_corners[p.corner_h[k]] = k; });
+      h_corner = own_corners.data();
     }
     auto corner_at = [&](u32 d) {
       const u32 h = de::halfedge_of_dart(d);
@@ -173,6 +178,30 @@ void build_incidence(const Level& p, bool with_corners, Incidence& inc)
   }
 }
 
+// Sorts the n ≤ 4 entries an edge point gets from the faces along its edge
+// (n is 0, 1, 2 or 4) with compare-exchanges, which do not branch: their
+// order depends on where the corners fall in their faces, which a branch
+// would mispredict half the time.
+inline void sort_face_entries(u32* x, u32 n)
+{
+  auto exchange = [x](int i, int j) {
+    const u32 a = x[i], b = x[j];
+    x[i] = a < b ? a : b;
+    x[j] = a < b ? b : a;
+  };
+  if (n == 2) {
+    exchange(0, 1);
+  } else if (n == 4) {
+    exchange(0, 1);
+    exchange(2, 3);
+    exchange(0, 2);
+    exchange(1, 3);
+    exchange(1, 2);
+  } else if (n > 2) {
+    sort_short(x, x + n);
+  }
+}
+
 // The incidence tables of the child of `p` by `split` (numbered as in
 // Level.h), written from the tables `pinc` of `p` (corners included for
 // the quad split) rather than by walking the child, whose lists they
@@ -193,6 +222,7 @@ void derive_incidence(const Level& p, const Incidence& pinc, Incidence& inc)
   constexpr bool quad = split == Split::quad;
   const u32 nv = p.nv, ne = p.ne, nf = p.nf, nc = p.nc;
   const u32 child_nv = nv + ne + (quad ? nf : 0u);
+  inc.clear();
   // faces_before[e]: the faces along the edges before e (a face on each
   // side of an edge that is not on the border).
   Array<u32> faces_before(std::size_t(ne) + 1);
@@ -259,9 +289,9 @@ void derive_incidence(const Level& p, const Incidence& pinc, Incidence& inc)
     u32* ends = inc.edge_ends.data() + edge_point_end(e);
     ends[0] = 4 * e + 1;
     ends[1] = 4 * e + 2;
-    sort_short(ends + 2, inc.edge_ends.data() + edge_point_end(e + 1));
+    sort_face_entries(ends + 2, edge_point_end(e + 1) - edge_point_end(e) - 2);
     if constexpr (quad)
-      sort_short(inc.corners.data() + edge_point_corner(e), inc.corners.data() + edge_point_corner(e + 1));
+      sort_face_entries(inc.corners.data() + edge_point_corner(e), edge_point_corner(e + 1) - edge_point_corner(e));
   });
 }
 

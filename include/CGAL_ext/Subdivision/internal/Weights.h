@@ -231,9 +231,11 @@ private:
 
   // Valence of every vertex and, with sharpness, its sharp and semi-sharp
   // edges, summed in edge order. Serially, a pass over the edges; in
-  // parallel, a walk around each vertex, which meets each end of an edge at
-  // it once (no two threads write one count), its sharp edges sorted by
-  // index so that the semi-sharp sum is formed in the same order.
+  // parallel, a vertex at a time (no two threads write one count): from the
+  // level's incidence tables, which list its edge ends in edge order, or
+  // else by a walk around it, which meets each end of an edge at it once,
+  // its sharp edges then sorted by index, so that the semi-sharp sum is
+  // formed in the same order either way.
   template <class ConcurrencyTag>
   void count_edges_at_vertices()
   {
