@@ -44,13 +44,6 @@ struct Incidence
   }
 };
 
-// Offsets from counts (offset[v + 1] holds the count of v on entry).
-inline void prefix_sum(Array<u32>& offset)
-{
-  for (std::size_t v = 1; v < offset.size(); ++v)
-    offset[v] += offset[v - 1];
-}
-
 // The edge end at which dart `d` ends, as 2e + end. A dart runs along its
 // edge's halfedge 0 (and so ends at end 1) if it is halfedge 0 unflipped,
 // or halfedge 1 flipped, except on a Möbius edge, whose two halfedges run
@@ -92,7 +85,7 @@ inline void build_incidence_serially(const Level& p, bool with_corners, Incidenc
     ++inc.edge_offset[ends(e).first + 1];
     ++inc.edge_offset[ends(e).second + 1];
   }
-  prefix_sum(inc.edge_offset);
+  prefix_sum<CGAL::Sequential_tag>(inc.edge_offset.data(), p.nv);
   inc.edge_ends.resize(2 * std::size_t(p.ne));
   Array<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
   for (u32 e = 0; e < p.ne; ++e) {
@@ -104,7 +97,7 @@ inline void build_incidence_serially(const Level& p, bool with_corners, Incidenc
   inc.corner_offset.assign(std::size_t(p.nv) + 1, 0);
   for (u32 k = 0; k < p.nc; ++k)
     ++inc.corner_offset[p.h_target[p.corner_h[k]] + 1];
-  prefix_sum(inc.corner_offset);
+  prefix_sum<CGAL::Sequential_tag>(inc.corner_offset.data(), p.nv);
   inc.corners.resize(p.nc);
   fill.assign(inc.corner_offset.begin(), inc.corner_offset.end() - 1);
   for (u32 k = 0; k < p.nc; ++k)

@@ -67,8 +67,9 @@ struct Level
   // Empty in a level that is neither split nor interpolated from (the last
   // level of a one-pass refinement), as nothing but the mesh is made of it.
   Array<u32> f_offset, corner_h;
-  // The corner of each face halfedge (null on the border): read only by the
-  // dual and √3 splits, filled only by fill_level(), which builds their levels.
+  // The corner of each face halfedge (null on the border): read by the dual
+  // and √3 splits and by the walk that makes a base level's incidence tables
+  // (Incidence.h), filled only by fill_level(), which builds those levels.
   Array<u32> h_corner;
   // Sharpness: empty when `sharp` is false, meaning every edge and vertex is
   // smooth (and there is no border, whose edges are infinitely sharp).

@@ -177,7 +177,7 @@ class Weight_builder
 public:
   // The weights of parent level `p` into `sw`, and the sharpness of its
   // child (of `child_nv` vertices) into `child`. `incidence`, the tables of
-  // `p` if it has them (else null), gives the edges at each vertex.
+  // `p`, gives the edges at each vertex; needed for `CGAL::Parallel_tag`.
   template <class ConcurrencyTag = CGAL::Sequential_tag>
   void build(const Mask& mask, Crease_method method, const Level& p, u32 child_nv, Step_weights<W>& sw,
              Child_sharpness& child, const Incidence* incidence = nullptr)
@@ -231,11 +231,9 @@ private:
 
   // Valence of every vertex and, with sharpness, its sharp and semi-sharp
   // edges, summed in edge order. Serially, a pass over the edges; in
-  // parallel, a vertex at a time (no two threads write one count): from the
-  // level's incidence tables, which list its edge ends in edge order, or
-  // else by a walk around it, which meets each end of an edge at it once,
-  // its sharp edges then sorted by index, so that the semi-sharp sum is
-  // formed in the same order either way.
+  // parallel, a vertex at a time (no two threads write one count), from the
+  // level's incidence tables, which the refiner makes before the weights of
+  // every level it weights in parallel.
   template <class ConcurrencyTag>
   void count_edges_at_vertices()
   {
@@ -267,9 +265,10 @@ private:
           semi_sharp_[v].add(s);
         }
       }
-    } else if (incidence_ != nullptr) {
+    } else {
       // The incidence tables list the edge ends at each vertex in edge
       // order: no walk, no sort.
+      CGAL_precondition(incidence_ != nullptr);
       const Incidence& inc = *incidence_;
       for_each_index<ConcurrencyTag>(p.nv, [&](u32 v) {
         const u32 i0 = inc.edge_offset[v], i1 = inc.edge_offset[v + 1];
@@ -287,28 +286,6 @@ private:
         }
         sharp_count_[v] = sharp;
         semi_sharp_[v] = semi_sharp;
-      });
-    } else {
-      for_each_block<ConcurrencyTag>(p.nv, [&](u32 begin, u32 end) {
-        std::vector<u32> sharp;
-        for (u32 v = begin; v < end; ++v) {
-          u32 n = 0;
-          sharp.clear();
-          p.for_each_dart_at(v, [&](u32 d) {
-            ++n;
-            const u32 e = dart_encoding::edge_of_dart(d);
-            if (p.sharp && Crease::is_sharp(p.e_sharp[e]))
-              sharp.push_back(e);
-          });
-          valence_[v] = n;
-          if (!p.sharp)
-            continue;
-          std::sort(sharp.begin(), sharp.end());
-          sharp_count_[v] = u32(sharp.size());
-          semi_sharp_[v] = Crease::Semi_sharp_edges();
-          for (u32 e : sharp)
-            semi_sharp_[v].add(p.e_sharp[e]);
-        }
       });
     }
   }
