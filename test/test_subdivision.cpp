@@ -1303,6 +1303,83 @@ TEST(SubdivisionApi, OnePassEqualsLevelByLevel)
 #endif
 }
 
+// The one-pass path that writes the last level straight into the result's
+// points (the free functions' path for points of doubles) against the one
+// that returns the values: the same mesh and maps, and the points are the
+// values, bit for bit, in every scheme.
+template <class Mask, class ConcurrencyTag = CGAL::Sequential_tag>
+void check_points_pass(const std::string& file, unsigned n)
+{
+  SCOPED_TRACE(file + ", " + std::to_string(n) + " levels");
+  const Shape s = read_shape(test::data(file));
+  const Built b = build(s);
+  S::Refinement_options options;
+  options.boundary_interpolation = s.boundary;
+  options.crease_method = s.crease_method;
+  options.parallel_min_vertices = 0; // the parallel pass on every level, however small
+  std::vector<V3> values;
+  for (const Point& p : b.mesh.points().data())
+    values.push_back({p.x(), p.y(), p.z()});
+  std::vector<V3> into_points = values;
+
+  Mesh expected;
+  S::Refiner<Mask>(Mask(), options)
+    .template refine_and_interpolate<ConcurrencyTag>(b.mesh, n, values, expected, b.edge_sharpness,
+                                                     b.vertex_sharpness, true);
+  Mesh out;
+  S::Refiner<Mask> r(Mask(), options);
+  r.template refine_and_interpolate_points<S::internal::Point_values<Point>, ConcurrencyTag>(
+    b.mesh, n, into_points, out, b.edge_sharpness, b.vertex_sharpness, true);
+  EXPECT_TRUE(into_points.empty());
+  EXPECT_EQ(r.number_of_levels(), 0u);
+  ASSERT_TRUE(out.is_valid(true));
+  ASSERT_EQ(out.number_of_vertices(), values.size());
+  ASSERT_EQ(out.number_of_halfedges(), expected.number_of_halfedges());
+  ASSERT_EQ(out.number_of_faces(), expected.number_of_faces());
+  std::vector<V3> points;
+  for (const Point& p : out.points().data())
+    points.push_back({p.x(), p.y(), p.z()});
+  EXPECT_EQ(std::memcmp(points.data(), values.data(), values.size() * sizeof(V3)), 0);
+  for (auto h : out.halfedges()) {
+    const CGAL_ext::Dart d(h, false);
+    ASSERT_EQ(out.target(d), expected.target(d));
+    ASSERT_EQ(out.next(d), expected.next(d));
+    ASSERT_EQ(out.face(h), expected.face(h));
+  }
+  auto sharpness = [](const Mesh& m, auto key) {
+    using Key = decltype(key);
+    auto map = m.property_map<Key, float>(std::is_same_v<Key, CGAL_ext::Edge_index> ? CGAL_ext::edge_sharpness_name
+                                                                                     : CGAL_ext::vertex_sharpness_name);
+    return map ? map->data() : std::vector<float>{-1.0f}; // a missing map differs from every map
+  };
+  EXPECT_EQ(sharpness(out, CGAL_ext::Edge_index()), sharpness(expected, CGAL_ext::Edge_index()));
+  EXPECT_EQ(sharpness(out, CGAL_ext::Vertex_index()), sharpness(expected, CGAL_ext::Vertex_index()));
+}
+
+TEST(SubdivisionApi, PointsWrittenInPlaceAreTheOnePassValues)
+{
+  auto each_tag = [](auto check) {
+    check(CGAL::Sequential_tag());
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+    check(CGAL::Parallel_tag());
+#endif
+  };
+  each_tag([](auto tag) {
+    using Tag = decltype(tag);
+    check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_cube_creases1.obj", 3);
+    check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_edgecorner.obj", 3);
+    check_points_pass<S::Catmull_clark_mask, Tag>("nonorientable/mobius_20x4_quads.obj", 3);
+    check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_cube_creases1.obj", 1);
+    check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_cube_creases1.obj", 0);
+    check_points_pass<S::Loop_mask, Tag>("opensubdiv/loop_icos_semisharp.obj", 3);
+    check_points_pass<S::Loop_mask, Tag>("nonorientable/mobius_20x4_tris.obj", 2);
+    check_points_pass<S::Bilinear_mask, Tag>("opensubdiv/catmark_cube_creases1.obj", 2);
+    check_points_pass<S::Linear_mask, Tag>("nonorientable/mobius_20x4_tris.obj", 2);
+    check_points_pass<S::Doo_sabin_mask, Tag>("nonorientable/mobius_20x4_quads.obj", 2);
+    check_points_pass<S::Sqrt3_mask, Tag>("opensubdiv/loop_icos_semisharp.obj", 3);
+  });
+}
+
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
 // ----------------------------------------------------------------- parallel stages
 

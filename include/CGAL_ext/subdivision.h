@@ -56,12 +56,18 @@ struct Point_values
   using Weight = double;
   static Value from(const P& p) { return {double(p.x()), double(p.y()), double(p.z())}; }
   static P to(const Value& v) { return P(v.x, v.y, v.z); }
+  // Whether from(to(v)) is v, bit for bit: a point of doubles holds a Vec3
+  // exactly, so the last level is interpolated straight into the result's
+  // points (Refiner::refine_and_interpolate_points()).
+  static constexpr bool round_trips = std::is_same_v<typename K::FT, double>;
 };
 template <class P, class K>
 struct Point_values<P, K, false>
 {
   using Value = typename K::Vector_3;
   using Weight = typename K::FT;
+  // Exact: values would be rebuilt from points wherever they were read back.
+  static constexpr bool round_trips = false;
   static Value from(const P& p) { return p - CGAL::ORIGIN; }
   static P to(const Value& v) { return CGAL::ORIGIN + v; }
 };
@@ -311,8 +317,12 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     // Points only: one pass, two levels alive at a time.
     internal::Array<Value> values; // each level's points are written in full: no zero-fill
     read_points<Tag>(mesh, vpm, options, values);
-    refiner.template refine_and_interpolate<Tag>(mesh, levels, values, out, es, vs, write_sharpness);
-    write_points<Tag>(values, options, out);
+    if constexpr (Traits::round_trips) {
+      refiner.template refine_and_interpolate_points<Traits, Tag>(mesh, levels, values, out, es, vs, write_sharpness);
+    } else {
+      refiner.template refine_and_interpolate<Tag>(mesh, levels, values, out, es, vs, write_sharpness);
+      write_points<Tag>(values, options, out);
+    }
   } else {
     // Other maps too: every level is kept, and each map interpolated through them.
     refiner.template refine<Tag>(mesh, levels, es, vs);

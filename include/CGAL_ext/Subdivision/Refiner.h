@@ -266,22 +266,26 @@ public:
                               const std::vector<float>& edge_sharpness = {},
                               const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
   {
-    check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
-    levels_.resize(levels == 0 ? 1 : 2);
-    incidence_.clear();
-    build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
-    for (unsigned k = 0; k < levels; ++k) {
-      bool done = false;
-      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[0].nv), [&](auto tag) {
-        done = one_pass_step<decltype(tag)>(k, k + 1 == levels, values, out, write_sharpness);
-      });
-      if (done)
-        return;
-    }
-    levels_.resize(1);
-    build_mesh<ConcurrencyTag>(out, write_sharpness);
-    levels_.clear();
-    clear_scratch();
+    one_pass<ConcurrencyTag, void>(mesh, levels, values, out, edge_sharpness, vertex_sharpness, write_sharpness);
+  }
+
+  /// As `refine_and_interpolate()`, with `values` the points of `mesh` as
+  /// `Convert::Value`s: the last level's values are written straight into
+  /// the points of `out`, each converted by `Convert::to()`, with no array
+  /// of values of their own and no copy; `values` is left empty. Where the
+  /// last pass reads back a value it has written (a face or edge point), it
+  /// converts the point back with `Convert::from()`, which must give the
+  /// value back bit for bit (true of points of doubles); then `out`'s points
+  /// are `refine_and_interpolate()`'s values, converted.
+  template <class Convert, class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values, class Q>
+  void refine_and_interpolate_points(const Mobius_mesh<P>& mesh, unsigned levels, Values& values,
+                                     Mobius_mesh<Q>& out, const std::vector<float>& edge_sharpness = {},
+                                     const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
+  {
+    static_assert(std::is_same_v<typename Values::value_type, typename Convert::Value> &&
+                    !internal::Normalizes<typename Convert::Value>::value,
+                  "the values are the points as Convert::Value, which are not normalized");
+    one_pass<ConcurrencyTag, Convert>(mesh, levels, values, out, edge_sharpness, vertex_sharpness, write_sharpness);
   }
 
   /// The number of refinement steps done by the last `refine()`.
@@ -387,6 +391,10 @@ public:
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
 private:
+  // interpolate_level() into `dst`: values, or a mesh's points (internal::Point_output).
+  template <class ConcurrencyTag, class Value, class Out>
+  void interpolate_level_into(unsigned k, const Value* src, const Out& dst) const;
+
   // Refuses, before anything is allocated, a refinement of `mesh` whose
   // last level a Mobius_mesh cannot index, or whose estimated peak of memory
   // passes `options().maximum_memory`: `kept` times the bytes of the result
@@ -417,16 +425,53 @@ private:
   // the tag asks for it).
   bool parallel_level(u32 nv) const { return runs_in_parallel(nv, options_.parallel_min_vertices); }
 
-  // One step of refine_and_interpolate(): levels_[0] into levels_[1], or
-  // into `out` if `last` (then returns true, the refiner emptied), and
-  // `values` interpolated on the way.
-  template <class ConcurrencyTag, class Values, class Q>
+  // refine_and_interpolate(), or with `Convert` (not void)
+  // refine_and_interpolate_points().
+  template <class ConcurrencyTag, class Convert, class P, class Values, class Q>
+  void one_pass(const Mobius_mesh<P>& mesh, unsigned levels, Values& values, Mobius_mesh<Q>& out,
+                const std::vector<float>& edge_sharpness, const std::vector<float>& vertex_sharpness,
+                bool write_sharpness)
+  {
+    check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
+    levels_.resize(levels == 0 ? 1 : 2);
+    incidence_.clear();
+    build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
+    for (unsigned k = 0; k < levels; ++k) {
+      bool done = false;
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[0].nv), [&](auto tag) {
+        done = one_pass_step<decltype(tag), Convert>(k, k + 1 == levels, values, out, write_sharpness);
+      });
+      if (done)
+        return;
+    }
+    levels_.resize(1);
+    build_mesh<ConcurrencyTag>(out, write_sharpness);
+    levels_.clear();
+    clear_scratch();
+    if constexpr (!std::is_void_v<Convert>) { // no level: the points are the values
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(u32(values.size())), [&](auto tag) {
+        internal::for_each_index<decltype(tag)>(u32(values.size()),
+                                                [&](u32 v) { out.point(Vertex_index(v)) = Convert::to(values[v]); });
+      });
+      Values().swap(values);
+    }
+  }
+
+  // One step of one_pass(): levels_[0] into levels_[1], or into `out` if
+  // `last` (then returns true, the refiner emptied), and `values`
+  // interpolated on the way (the last time into `out`'s points, if
+  // `Convert` is not void).
+  template <class ConcurrencyTag, class Convert, class Values, class Q>
   bool one_pass_step(unsigned k, bool last, Values& values, Mobius_mesh<Q>& out, bool write_sharpness)
   {
+    constexpr bool into_points = !std::is_void_v<Convert>;
     if constexpr (uses_stencils) {
       if (last) {
         stencil_split_into_mesh<ConcurrencyTag>(k, out, write_sharpness);
-        advance_values<ConcurrencyTag>(values);
+        if constexpr (into_points)
+          values_into_points<ConcurrencyTag, Convert>(values, out.points().data());
+        else
+          advance_values<ConcurrencyTag>(values);
         levels_.clear();
         clear_scratch();
         return true;
@@ -438,11 +483,21 @@ private:
         weights_.resize(1);
       prepare_interpolation<ConcurrencyTag>(0);
       compute_weights<ConcurrencyTag>(0);
-      advance_values<ConcurrencyTag>(values);
+      Point_vector<Q> points;
+      if constexpr (into_points) {
+        if (last) {
+          points.resize(child_vertex_count(0)); // written in full below (and not at all here, for CGAL's points)
+          values_into_points<ConcurrencyTag, Convert>(values, points);
+        } else {
+          advance_values<ConcurrencyTag>(values);
+        }
+      } else {
+        advance_values<ConcurrencyTag>(values);
+      }
       weights_[0] = internal::Step_weights<W>(); // the split does not need them
       if (last) {
         incidence_.clear();
-        split_into_mesh<ConcurrencyTag>(out, write_sharpness);
+        split_into_mesh<ConcurrencyTag>(out, write_sharpness, into_points ? &points : nullptr);
         levels_.clear();
         clear_scratch();
         return true;
@@ -464,9 +519,23 @@ private:
   {
     Values next;
     next.resize(child_vertex_count(0));
-    interpolate_level<ConcurrencyTag>(0, values.data(), next.data());
+    interpolate_level_into<ConcurrencyTag>(0, values.data(), next.data());
     internal::normalize_values<ConcurrencyTag>(next.data(), u32(next.size()));
     values.swap(next);
+  }
+
+  // The point array of a mesh of points `Q`.
+  template <class Q>
+  using Point_vector = std::vector<CGAL_ext::internal::Stored_value<Q>>;
+
+  // Interpolates `values` (of level 0) into `points`, one per vertex of
+  // level 1, and frees them.
+  template <class ConcurrencyTag, class Convert, class Values, class Q>
+  void values_into_points(Values& values, std::vector<Q>& points) const
+  {
+    CGAL_precondition(points.size() == child_vertex_count(0));
+    interpolate_level_into<ConcurrencyTag>(0, values.data(), internal::Point_output<Convert, Q>{points.data()});
+    Values().swap(values);
   }
 
   // Refines levels_[slot] into levels_[slot + 1] with the weights or
@@ -585,15 +654,19 @@ private:
       internal::triangle_split<ConcurrencyTag>(p, c, corner_table);
   }
 
-  // The last split of a one-pass refinement: levels_[0] into `out`.
+  // The last split of a one-pass refinement: levels_[0] into `out`, with
+  // `points` (if not null, one per vertex) as its points.
   template <class ConcurrencyTag, class Q>
-  void split_into_mesh(Mobius_mesh<Q>& out, bool write_sharpness)
+  void split_into_mesh(Mobius_mesh<Q>& out, bool write_sharpness, Point_vector<Q>* points)
   {
     out.clear();
     internal::Mesh_writer<Mobius_mesh<Q>> c(out);
     split_level<ConcurrencyTag>(levels_[0], c, false);
     levels_[0] = Level(); // freed before the maps are made
-    CGAL_ext::internal::Connectivity_access::reset_property_maps(out);
+    if (points)
+      CGAL_ext::internal::Connectivity_access::reset_property_maps(out, *points);
+    else
+      CGAL_ext::internal::Connectivity_access::reset_property_maps(out);
     if (write_sharpness)
       add_sharpness_maps<ConcurrencyTag>(out, child_sharpness_.any ? child_sharpness_.edges.data() : nullptr,
                                          child_sharpness_.any ? child_sharpness_.vertices.data() : nullptr);
@@ -759,26 +832,34 @@ template <class Mask, class W>
 template <class Value>
 void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* dst) const
 {
-  if constexpr (uses_stencils)
-    internal::interpolate_stencils<CGAL::Sequential_tag>(stencils_[k], src, dst);
-  else
-    internal::interpolate_primal<Mask::split>(levels_[k], weights_[k], src, dst);
+  interpolate_level_into<CGAL::Sequential_tag>(k, src, dst);
 }
 
 template <class Mask, class W>
 template <class ConcurrencyTag, class Value>
 void Refiner<Mask, W>::interpolate_level(unsigned k, const Value* src, Value* dst) const
 {
-  if constexpr (!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>)
-    interpolate_level(k, src, dst);
-  else if constexpr (uses_stencils)
+  interpolate_level_into<ConcurrencyTag>(k, src, dst);
+}
+
+template <class Mask, class W>
+template <class ConcurrencyTag, class Value, class Out>
+void Refiner<Mask, W>::interpolate_level_into(unsigned k, const Value* src, const Out& dst) const
+{
+  if constexpr (!std::is_convertible_v<ConcurrencyTag, CGAL::Parallel_tag>) {
+    if constexpr (uses_stencils)
+      internal::interpolate_stencils<CGAL::Sequential_tag>(stencils_[k], src, dst);
+    else
+      internal::interpolate_primal<Mask::split>(levels_[k], weights_[k], src, dst);
+  } else if constexpr (uses_stencils) {
     internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv), [&](auto tag) {
       internal::interpolate_stencils<decltype(tag)>(stencils_[k], src, dst);
     });
-  else if (k >= incidence_.size() || incidence_[k].empty())
-    interpolate_level(k, src, dst);
-  else
+  } else if (k >= incidence_.size() || incidence_[k].empty()) {
+    interpolate_level_into<CGAL::Sequential_tag>(k, src, dst);
+  } else {
     internal::interpolate_primal<ConcurrencyTag, Mask::split>(levels_[k], weights_[k], incidence_[k], src, dst);
+  }
 }
 
 template <class Mask, class W>

@@ -13,11 +13,14 @@
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
+#include <CGAL/assertions.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL_ext {
 
@@ -89,6 +92,16 @@ struct Connectivity_access
     m.recount_mobius_edges();
     resize_property_maps(m, m.num_vertices(), m.num_halfedges(), m.num_edges(), m.num_faces());
   }
+  // As reset_property_maps(), but the points are `points` (one per vertex),
+  // swapped in without a copy, in place of the default point: for an
+  // algorithm that writes the points as it goes.
+  template <class P>
+  static void reset_property_maps(Mobius_mesh<P>& m, std::vector<Stored_value<P>>& points)
+  {
+    CGAL_precondition(points.size() == m.num_vertices());
+    m.recount_mobius_edges();
+    resize_property_maps(m, m.num_vertices(), m.num_halfedges(), m.num_edges(), m.num_faces(), &points);
+  }
 
   // The property arrays of element kind `I` (an index type) of `m`.
   template <class I, class P>
@@ -125,14 +138,17 @@ private:
       std::memcpy(target, source, sizeof(T) * n);
   }
   // Every property array back to its default values, at the given sizes;
-  // the arrays are new, so nothing in them is removed.
+  // the arrays are new, so nothing in them is removed. The points are
+  // `points` instead, if not null (`nv` of them).
   template <class P>
   static void resize_property_maps(Mobius_mesh<P>& m, std::size_t nv, std::size_t nh, std::size_t ne,
-                                   std::size_t nf)
+                                   std::size_t nf, std::vector<Stored_value<P>>* points = nullptr)
   {
     m.drop_removal_marks();
     for (auto* props : {&m.vprops_, &m.hprops_, &m.eprops_, &m.fprops_})
       props->resize(0);
+    if (points)
+      m.points_.data().swap(*points); // already of the size the resize below gives
     m.vprops_.resize(nv);
     m.hprops_.resize(nh);
     m.eprops_.resize(ne);

@@ -24,6 +24,43 @@ namespace CGAL_ext {
 namespace Subdivision {
 namespace internal {
 
+// Where a pass writes the child's values, and reads back those it has
+// written (face points, edge points): an array of values, or the points of
+// the result mesh themselves (Point_output), so that the last level of a
+// one-pass refinement needs no array of values and no copy.
+template <class Value>
+inline void store(Value* out, u32 i, const Value& x)
+{
+  out[i] = x;
+}
+template <class Value>
+inline const Value& load(const Value* out, u32 i)
+{
+  return out[i];
+}
+
+// The points of a mesh as the output of a pass: each value converted by
+// `Convert::to()` as it is written, and back by `Convert::from()` where it is
+// read. For conversions that give back each value bit for bit (points of
+// doubles), so that a pass into points computes what a pass into values does.
+template <class Convert, class Point>
+struct Point_output
+{
+  Point* points;
+
+  Point_output operator+(u32 k) const { return {points + k}; }
+};
+template <class Convert, class Point>
+inline void store(const Point_output<Convert, Point>& out, u32 i, const typename Convert::Value& x)
+{
+  out.points[i] = Convert::to(x);
+}
+template <class Convert, class Point>
+inline typename Convert::Value load(const Point_output<Convert, Point>& out, u32 i)
+{
+  return Convert::from(out.points[i]);
+}
+
 // The points both passes share, formed by the same expressions so that the
 // passes agree bit for bit. Declared inline: they run once per child vertex,
 // and a call each costs the interpolation passes about a sixth of their time.
@@ -50,8 +87,8 @@ inline Value face_point(const Level& p, u32 f, const Value* src)
 
 // `face_points`: the level's face points (quad split), indexed by face; the
 // triangle split takes the vertices opposite the edge instead.
-template <Split split, class W, class Value>
-inline Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const Value* src, const Value* face_points)
+template <Split split, class W, class Value, class Out>
+inline Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const Value* src, const Out& face_points)
 {
   namespace de = dart_encoding;
   const u32 h0 = de::halfedge_of_edge(e, 0);
@@ -62,7 +99,7 @@ inline Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const V
       if (f == null_u32)
         continue;
       if constexpr (split == Split::quad)
-        x = x + w.face * face_points[f];
+        x = x + w.face * load(face_points, f);
       else
         x = x + w.face * src[p.h_target[de::halfedge_of_dart(p.h_next[h])]];
     }
@@ -71,10 +108,10 @@ inline Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const V
 }
 
 // Child vertex i of a stencil step, for every i.
-template <class ConcurrencyTag, class W, class Value>
-void interpolate_stencils(const Stencils<W>& st, const Value* src, Value* dst)
+template <class ConcurrencyTag, class W, class Value, class Out>
+void interpolate_stencils(const Stencils<W>& st, const Value* src, const Out& dst)
 {
-  for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { dst[i] = stencil_point(st, i, src); });
+  for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { store(dst, i, stencil_point(st, i, src)); });
 }
 
 // The point of parent vertex v, its sums of terms made (Vertex_sums):
@@ -101,9 +138,10 @@ inline bool takes_sums(const Vertex_weights<W>& w)
 // The serial pass of a primal step: each edge and each face corner adds
 // its terms, unweighted, to the sums of the vertices it touches, in edge
 // and then face order; then each vertex point weights its sums. Sum 0 is
-// kept in the vertex points themselves, the others in scratch arrays.
-template <Split split, class W, class Value>
-void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* src, Value* dst)
+// kept in the vertex points themselves if they are values, the others (and
+// sum 0 written into points) in scratch arrays.
+template <Split split, class W, class Value, class Out>
+void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* src, const Out& dst)
 {
   namespace de = dart_encoding;
   const u32 nv = p.nv, ne = p.ne, nf = p.nf;
@@ -111,18 +149,25 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
   if (nv == 0)
     return; // no edges, no faces
   const Vertex_sums& vs = sw.sums;
-  std::vector<Value> scratch[2];
-  Value* sums[3] = {dst, nullptr, nullptr};
-  for (int s = 1; s < vs.count; ++s) {
-    scratch[s - 1].resize(nv, src[0]); // each element is set below
-    sums[s] = scratch[s - 1].data();
+  constexpr bool sum_in_output = std::is_same_v<Out, Value*>;
+  Array<Value> scratch[3]; // each element is set below
+  Value* sums[3] = {nullptr, nullptr, nullptr};
+  for (int s = 0; s < vs.count; ++s) {
+    if constexpr (sum_in_output) {
+      if (s == 0) {
+        sums[0] = dst;
+        continue;
+      }
+    }
+    scratch[s].resize(nv);
+    sums[s] = scratch[s].data();
   }
   auto sum_of = [&](Vertex_sums::Term t) { return vs.sum_of[t] == Vertex_sums::none ? nullptr : sums[vs.sum_of[t]]; };
   Value *neighbours = sum_of(Vertex_sums::neighbours), *edge_points = sum_of(Vertex_sums::edge_points),
         *face_points = sum_of(Vertex_sums::face_points);
   if constexpr (split == Split::quad) {
     for (u32 f = 0; f < nf; ++f)
-      dst[fp + f] = face_point<W>(p, f, src);
+      store(dst, fp + f, face_point<W>(p, f, src));
   }
   // Each sum starts from 0 · the vertex's own point, as in the gather (a
   // zero made from one point would spread that point's infinities and NaNs
@@ -137,7 +182,7 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
         const u32 h0 = de::halfedge_of_edge(e, 0);
         const u32 a = p.source(de::dart(h0, false)), b = p.h_target[h0];
         const Value x = edge_point<split>(p, sw.edge(e), e, src, dst + fp);
-        dst[nv + e] = x;
+        store(dst, nv + e, x);
         // All of a's terms, then b's: the gather's order where a = b.
         if constexpr (decltype(to_neighbours)::value)
           neighbours[a] = neighbours[a] + src[b];
@@ -155,18 +200,18 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
       for (u32 f = 0; f < nf; ++f)
         for (u32 i = p.f_offset[f], i1 = p.f_offset[f + 1]; i < i1; ++i) {
           const u32 v = p.h_target[p.corner_h[i]];
-          face_points[v] = face_points[v] + dst[fp + f];
+          face_points[v] = face_points[v] + load(dst, fp + f);
         }
   }
   for (u32 v = 0; v < nv; ++v)
-    dst[v] = vertex_point(sw.vertex(v), vs, v, src, [&](int s) -> const Value& { return sums[s][v]; });
+    store(dst, v, vertex_point(sw.vertex(v), vs, v, src, [&](int s) -> const Value& { return sums[s][v]; }));
 }
 
 // The serial pass as gathers over `inc` (the incidence tables of `p`), in
 // the same order of terms; each loop may run in parallel.
-template <class ConcurrencyTag, Split split, class W, class Value>
+template <class ConcurrencyTag, Split split, class W, class Value, class Out>
 void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Incidence& inc, const Value* src,
-                        Value* dst)
+                        const Out& dst)
 {
   namespace de = dart_encoding;
   const u32 nv = p.nv, ne = p.ne, nf = p.nf;
@@ -174,9 +219,9 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
   if (nv == 0)
     return;
   if constexpr (split == Split::quad)
-    for_each_index<ConcurrencyTag>(nf, [&](u32 f) { dst[fp + f] = face_point<W>(p, f, src); });
-  for_each_index<ConcurrencyTag>(ne,
-                                 [&](u32 e) { dst[nv + e] = edge_point<split>(p, sw.edge(e), e, src, dst + fp); });
+    for_each_index<ConcurrencyTag>(nf, [&](u32 f) { store(dst, fp + f, face_point<W>(p, f, src)); });
+  for_each_index<ConcurrencyTag>(
+    ne, [&](u32 e) { store(dst, nv + e, edge_point<split>(p, sw.edge(e), e, src, dst + fp)); });
   const Vertex_sums& vs = sw.sums;
   const int neighbours = vs.sum_of[Vertex_sums::neighbours], edge_points = vs.sum_of[Vertex_sums::edge_points],
             face_points = vs.sum_of[Vertex_sums::face_points];
@@ -195,13 +240,14 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
             sums[index(neighbours)] =
               sums[index(neighbours)] + src[(end & 1u) ? p.source(de::dart(h0, false)) : p.h_target[h0]];
           if (edge_points != Vertex_sums::none)
-            sums[index(edge_points)] = sums[index(edge_points)] + dst[nv + e];
+            sums[index(edge_points)] = sums[index(edge_points)] + load(dst, nv + e);
         }
         if (split == Split::quad && face_points != Vertex_sums::none) // the triangle split has no face points
           for (u32 i = inc.corner_offset[v]; i < inc.corner_offset[v + 1]; ++i)
-            sums[index(face_points)] = sums[index(face_points)] + dst[fp + inc.face_of_corner(inc.corners[i])];
+            sums[index(face_points)] =
+              sums[index(face_points)] + load(dst, fp + inc.face_of_corner(inc.corners[i]));
       }
-      dst[v] = vertex_point(w, vs, v, src, [&](int s) -> const Value& { return sums[index(s)]; });
+      store(dst, v, vertex_point(w, vs, v, src, [&](int s) -> const Value& { return sums[index(s)]; }));
     });
   });
 }
