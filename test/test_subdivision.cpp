@@ -1308,13 +1308,13 @@ TEST(SubdivisionApi, OnePassEqualsLevelByLevel)
 // that returns the values: the same mesh and maps, and the points are the
 // values, bit for bit, in every scheme.
 template <class Mask, class ConcurrencyTag = CGAL::Sequential_tag>
-void check_points_pass(const std::string& file, unsigned n)
+void check_points_pass(const std::string& file, unsigned n, const Boundary_interpolation* boundary = nullptr)
 {
   SCOPED_TRACE(file + ", " + std::to_string(n) + " levels");
   const Shape s = read_shape(test::data(file));
   const Built b = build(s);
   S::Refinement_options options;
-  options.boundary_interpolation = s.boundary;
+  options.boundary_interpolation = boundary ? *boundary : s.boundary;
   options.crease_method = s.crease_method;
   options.parallel_min_vertices = 0; // the parallel pass on every level, however small
   std::vector<V3> values;
@@ -1346,6 +1346,16 @@ void check_points_pass(const std::string& file, unsigned n)
     ASSERT_EQ(out.next(d), expected.next(d));
     ASSERT_EQ(out.face(h), expected.face(h));
   }
+  for (auto e : out.edges())
+    ASSERT_EQ(out.is_mobius(e), expected.is_mobius(e));
+  for (auto v : out.vertices())
+    ASSERT_EQ(out.halfedge(v), expected.halfedge(v));
+  auto holes = out.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+  auto holes_expected = expected.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+  ASSERT_EQ(holes.has_value(), holes_expected.has_value());
+  if (holes) {
+    EXPECT_EQ(holes->data(), holes_expected->data());
+  }
   auto sharpness = [](const Mesh& m, auto key) {
     using Key = decltype(key);
     auto map = m.property_map<Key, float>(std::is_same_v<Key, CGAL_ext::Edge_index> ? CGAL_ext::edge_sharpness_name
@@ -1364,8 +1374,14 @@ TEST(SubdivisionApi, PointsWrittenInPlaceAreTheOnePassValues)
     check(CGAL::Parallel_tag());
 #endif
   };
-  each_tag([](auto tag) {
+  const Boundary_interpolation none = Boundary_interpolation::none;
+  each_tag([&](auto tag) {
     using Tag = decltype(tag);
+    check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_edgecorner.obj", 2, &none); // holes
+    check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_chaikin1.obj", 3);
+    check_points_pass<S::Loop_mask, Tag>("opensubdiv/loop_triangle_edgeonly.obj", 2, &none);
+    check_points_pass<Unequal_weights_mask<2>, Tag>("opensubdiv/catmark_cube_creases1.obj", 2); // two sums
+    check_points_pass<Unequal_weights_mask<3>, Tag>("nonorientable/mobius_20x4_quads.obj", 2);  // three
     check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_cube_creases1.obj", 3);
     check_points_pass<S::Catmull_clark_mask, Tag>("opensubdiv/catmark_edgecorner.obj", 3);
     check_points_pass<S::Catmull_clark_mask, Tag>("nonorientable/mobius_20x4_quads.obj", 3);

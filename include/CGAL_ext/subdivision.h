@@ -56,10 +56,12 @@ struct Point_values
   using Weight = double;
   static Value from(const P& p) { return {double(p.x()), double(p.y()), double(p.z())}; }
   static P to(const Value& v) { return P(v.x, v.y, v.z); }
-  // Whether from(to(v)) is v, bit for bit: a point of doubles holds a Vec3
-  // exactly, so the last level is interpolated straight into the result's
-  // points (Refiner::refine_and_interpolate_points()).
-  static constexpr bool round_trips = std::is_same_v<typename K::FT, double>;
+  // Whether from(to(v)) is v, bit for bit (a point of doubles holds a Vec3
+  // exactly), and a point is plain data (not the reference-counted points
+  // of CGAL::Cartesian, which allocate even when default-constructed): then
+  // the last level is interpolated straight into the result's points
+  // (Refiner::refine_and_interpolate_points()).
+  static constexpr bool round_trips = std::is_same_v<typename K::FT, double> && std::is_trivially_copyable_v<P>;
 };
 template <class P, class K>
 struct Point_values<P, K, false>

@@ -17,6 +17,7 @@
 #include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
 #include <CGAL_ext/Subdivision/internal/Weights.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Huge_page_allocator.h>
 
 #include <CGAL/tags.h>
 #include <CGAL/use.h>
@@ -276,7 +277,11 @@ public:
   /// last pass reads back a value it has written (a face or edge point), it
   /// converts the point back with `Convert::from()`, which must give the
   /// value back bit for bit (true of points of doubles); then `out`'s points
-  /// are `refine_and_interpolate()`'s values, converted.
+  /// are `refine_and_interpolate()`'s values, converted. `Convert` has a type
+  /// `Value` (that of `values`, not one that is normalized, as exact numbers
+  /// are) and static functions `to()` and `from()`, called from several
+  /// threads at once under `CGAL::Parallel_tag`. The points are allocated
+  /// without being written first where `Q` is trivially copyable.
   template <class Convert, class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values, class Q>
   void refine_and_interpolate_points(const Mobius_mesh<P>& mesh, unsigned levels, Values& values,
                                      Mobius_mesh<Q>& out, const std::vector<float>& edge_sharpness = {},
@@ -486,7 +491,12 @@ private:
       Point_vector<Q> points;
       if constexpr (into_points) {
         if (last) {
-          points.resize(child_vertex_count(0)); // written in full below (and not at all here, for CGAL's points)
+          // Written in full below; here only allocated, where the points
+          // are trivially copyable (round_trips), and advised onto huge pages
+          // before anything touches them, as the mesh's own arrays.
+          points.reserve(child_vertex_count(0));
+          CGAL_ext::internal::advise_huge_pages(points.data(), points.capacity() * sizeof(points[0]));
+          points.resize(child_vertex_count(0));
           values_into_points<ConcurrencyTag, Convert>(values, points);
         } else {
           advance_values<ConcurrencyTag>(values);
@@ -852,7 +862,10 @@ void Refiner<Mask, W>::interpolate_level_into(unsigned k, const Value* src, cons
     else
       internal::interpolate_primal<Mask::split>(levels_[k], weights_[k], src, dst);
   } else if constexpr (uses_stencils) {
-    internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv), [&](auto tag) {
+    // The last step of a one-pass refinement has freed its parent level:
+    // its caller chose the tag from that level already.
+    const bool parallel = k >= levels_.size() || parallel_level(levels_[k].nv);
+    internal::with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
       internal::interpolate_stencils<decltype(tag)>(stencils_[k], src, dst);
     });
   } else if (k >= incidence_.size() || incidence_[k].empty()) {

@@ -99,7 +99,7 @@ inline Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const V
       if (f == null_u32)
         continue;
       if constexpr (split == Split::quad)
-        x = x + w.face * load(face_points, f);
+        x = x + w.face * internal::load(face_points, f);
       else
         x = x + w.face * src[p.h_target[de::halfedge_of_dart(p.h_next[h])]];
     }
@@ -111,7 +111,7 @@ inline Value edge_point(const Level& p, const Edge_weights<W>& w, u32 e, const V
 template <class ConcurrencyTag, class W, class Value, class Out>
 void interpolate_stencils(const Stencils<W>& st, const Value* src, const Out& dst)
 {
-  for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { store(dst, i, stencil_point(st, i, src)); });
+  for_each_index<ConcurrencyTag>(st.size(), [&](u32 i) { internal::store(dst, i, stencil_point(st, i, src)); });
 }
 
 // The point of parent vertex v, its sums of terms made (Vertex_sums):
@@ -167,7 +167,7 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
         *face_points = sum_of(Vertex_sums::face_points);
   if constexpr (split == Split::quad) {
     for (u32 f = 0; f < nf; ++f)
-      store(dst, fp + f, face_point<W>(p, f, src));
+      internal::store(dst, fp + f, face_point<W>(p, f, src));
   }
   // Each sum starts from 0 · the vertex's own point, as in the gather (a
   // zero made from one point would spread that point's infinities and NaNs
@@ -182,7 +182,7 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
         const u32 h0 = de::halfedge_of_edge(e, 0);
         const u32 a = p.source(de::dart(h0, false)), b = p.h_target[h0];
         const Value x = edge_point<split>(p, sw.edge(e), e, src, dst + fp);
-        store(dst, nv + e, x);
+        internal::store(dst, nv + e, x);
         // All of a's terms, then b's: the gather's order where a = b.
         if constexpr (decltype(to_neighbours)::value)
           neighbours[a] = neighbours[a] + src[b];
@@ -200,11 +200,11 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Value* 
       for (u32 f = 0; f < nf; ++f)
         for (u32 i = p.f_offset[f], i1 = p.f_offset[f + 1]; i < i1; ++i) {
           const u32 v = p.h_target[p.corner_h[i]];
-          face_points[v] = face_points[v] + load(dst, fp + f);
+          face_points[v] = face_points[v] + internal::load(dst, fp + f);
         }
   }
   for (u32 v = 0; v < nv; ++v)
-    store(dst, v, vertex_point(sw.vertex(v), vs, v, src, [&](int s) -> const Value& { return sums[s][v]; }));
+    internal::store(dst, v, vertex_point(sw.vertex(v), vs, v, src, [&](int s) -> const Value& { return sums[s][v]; }));
 }
 
 // The serial pass as gathers over `inc` (the incidence tables of `p`), in
@@ -219,9 +219,9 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
   if (nv == 0)
     return;
   if constexpr (split == Split::quad)
-    for_each_index<ConcurrencyTag>(nf, [&](u32 f) { store(dst, fp + f, face_point<W>(p, f, src)); });
+    for_each_index<ConcurrencyTag>(nf, [&](u32 f) { internal::store(dst, fp + f, face_point<W>(p, f, src)); });
   for_each_index<ConcurrencyTag>(
-    ne, [&](u32 e) { store(dst, nv + e, edge_point<split>(p, sw.edge(e), e, src, dst + fp)); });
+    ne, [&](u32 e) { internal::store(dst, nv + e, edge_point<split>(p, sw.edge(e), e, src, dst + fp)); });
   const Vertex_sums& vs = sw.sums;
   const int neighbours = vs.sum_of[Vertex_sums::neighbours], edge_points = vs.sum_of[Vertex_sums::edge_points],
             face_points = vs.sum_of[Vertex_sums::face_points];
@@ -240,14 +240,14 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
             sums[index(neighbours)] =
               sums[index(neighbours)] + src[(end & 1u) ? p.source(de::dart(h0, false)) : p.h_target[h0]];
           if (edge_points != Vertex_sums::none)
-            sums[index(edge_points)] = sums[index(edge_points)] + load(dst, nv + e);
+            sums[index(edge_points)] = sums[index(edge_points)] + internal::load(dst, nv + e);
         }
         if (split == Split::quad && face_points != Vertex_sums::none) // the triangle split has no face points
           for (u32 i = inc.corner_offset[v]; i < inc.corner_offset[v + 1]; ++i)
             sums[index(face_points)] =
-              sums[index(face_points)] + load(dst, fp + inc.face_of_corner(inc.corners[i]));
+              sums[index(face_points)] + internal::load(dst, fp + inc.face_of_corner(inc.corners[i]));
       }
-      store(dst, v, vertex_point(w, vs, v, src, [&](int s) -> const Value& { return sums[index(s)]; }));
+      internal::store(dst, v, vertex_point(w, vs, v, src, [&](int s) -> const Value& { return sums[index(s)]; }));
     });
   });
 }
