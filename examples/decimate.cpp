@@ -4,7 +4,8 @@
 // Garland–Heckbert edge collapses and writes the result. Prints one line of
 // JSON: the output's counts and topology (as mesh_info), then
 //   "seconds":S (the decimation alone),"hausdorff":H (the symmetric
-//   Hausdorff distance to the input, sampled by CGAL)}
+//   Hausdorff distance to the input, sampled by CGAL; null where the input
+//   or the result has no area)}
 // A bad file or option: one line on stderr, exit status 2.
 
 #include "arguments.h"
@@ -18,6 +19,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -25,6 +27,7 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -47,12 +50,15 @@ const examples::Tool_usage usage{
   "topology, the time taken and the Hausdorff distance to the input as one line of JSON.\n"};
 
 // The symmetric Hausdorff distance between the surfaces of two meshes, by
-// CGAL on their Surface_mesh copies (cut along the seams, same geometry).
-double hausdorff_distance(const Mesh& a, const Mesh& b)
+// CGAL on their Surface_mesh copies (cut along the seams, same geometry);
+// none where a surface has no area, which CGAL's sampling cannot sample.
+std::optional<double> hausdorff_distance(const Mesh& a, const Mesh& b)
 {
   CGAL::Surface_mesh<Kernel::Point_3> sa, sb;
   CGAL_ext::to_surface_mesh(a, sa);
   CGAL_ext::to_surface_mesh(b, sb);
+  if (!(CGAL::Polygon_mesh_processing::area(sa) > 0 && CGAL::Polygon_mesh_processing::area(sb) > 0))
+    return std::nullopt;
   const std::size_t faces = (std::max)(std::size_t(a.number_of_faces()), std::size_t(b.number_of_faces()));
   const std::size_t samples = (std::max)(std::size_t(20000), 4 * faces);
   const auto np = CGAL::parameters::number_of_points_on_faces(samples).random_seed(1);
@@ -95,13 +101,18 @@ int decimate(int argc, char** argv)
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
   CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same
-  const double hausdorff = hausdorff_distance(mesh, input);
+  const std::optional<double> hausdorff = hausdorff_distance(mesh, input);
 
   std::ostringstream summary;
   examples::print_mesh_summary(mesh, summary);
   std::string line = summary.str();
   line.erase(line.find_last_of('}'));
-  std::cout << line << ",\"seconds\":" << seconds << ",\"hausdorff\":" << hausdorff << "}" << std::endl;
+  std::cout << line << ",\"seconds\":" << seconds << ",\"hausdorff\":";
+  if (hausdorff)
+    std::cout << *hausdorff;
+  else
+    std::cout << "null";
+  std::cout << "}" << std::endl;
   return 0;
 }
 

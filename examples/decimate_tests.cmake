@@ -39,3 +39,15 @@ add_test(NAME decimate.fails.ratio
   COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> "-DARGS=${_data}/mobius_min_5tris.obj;${_out}/x.obj;--ratio;2"
           -DSTATUS=2 "-DSTDERR=^decimate: --ratio '2' is not in \\[0, 1\\]; usage: [^\n]+\n$"
           -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+
+# A surface without area (three points in line): nothing to sample for the
+# Hausdorff distance, which is null; a point beyond +-1e60: one line, exit 2.
+file(WRITE ${_out}/collinear_triangle.obj "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n")
+add_test(NAME decimate.no_area COMMAND decimate ${_out}/collinear_triangle.obj ${_out}/decimate_collinear.obj --ratio 0)
+set_tests_properties(decimate.no_area PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":3,\"edges\":3,\"faces\":1,.*\"valid\":true,\"seconds\":[0-9.e+-]+,\"hausdorff\":null}")
+file(WRITE ${_out}/far_triangle.obj "v 0 0 0\nv 1e70 0 0\nv 0 1 0\nf 1 2 3\n")
+add_test(NAME decimate.fails.far_point
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> "-DARGS=${_out}/far_triangle.obj;${_out}/x.obj;--ratio;0"
+          -DSTATUS=2 "-DSTDERR=^decimate: decimate: vertex 1 at [^\n]+ beyond [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)

@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <vector>
@@ -247,6 +248,42 @@ TEST(TriangulateFaces, KeepsTheTopologyOfAQuadKleinBottleAndMobiusStrip)
     EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), borders);
     EXPECT_FALSE(CGAL_ext::is_orientable(m));
   }
+}
+
+// A disk: the quad a b c d, whose shorter diagonal a-c (length 1, against
+// b-d's 2) is already an edge, of the triangle c e a; triangles b a e and
+// c b e close the fan around e. The quad must take b-d.
+TEST(TriangulateFaces, TakesTheOtherDiagonalWhereTheShorterIsAlreadyAnEdge)
+{
+  const std::vector<Point> points{Point(0, 0, 0), Point(0.5, -1, 0), Point(1, 0, 0), Point(0.5, 1, 0),
+                                  Point(0.5, -0.3, 1)};
+  const std::vector<std::vector<std::size_t>> faces{{0, 1, 2, 3}, {1, 0, 4}, {2, 1, 4}, {2, 4, 0}};
+  Mesh m = mesh_of(points, faces);
+  ASSERT_EQ(CGAL_ext::euler_characteristic(m), 1);
+  EXPECT_EQ(CGAL_ext::triangulate_faces(m), 1u);
+  EXPECT_TRUE(m.is_valid());
+  EXPECT_EQ(m.number_of_faces(), 5u);
+  EXPECT_EQ(m.number_of_edges(), 9u); // 8 + the diagonal, no edge doubled
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 1);
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 1u);
+  EXPECT_NE(dart_from_to(m, Vertex_index(1), Vertex_index(3)), Dart());
+}
+
+// Two quads on the same four corners (a closed pillow, χ = 2): both have
+// the same shorter diagonal, which only the first may take.
+TEST(TriangulateFaces, TwoFacesDoNotTakeTheSameDiagonal)
+{
+  const std::vector<Point> points{Point(0, 0, 0), Point(2, -1, 0), Point(4, 0, 0), Point(2, 1, 0.5)};
+  Mesh m = mesh_of(points, {{0, 1, 2, 3}, {3, 2, 1, 0}});
+  ASSERT_EQ(CGAL_ext::euler_characteristic(m), 2);
+  EXPECT_EQ(CGAL_ext::triangulate_faces(m), 2u);
+  EXPECT_TRUE(m.is_valid());
+  EXPECT_EQ(m.number_of_faces(), 4u);
+  EXPECT_EQ(m.number_of_edges(), 6u); // a tetrahedron's: each pair of corners once
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 2);
+  EXPECT_TRUE(CGAL_ext::is_closed(m));
+  EXPECT_NE(dart_from_to(m, Vertex_index(1), Vertex_index(3)), Dart());
+  EXPECT_NE(dart_from_to(m, Vertex_index(0), Vertex_index(2)), Dart());
 }
 
 // ---------------------------------------------------------------- decimation
@@ -562,8 +599,27 @@ TEST(Decimation, BadParametersThrowBeforeTheMeshIsTouched)
   EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(10).maximum_normal_deviation(0.0)),
                CGAL_ext::Parameter_error);
   unchanged();
+  for (double far : {1e61, -1e200, std::numeric_limits<double>::quiet_NaN()}) {
+    Mesh moved = m;
+    moved.point(Vertex_index(5)) = Point(far, 0, 0);
+    EXPECT_THROW(CGAL_ext::decimate(moved, np::face_ratio(0.5)), CGAL_ext::Parameter_error) << far;
+    EXPECT_EQ(moved.number_of_faces(), copy.number_of_faces()); // still quads
+  }
   m.remove_face(*m.faces().begin());
   EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(10)), CGAL_ext::Parameter_error);
+}
+
+// A face count of 2^64 or more is no limit (not a count that wraps to 0).
+TEST(Decimation, AFaceCountBeyondSizeTIsNoLimit)
+{
+  Mesh m;
+  CGAL_ext::make_torus(m, 6, 4);
+  namespace np = CGAL_ext::parameters;
+  const auto r = CGAL_ext::decimate(m, np::number_of_faces((std::numeric_limits<std::size_t>::max)()));
+  EXPECT_EQ(r.collapses, 0u);
+  EXPECT_EQ(m.number_of_faces(), 48u); // 24 quads, triangulated
+  const auto huge = CGAL_ext::decimate(m, np::number_of_faces(1e30));
+  EXPECT_EQ(huge.collapses, 0u);
 }
 
 } // namespace decimation_tests

@@ -68,7 +68,8 @@ Decimation_settings decimation_settings(std::size_t faces, const NP& np)
     const double n = double(pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::number_of_faces), 0));
     if (!(n >= 0) || !std::isfinite(n))
       throw Parameter_error(std::string(fn) + "number_of_faces must be a finite number >= 0, not " + std::to_string(n));
-    s.target_faces = std::size_t(n);
+    // Any count from 2^64 up means no count limit (and is not a size_t).
+    s.target_faces = n < 18446744073709551616.0 ? std::size_t(n) : (std::numeric_limits<std::size_t>::max)();
   }
   if (has_ratio) {
     const double r = double(pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::face_ratio), 1.0));
@@ -438,7 +439,10 @@ void Decimator<P>::check_star(Vertex_index v) const
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if a parameter is out of range, no stop condition
-///   is given, or `mesh` has removed elements: before `mesh` is touched.
+///   is given, `mesh` has removed elements, or a point has a coordinate
+///   beyond +-1e60 (where quadrics in double overflow).
+/// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()).
+/// All are thrown before `mesh` is touched.
 template <class P, class NP = parameters::Default_named_parameters>
 Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::default_values())
 {
@@ -447,6 +451,7 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
   for (Face_index f : mesh.faces())
     triangles += mesh.degree(f) - 2;
   const internal::Decimation_settings settings = internal::decimation_settings(triangles, np);
+  internal::require_coordinates_in_range(mesh, "decimate");
   triangulate_faces(mesh);
   internal::Decimator<P> decimator(mesh, settings, internal::feature_edges(mesh, np, settings.protect_borders));
   const Decimation_result result = decimator.run();
