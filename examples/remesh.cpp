@@ -1,5 +1,5 @@
 // remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp]
-//        [--relax-constraints]
+//        [--relax-constraints] [--max-memory BYTES]
 //
 // Remeshes a polygon mesh (.obj, .off, .ply) into triangles whose edges are
 // close to L (Botsch and Kobbelt's isotropic remeshing), on any surface: a
@@ -27,7 +27,8 @@ namespace {
 
 const examples::Tool_usage usage{
   "remesh",
-  "remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp] [--relax-constraints]",
+  "remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp] [--relax-constraints] "
+  "[--max-memory BYTES]",
   "Reads a polygon mesh (.obj, .off, .ply), splits its faces into triangles and remeshes it so\n"
   "that its edges come close to L (Botsch and Kobbelt's loop of splits, collapses, flips,\n"
   "tangential relaxation and projection onto the input), on any surface, one-sided ones included.\n"
@@ -36,6 +37,8 @@ const examples::Tool_usage usage{
   "  --protect-sharp      so do the edges the file tags as sharp (OBJ crease tags)\n"
   "  --relax-constraints  the vertices of protected borders and sharp edges slide along them\n"
   "                       to even out their edges; corners stay\n"
+  "  --max-memory BYTES   refuse before starting if the remeshing would need more (estimated\n"
+  "                       from the input and L; default: the machine's physical memory)\n"
   "Writes OUT and prints its counts, topology, the share of edges between 4/5 L and 4/3 L and\n"
   "the time taken as one line of JSON.\n"};
 
@@ -55,7 +58,7 @@ int remesh(int argc, char** argv)
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   const examples::Arguments args =
-    examples::parse_arguments(argc, argv, {"--edge-length", "--iterations"},
+    examples::parse_arguments(argc, argv, {"--edge-length", "--iterations", "--max-memory"},
                               {"--protect-borders", "--protect-sharp", "--relax-constraints"});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
@@ -65,15 +68,22 @@ int remesh(int argc, char** argv)
   if (!(L > 0))
     throw examples::Usage_error("--edge-length '" + args.value("--edge-length", "") + "' is not positive");
   const long iterations = examples::integer_argument("--iterations", args.value("--iterations", "1"), 1, 1000);
+  const double max_memory =
+    args.has("--max-memory") ? examples::real_argument("--max-memory", args.value("--max-memory", "")) : 1.0;
+  if (!(max_memory > 0))
+    throw examples::Usage_error("--max-memory '" + args.value("--max-memory", "") + "' is not positive");
 
   Mesh mesh;
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
   const auto start = std::chrono::steady_clock::now();
-  CGAL_ext::isotropic_remeshing(mesh, L,
-                                CGAL_ext::parameters::number_of_iterations(unsigned(iterations))
-                                  .protect_borders(args.has("--protect-borders"))
-                                  .protect_sharp_edges(args.has("--protect-sharp"))
-                                  .relax_constraints(args.has("--relax-constraints")));
+  const auto np = CGAL_ext::parameters::number_of_iterations(unsigned(iterations))
+                    .protect_borders(args.has("--protect-borders"))
+                    .protect_sharp_edges(args.has("--protect-sharp"))
+                    .relax_constraints(args.has("--relax-constraints"));
+  if (args.has("--max-memory"))
+    CGAL_ext::isotropic_remeshing(mesh, L, np.maximum_memory(max_memory));
+  else // the library's default: the machine's memory
+    CGAL_ext::isotropic_remeshing(mesh, L, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
   const char* const boolean[] = {"false", "true"};

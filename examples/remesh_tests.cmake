@@ -50,3 +50,15 @@ add_test(NAME remesh.fails.iterations
           "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;1;--iterations;0"
           -DSTATUS=2 "-DSTDERR=^remesh: --iterations '0' is not an integer from 1 to 1000; usage: [^\n]+\n$"
           -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+
+# A length whose result would not fit the mesh's indices, and one whose
+# estimated peak is above --max-memory: refused up front, one line, exit 2.
+add_test(NAME remesh.fails.too_fine
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh> "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;1e-6"
+          -DSTATUS=2 "-DSTDERR=^remesh: isotropic_remeshing to edge length 1e-06 would make [0-9]+ edges, [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+add_test(NAME remesh.fails.max_memory
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh>
+          "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;0.01;--max-memory;1e6"
+          -DSTATUS=2 "-DSTDERR=^remesh: isotropic_remeshing to edge length 0.01 would need about [0-9.e+-]+ GB of memory, [^\n]+\n$"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)

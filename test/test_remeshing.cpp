@@ -647,6 +647,124 @@ TEST(IsotropicRemeshing, BadParametersLeaveTheMeshUntouched)
   EXPECT_EQ(m.number_of_faces(), copy.number_of_faces() - 1);
 }
 
+// A thin annulus (radii 1 and 1.05, 200 segments, two rings) remeshed to edge lengths
+// of 4 to 8 times its width: the middle of a border vertex's neighbours is
+// then often closer to the other circle than to its own, and a vertex that
+// slid onto the other border would pinch the strip. No vertex of a border
+// loop may come near the other loop's circle (a fifth of the width: border
+// points not yet projected back, midpoints of chords, lie off their own
+// circle, on its inner side, by less than that at these lengths).
+TEST(IsotropicRemeshing, BorderVerticesStayOnTheirOwnLoop)
+{
+  const std::size_t n = 200;
+  const double radii[2] = {1.0, 1.05};
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  for (double r : {radii[0], (radii[0] + radii[1]) / 2, radii[1]}) // two rings of triangles
+    for (std::size_t i = 0; i < n; ++i)
+      points.emplace_back(r * std::cos(2 * CGAL_PI * double(i) / double(n)),
+                          r * std::sin(2 * CGAL_PI * double(i) / double(n)), 0);
+  for (std::size_t ring = 0; ring < 2; ++ring)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t a = ring * n + i, b = ring * n + (i + 1) % n;
+      faces.push_back({a, b, b + n});
+      faces.push_back({a, b + n, a + n});
+    }
+  for (double L : {0.2, 0.4}) {
+    Mesh m;
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
+    CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(3));
+    ASSERT_TRUE(m.is_valid());
+    const std::vector<CGAL_ext::Dart> loops = CGAL_ext::border_cycles(m);
+    ASSERT_EQ(loops.size(), 2u);
+    for (CGAL_ext::Dart start : loops) {
+      std::vector<double> rho;
+      for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(start, m)) {
+        const Point& p = m.point(m.target(d));
+        rho.push_back(std::hypot(p.x(), p.y()));
+      }
+      std::vector<double> sorted = rho;
+      std::sort(sorted.begin(), sorted.end());
+      const double median = sorted[sorted.size() / 2];
+      const double other = std::abs(median - radii[0]) < std::abs(median - radii[1]) ? radii[1] : radii[0];
+      for (double x : rho)
+        EXPECT_GT(std::abs(x - other), 0.2 * (radii[1] - radii[0]))
+          << "L = " << L << ": a vertex of the loop on the circle of radius " << radii[0] + radii[1] - other
+          << " is at radius " << x;
+    }
+  }
+}
+
+// A target length that would make more elements than the mesh can index, or
+// more bytes than allowed, and points whose squares overflow double, are
+// refused before the mesh is touched: its quads are still quads.
+TEST(IsotropicRemeshing, ResultsTooLargeAndPointsTooFarAreRefusedBeforeTheMeshIsTouched)
+{
+  Mesh m = read_mesh<Point>("mobius_20x4_quads.obj");
+  const Mesh copy = m;
+  const auto unchanged = [&] {
+    bool same = m.number_of_faces() == copy.number_of_faces() && m.number_of_edges() == copy.number_of_edges();
+    for (Vertex_index v : m.vertices())
+      same = same && m.point(v) == copy.point(v);
+    return same;
+  };
+  auto refused_for = [&](double L, auto np) {
+    try {
+      CGAL_ext::isotropic_remeshing(m, L, np);
+    } catch (const CGAL_ext::Size_error& e) {
+      EXPECT_TRUE(unchanged()) << L;
+      return e.element();
+    }
+    ADD_FAILURE() << "remeshed to " << L;
+    return std::string();
+  };
+  // The strip's area (about 2.4) in triangles of side 4/5 L: 1e13 at L = 1e-6.
+  EXPECT_EQ(refused_for(1e-6, np::number_of_iterations(1)), "edges");
+  EXPECT_EQ(refused_for(1e-310, np::number_of_iterations(1)), "edges"); // L^2 is 0 in double
+  EXPECT_EQ(refused_for(0.01, np::maximum_memory(1e6)), "bytes");
+  EXPECT_THROW(CGAL_ext::isotropic_remeshing(m, 0.1, np::maximum_memory(0.0)), CGAL_ext::Parameter_error);
+  EXPECT_TRUE(unchanged());
+  for (double far : {1e61, -1e200, std::numeric_limits<double>::quiet_NaN()}) {
+    Mesh moved = m;
+    moved.point(Vertex_index(3)) = Point(0, far, 0);
+    const Mesh before = moved;
+    EXPECT_THROW(CGAL_ext::isotropic_remeshing(moved, 0.1), CGAL_ext::Parameter_error) << far;
+    EXPECT_EQ(moved.number_of_faces(), before.number_of_faces());
+  }
+}
+
+// The estimate that guards the size bounds what a remeshing makes, and is
+// not far above it: on a unit square of two triangles (whose long edges
+// leave short ones that no collapse may remove; closed form: its area in
+// equilateral triangles of side L/2, plus two per 4/5 L of border), a
+// Möbius strip and a Klein bottle, each remeshed to lengths from coarse to
+// fine.
+TEST(IsotropicRemeshing, TheSizeEstimateBoundsTheResult)
+{
+  Mesh square;
+  CGAL_ext::polygon_soup_to_mobius_mesh(std::vector<Point>{Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)},
+                                        std::vector<std::vector<std::size_t>>{{0, 1, 2}, {0, 2, 3}}, square);
+  const auto estimate_of = [](const Mesh& m, double L) {
+    CGAL_ext::internal::Remeshing_options options;
+    options.target_edge_length = L;
+    return CGAL_ext::internal::remeshing_face_estimate(m, options).faces;
+  };
+  EXPECT_NEAR(estimate_of(square, 0.04), 1 / (std::sqrt(3.0) / 4 * 0.02 * 0.02) + 2 * 4 / 0.032, 1e-6);
+  Mesh klein;
+  CGAL_ext::make_klein_bottle(klein, 24, 12);
+  const std::pair<Mesh, std::vector<double>> cases[] = {{square, {0.3, 0.1, 0.04}},
+                                                        {read_mesh<Point>("mobius_20x4_tris.obj"), {0.5, 0.1}},
+                                                        {klein, {1.0, 0.3}}};
+  for (const auto& [input, lengths] : cases)
+    for (double L : lengths) {
+      Mesh m = input;
+      const double estimate = estimate_of(m, L);
+      CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(3));
+      EXPECT_LE(double(m.number_of_faces()), estimate) << "L = " << L;
+      EXPECT_LE(estimate, 10 * double((std::max)(m.number_of_faces(), input.number_of_faces()))) << "L = " << L;
+    }
+}
+
 } // namespace
 
 } // namespace remeshing_tests

@@ -14,9 +14,11 @@
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace CGAL_ext {
 
@@ -49,6 +51,77 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
     choose_parameter(get_parameter(np, CGAL_ext::internal_np::protect_sharp_edges), false);
   options.relax_constraints = choose_parameter(get_parameter(np, CGAL::internal_np::relax_constraints), false);
   return options;
+}
+
+// The triangles of a remeshing's input and the most its result may hold.
+struct Remeshing_estimate
+{
+  double input_triangles = 0;
+  double faces = 0;
+};
+
+// Estimated from the input before anything is touched, the most triangles
+// are the larger of what the first split pass makes (it cuts each
+// unprotected edge longer than 4/3 L into 2^k pieces of at most 4/3 L, each
+// cut adding a triangle on each side of the edge: exact) and what the later
+// iterations tend to: the input's area in equilateral triangles of side
+// L / 2, and two triangles per 4/5 L of border. The first pass leaves edges
+// shorter than L that no collapse may remove without making one longer
+// than 4/3 L: a unit square of two triangles remeshed to L = 0.04 holds 2.6
+// times its area in triangles of side L after 3 iterations, a strip
+// narrower than L two triangles per L of its length whatever its area.
+template <class P>
+Remeshing_estimate remeshing_face_estimate(const Mobius_mesh<P>& mesh, const Remeshing_options& options)
+{
+  const double L = options.target_edge_length, high = 4.0 / 3.0 * L, low = 0.8 * L;
+  const auto sharpness = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
+  double input = 0, area = 0, border = 0;
+  std::vector<Point_d> corners;
+  for (Face_index f : mesh.faces()) {
+    corners.clear();
+    for (Vertex_index v : CGAL_ext::vertices_around_face(f, mesh))
+      corners.push_back(to_point_d(mesh.point(v)));
+    const Point_d n = newell_d(corners).first;
+    input += double(corners.size()) - 2;
+    area += std::sqrt(dot_d(n, n)) / 2;
+  }
+  double split = input;
+  for (Edge_index e : mesh.edges()) {
+    const bool is_protected = (options.protect_borders && mesh.is_border(e)) ||
+                              (options.protect_sharp_edges && sharpness && (*sharpness)[e] > 0);
+    const Point_d d = minus_d(to_point_d(mesh.point(mesh.vertex(e, 0))), to_point_d(mesh.point(mesh.vertex(e, 1))));
+    const double length = std::sqrt(dot_d(d, d));
+    if (mesh.is_border(e))
+      border += length;
+    if (is_protected || !(length > high))
+      continue;
+    const double pieces = std::exp2(std::ceil(std::log2(length / high)));
+    split += (pieces - 1) * (mesh.is_border(e) ? 1 : 2);
+  }
+  const double later = area / (std::sqrt(3.0) / 4 * (L / 2) * (L / 2)) + 2 * border / low;
+  return {input, (std::max)(split, later)};
+}
+
+// Refuses, with Size_error, a remeshing whose estimated result the mesh's
+// indices cannot hold or whose estimated peak is above `maximum_memory`:
+// 1.5 times the mesh's arrays at the estimated size (the mesh, its grown
+// arrays and the queues) and ~200 bytes per input triangle (their copy and
+// AABB tree). For the remeshing benchmark (125 000 triangles of a torus to
+// their mean edge length: a peak of 45 MB, 100 000 triangles left) that is
+// about 70 MB, from an estimate of about 450 000 triangles.
+template <class P>
+void check_remeshing_size(const Mobius_mesh<P>& mesh, const Remeshing_options& options, double maximum_memory)
+{
+  if (!(maximum_memory > 0))
+    throw Parameter_error("isotropic_remeshing: maximum_memory " + std::to_string(maximum_memory) +
+                          " is not a positive number");
+  const auto [input_triangles, faces] = remeshing_face_estimate(mesh, options);
+  auto count = [](double x) { return static_cast<unsigned long long>(x < 1.8e19 ? std::ceil(x) : 1.8e19); };
+  const Mesh_size size{count(faces / 2 + 2), count(faces * 1.5 + 1), count(faces), 0};
+  std::ostringstream what;
+  what << "isotropic_remeshing to edge length " << options.target_edge_length;
+  check_mesh_size(what.str(), size);
+  check_memory(what.str(), 1.5 * mesh_bytes<P>(size) + 200 * input_triangles, maximum_memory);
 }
 
 } // namespace internal
@@ -95,8 +168,9 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
 ///       `relax_constraints`). `false`:
 ///       border edges are split and collapsed like others, and border
 ///       vertices slide along the input's border (to the middle of their
-///       border neighbours, then onto the input's border edges), so each
-///       border loop stays one loop on the input's border.}
+///       border neighbours, then onto the border edges of their own loop of
+///       the input, even where another loop is closer), so each border loop
+///       stays one loop on its own part of the input's border.}
 ///     \cgalParamDefault{the value of CGAL's `protect_constraints`, itself `false` by default}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{protect_sharp_edges}
@@ -120,15 +194,33 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`, as in CGAL}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_memory}
+///     \cgalParamDescription{the most bytes the remeshing may take, estimated
+///       from the input before it starts: from the triangles the first split
+///       pass makes and those the input's area holds at the band's shortest
+///       edge length}
+///     \cgalParamType{`double`, > 0}
+///     \cgalParamDefault{the machine's physical memory}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if L is not positive and finite, the number of
-/// iterations is out of range, or `mesh` has removed elements; `mesh` is
-/// then untouched.
+/// iterations is out of range, `maximum_memory` is not positive, `mesh` has
+/// removed elements, or a point has a coordinate beyond +-1e60 (where
+/// squared lengths and normals in double overflow).
+/// \throws Size_error if the estimated result has more elements than the
+/// mesh's indices hold or needs more than `maximum_memory`.
+/// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()).
+/// In all these cases `mesh` is untouched.
 template <class P, class NP = parameters::Default_named_parameters>
 void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const NP& np = parameters::default_values())
 {
   const internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
+  internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
+  internal::check_remeshing_size(mesh, options,
+                                 parameters::choose_parameter(
+                                   parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
+                                   internal::physical_memory()));
   triangulate_faces(mesh);
   {
     // The remesher keeps edge indices across splits and collapses: added

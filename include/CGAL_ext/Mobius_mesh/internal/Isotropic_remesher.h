@@ -12,6 +12,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
 #include <CGAL_ext/Mobius_mesh/internal/Constraint_polylines.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Sharp_features.h>
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -21,9 +22,13 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/assertions.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <queue>
 #include <utility>
@@ -77,7 +82,10 @@ bool remeshing_move_keeps_sides(Dart into, const Remeshing_point& to, const Mobi
 }
 
 // The input surface, copied once as triangles (and border segments) in double,
-// with the AABB trees that projection asks for closest points.
+// with the AABB trees that projection asks for closest points. The border
+// segments are stored loop by loop, so that a border vertex can be kept on
+// its own loop: where two loops pass close by (a thin strip, two holes side
+// by side) the closest border point may be on the other one.
 class Remeshing_input_surface
 {
   using K = Remeshing_kernel;
@@ -88,8 +96,10 @@ class Remeshing_input_surface
   using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segments::const_iterator>>>;
 
 public:
+  static constexpr std::uint32_t no_loop = std::uint32_t(-1);
+
   template <class P>
-  explicit Remeshing_input_surface(const Mobius_mesh<P>& mesh)
+  explicit Remeshing_input_surface(const Mobius_mesh<P>& mesh) : loop_of_edge_(mesh.num_edges(), no_loop)
   {
     triangles_.reserve(mesh.number_of_faces());
     for (Face_index f : mesh.faces()) {
@@ -98,10 +108,16 @@ public:
                               to_remeshing_point(mesh.point(mesh.target(d))),
                               to_remeshing_point(mesh.point(mesh.target(mesh.next(d)))));
     }
-    for (Edge_index e : mesh.edges())
-      if (mesh.is_border(e))
-        border_.emplace_back(to_remeshing_point(mesh.point(mesh.vertex(e, 0))),
-                             to_remeshing_point(mesh.point(mesh.vertex(e, 1))));
+    for (Dart start : CGAL_ext::border_cycles(mesh)) {
+      loop_begin_.push_back(border_.size());
+      for (Dart d : CGAL_ext::halfedges_around_face(start, mesh)) {
+        loop_of_edge_[mesh.edge(d).idx()] = std::uint32_t(loop_begin_.size() - 1);
+        border_.emplace_back(to_remeshing_point(mesh.point(mesh.source(d))),
+                             to_remeshing_point(mesh.point(mesh.target(d))));
+      }
+    }
+    loop_begin_.push_back(border_.size());
+    loop_trees_.resize(loop_begin_.size() - 1);
     faces_tree_.insert(triangles_.begin(), triangles_.end());
     faces_tree_.accelerate_distance_queries();
     if (!border_.empty()) {
@@ -113,19 +129,42 @@ public:
   Remeshing_input_surface& operator=(const Remeshing_input_surface&) = delete;
 
   Remeshing_point closest_on_faces(const Remeshing_point& p) const { return faces_tree_.closest_point(p); }
-  // A border vertex stays on the input's border: its closest point there.
-  std::optional<Remeshing_point> closest_on_border(const Remeshing_point& p) const
+
+  /// The input border loop of each input edge (`no_loop` for inner edges).
+  const std::vector<std::uint32_t>& loop_of_edges() const { return loop_of_edge_; }
+
+  // A border vertex stays on its own border loop of the input: the closest
+  // point there. The tree of all loops answers first; only where its answer
+  // is on another loop is a tree of that loop alone built (once) and asked.
+  std::optional<Remeshing_point> closest_on_border(const Remeshing_point& p, std::uint32_t loop) const
   {
-    if (border_.empty())
+    if (loop >= loop_trees_.size())
       return std::nullopt;
-    return border_tree_.closest_point(p);
+    const auto [point, segment] = border_tree_.closest_point_and_primitive(p);
+    if (loop_of_segment(std::size_t(segment - border_.begin())) == loop)
+      return point;
+    std::unique_ptr<Segment_tree>& own = loop_trees_[loop];
+    if (!own) {
+      own = std::make_unique<Segment_tree>(border_.cbegin() + std::ptrdiff_t(loop_begin_[loop]),
+                                           border_.cbegin() + std::ptrdiff_t(loop_begin_[loop + 1]));
+      own->accelerate_distance_queries();
+    }
+    return own->closest_point(p);
   }
 
 private:
+  std::uint32_t loop_of_segment(std::size_t i) const
+  {
+    return std::uint32_t(std::upper_bound(loop_begin_.begin(), loop_begin_.end(), i) - loop_begin_.begin() - 1);
+  }
+
   Triangles triangles_;
-  Segments border_;
+  Segments border_;                       // loop by loop
+  std::vector<std::size_t> loop_begin_;   // where each loop's segments begin in border_, and the end
+  std::vector<std::uint32_t> loop_of_edge_;
   Triangle_tree faces_tree_;
   Segment_tree border_tree_;
+  mutable std::vector<std::unique_ptr<Segment_tree>> loop_trees_; // built where the first answer was wrong
 };
 
 // The options of one run, read from the named parameters by isotropic_remeshing().
@@ -146,7 +185,7 @@ class Isotropic_remesher
 
 public:
   Isotropic_remesher(Mesh& mesh, const Remeshing_options& options)
-    : mesh_(mesh), options_(options), input_(mesh),
+    : mesh_(mesh), options_(options), input_(mesh), border_loop_(input_.loop_of_edges()),
       // Botsch and Kobbelt's band, as in CGAL: 4/5 L and 4/3 L.
       low2_(square(0.8 * options.target_edge_length)), high2_(square(4.0 / 3.0 * options.target_edge_length)),
       sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name))
@@ -255,6 +294,9 @@ private:
     mesh_.point(w) = middle;
     if (sharpness_) // both halves keep the edge's sharpness
       (*sharpness_)[mesh_.edge(n)] = (*sharpness_)[e];
+    // Both halves of a border edge are on its loop (the inner edges made below are on none).
+    border_loop_.resize(mesh_.num_edges() + 2, Remeshing_input_surface::no_loop);
+    border_loop_[mesh_.edge(n).idx()] = border_loop_[e.idx()];
     for (Face_index f : sides) {
       if (!f.is_valid())
         continue;
@@ -308,16 +350,13 @@ private:
   }
 
   // For each triangle of the edge of d, the side that stays after
-  // collapse_edge(d), with the sharpness of the side it removes (the one before the edge).
-  std::vector<std::pair<Edge_index, float>> merged_edges(Dart d) const
+  // collapse_edge(d) and the side it removes (the one before the edge).
+  boost::container::small_vector<std::pair<Edge_index, Edge_index>, 2> merged_edges(Dart d) const
   {
-    std::vector<std::pair<Edge_index, float>> merged;
-    if (!sharpness_)
-      return merged;
+    boost::container::small_vector<std::pair<Edge_index, Edge_index>, 2> merged;
     for (Dart side : {d, mesh_.opposite(d)})
-      if (!mesh_.is_border(side)) {
-        merged.emplace_back(mesh_.edge(mesh_.next(side)), (*sharpness_)[mesh_.edge(mesh_.prev(side))]);
-      }
+      if (!mesh_.is_border(side))
+        merged.emplace_back(mesh_.edge(mesh_.next(side)), mesh_.edge(mesh_.prev(side)));
     return merged;
   }
 
@@ -340,13 +379,21 @@ private:
         continue;
       }
       const auto merged = merged_edges(c);
+      boost::container::small_vector<float, 2> removed_sharpness;
+      for (const auto& sides : merged)
+        removed_sharpness.push_back(sharpness_ ? (*sharpness_)[sides.second] : 0.0f);
       Euler::collapse_edge(c, mesh_, Euler::unchecked); // check_collapse() checked the link condition
       mesh_.point(kept) = to;
       // Of two sides of a triangle that become one edge, collapse_edge()
-      // keeps one index: it keeps the sharpness of both.
-      if (sharpness_)
-        for (const auto& [survivor, sharpness] : merged)
-          (*sharpness_)[survivor] = std::max((*sharpness_)[survivor], sharpness);
+      // keeps one index: it keeps the sharpness of both, and the border loop
+      // of either (an inner side merged with a border one is on the border).
+      for (std::size_t i = 0; i < merged.size(); ++i) {
+        const auto [survivor, removed] = merged[i];
+        if (sharpness_)
+          (*sharpness_)[survivor] = std::max((*sharpness_)[survivor], removed_sharpness[i]);
+        if (border_loop_[survivor.idx()] == Remeshing_input_surface::no_loop)
+          border_loop_[survivor.idx()] = border_loop_[removed.idx()];
+      }
       check_star(kept);
       return kept;
     }
@@ -469,14 +516,17 @@ private:
   std::optional<Remeshing_point> border_position(Vertex_index v) const
   {
     std::optional<Remeshing_point> middle;
+    std::optional<Dart> border_dart;
     for (Dart c : CGAL_ext::halfedges_around_target(v, mesh_)) {
       if (!mesh_.is_border(c))
         continue;
       if (middle) // two gaps in the fan: no single border line to slide on
         return std::nullopt;
       middle = CGAL::midpoint(approximate(mesh_.source(c)), approximate(mesh_.target(mesh_.next(c))));
+      border_dart = c;
     }
-    return middle ? input_.closest_on_border(*middle) : std::nullopt;
+    // Its two border edges are on one loop (the walk met one gap).
+    return middle ? input_.closest_on_border(*middle, border_loop_[mesh_.edge(*border_dart).idx()]) : std::nullopt;
   }
 
   // After each operation, in debug builds: the darts around the touched
@@ -499,6 +549,7 @@ private:
   Mesh& mesh_;
   Remeshing_options options_;
   const Remeshing_input_surface input_;
+  std::vector<std::uint32_t> border_loop_; // by edge: the input border loop a border edge is on
   const double low2_, high2_;
   std::optional<Sharpness_map> sharpness_;
   Collapse_options collapse_options_;
