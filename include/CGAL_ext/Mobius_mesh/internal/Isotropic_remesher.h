@@ -99,7 +99,7 @@ public:
   static constexpr std::uint32_t no_loop = std::uint32_t(-1);
 
   template <class P>
-  explicit Remeshing_input_surface(const Mobius_mesh<P>& mesh) : loop_of_edge_(mesh.num_edges(), no_loop)
+  explicit Remeshing_input_surface(const Mobius_mesh<P>& mesh)
   {
     triangles_.reserve(mesh.number_of_faces());
     for (Face_index f : mesh.faces()) {
@@ -108,7 +108,10 @@ public:
                               to_remeshing_point(mesh.point(mesh.target(d))),
                               to_remeshing_point(mesh.point(mesh.target(mesh.next(d)))));
     }
-    for (Dart start : CGAL_ext::border_cycles(mesh)) {
+    const std::vector<Dart> loops = CGAL_ext::border_cycles(mesh);
+    if (!loops.empty()) // a closed surface needs no loop of its edges
+      loop_of_edge_.assign(mesh.num_edges(), no_loop);
+    for (Dart start : loops) {
       loop_begin_.push_back(border_.size());
       for (Dart d : CGAL_ext::halfedges_around_face(start, mesh)) {
         loop_of_edge_[mesh.edge(d).idx()] = std::uint32_t(loop_begin_.size() - 1);
@@ -130,7 +133,8 @@ public:
 
   Remeshing_point closest_on_faces(const Remeshing_point& p) const { return faces_tree_.closest_point(p); }
 
-  /// The input border loop of each input edge (`no_loop` for inner edges).
+  /// The input border loop of each input edge (`no_loop` for inner edges);
+  /// empty if the input has no border.
   const std::vector<std::uint32_t>& loop_of_edges() const { return loop_of_edge_; }
 
   // A border vertex stays on its own border loop of the input: the closest
@@ -295,8 +299,10 @@ private:
     if (sharpness_) // both halves keep the edge's sharpness
       (*sharpness_)[mesh_.edge(n)] = (*sharpness_)[e];
     // Both halves of a border edge are on its loop (the inner edges made below are on none).
-    border_loop_.resize(mesh_.num_edges() + 2, Remeshing_input_surface::no_loop);
-    border_loop_[mesh_.edge(n).idx()] = border_loop_[e.idx()];
+    if (!border_loop_.empty()) {
+      border_loop_.resize(mesh_.num_edges() + 2, Remeshing_input_surface::no_loop);
+      border_loop_[mesh_.edge(n).idx()] = border_loop_[e.idx()];
+    }
     for (Face_index f : sides) {
       if (!f.is_valid())
         continue;
@@ -391,7 +397,7 @@ private:
         const auto [survivor, removed] = merged[i];
         if (sharpness_)
           (*sharpness_)[survivor] = std::max((*sharpness_)[survivor], removed_sharpness[i]);
-        if (border_loop_[survivor.idx()] == Remeshing_input_surface::no_loop)
+        if (!border_loop_.empty() && border_loop_[survivor.idx()] == Remeshing_input_surface::no_loop)
           border_loop_[survivor.idx()] = border_loop_[removed.idx()];
       }
       check_star(kept);
@@ -526,7 +532,9 @@ private:
       border_dart = c;
     }
     // Its two border edges are on one loop (the walk met one gap).
-    return middle ? input_.closest_on_border(*middle, border_loop_[mesh_.edge(*border_dart).idx()]) : std::nullopt;
+    if (!middle || border_loop_.empty())
+      return std::nullopt;
+    return input_.closest_on_border(*middle, border_loop_[mesh_.edge(*border_dart).idx()]);
   }
 
   // After each operation, in debug builds: the darts around the touched
@@ -549,7 +557,7 @@ private:
   Mesh& mesh_;
   Remeshing_options options_;
   const Remeshing_input_surface input_;
-  std::vector<std::uint32_t> border_loop_; // by edge: the input border loop a border edge is on
+  std::vector<std::uint32_t> border_loop_; // by edge: the input border loop a border edge is on (none if closed)
   const double low2_, high2_;
   std::optional<Sharpness_map> sharpness_;
   Collapse_options collapse_options_;
