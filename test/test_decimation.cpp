@@ -609,7 +609,8 @@ TEST(Decimation, BadParametersThrowBeforeTheMeshIsTouched)
   EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(10)), CGAL_ext::Parameter_error);
 }
 
-// A face count of 2^64 or more is no limit (not a count that wraps to 0).
+// A face count past what size_t holds saturates, and is met at once (it
+// does not wrap to 0, which would decimate as far as the topology allows).
 TEST(Decimation, AFaceCountBeyondSizeTIsNoLimit)
 {
   Mesh m;

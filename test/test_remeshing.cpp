@@ -718,7 +718,7 @@ TEST(IsotropicRemeshing, ResultsTooLargeAndPointsTooFarAreRefusedBeforeTheMeshIs
     ADD_FAILURE() << "remeshed to " << L;
     return std::string();
   };
-  // The strip's area (about 2.4) in triangles of side 4/5 L: 1e13 at L = 1e-6.
+  // The strip's area in equilateral triangles of side L/2: 9e12 per unit of area at L = 1e-6.
   EXPECT_EQ(refused_for(1e-6, np::number_of_iterations(1)), "edges");
   EXPECT_EQ(refused_for(1e-310, np::number_of_iterations(1)), "edges"); // L^2 is 0 in double
   EXPECT_EQ(refused_for(0.01, np::maximum_memory(1e6)), "bytes");
@@ -750,6 +750,25 @@ TEST(IsotropicRemeshing, TheSizeEstimateBoundsTheResult)
     return CGAL_ext::internal::remeshing_face_estimate(m, options).faces;
   };
   EXPECT_NEAR(estimate_of(square, 0.04), 1 / (std::sqrt(3.0) / 4 * 0.02 * 0.02) + 2 * 4 / 0.032, 1e-6);
+  // A polygon is triangulated first: its estimate bounds the exact first pass
+  // of its triangulation, whose long fan diagonals dominate (a disk of 2000
+  // corners at L = 0.01: ~5e5 triangles, where its area in triangles of side
+  // L/2 is 2.9e5).
+  {
+    std::vector<Point> corners;
+    std::vector<std::size_t> polygon;
+    for (std::size_t i = 0; i < 2000; ++i) {
+      corners.emplace_back(std::cos(2 * CGAL_PI * double(i) / 2000), std::sin(2 * CGAL_PI * double(i) / 2000), 0);
+      polygon.push_back(i);
+    }
+    Mesh disk;
+    CGAL_ext::polygon_soup_to_mobius_mesh(corners, std::vector<std::vector<std::size_t>>{polygon}, disk);
+    const double of_polygon = estimate_of(disk, 0.01);
+    CGAL_ext::triangulate_faces(disk);
+    const double of_triangles = estimate_of(disk, 0.01);
+    EXPECT_GT(of_triangles, 1 / (std::sqrt(3.0) / 4 * 0.005 * 0.005) * CGAL_PI * 1.5); // the first pass dominates
+    EXPECT_GE(of_polygon, of_triangles);
+  }
   Mesh klein;
   CGAL_ext::make_klein_bottle(klein, 24, 12);
   const std::pair<Mesh, std::vector<double>> cases[] = {{square, {0.3, 0.1, 0.04}},

@@ -68,8 +68,10 @@ Decimation_settings decimation_settings(std::size_t faces, const NP& np)
     const double n = double(pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::number_of_faces), 0));
     if (!(n >= 0) || !std::isfinite(n))
       throw Parameter_error(std::string(fn) + "number_of_faces must be a finite number >= 0, not " + std::to_string(n));
-    // Any count from 2^64 up means no count limit (and is not a size_t).
-    s.target_faces = n < 18446744073709551616.0 ? std::size_t(n) : (std::numeric_limits<std::size_t>::max)();
+    // A count past what a size_t holds saturates (and is reached at once)
+    // rather than being cast, which would be undefined.
+    const double most = double((std::numeric_limits<std::size_t>::max)()); // rounds up to 2^64 (or 2^32)
+    s.target_faces = n < most ? std::size_t(n) : (std::numeric_limits<std::size_t>::max)();
   }
   if (has_ratio) {
     const double r = double(pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::face_ratio), 1.0));

@@ -63,7 +63,8 @@ struct Remeshing_estimate
 // Estimated from the input before anything is touched, the most triangles
 // are the larger of what the first split pass makes (it cuts each
 // unprotected edge longer than 4/3 L into 2^k pieces of at most 4/3 L, each
-// cut adding a triangle on each side of the edge: exact) and what the later
+// cut adding a triangle on each side of the edge: exact, but for the
+// diagonals that triangulate polygons, bounded by half the perimeter) and what the later
 // iterations tend to: the input's area in equilateral triangles of side
 // L / 2, and two triangles per 4/5 L of border. The first pass leaves edges
 // shorter than L that no collapse may remove without making one longer
@@ -75,7 +76,11 @@ Remeshing_estimate remeshing_face_estimate(const Mobius_mesh<P>& mesh, const Rem
 {
   const double L = options.target_edge_length, high = 4.0 / 3.0 * L, low = 0.8 * L;
   const auto sharpness = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
-  double input = 0, area = 0, border = 0;
+  // How many triangles the first pass adds on each side of an edge of this length.
+  const auto added_per_side = [high](double length) {
+    return length > high ? std::exp2(std::ceil(std::log2(length / high))) - 1 : 0.0;
+  };
+  double input = 0, area = 0, border = 0, split = 0;
   std::vector<Point_d> corners;
   for (Face_index f : mesh.faces()) {
     corners.clear();
@@ -84,8 +89,16 @@ Remeshing_estimate remeshing_face_estimate(const Mobius_mesh<P>& mesh, const Rem
     const Point_d n = newell_d(corners).first;
     input += double(corners.size()) - 2;
     area += std::sqrt(dot_d(n, n)) / 2;
+    if (corners.size() > 3) { // the diagonals triangulate_faces() adds, each at most half the perimeter
+      double perimeter = 0;
+      for (std::size_t i = 0; i < corners.size(); ++i) {
+        const Point_d side = minus_d(corners[(i + 1) % corners.size()], corners[i]);
+        perimeter += std::sqrt(dot_d(side, side));
+      }
+      split += (double(corners.size()) - 3) * 2 * added_per_side(perimeter / 2);
+    }
   }
-  double split = input;
+  split += input;
   for (Edge_index e : mesh.edges()) {
     const bool is_protected = (options.protect_borders && mesh.is_border(e)) ||
                               (options.protect_sharp_edges && sharpness && (*sharpness)[e] > 0);
@@ -93,10 +106,8 @@ Remeshing_estimate remeshing_face_estimate(const Mobius_mesh<P>& mesh, const Rem
     const double length = std::sqrt(dot_d(d, d));
     if (mesh.is_border(e))
       border += length;
-    if (is_protected || !(length > high))
-      continue;
-    const double pieces = std::exp2(std::ceil(std::log2(length / high)));
-    split += (pieces - 1) * (mesh.is_border(e) ? 1 : 2);
+    if (!is_protected)
+      split += added_per_side(length) * (mesh.is_border(e) ? 1 : 2);
   }
   const double later = area / (std::sqrt(3.0) / 4 * (L / 2) * (L / 2)) + 2 * border / low;
   return {input, (std::max)(split, later)};
@@ -197,8 +208,9 @@ void check_remeshing_size(const Mobius_mesh<P>& mesh, const Remeshing_options& o
 ///   \cgalParamNBegin{maximum_memory}
 ///     \cgalParamDescription{the most bytes the remeshing may take, estimated
 ///       from the input before it starts: from the triangles the first split
-///       pass makes and those the input's area holds at the band's shortest
-///       edge length}
+///       pass makes (the diagonals of polygons included) and those that later
+///       iterations tend to (the input's area in equilateral triangles of
+///       side L/2, and two per 4/5 L of border)}
 ///     \cgalParamType{`double`, > 0}
 ///     \cgalParamDefault{the machine's physical memory}
 ///   \cgalParamNEnd

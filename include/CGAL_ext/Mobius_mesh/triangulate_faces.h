@@ -73,7 +73,8 @@ std::vector<std::size_t> fan_apexes_best_first(const std::vector<Dart>& into, co
 
 // The fan of each face to split, chosen for the whole mesh before anything
 // is split: a diagonal must not join two corners that an edge already
-// joins, in the mesh or among the diagonals chosen for faces before. A face
+// joins, in the mesh, in the same fan or among the diagonals chosen for
+// faces before. A face
 // whose every fan is refused throws, and the mesh is still untouched.
 template <class P>
 std::vector<std::pair<Face_index, Dart>> plan_fans(const Mobius_mesh<P>& mesh)
@@ -93,15 +94,20 @@ std::vector<std::pair<Face_index, Dart>> plan_fans(const Mobius_mesh<P>& mesh)
     const std::vector<Dart> into = face_corners(f, mesh);
     const std::size_t n = into.size();
     bool planned = false;
+    std::vector<std::uint64_t> fan;
     for (std::size_t a : fan_apexes_best_first(into, mesh)) {
       const Vertex_index apex = mesh.target(into[a]);
       bool fan_fits = true;
-      for (std::size_t k = 2; k + 1 < n && fan_fits; ++k)
+      fan.clear();
+      for (std::size_t k = 2; k + 1 < n && fan_fits; ++k) {
         fan_fits = can_join(apex, mesh.target(into[(a + k) % n]));
-      if (!fan_fits)
+        fan.push_back(key(apex, mesh.target(into[(a + k) % n])));
+      }
+      // A face that passes a corner twice would join the apex to it twice.
+      std::sort(fan.begin(), fan.end());
+      if (!fan_fits || std::adjacent_find(fan.begin(), fan.end()) != fan.end())
         continue;
-      for (std::size_t k = 2; k + 1 < n; ++k)
-        chosen.insert(key(apex, mesh.target(into[(a + k) % n])));
+      chosen.insert(fan.begin(), fan.end());
       plan.emplace_back(f, into[a]);
       planned = true;
       break;

@@ -280,8 +280,10 @@ public:
   /// are `refine_and_interpolate()`'s values, converted. `Convert` has a type
   /// `Value` (that of `values`, not one that is normalized, as exact numbers
   /// are) and static functions `to()` and `from()`, called from several
-  /// threads at once under `CGAL::Parallel_tag`. The points are allocated
-  /// without being written first where `Q` is trivially copyable.
+  /// threads at once under `CGAL::Parallel_tag`. The point array is
+  /// allocated, and advised onto huge pages, before the last pass writes it;
+  /// where `Q`'s default constructor writes nothing (CGAL's points of
+  /// doubles) that pass is the array's first touch.
   template <class Convert, class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values, class Q>
   void refine_and_interpolate_points(const Mobius_mesh<P>& mesh, unsigned levels, Values& values,
                                      Mobius_mesh<Q>& out, const std::vector<float>& edge_sharpness = {},
@@ -491,9 +493,10 @@ private:
       Point_vector<Q> points;
       if constexpr (into_points) {
         if (last) {
-          // Written in full below; here only allocated, where the points
-          // are trivially copyable (round_trips), and advised onto huge pages
-          // before anything touches them, as the mesh's own arrays.
+          // Written in full below; here allocated and advised onto huge
+          // pages before anything touches them, as the mesh's own arrays
+          // (resize() writes nothing where the default constructor writes
+          // nothing, as that of CGAL's points of doubles).
           points.reserve(child_vertex_count(0));
           CGAL_ext::internal::advise_huge_pages(points.data(), points.capacity() * sizeof(points[0]));
           points.resize(child_vertex_count(0));

@@ -98,8 +98,10 @@ class Remeshing_input_surface
 public:
   static constexpr std::uint32_t no_loop = std::uint32_t(-1);
 
+  // Fills `loop_of_edge` with the input border loop of each input edge
+  // (`no_loop` for inner edges), or leaves it empty if the input has no border.
   template <class P>
-  explicit Remeshing_input_surface(const Mobius_mesh<P>& mesh)
+  Remeshing_input_surface(const Mobius_mesh<P>& mesh, std::vector<std::uint32_t>& loop_of_edge)
   {
     triangles_.reserve(mesh.number_of_faces());
     for (Face_index f : mesh.faces()) {
@@ -109,12 +111,13 @@ public:
                               to_remeshing_point(mesh.point(mesh.target(mesh.next(d)))));
     }
     const std::vector<Dart> loops = CGAL_ext::border_cycles(mesh);
+    loop_of_edge.clear();
     if (!loops.empty()) // a closed surface needs no loop of its edges
-      loop_of_edge_.assign(mesh.num_edges(), no_loop);
+      loop_of_edge.assign(mesh.num_edges(), no_loop);
     for (Dart start : loops) {
       loop_begin_.push_back(border_.size());
       for (Dart d : CGAL_ext::halfedges_around_face(start, mesh)) {
-        loop_of_edge_[mesh.edge(d).idx()] = std::uint32_t(loop_begin_.size() - 1);
+        loop_of_edge[mesh.edge(d).idx()] = std::uint32_t(loop_begin_.size() - 1);
         border_.emplace_back(to_remeshing_point(mesh.point(mesh.source(d))),
                              to_remeshing_point(mesh.point(mesh.target(d))));
       }
@@ -132,10 +135,6 @@ public:
   Remeshing_input_surface& operator=(const Remeshing_input_surface&) = delete;
 
   Remeshing_point closest_on_faces(const Remeshing_point& p) const { return faces_tree_.closest_point(p); }
-
-  /// The input border loop of each input edge (`no_loop` for inner edges);
-  /// empty if the input has no border.
-  const std::vector<std::uint32_t>& loop_of_edges() const { return loop_of_edge_; }
 
   // A border vertex stays on its own border loop of the input: the closest
   // point there. The tree of all loops answers first; only where its answer
@@ -165,7 +164,6 @@ private:
   Triangles triangles_;
   Segments border_;                       // loop by loop
   std::vector<std::size_t> loop_begin_;   // where each loop's segments begin in border_, and the end
-  std::vector<std::uint32_t> loop_of_edge_;
   Triangle_tree faces_tree_;
   Segment_tree border_tree_;
   mutable std::vector<std::unique_ptr<Segment_tree>> loop_trees_; // built where the first answer was wrong
@@ -189,7 +187,7 @@ class Isotropic_remesher
 
 public:
   Isotropic_remesher(Mesh& mesh, const Remeshing_options& options)
-    : mesh_(mesh), options_(options), input_(mesh), border_loop_(input_.loop_of_edges()),
+    : mesh_(mesh), options_(options), input_(mesh, border_loop_),
       // Botsch and Kobbelt's band, as in CGAL: 4/5 L and 4/3 L.
       low2_(square(0.8 * options.target_edge_length)), high2_(square(4.0 / 3.0 * options.target_edge_length)),
       sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name))
@@ -556,8 +554,10 @@ private:
 
   Mesh& mesh_;
   Remeshing_options options_;
+  // By edge: the input border loop a border edge is on (empty if closed).
+  // Declared before input_, which fills it.
+  std::vector<std::uint32_t> border_loop_;
   const Remeshing_input_surface input_;
-  std::vector<std::uint32_t> border_loop_; // by edge: the input border loop a border edge is on (none if closed)
   const double low2_, high2_;
   std::optional<Sharpness_map> sharpness_;
   Collapse_options collapse_options_;
