@@ -74,8 +74,8 @@ std::vector<std::size_t> fan_apexes_best_first(const std::vector<Dart>& into, co
 // The fan of each face to split, chosen for the whole mesh before anything
 // is split: a diagonal must not join two corners that an edge already
 // joins, in the mesh, in the same fan or among the diagonals chosen for
-// faces before. A face
-// whose every fan is refused throws, and the mesh is still untouched.
+// faces before. A face whose every fan is refused throws, and the mesh is
+// still untouched.
 template <class P>
 std::vector<std::pair<Face_index, Dart>> plan_fans(const Mobius_mesh<P>& mesh)
 {
