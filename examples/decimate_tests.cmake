@@ -32,13 +32,12 @@ set_tests_properties(decimate.error_bound_zero PROPERTIES PASS_REGULAR_EXPRESSIO
   "^{\"vertices\":6,\"edges\":15,\"faces\":10,.*\"hausdorff\":(0|[0-9.]+e-[0-9]+)}")
 
 # A file that is not there, and a ratio out of range: one line, exit 2.
-add_test(NAME decimate.fails.missing_file
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> "-DARGS=${_out}/no_such.obj;${_out}/x.obj;--faces;10"
-          -DSTATUS=2 "-DSTDERR=^decimate: [^\n]+\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
-add_test(NAME decimate.fails.ratio
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> "-DARGS=${_data}/mobius_min_5tris.obj;${_out}/x.obj;--ratio;2"
-          -DSTATUS=2 "-DSTDERR=^decimate: --ratio '2' is not in \\[0, 1\\]; usage: [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+cgal_ext_tool_fails(decimate.fails.missing_file decimate
+  "${_out}/no_such.obj;${_out}/x.obj;--faces;10"
+  "^decimate: [^\n]+\n$")
+cgal_ext_tool_fails(decimate.fails.ratio decimate
+  "${_data}/mobius_min_5tris.obj;${_out}/x.obj;--ratio;2"
+  "^decimate: --ratio '2' is not in \\[0, 1\\]; usage: [^\n]+\n$")
 
 # A surface without area (three points in line): nothing to sample for the
 # Hausdorff distance, which is null; a point beyond +-1e60: one line, exit 2.
@@ -47,7 +46,6 @@ add_test(NAME decimate.no_area COMMAND decimate ${_out}/collinear_triangle.obj $
 set_tests_properties(decimate.no_area PROPERTIES PASS_REGULAR_EXPRESSION
   "^{\"vertices\":3,\"edges\":3,\"faces\":1,.*\"valid\":true,\"seconds\":[0-9.e+-]+,\"hausdorff\":null}")
 file(WRITE ${_out}/far_triangle.obj "v 0 0 0\nv 1e70 0 0\nv 0 1 0\nf 1 2 3\n")
-add_test(NAME decimate.fails.far_point
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> "-DARGS=${_out}/far_triangle.obj;${_out}/x.obj;--ratio;0"
-          -DSTATUS=2 "-DSTDERR=^decimate: decimate: vertex 1 at [^\n]+ beyond [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+cgal_ext_tool_fails(decimate.fails.far_point decimate
+  "${_out}/far_triangle.obj;${_out}/x.obj;--ratio;0"
+  "^decimate: decimate: vertex 1 at [^\n]+ beyond [^\n]+\n$")

@@ -34,10 +34,9 @@ set_tests_properties(offset.hemi_icosahedron_counts PROPERTIES PASS_REGULAR_EXPR
   "^{\"vertices\":12,\"edges\":30,\"faces\":20,\"rim_faces\":0,")
 
 # A file that is not there, and a distance that is not a number: one line, exit 2.
-add_test(NAME offset.fails.missing_file
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:offset> "-DARGS=${_out}/no_such.obj;${_out}/x.obj;--distance;1"
-          -DSTATUS=2 "-DSTDERR=^offset: [^\n]+\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
-add_test(NAME offset.fails.distance
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:offset> "-DARGS=${_data}/mobius_min_5tris.obj;${_out}/x.obj;--distance;-1"
-          -DSTATUS=2 "-DSTDERR=^offset: --distance '-1' is not positive; usage: [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+cgal_ext_tool_fails(offset.fails.missing_file offset
+  "${_out}/no_such.obj;${_out}/x.obj;--distance;1"
+  "^offset: [^\n]+\n$")
+cgal_ext_tool_fails(offset.fails.distance offset
+  "${_data}/mobius_min_5tris.obj;${_out}/x.obj;--distance;-1"
+  "^offset: --distance '-1' is not positive; usage: [^\n]+\n$")

@@ -38,27 +38,21 @@ set_tests_properties(remesh.relaxed_protected_border PROPERTIES PASS_REGULAR_EXP
   "\"border_loops\":1,\"orientable\":false,\"closed\":false,\"components\":1,\"euler_characteristic\":0,\"valid\":true")
 
 # A missing file, a length that is not positive, iterations out of range: one line, exit 2.
-add_test(NAME remesh.fails.missing_file
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh> "-DARGS=${_out}/no_such.obj;${_out}/x.obj;--edge-length;1"
-          -DSTATUS=2 "-DSTDERR=^remesh: [^\n]+\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
-add_test(NAME remesh.fails.negative_length
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh> "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;-1"
-          -DSTATUS=2 "-DSTDERR=^remesh: --edge-length '-1' is not positive; usage: [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
-add_test(NAME remesh.fails.iterations
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh>
-          "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;1;--iterations;0"
-          -DSTATUS=2 "-DSTDERR=^remesh: --iterations '0' is not an integer from 1 to 1000; usage: [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+cgal_ext_tool_fails(remesh.fails.missing_file remesh
+  "${_out}/no_such.obj;${_out}/x.obj;--edge-length;1"
+  "^remesh: [^\n]+\n$")
+cgal_ext_tool_fails(remesh.fails.negative_length remesh
+  "${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;-1"
+  "^remesh: --edge-length '-1' is not positive; usage: [^\n]+\n$")
+cgal_ext_tool_fails(remesh.fails.iterations remesh
+  "${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;1;--iterations;0"
+  "^remesh: --iterations '0' is not an integer from 1 to 1000; usage: [^\n]+\n$")
 
 # A length whose result would not fit the mesh's indices, and one whose
 # estimated peak is above --max-memory: refused up front, one line, exit 2.
-add_test(NAME remesh.fails.too_fine
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh> "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;1e-6"
-          -DSTATUS=2 "-DSTDERR=^remesh: isotropic_remeshing to edge length 1e-06 would make [0-9]+ edges, [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
-add_test(NAME remesh.fails.max_memory
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh>
-          "-DARGS=${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;0.01;--max-memory;1e6"
-          -DSTATUS=2 "-DSTDERR=^remesh: isotropic_remeshing to edge length 0.01 would need about [0-9.e+-]+ GB of memory, [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+cgal_ext_tool_fails(remesh.fails.too_fine remesh
+  "${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;1e-6"
+  "^remesh: isotropic_remeshing to edge length 1e-06 would make [0-9]+ edges, [^\n]+\n$")
+cgal_ext_tool_fails(remesh.fails.max_memory remesh
+  "${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;0.01;--max-memory;1e6"
+  "^remesh: isotropic_remeshing to edge length 0.01 would need about [0-9.e+-]+ GB of memory, [^\n]+\n$")

@@ -42,12 +42,11 @@ add_test(NAME view.fails.no_display
           ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:view>
           "-DARGS=${_data}/mobius_20x4_quads.obj;--screenshot;${_out}/view_no_display.png" -DSTATUS=2
           "-DSTDERR=^view: save_screenshot: no display to draw on[^\n]*\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
-add_test(NAME view.fails.missing_file
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:view> "-DARGS=${_out}/no_such.obj;--screenshot;${_out}/x.png"
-          -DSTATUS=2 "-DSTDERR=^view: [^\n]*no_such.obj[^\n]*\n$" -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
-add_test(NAME view.fails.size
-  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:view> "-DARGS=${_data}/mobius_20x4_quads.obj;--size;8x600"
-          -DSTATUS=2 "-DSTDERR=^view: --size '8' is not an integer from 16 to 8192; usage: [^\n]+\n$"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/check_tool.cmake)
+cgal_ext_tool_fails(view.fails.missing_file view
+  "${_out}/no_such.obj;--screenshot;${_out}/x.png"
+  "^view: [^\n]*no_such.obj[^\n]*\n$")
+cgal_ext_tool_fails(view.fails.size view
+  "${_data}/mobius_20x4_quads.obj;--size;8x600"
+  "^view: --size '8' is not an integer from 16 to 8192; usage: [^\n]+\n$")
 set_tests_properties(view.fails.no_display view.fails.missing_file view.fails.size PROPERTIES
   ENVIRONMENT "${_environment}")
