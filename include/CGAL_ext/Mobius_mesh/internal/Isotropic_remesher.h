@@ -353,14 +353,22 @@ private:
     return !is_fixed(kept) && (mesh_.is_border(mesh_.edge(d)) || !mesh_.is_border(kept));
   }
 
-  // For each triangle of the edge of d, the side that stays after
-  // collapse_edge(d) and the side it removes (the one before the edge).
-  boost::container::small_vector<std::pair<Edge_index, Edge_index>, 2> merged_edges(Dart d) const
+  // Of a triangle of a collapsed edge, the side that stays after
+  // collapse_edge(d), the side it removes (the one before the edge) and that
+  // side's sharpness, read before the collapse.
+  struct Merged_sides
   {
-    boost::container::small_vector<std::pair<Edge_index, Edge_index>, 2> merged;
+    Edge_index survivor, removed;
+    float removed_sharpness;
+  };
+  boost::container::small_vector<Merged_sides, 2> merged_edges(Dart d) const
+  {
+    boost::container::small_vector<Merged_sides, 2> merged;
     for (Dart side : {d, mesh_.opposite(d)})
-      if (!mesh_.is_border(side))
-        merged.emplace_back(mesh_.edge(mesh_.next(side)), mesh_.edge(mesh_.prev(side)));
+      if (!mesh_.is_border(side)) {
+        const Edge_index removed = mesh_.edge(mesh_.prev(side));
+        merged.push_back({mesh_.edge(mesh_.next(side)), removed, sharpness_ ? (*sharpness_)[removed] : 0.0f});
+      }
     return merged;
   }
 
@@ -383,20 +391,16 @@ private:
         continue;
       }
       const auto merged = merged_edges(c);
-      boost::container::small_vector<float, 2> removed_sharpness;
-      for (const auto& sides : merged)
-        removed_sharpness.push_back(sharpness_ ? (*sharpness_)[sides.second] : 0.0f);
       Euler::collapse_edge(c, mesh_, Euler::unchecked); // check_collapse() checked the link condition
       mesh_.point(kept) = to;
       // Of two sides of a triangle that become one edge, collapse_edge()
       // keeps one index: it keeps the sharpness of both, and the border loop
       // of either (an inner side merged with a border one is on the border).
-      for (std::size_t i = 0; i < merged.size(); ++i) {
-        const auto [survivor, removed] = merged[i];
+      for (const Merged_sides& m : merged) {
         if (sharpness_)
-          (*sharpness_)[survivor] = std::max((*sharpness_)[survivor], removed_sharpness[i]);
-        if (!border_loop_.empty() && border_loop_[survivor.idx()] == Remeshing_input_surface::no_loop)
-          border_loop_[survivor.idx()] = border_loop_[removed.idx()];
+          (*sharpness_)[m.survivor] = std::max((*sharpness_)[m.survivor], m.removed_sharpness);
+        if (!border_loop_.empty() && border_loop_[m.survivor.idx()] == Remeshing_input_surface::no_loop)
+          border_loop_[m.survivor.idx()] = border_loop_[m.removed.idx()];
       }
       check_star(kept);
       return kept;
