@@ -55,6 +55,19 @@ CGAL_ext::Mobius_mesh<P> mesh_of(const std::vector<P>& points, const std::vector
   return m;
 }
 
+// Each face's points in the order it walks them, faces in index order: what
+// an operation that must leave the mesh untouched may not change.
+std::vector<std::vector<Point>> face_points(const Mesh& m)
+{
+  std::vector<std::vector<Point>> out;
+  for (Face_index f : m.faces()) {
+    out.emplace_back();
+    for (Vertex_index v : CGAL_ext::vertices_around_face(f, m))
+      out.back().push_back(m.point(v));
+  }
+  return out;
+}
+
 // A flat hexagon fanned from its centre (vertex 0) with corners at integer
 // coordinates, so that collinearity is exact: r1 = (1,2) and r2 = (-1,2) lie
 // on the line y = 2.
@@ -284,6 +297,37 @@ TEST(TriangulateFaces, TwoFacesDoNotTakeTheSameDiagonal)
   EXPECT_TRUE(CGAL_ext::is_closed(m));
   EXPECT_NE(dart_from_to(m, Vertex_index(1), Vertex_index(3)), Dart());
   EXPECT_NE(dart_from_to(m, Vertex_index(0), Vertex_index(2)), Dart());
+}
+
+// The hemi-cube: a cube with opposite corners identified, a projective plane
+// of three quads on four vertices (χ = 1). Its six edges join every pair of
+// vertices, so both diagonals of every quad are already edges: no face has a
+// fan, and nothing may change.
+TEST(TriangulateFaces, AFaceWithNoFanThrowsAndLeavesTheMeshUntouched)
+{
+  const std::vector<Point> points{Point(1, 1, 1), Point(1, 1, -1), Point(1, -1, 1), Point(-1, 1, 1)};
+  const std::vector<std::vector<std::size_t>> quads{{0, 2, 3, 1}, {0, 1, 2, 3}, {0, 3, 1, 2}};
+  Mesh m = mesh_of(points, quads);
+  ASSERT_EQ(m.number_of_edges(), 6u);
+  ASSERT_EQ(CGAL_ext::euler_characteristic(m), 1);
+  ASSERT_FALSE(CGAL_ext::is_orientable(m));
+  const std::vector<std::vector<Point>> before = face_points(m);
+  try {
+    CGAL_ext::triangulate_faces(m);
+    FAIL() << "no exception";
+  } catch (const CGAL_ext::Euler_error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("triangulate_faces: face 0 (vertices ", 0), 0u) << what;
+    EXPECT_NE(what.find("has no fan of triangles whose diagonals are not already edges; the mesh is unchanged"),
+              std::string::npos) << what;
+  }
+  EXPECT_EQ(m.number_of_faces(), 3u);
+  EXPECT_EQ(m.number_of_edges(), 6u);
+  EXPECT_EQ(face_points(m), before);
+  // Decimation triangulates first, and so refuses the mesh alike.
+  EXPECT_THROW(CGAL_ext::decimate(m, CGAL_ext::parameters::number_of_faces(1)), CGAL_ext::Euler_error);
+  EXPECT_EQ(face_points(m), before);
+  EXPECT_TRUE(m.is_valid());
 }
 
 // ---------------------------------------------------------------- decimation

@@ -28,6 +28,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_concepts.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -280,6 +281,99 @@ TEST(GraphTraits, DynamicMapsKeepTheTwoDartsApartAndGrowWithTheMesh)
   auto const_marks = get(CGAL::dynamic_vertex_property_t<bool>(), cm);
   put(const_marks, *vertices(cm).begin(), true);
   EXPECT_TRUE(get(const_marks, *vertices(cm).begin()));
+}
+
+// The graph concepts that CGAL's algorithms require, checked by CGAL's and
+// Boost's own concept classes.
+BOOST_CONCEPT_ASSERT((CGAL::concepts::HalfedgeListGraph<Mesh>));
+BOOST_CONCEPT_ASSERT((CGAL::concepts::FaceListGraph<Mesh>));
+BOOST_CONCEPT_ASSERT((CGAL::concepts::MutableFaceGraph<Mesh>));
+BOOST_CONCEPT_ASSERT((boost::concepts::VertexListGraph<Mesh>));
+BOOST_CONCEPT_ASSERT((boost::concepts::EdgeListGraph<Mesh>));
+BOOST_CONCEPT_ASSERT((boost::concepts::BidirectionalGraph<Mesh>));
+BOOST_CONCEPT_ASSERT((boost::concepts::AdjacencyGraph<Mesh>));
+
+// The invariants that CGAL's own graph-traits test suite (BGL/test) checks on
+// each of its models, on every test shape: one-sided, bordered, closed.
+void expect_cgal_graph_invariants(const Mesh& g)
+{
+  std::unordered_set<std::size_t> ids;
+  for (GT::vertex_descriptor v : vertices(g))
+    EXPECT_TRUE(ids.insert(get(boost::vertex_index, g, v)).second);
+  EXPECT_EQ(ids.size(), num_vertices(g));
+  ids.clear();
+  for (GT::edge_descriptor e : edges(g)) {
+    EXPECT_TRUE(ids.insert(get(boost::edge_index, g, e)).second);
+    // Every edge is found from both ends.
+    const auto [found, is_edge] = edge(source(e, g), target(e, g), g);
+    const auto [found_back, is_edge_back] = edge(target(e, g), source(e, g), g);
+    EXPECT_TRUE(is_edge && is_edge_back);
+    EXPECT_TRUE(found == e && found_back == e);
+  }
+  EXPECT_EQ(ids.size(), num_edges(g));
+  for (GT::vertex_descriptor v : vertices(g)) {
+    // Out- and in-edges meet the same neighbours, once each, in the same order.
+    std::vector<GT::vertex_descriptor> out, in;
+    for (GT::edge_descriptor e : out_edges(v, g)) {
+      EXPECT_EQ(source(e, g), v);
+      out.push_back(target(e, g));
+    }
+    for (GT::edge_descriptor e : in_edges(v, g)) {
+      EXPECT_EQ(target(e, g), v);
+      in.push_back(source(e, g));
+    }
+    EXPECT_EQ(out, in);
+    EXPECT_EQ(std::set<GT::vertex_descriptor>(out.begin(), out.end()).size(), out.size());
+    EXPECT_EQ(std::count(out.begin(), out.end(), v), 0);
+    EXPECT_EQ(out.size(), degree(v, g));
+    EXPECT_EQ(out_degree(v, g), degree(v, g));
+    EXPECT_EQ(in_degree(v, g), degree(v, g));
+    // Around a target, clockwise: each step is opposite(next(h)).
+    const auto around = CGAL::halfedges_around_target(halfedge(v, g), g);
+    for (auto h = around.begin(); h != around.end(); ++h) {
+      EXPECT_EQ(target(*h, g), v);
+      const auto step = std::next(h);
+      if (step != around.end()) {
+        EXPECT_EQ(*step, opposite(next(*h, g), g));
+      }
+    }
+  }
+  std::size_t face_count = 0;
+  for (GT::face_descriptor f : faces(g)) {
+    ++face_count;
+    EXPECT_EQ(face(halfedge(f, g), g), f);
+    const auto around = CGAL::halfedges_around_face(halfedge(f, g), g);
+    EXPECT_GE(std::distance(around.begin(), around.end()), 3);
+    for (GT::halfedge_descriptor h : around)
+      EXPECT_EQ(face(h, g), f);
+  }
+  EXPECT_EQ(face_count, num_faces(g));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(g));
+}
+
+TEST(GraphTraits, InvariantsOfCgalsGraphTestSuiteOnEveryShape)
+{
+  for (const Shape& s : non_orientable_shapes) {
+    SCOPED_TRACE(s.file);
+    expect_cgal_graph_invariants(read_mesh(s.file));
+  }
+  expect_cgal_graph_invariants(read_mesh("mobius_20x4_quads.obj"));
+  expect_cgal_graph_invariants(oriented_torus());
+}
+
+TEST(GraphTraits, AnIsolatedVertexHasNoHalfedgeAndNoNeighbours)
+{
+  Mesh g = read_mesh("mobius_20x4_quads.obj");
+  const GT::vertex_descriptor v = add_vertex(g);
+  set_halfedge(v, GT::null_halfedge(), g);
+  EXPECT_EQ(halfedge(v, g), GT::null_halfedge());
+  EXPECT_EQ(degree(v, g), 0u);
+  EXPECT_TRUE(out_edges(v, g).empty());
+  EXPECT_TRUE(in_edges(v, g).empty());
+  EXPECT_TRUE(adjacent_vertices(v, g).empty());
+  EXPECT_FALSE(edge(v, *vertices(g).begin(), g).second);
+  EXPECT_FALSE(edge(*vertices(g).begin(), v, g).second);
+  EXPECT_EQ(num_vertices(g), 101u);
 }
 
 // ---------------------------------------------------------------- orientable: same as on Surface_mesh
