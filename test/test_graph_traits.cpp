@@ -374,6 +374,14 @@ TEST(GraphTraits, AnIsolatedVertexHasNoHalfedgeAndNoNeighbours)
   EXPECT_FALSE(edge(v, *vertices(g).begin(), g).second);
   EXPECT_FALSE(edge(*vertices(g).begin(), v, g).second);
   EXPECT_EQ(num_vertices(g), 101u);
+  // The mesh's own check allows isolated vertices; CGAL's refuses them, on
+  // Surface_mesh as here.
+  EXPECT_TRUE(g.is_valid());
+  SM sm = converted(read_mesh("mobius_20x4_quads.obj"));
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(sm));
+  add_vertex(sm);
+  EXPECT_FALSE(CGAL::is_valid_polygon_mesh(sm));
+  EXPECT_FALSE(CGAL::is_valid_polygon_mesh(g));
 }
 
 // ---------------------------------------------------------------- orientable: same as on Surface_mesh
