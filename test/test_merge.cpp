@@ -1,5 +1,6 @@
 // Merging borders: automatic under a tolerance (exact with exact kernels),
 // and manual along two chosen border loops with four strategies.
+#include "mesh_snapshot.h"
 #include "test_util.h"
 
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -1031,36 +1032,7 @@ Mesh<P> imported_glued(const Soup& soup)
   return m;
 }
 
-// Every link, flag, point and property map name of `m`, and the values of
-// its int maps: equal strings for meshes equal byte for byte.
-std::string snapshot(const Mesh<P>& m)
-{
-  std::ostringstream s;
-  s << m.num_vertices() << ' ' << m.num_edges() << ' ' << m.num_faces() << '\n';
-  for (auto v : m.vertices())
-    s << m.halfedge(v).bits() << ' ' << m.point(v) << ';';
-  for (auto h : m.halfedges())
-    s << m.target(h) << ' ' << m.next(CGAL_ext::Dart(h)).bits() << ' ' << m.prev(CGAL_ext::Dart(h)).bits() << ' '
-      << m.face(h) << ';';
-  for (auto e : m.edges())
-    s << m.is_mobius(e);
-  for (auto f : m.faces())
-    s << m.halfedge(f).bits() << ';';
-  auto dump = [&](auto key, const std::vector<std::string>& names, const auto& range) {
-    using I = decltype(key);
-    for (const std::string& name : names) {
-      s << '\n' << name << ':';
-      if (auto map = m.property_map<I, int>(name))
-        for (auto x : range)
-          s << (*map)[x] << ',';
-    }
-  };
-  dump(CGAL_ext::Vertex_index(), m.properties<CGAL_ext::Vertex_index>(), m.vertices());
-  dump(CGAL_ext::Halfedge_index(), m.properties<CGAL_ext::Halfedge_index>(), m.halfedges());
-  dump(CGAL_ext::Edge_index(), m.properties<CGAL_ext::Edge_index>(), m.edges());
-  dump(CGAL_ext::Face_index(), m.properties<CGAL_ext::Face_index>(), m.faces());
-  return s.str();
-}
+using test::snapshot;
 
 // Merges `a` and `b` both ways (two meshes; one mesh holding both) and
 // checks each result against the soup import of the glued soup.
