@@ -635,6 +635,19 @@ TEST(Decimation, BadParametersThrowBeforeTheMeshIsTouched)
     EXPECT_THROW(CGAL_ext::decimate(moved, np::face_ratio(0.5)), CGAL_ext::Parameter_error) << far;
     EXPECT_EQ(test::snapshot(moved), moved_before) << far;
   }
+  // A mesh 1e-100 across: its areas (1e-200) square to 0 in double, and every
+  // face would look degenerate, so that no collapse would be made.
+  Mesh tiny = m;
+  for (Vertex_index v : tiny.vertices())
+    tiny.point(v) = CGAL::ORIGIN + 1e-100 * (tiny.point(v) - CGAL::ORIGIN);
+  const std::string tiny_before = test::snapshot(tiny);
+  try {
+    CGAL_ext::decimate(tiny, np::number_of_faces(10));
+    ADD_FAILURE() << "a mesh 1e-100 across was decimated";
+  } catch (const CGAL_ext::Parameter_error& e) {
+    EXPECT_NE(std::string(e.what()).find("across"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(test::snapshot(tiny), tiny_before);
   m.remove_face(*m.faces().begin());
   const std::string with_garbage = test::snapshot(m);
   EXPECT_THROW(CGAL_ext::decimate(m, np::number_of_faces(10)), CGAL_ext::Parameter_error);

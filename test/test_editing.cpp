@@ -1299,6 +1299,21 @@ TEST(Offset, ExactKernelAndBadDistances)
   for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL})
     EXPECT_THROW(CGAL_ext::offset_mesh(m, bad, kept), CGAL_ext::Parameter_error);
   EXPECT_EQ(face_signature(kept), before);
+  // Unit normals are made in double: a mesh whose squares overflow or whose
+  // areas underflow there is refused (at 1e-140 across, the vertices would not
+  // move at all; at 1e160 the normals would be NaN).
+  for (double scale : {1e-140, 1e140, 1e160}) {
+    Mesh scaled = hexagon_fan();
+    for (auto v : scaled.vertices())
+      scaled.point(v) = CGAL::ORIGIN + scale * (scaled.point(v) - CGAL::ORIGIN);
+    try {
+      CGAL_ext::offset_mesh(scaled, 0.1 * scale, kept);
+      ADD_FAILURE() << "offset at scale " << scale;
+    } catch (const CGAL_ext::Parameter_error& e) {
+      EXPECT_NE(std::string(e.what()).find(scale < 1 ? "across" : "beyond"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(face_signature(kept), before);
 }
 
 // With the caller's displacement field, no square root is taken: on an

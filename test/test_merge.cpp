@@ -1186,6 +1186,36 @@ TEST(MergeInPlace, RefusedMergesLeaveTheMeshesUntouched)
   EXPECT_EQ(snapshot(strip), strip_before);
 }
 
+// A point that is not finite is refused, naming its vertex, before anything
+// is compared or glued: the searches for close and facing vertices compare
+// distances, which a NaN or an infinity makes meaningless.
+TEST(MergeInPlace, PointsThatAreNotFiniteAreRefusedWithTheirVertex)
+{
+  using namespace in_place;
+  for (double bad : {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    Mesh<P> a = twisted_strip<P>(12, 1, 0), b = a;
+    a.point(CGAL_ext::Vertex_index(3u)) = P(bad, 0, 0);
+    const std::string a_before = snapshot(a), b_before = snapshot(b);
+    const auto refused = [&](auto call) {
+      try {
+        call();
+        ADD_FAILURE() << "a point at " << bad << " was accepted";
+      } catch (const CGAL_ext::Parameter_error& e) {
+        EXPECT_NE(std::string(e.what()).find("vertex 3 "), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("not finite"), std::string::npos) << e.what();
+      }
+      EXPECT_EQ(snapshot(a), a_before);
+      EXPECT_EQ(snapshot(b), b_before);
+    };
+    refused([&] { CGAL_ext::merge_borders(a, CGAL_ext::parameters::tolerance(0.5)); });
+    refused([&] { CGAL_ext::merge_borders(b, a); });
+    refused([&] { CGAL_ext::merge_borders(a, b); });
+    refused([&] { CGAL_ext::facing_borders(b, a); });
+    const CGAL_ext::Dart loop_a = CGAL_ext::border_cycles(a).front(), loop_b = CGAL_ext::border_cycles(b).front();
+    refused([&] { CGAL_ext::aligned_border_loops(a, loop_a, b, loop_b); });
+  }
+}
+
 TEST(MergeInPlace, RandomSplitsOfClosedSurfacesGlueBack)
 {
   // A closed surface's faces dealt at random to two meshes (each with its

@@ -604,6 +604,36 @@ TEST(NormalsAgainstCgal, VertexNormalsWhereCgalsNormalIsAWeightedSum)
   EXPECT_EQ(compared, 12u + 18u); // the icosahedron's vertices, the grid's border vertices
 }
 
+// Unit normals of a tetrahedron at scales where the squares of its normals
+// underflow or overflow in double (at 1e-140 a face's normal has length
+// 1e-280, whose square is 0): the same directions as at scale 1, of unit
+// length, for every weighting; angles are scale-free.
+TEST(NormalsAtExtremeScales, UnitNormalsDoNotDependOnTheScale)
+{
+  const auto tetrahedron = [](double s) {
+    X::Mobius_mesh<Kd::Point_3> m;
+    X::polygon_soup_to_mobius_mesh(
+      std::vector<Kd::Point_3>{Kd::Point_3(0, 0, 0), Kd::Point_3(s, 0, 0), Kd::Point_3(0, s, 0), Kd::Point_3(0, 0, s)},
+      std::vector<std::vector<std::size_t>>{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}, m);
+    return m;
+  };
+  const auto unit = tetrahedron(1);
+  for (double scale : {1e-140, 1e-150, 1e140, 1e150}) {
+    const auto m = tetrahedron(scale);
+    for (X::Face_index f : m.faces())
+      EXPECT_LT(relative_difference(X::face_normal(f, m, X::parameters::normalize(true)),
+                                    X::face_normal(f, unit, X::parameters::normalize(true))),
+                1e-14)
+        << scale;
+    for (W w : all_weightings)
+      for (X::Vertex_index v : m.vertices()) {
+        const auto np = X::parameters::normalize(true).vertex_normal_weighting(w);
+        EXPECT_LT(relative_difference(X::vertex_normal(v, m, np), X::vertex_normal(v, unit, np)), 1e-14)
+          << scale << " weighting " << int(w) << " vertex " << v.idx();
+      }
+  }
+}
+
 // ---------------------------------------------------------------- errors
 
 TEST(NormalsErrors, BadHandlesAreNamed)

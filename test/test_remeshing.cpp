@@ -710,7 +710,9 @@ TEST(IsotropicRemeshing, ResultsTooLargeAndPointsTooFarAreRefusedBeforeTheMeshIs
   };
   // The strip's area in equilateral triangles of side L/2: 9e12 per unit of area at L = 1e-6.
   EXPECT_EQ(refused_for(1e-6, np::number_of_iterations(1)), "edges");
-  EXPECT_EQ(refused_for(1e-310, np::number_of_iterations(1)), "edges"); // L^2 is 0 in double
+  // L^2 is 0 in double, and L far under what coordinates near 1 resolve.
+  EXPECT_THROW(CGAL_ext::isotropic_remeshing(m, 1e-310, np::number_of_iterations(1)), CGAL_ext::Parameter_error);
+  EXPECT_TRUE(unchanged());
   EXPECT_EQ(refused_for(0.01, np::maximum_memory(1e6)), "bytes");
   EXPECT_THROW(CGAL_ext::isotropic_remeshing(m, 0.1, np::maximum_memory(0.0)), CGAL_ext::Parameter_error);
   EXPECT_TRUE(unchanged());
@@ -721,6 +723,44 @@ TEST(IsotropicRemeshing, ResultsTooLargeAndPointsTooFarAreRefusedBeforeTheMeshIs
     EXPECT_THROW(CGAL_ext::isotropic_remeshing(moved, 0.1), CGAL_ext::Parameter_error) << far;
     EXPECT_EQ(test::snapshot(moved), moved_before) << far;
   }
+  Mesh tiny = m; // 1e-100 across: its areas underflow in double
+  for (Vertex_index v : tiny.vertices())
+    tiny.point(v) = CGAL::ORIGIN + 1e-100 * (tiny.point(v) - CGAL::ORIGIN);
+  const std::string tiny_before = test::snapshot(tiny);
+  EXPECT_THROW(CGAL_ext::isotropic_remeshing(tiny, 1e-101), CGAL_ext::Parameter_error);
+  EXPECT_EQ(test::snapshot(tiny), tiny_before);
+}
+
+// A target length finer than the coordinates resolve is refused: at 1e16
+// doubles are 2 apart, so an edge's midpoint rounds onto one of its ends and
+// a split leaves a half as long as the edge (a triangle of side 2 remeshed
+// to L = 1 went on splitting without end). A length 1024 times that spacing
+// remeshes the same shape far from the origin, valid, with its topology.
+TEST(IsotropicRemeshing, LengthsFinerThanTheCoordinatesResolveAreRefused)
+{
+  const auto shifted_torus = [](double shift) {
+    Mesh m;
+    CGAL_ext::make_torus(m, 12, 8);
+    for (Vertex_index v : m.vertices())
+      m.point(v) = Point(m.point(v).x() + shift, m.point(v).y() + shift, m.point(v).z());
+    return m;
+  };
+  Mesh far = shifted_torus(1e16);
+  const std::string before = test::snapshot(far);
+  try {
+    CGAL_ext::isotropic_remeshing(far, 1.0);
+    ADD_FAILURE() << "remeshed to a length the coordinates do not resolve";
+  } catch (const CGAL_ext::Parameter_error& e) {
+    EXPECT_NE(std::string(e.what()).find("too fine"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(test::snapshot(far), before);
+  EXPECT_THROW(CGAL_ext::isotropic_remeshing(far, 1024 * 2.0 * 0.99), CGAL_ext::Parameter_error);
+  Mesh near = shifted_torus(1e6); // doubles 1.2e-10 apart: L = 0.3 is 2.6e9 times that
+  CGAL_ext::isotropic_remeshing(near, 0.3, np::number_of_iterations(3));
+  EXPECT_TRUE(near.is_valid());
+  EXPECT_EQ(CGAL_ext::euler_characteristic(near), 0);
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(near), 0u);
+  EXPECT_TRUE(CGAL_ext::is_orientable(near));
 }
 
 // The estimate that guards the size bounds what a remeshing makes, and is

@@ -441,8 +441,9 @@ void Decimator<P>::check_star(Vertex_index v) const
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if a parameter is out of range, no stop condition
-///   is given, `mesh` has removed elements, or a point has a coordinate
-///   beyond +-1e60 (where quadrics in double overflow).
+///   is given, `mesh` has removed elements, a point has a coordinate
+///   beyond +-1e60 (where quadrics in double overflow), or the mesh is less
+///   than 1e-60 across (where its areas underflow).
 /// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()).
 /// All are thrown before `mesh` is touched.
 template <class P, class NP = parameters::Default_named_parameters>

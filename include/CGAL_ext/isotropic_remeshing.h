@@ -217,8 +217,10 @@ void check_remeshing_size(const Mobius_mesh<P>& mesh, const Remeshing_options& o
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if L is not positive and finite, the number of
 /// iterations is out of range, `maximum_memory` is not positive, `mesh` has
-/// removed elements, or a point has a coordinate beyond +-1e60 (where
-/// squared lengths and normals in double overflow).
+/// removed elements, a point has a coordinate beyond +-1e60 (where
+/// squared lengths and normals in double overflow), the mesh is less than
+/// 1e-60 across (where they underflow), or L is under 1024 times the spacing
+/// of doubles at the largest coordinate (too fine for the coordinates).
 /// \throws Size_error if the estimated result has more elements than the
 /// mesh's indices hold or needs more than `maximum_memory`.
 /// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()).
@@ -229,6 +231,7 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
   const internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
   internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
+  internal::require_length_resolved(mesh, target_edge_length, "isotropic_remeshing");
   internal::check_remeshing_size(mesh, options,
                                  parameters::choose_parameter(
                                    parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),

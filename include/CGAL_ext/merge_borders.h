@@ -18,6 +18,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
 #include <CGAL_ext/internal/Close_points.h>
+#include <CGAL_ext/internal/Coordinate_checks.h>
 #include <CGAL_ext/internal/Nearest_points.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -732,7 +733,8 @@ inline Nearest_pair nearest_pair(const std::vector<Border_walk>& walks_a, const 
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns what was glued; if nothing is, `mesh_a` becomes the disjoint union.
-/// \throws Parameter_error for a negative, infinite or NaN tolerance.
+/// \throws Parameter_error for a negative, infinite or NaN tolerance, or a
+///   point with a coordinate that is not finite.
 /// \throws Merge_error if the glue would make a non-manifold edge (a border
 ///   edge with two candidate partners, or three faces at an edge) or vertex, or
 ///   collapse a face; both meshes are then left unchanged.
@@ -742,6 +744,8 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
 {
   CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
   CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
+  CGAL_ext::internal::require_finite_points(mesh_a, "merge_borders");
+  CGAL_ext::internal::require_finite_points(mesh_b, "merge_borders");
   if (&mesh_a == &mesh_b) {
     const Mobius_mesh<P> copy = mesh_b;
     return merge_borders(mesh_a, copy, np);
@@ -761,6 +765,7 @@ template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh, "merge_borders");
+  CGAL_ext::internal::require_finite_points(mesh, "merge_borders");
   return internal::merge_borders_impl(mesh, mesh.number_of_vertices(), true, np);
 }
 
@@ -785,9 +790,12 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = par
 /// to glue, not a geometric decision). The chains may differ in length:
 /// only `Merge_strategy::bridge` joins those.
 /// \throws Merge_error `not_a_border` if a mesh has no border.
+/// \throws Parameter_error if a point has a coordinate that is not finite.
 template <class P>
 Border_pairing facing_borders(const Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b)
 {
+  CGAL_ext::internal::require_finite_points(mesh_a, "facing_borders");
+  CGAL_ext::internal::require_finite_points(mesh_b, "facing_borders");
   const std::vector<Dart> loops_a = CGAL_ext::border_cycles(mesh_a), loops_b = CGAL_ext::border_cycles(mesh_b);
   if (loops_a.empty() || loops_b.empty())
     throw Merge_error(Merge_error::Kind::not_a_border,
@@ -808,12 +816,15 @@ Border_pairing facing_borders(const Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>
 /// loops: from their nearest two vertices, the second loop walked the way
 /// that keeps the pairing nearer.
 /// \throws Merge_error `not_a_border` if a dart is not a border dart.
+/// \throws Parameter_error if a point has a coordinate that is not finite.
 template <class P>
 Border_pairing aligned_border_loops(const Mobius_mesh<P>& mesh_a, Dart loop_a, const Mobius_mesh<P>& mesh_b,
                                     Dart loop_b)
 {
   internal::check_border_dart(mesh_a, loop_a, "first");
   internal::check_border_dart(mesh_b, loop_b, "second");
+  CGAL_ext::internal::require_finite_points(mesh_a, "aligned_border_loops");
+  CGAL_ext::internal::require_finite_points(mesh_b, "aligned_border_loops");
   const std::vector<internal::Border_walk> walk_a{internal::border_walk(mesh_a, loop_a)},
     walk_b{internal::border_walk(mesh_b, loop_b)};
   const internal::Nearest_pair p = internal::nearest_pair(walk_a, walk_b);

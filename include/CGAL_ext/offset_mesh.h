@@ -13,6 +13,7 @@
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Coordinate_checks.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -176,8 +177,10 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 ///   normal. No square root is taken, so on an exact kernel the offset is
 ///   exact, e.g. with δ the area-weighted normals of `compute_vertex_normals()`).
 /// \throws Parameter_error if `distance` is not finite and positive, the
-///   mesh has removed elements, or a displacement is zero or tangent to the
-///   surface; `out` is then unchanged.
+///   mesh has removed elements, a point is not finite, a displacement is zero
+///   or tangent to the surface, or (without `vertex_displacement_map`) a point
+///   has a coordinate beyond +-1e60 or the mesh is less than 1e-60 across,
+///   where unit normals in double overflow or underflow; `out` is then unchanged.
 template <class P, class NP = parameters::Default_named_parameters>
 Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_mesh<P>& out,
                           const NP& np = parameters::default_values())
@@ -185,6 +188,12 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
   if (!(std::isfinite(distance) && distance > 0))
     throw Parameter_error("offset_mesh: the distance must be finite and positive, not " + std::to_string(distance));
   CGAL_ext::internal::require_no_garbage(mesh, "offset_mesh");
+  // Unit normals are made with a square root in double; displacements given
+  // by the caller are used as they are, exactly on an exact kernel.
+  if constexpr (parameters::is_default_parameter<NP, internal_np::vertex_displacement_t>::value)
+    CGAL_ext::internal::require_coordinates_in_range(mesh, "offset_mesh");
+  else
+    CGAL_ext::internal::require_finite_points(mesh, "offset_mesh");
   const bool solid = parameters::choose_parameter(parameters::get_parameter(np, internal_np::solid), false);
   const auto weighting = parameters::choose_parameter(
     parameters::get_parameter(np, internal_np::vertex_normal_weighting), Vertex_normal_weighting::area);

@@ -16,6 +16,7 @@
 #include <CGAL/number_utils.h>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -74,13 +75,30 @@ struct Normal_settings
   {}
 };
 
+// `v` divided by its largest coordinate (unchanged if zero): a vector of
+// length 1 to 2 in the same direction, whose square in double neither
+// underflows nor overflows.
+template <class Traits>
+typename Traits::Vector_3 scaled_to_unit_box(const typename Traits::Vector_3& v, const Traits& traits)
+{
+  const auto largest = (std::max)({CGAL::abs(v.x()), CGAL::abs(v.y()), CGAL::abs(v.z())});
+  return largest == 0 ? v : traits.construct_divided_vector_3_object()(v, largest);
+}
+
 template <class Traits>
 typename Traits::Vector_3 unit_vector(const typename Traits::Vector_3& v, const Traits& traits)
 {
-  const auto squared = traits.compute_squared_length_3_object()(v);
-  if (squared == 0)
+  const auto divide = traits.construct_divided_vector_3_object();
+  const auto squared_length = traits.compute_squared_length_3_object();
+  const auto squared = squared_length(v);
+  if (std::isnormal(CGAL::to_double(squared)))
+    return divide(v, CGAL::approximate_sqrt(squared));
+  // The square underflowed or overflowed (a face of side 1e-160 has a normal
+  // of length 1e-320, whose square is 0 in double).
+  const auto w = scaled_to_unit_box(v, traits);
+  if (squared_length(w) == 0)
     return v; // a degenerate face has no direction: its zero vector stays zero
-  return traits.construct_divided_vector_3_object()(v, CGAL::approximate_sqrt(squared));
+  return divide(w, CGAL::approximate_sqrt(squared_length(w)));
 }
 
 // Newell's vector of face `f` in its own orientation: the sum over its edges
@@ -134,10 +152,18 @@ double corner_angle(Dart d, const Mobius_mesh<P>& mesh, const Settings& s)
 {
   const auto vector = s.traits.construct_vector_3_object();
   const auto apex = get(s.points, mesh.target(d));
-  const auto a = vector(apex, get(s.points, mesh.source(d)));
-  const auto b = vector(apex, get(s.points, mesh.target(mesh.next(d))));
+  auto a = vector(apex, get(s.points, mesh.source(d)));
+  auto b = vector(apex, get(s.points, mesh.target(mesh.next(d))));
+  // Where the products of the sides' squares would underflow or overflow in
+  // double, each side is first divided by its largest coordinate: the angle
+  // stays the same.
+  const auto squared_length = s.traits.compute_squared_length_3_object();
+  if (!std::isnormal(CGAL::to_double(squared_length(a)) * CGAL::to_double(squared_length(b)))) {
+    a = scaled_to_unit_box(a, s.traits);
+    b = scaled_to_unit_box(b, s.traits);
+  }
   const auto cross = s.traits.construct_cross_product_vector_3_object()(a, b);
-  const auto sine_part = s.traits.compute_squared_length_3_object()(cross);
+  const auto sine_part = squared_length(cross);
   const auto cosine_part = s.traits.compute_scalar_product_3_object()(a, b);
   // atan2 keeps its precision at angles near 0 and pi, where acos does not.
   return std::atan2(std::sqrt(CGAL::to_double(sine_part)), CGAL::to_double(cosine_part));

@@ -12,6 +12,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Coordinate_checks.h>
 
 #include <CGAL/number_utils.h>
 
@@ -20,7 +21,6 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <sstream>
 
 namespace CGAL_ext {
 namespace internal {
@@ -62,31 +62,6 @@ inline Point_d cross_d(const Point_d& a, const Point_d& b)
 }
 inline Point_d minus_d(const Point_d& a, const Point_d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 inline double dot_d(const Point_d& a, const Point_d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-// Decimation and remeshing measure in double: squared lengths, areas, dot
-// products of face normals (fourth powers of the coordinates) and quadrics
-// (an area times a squared distance, summed over every face). Past some
-// size they overflow to infinity or NaN, and every comparison after that is
-// meaningless. Within +-1e60 the largest of them, summed over 2^32 faces,
-// stays below 1e260.
-constexpr double max_abs_coordinate = 1e60;
-
-// Refuses a mesh with a point beyond max_abs_coordinate (or not finite),
-// naming the first such vertex, before anything is touched.
-template <class P>
-void require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* function)
-{
-  for (Vertex_index v : mesh.vertices()) {
-    const Point_d p = to_point_d(mesh.point(v));
-    const double b = max_abs_coordinate;
-    if (std::abs(p[0]) <= b && std::abs(p[1]) <= b && std::abs(p[2]) <= b) // false for NaN too
-      continue;
-    std::ostringstream what;
-    what << function << ": vertex " << v.idx() << " at (" << p[0] << ", " << p[1] << ", " << p[2]
-         << ") has a coordinate beyond +-" << max_abs_coordinate << ", where its computations in double overflow";
-    throw Parameter_error(what.str());
-  }
-}
 
 // Twice the vector area of the polygon `ps` (Newell), and its longest squared side.
 template <class Points>
