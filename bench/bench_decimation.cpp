@@ -4,6 +4,9 @@
 // triangles (each quad split along one diagonal; 708 x 708 gives 1 002 528
 // triangles), decimated to 10 % and to 1 % of its faces.
 //
+// Ours runs twice: as decimate() does by default, the collapses and then the
+// relocation of the vertices toward the input, and the collapses alone.
+//
 // Timed: the decimation alone, one call per iteration; the copy of the input
 // into each library's mesh is made with the timers paused. OpenMesh also runs
 // with ModNormalFlippingT (90°, the normal test ours and CGAL's edge_collapse
@@ -87,13 +90,14 @@ const SM& input_surface_mesh()
 
 // Each implementation: its mesh type, how it is built from the input
 // Surface_mesh, how it decimates, and how its result becomes a Surface_mesh.
-struct Ours
+template <bool relocate>
+struct Ours_with
 {
   using M = Mesh;
   static void load(M& m) { CGAL_ext::from_surface_mesh(input_surface_mesh(), m); }
   static void decimate(M& m, std::size_t target)
   {
-    CGAL_ext::decimate(m, CGAL_ext::parameters::number_of_faces(target));
+    CGAL_ext::decimate(m, CGAL_ext::parameters::number_of_faces(target).relocate_vertices(relocate));
   }
   static std::size_t faces(const M& m) { return m.number_of_faces(); }
   static SM to_sm(const M& m)
@@ -103,6 +107,9 @@ struct Ours
     return sm;
   }
 };
+
+using Ours = Ours_with<true>;
+using Ours_unrelocated = Ours_with<false>; // the collapses alone
 
 struct Cgal
 {
@@ -302,6 +309,7 @@ int main(int argc, char** argv)
     const std::string c = "decimation/torus_" + std::to_string(grid) + "x" + std::to_string(grid) + "x2_to_" +
                           (per_mille == 100 ? "10" : "1") + "_percent/";
     add<Ours>(c + "CGAL_ext", per_mille);
+    add<Ours_unrelocated>(c + "CGAL_ext_no_relocation", per_mille);
     add<Cgal>(c + "CGAL_edge_collapse_GH", per_mille);
 #if CGAL_EXT_HAVE_OPENMESH
     add<Open_mesh<false>>(c + "OpenMesh_Decimater_quadric", per_mille);

@@ -1,4 +1,5 @@
 // decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders]
+//          [--no-relocation]
 //
 // Simplifies a polygon mesh (.obj, .off, .ply), orientable or not, by
 // Garland–Heckbert edge collapses and writes the result. Prints one line of
@@ -37,7 +38,8 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 
 const examples::Tool_usage usage{
-  "decimate", "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders]",
+  "decimate",
+  "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders] [--no-relocation]",
   "Reads a polygon mesh (.obj, .off, .ply), orientable or not, triangulates it and collapses\n"
   "edges, cheapest first by Garland-Heckbert quadric error, until a stop condition holds (give\n"
   "one or more; the first reached stops):\n"
@@ -46,6 +48,8 @@ const examples::Tool_usage usage{
   "  --max-error E      the cheapest collapse's error is above E (squared length units).\n"
   "  --max-angle DEG    no face normal turns by more in one collapse (default 90).\n"
   "  --protect-borders  keep border edges as they are.\n"
+  "  --no-relocation    leave the vertices where the collapses put them (by default they then\n"
+  "                     move to lower the largest distance to the input).\n"
   "Edges with sharpness tags (OBJ 't crease') are kept. Writes OUT and prints its counts,\n"
   "topology, the time taken and the Hausdorff distance to the input as one line of JSON.\n"};
 
@@ -69,7 +73,7 @@ std::optional<double> hausdorff_distance(const Mesh& a, const Mesh& b)
 int decimate(int argc, char** argv)
 {
   const examples::Arguments args = examples::parse_arguments(
-    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"}, {"--protect-borders"});
+    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"}, {"--protect-borders", "--no-relocation"});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--faces") && !args.has("--ratio") && !args.has("--max-error"))
@@ -97,7 +101,8 @@ int decimate(int argc, char** argv)
                              .face_ratio(ratio)
                              .maximum_error(error)
                              .maximum_normal_deviation(angle)
-                             .protect_borders(args.has("--protect-borders")));
+                             .protect_borders(args.has("--protect-borders"))
+                             .relocate_vertices(!args.has("--no-relocation")));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
   CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same

@@ -31,6 +31,12 @@ add_test(NAME decimate.error_bound_zero COMMAND decimate ${_data}/rp2_hemi_icosa
 set_tests_properties(decimate.error_bound_zero PROPERTIES PASS_REGULAR_EXPRESSION
   "^{\"vertices\":6,\"edges\":15,\"faces\":10,.*\"hausdorff\":(0|[0-9.]+e-[0-9]+)}")
 
+# Without the relocation, the same count and topology.
+add_test(NAME decimate.torus_to_100_no_relocation COMMAND decimate ${_data}/torus_24x12_quads.obj
+         ${_out}/decimate_torus_unmoved.obj --faces 100 --no-relocation)
+set_tests_properties(decimate.torus_to_100_no_relocation PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":50,\"edges\":150,\"faces\":100,\"border_loops\":0,")
+
 # A file that is not there, and a ratio out of range: one line, exit 2.
 cgal_ext_tool_fails(decimate.fails.missing_file decimate
   "${_out}/no_such.obj;${_out}/x.obj;--faces;10"

@@ -1296,9 +1296,14 @@ TEST(Offset, ExactKernelAndBadDistances)
   Mesh m = hexagon_fan(), kept;
   CGAL_ext::make_torus(kept, 3, 3);
   const auto before = face_signature(kept);
-  for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL})
-    EXPECT_THROW(CGAL_ext::offset_mesh(m, bad, kept), CGAL_ext::Parameter_error);
+  // Beyond 1e60, as the coordinates, the lifted points' computations overflow.
+  for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL, 1e61, 1e300})
+    EXPECT_THROW(CGAL_ext::offset_mesh(m, bad, kept), CGAL_ext::Parameter_error) << bad;
   EXPECT_EQ(face_signature(kept), before);
+  Mesh far_out;
+  const auto far = CGAL_ext::offset_mesh(m, 1e60, far_out, CGAL_ext::parameters::solid(true));
+  EXPECT_TRUE(far.closed);
+  EXPECT_EQ(far_out.number_of_faces(), 2 * m.number_of_faces() + far.rim_faces);
   // Unit normals are made in double: a mesh whose squares overflow or whose
   // areas underflow there is refused (at 1e-140 across, the vertices would not
   // move at all; at 1e160 the normals would be NaN).
@@ -1307,7 +1312,7 @@ TEST(Offset, ExactKernelAndBadDistances)
     for (auto v : scaled.vertices())
       scaled.point(v) = CGAL::ORIGIN + scale * (scaled.point(v) - CGAL::ORIGIN);
     try {
-      CGAL_ext::offset_mesh(scaled, 0.1 * scale, kept);
+      CGAL_ext::offset_mesh(scaled, (std::min)(0.1 * scale, 1.0), kept); // the points refused, not the distance
       ADD_FAILURE() << "offset at scale " << scale;
     } catch (const CGAL_ext::Parameter_error& e) {
       EXPECT_NE(std::string(e.what()).find(scale < 1 ? "across" : "beyond"), std::string::npos) << e.what();

@@ -642,6 +642,30 @@ TEST(IsotropicRemeshing, BadParametersLeaveTheMeshUntouched)
   EXPECT_EQ(test::snapshot(m), with_garbage);
 }
 
+// Protected sharp edges are those of sharpness > 0; a NaN or negative
+// sharpness is no number of levels and is refused, naming the edge, as
+// subdivision and decimation refuse it. Unprotected, the map is not read.
+TEST(IsotropicRemeshing, SharpnessThatIsNotANumberOfLevelsIsRefusedWhereItIsRead)
+{
+  for (const float bad : {std::numeric_limits<float>::quiet_NaN(), -2.0f}) {
+    Mesh m = read_mesh<Point>("mobius_20x4_quads.obj");
+    CGAL_ext::edge_sharpness_map(m)[Edge_index(3)] = bad;
+    const std::string before = test::snapshot(m);
+    try {
+      CGAL_ext::isotropic_remeshing(m, 0.3, np::protect_sharp_edges(true));
+      ADD_FAILURE() << "sharpness " << bad << " was read";
+    } catch (const CGAL_ext::Parameter_error& e) {
+      EXPECT_NE(std::string(e.what()).find("edge e3"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(test::snapshot(m), before);
+    const auto chi = CGAL_ext::euler_characteristic(m);
+    CGAL_ext::isotropic_remeshing(m, 0.3, np::number_of_iterations(2));
+    EXPECT_TRUE(m.is_valid());
+    EXPECT_EQ(CGAL_ext::euler_characteristic(m), chi);
+    EXPECT_FALSE(CGAL_ext::is_orientable(m));
+  }
+}
+
 // A thin annulus (radii 1 and 1.05, 200 segments, two rings) remeshed to edge lengths
 // of 4 to 8 times its width: the middle of a border vertex's neighbours is
 // then often closer to the other circle than to its own, and a vertex that

@@ -775,6 +775,25 @@ TEST(SubdivisionLimit, WrongFacesAndBorderDartsAreRefused)
   EXPECT_THROW(S::limit_points<S::Catmull_clark_mask>(mesh, points), CGAL_ext::Parameter_error);
   EXPECT_THROW(S::limit_points<S::Loop_mask>(mesh, points), CGAL_ext::Parameter_error);
   EXPECT_TRUE(std::equal(before.begin(), before.end(), mesh.points().data().begin()));
+  // A sharpness that is no number of levels is refused, naming the element.
+  Mesh quads;
+  CGAL_ext::make_torus(quads, 6, 4);
+  const std::vector<Point> quads_before(quads.points().data().begin(), quads.points().data().end());
+  for (const bool on_edge : {true, false}) {
+    Mesh m = quads;
+    if (on_edge)
+      CGAL_ext::edge_sharpness_map(m)[CGAL_ext::Edge_index(4)] = std::nanf("");
+    else
+      CGAL_ext::vertex_sharpness_map(m)[CGAL_ext::Vertex_index(6)] = -1.0f;
+    auto m_points = m.points();
+    try {
+      S::limit_points<S::Catmull_clark_mask>(m, m_points);
+      ADD_FAILURE() << "a NaN or negative sharpness was read";
+    } catch (const CGAL_ext::Parameter_error& e) {
+      EXPECT_NE(std::string(e.what()).find(on_edge ? "edge e4 " : "vertex v6 "), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(std::equal(quads_before.begin(), quads_before.end(), m.points().data().begin()));
+  }
   Mesh strip;
   CGAL_ext::make_mobius_strip(strip, 8, 2);
   for (CGAL_ext::Halfedge_index h : strip.halfedges())
@@ -1162,6 +1181,52 @@ TEST(SubdivisionApi, NegativeSharpnessIsRefused)
         EXPECT_NE(std::string(e.what()).find(on_edge ? "edge e2 " : "vertex v3 "), std::string::npos) << e.what();
       }
       EXPECT_EQ(m.number_of_faces(), before.number_of_faces());
+    }
+  }
+}
+
+// In double the rules add a ring's points up before they weight the sum:
+// points beyond +-1e300, or not finite, are refused naming the vertex, with
+// the mesh unchanged; up to there the result is the scaled result.
+TEST(SubdivisionApi, PointsWhoseSumsWouldOverflowAreRefused)
+{
+  const Mesh unit = load("opensubdiv/catmark_cube.obj"); // coordinates up to sqrt(2)
+  double largest = 0;
+  for (auto v : unit.vertices())
+    for (int i = 0; i < 3; ++i)
+      largest = (std::max)(largest, std::abs(unit.point(v)[i]));
+  const double scale = 0.999e300 / largest;
+  Mesh large = unit;
+  for (auto v : large.vertices())
+    large.point(v) = CGAL::ORIGIN + scale * (large.point(v) - CGAL::ORIGIN);
+  Mesh unit_refined = unit;
+  S::catmull_clark(unit_refined, CGAL_ext::parameters::number_of_iterations(3));
+  S::catmull_clark(large, CGAL_ext::parameters::number_of_iterations(3));
+  ASSERT_EQ(large.number_of_vertices(), unit_refined.number_of_vertices());
+  for (auto v : large.vertices())
+    for (int i = 0; i < 3; ++i) {
+      ASSERT_TRUE(std::isfinite(large.point(v)[i]));
+      EXPECT_NEAR(large.point(v)[i] / scale, unit_refined.point(v)[i], 1e-14);
+    }
+  for (const double bad : {1e301, -1e305, std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN()}) {
+    Mesh m = unit;
+    m.point(CGAL_ext::Vertex_index(5)) = Point(0.5, bad, 0.5);
+    const Mesh before = m;
+    for (int scheme = 0; scheme < 3; ++scheme) {
+      try {
+        scheme == 0 ? S::catmull_clark(m) : scheme == 1 ? S::doo_sabin(m) : S::linear(m);
+        ADD_FAILURE() << "a point at " << bad << " was subdivided";
+      } catch (const CGAL_ext::Parameter_error& e) {
+        EXPECT_NE(std::string(e.what()).find("vertex v5 "), std::string::npos) << e.what();
+      }
+      ASSERT_EQ(m.number_of_vertices(), before.number_of_vertices());
+      ASSERT_EQ(m.number_of_faces(), before.number_of_faces());
+      for (auto v : m.vertices())
+        for (int i = 0; i < 3; ++i) { // bit for bit: NaN is not equal to itself
+          const double now = m.point(v)[i], was = before.point(v)[i];
+          EXPECT_EQ(std::memcmp(&now, &was, sizeof(double)), 0);
+        }
     }
   }
 }

@@ -11,8 +11,10 @@
 #define CGAL_EXT_SHARP_FEATURES_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/exceptions.h>
 
 #include <optional>
+#include <string>
 
 namespace CGAL_ext {
 
@@ -76,6 +78,32 @@ typename Mobius_mesh<P>::template Property_map<Vertex_index, float> vertex_sharp
   return mesh.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first;
 }
 
+namespace internal {
+
+// A sharpness is a number of levels: NaN or negative means nothing, and is
+// refused wherever a sharpness is read, with the element it belongs to.
+inline bool is_valid_sharpness(double s) { return s >= 0; }
+
+// `element` names the element, as in "edge e" or "vertex v", before its index.
+inline Parameter_error invalid_sharpness(const std::string& function, const char* element, std::size_t index,
+                                         double value)
+{
+  return Parameter_error(function + ": the sharpness of " + element + std::to_string(index) + " is " +
+                         std::to_string(value) + " (NaN or negative; 0 is smooth)");
+}
+
+// Refuses the first edge of `mesh` whose sharpness, `sharpness_of(e)`, is
+// NaN or negative.
+template <class P, class Sharpness>
+void require_valid_edge_sharpness(const Mobius_mesh<P>& mesh, const Sharpness& sharpness_of,
+                                  const std::string& function)
+{
+  for (Edge_index e : mesh.edges())
+    if (const double s = sharpness_of(e); !is_valid_sharpness(s))
+      throw invalid_sharpness(function, "edge e", e.idx(), s);
+}
+
+} // namespace internal
 } // namespace CGAL_ext
 
 #endif // CGAL_EXT_SHARP_FEATURES_H

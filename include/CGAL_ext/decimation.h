@@ -10,6 +10,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
+#include <CGAL_ext/Mobius_mesh/internal/Distance_relocation.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
@@ -39,6 +40,9 @@ struct Decimation_result
   std::size_t collapses = 0;    ///< edge collapses done
   /// The largest error of a collapse done, in squared length units (see `maximum_error`).
   double largest_error = 0;
+  /// Vertices moved after the collapses to lower the largest distance to the
+  /// input (see `relocate_vertices`).
+  std::size_t relocations = 0;
 };
 
 namespace internal {
@@ -50,6 +54,7 @@ struct Decimation_settings
   double maximum_error = std::numeric_limits<double>::infinity(); // stop when the cheapest collapse costs more
   double min_cos_normal_turn = 0;
   bool protect_borders = false;
+  bool relocate_vertices = true;
 };
 
 template <class NP>
@@ -91,7 +96,24 @@ Decimation_settings decimation_settings(std::size_t faces, const NP& np)
                           std::to_string(degrees));
   s.min_cos_normal_turn = degrees == 180 ? -1.0 : std::cos(degrees * 3.14159265358979323846 / 180);
   s.protect_borders = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::protect_borders), false);
+  s.relocate_vertices =
+    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::relocate_vertices), true);
   return s;
+}
+
+// Refuses a NaN or negative sharpness in the map given or the mesh's
+// "e:sharpness", the one that feature_edges() reads.
+template <class P, class NP>
+void require_valid_sharpness(const Mobius_mesh<P>& mesh, const NP& np)
+{
+  namespace pm = CGAL_ext::parameters;
+  if constexpr (!pm::is_default_parameter<NP, CGAL_ext::internal_np::edge_sharpness_t>::value) {
+    const auto sharpness = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
+    CGAL_ext::internal::require_valid_edge_sharpness(mesh, [&](Edge_index e) { return double(get(sharpness, e)); },
+                                                     "decimate");
+  } else if (const auto own = mesh.template property_map<Edge_index, float>(edge_sharpness_name)) {
+    CGAL_ext::internal::require_valid_edge_sharpness(mesh, [&](Edge_index e) { return (*own)[e]; }, "decimate");
+  }
 }
 
 // Which edges are features, by edge index: sharpness > 0 (the map given or
@@ -168,6 +190,10 @@ public:
     result.faces_after = m_.number_of_faces();
     return result;
   }
+
+  // The feature flags by edge index, as the collapses left them (a merged
+  // edge keeps the flag of either side); the decimator is done with them.
+  std::vector<char> take_features() { return std::move(feature_); }
 
 private:
   // The queue's order: the cheapest edge on top.
@@ -409,6 +435,17 @@ void Decimator<P>::check_star(Vertex_index v) const
 /// result has triangles only. Every collapse keeps the Euler characteristic,
 /// the number of border loops and orientability.
 ///
+/// After the collapses, vertices are moved to lower the largest distance
+/// between the result and the input (`relocate_vertices`): the quadrics
+/// measure the distance at the vertices, and the largest one lies inside the
+/// triangles, where the surface bends little along a long edge. Each vertex
+/// whose star holds the largest distances (from its vertex, edge midpoints
+/// and face centroids to their closest points on the input, found in an AABB
+/// tree of a copy of the input) moves along their main direction by the step
+/// that minimises the largest of them; a move is kept only if the largest
+/// distance of its star went down and no face turned over. Border vertices
+/// and the ends of feature edges do not move.
+///
 /// \param mesh a mesh without removed elements; it is garbage-collected at the end
 /// \param np named parameters, at least one stop condition:
 /// \cgalNamedParamsBegin
@@ -432,6 +469,11 @@ void Decimator<P>::check_star(Vertex_index v) const
 ///                           border, held by their quadrics}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{relocate_vertices}
+///     \cgalParamDescription{`false` to leave the vertices where the collapses put them, without the
+///                           copy of the input and its AABB tree that the relocation needs}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_sharpness_map}
 ///     \cgalParamDescription{edges of sharpness > 0 are features: never collapsed, their ends never moved}
 ///     \cgalParamDefault{the mesh's `"e:sharpness"` map if it has one}
@@ -441,7 +483,8 @@ void Decimator<P>::check_star(Vertex_index v) const
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if a parameter is out of range, no stop condition
-///   is given, `mesh` has removed elements, a point has a coordinate
+///   is given, an edge's sharpness is NaN or negative, `mesh` has removed
+///   elements, a point has a coordinate
 ///   beyond +-1e60 (where quadrics in double overflow), or the mesh is less
 ///   than 1e-60 across (where its areas underflow).
 /// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()).
@@ -455,9 +498,31 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
     triangles += mesh.degree(f) - 2;
   const internal::Decimation_settings settings = internal::decimation_settings(triangles, np);
   internal::require_coordinates_in_range(mesh, "decimate");
+  internal::require_valid_sharpness(mesh, np);
   triangulate_faces(mesh);
-  internal::Decimator<P> decimator(mesh, settings, internal::feature_edges(mesh, np, settings.protect_borders));
-  const Decimation_result result = decimator.run();
+  // The input, for the distances of the relocation: a copy of its points
+  // and triangles now, its tree once the decimator's arrays are freed.
+  std::optional<internal::Input_triangles> input;
+  if (settings.relocate_vertices)
+    input.emplace(mesh);
+  Decimation_result result;
+  std::vector<char> feature;
+  {
+    internal::Decimator<P> decimator(mesh, settings, internal::feature_edges(mesh, np, settings.protect_borders));
+    result = decimator.run();
+    feature = decimator.take_features();
+  }
+  if (input && result.collapses > 0) {
+    input->build_tree();
+    // Feature edges keep their ends where they are, as during the collapses.
+    const auto off_features = [&](Vertex_index v) {
+      for (Dart d : CGAL_ext::halfedges_around_target(v, mesh))
+        if (feature[mesh.edge(d).idx()])
+          return false;
+      return true;
+    };
+    result.relocations = internal::Distance_relocation<P>(mesh, *input, off_features).run(3);
+  }
   mesh.collect_garbage();
   return result;
 }

@@ -12,6 +12,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Isotropic_remesher.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <algorithm>
@@ -217,7 +218,8 @@ void check_remeshing_size(const Mobius_mesh<P>& mesh, const Remeshing_options& o
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if L is not positive and finite, the number of
 /// iterations is out of range, `maximum_memory` is not positive, `mesh` has
-/// removed elements, a point has a coordinate beyond +-1e60 (where
+/// removed elements, an edge's sharpness is NaN or negative (with
+/// `protect_sharp_edges(true)`), a point has a coordinate beyond +-1e60 (where
 /// squared lengths and normals in double overflow), the mesh is less than
 /// 1e-60 across (where they underflow), or L is under 1024 times the spacing
 /// of doubles at the largest coordinate (too fine for the coordinates).
@@ -230,8 +232,11 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
 {
   const internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
-  internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
-  internal::require_length_resolved(mesh, target_edge_length, "isotropic_remeshing");
+  const double largest_coordinate = internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
+  internal::require_length_resolved(largest_coordinate, target_edge_length, "isotropic_remeshing");
+  if (options.protect_sharp_edges)
+    if (const auto own = mesh.template property_map<Edge_index, float>(edge_sharpness_name))
+      internal::require_valid_edge_sharpness(mesh, [&](Edge_index e) { return (*own)[e]; }, "isotropic_remeshing");
   internal::check_remeshing_size(mesh, options,
                                  parameters::choose_parameter(
                                    parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),

@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -167,7 +168,8 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 /// normal a unit vector.
 ///
 /// \param mesh the mesh to offset; it must have no removed elements
-/// \param distance the offset distance, finite and positive
+/// \param distance the offset distance, positive and finite; at most 1e60
+///   without `vertex_displacement_map`
 /// \param out receives the offset surface (its content is replaced)
 /// \param np optional named parameters: `solid` (bool, default `false`),
 ///   `vertex_normal_weighting` (default `Vertex_normal_weighting::area`),
@@ -176,7 +178,8 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 ///   normal; δ's sign does not matter, its side is read against the vertex
 ///   normal. No square root is taken, so on an exact kernel the offset is
 ///   exact, e.g. with δ the area-weighted normals of `compute_vertex_normals()`).
-/// \throws Parameter_error if `distance` is not finite and positive, the
+/// \throws Parameter_error if `distance` is not positive and finite (and,
+///   without `vertex_displacement_map`, at most 1e60), the
 ///   mesh has removed elements, a point is not finite, a displacement is zero
 ///   or tangent to the surface, or (without `vertex_displacement_map`) a point
 ///   has a coordinate beyond +-1e60 or the mesh is less than 1e-60 across,
@@ -185,12 +188,20 @@ template <class P, class NP = parameters::Default_named_parameters>
 Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_mesh<P>& out,
                           const NP& np = parameters::default_values())
 {
-  if (!(std::isfinite(distance) && distance > 0))
-    throw Parameter_error("offset_mesh: the distance must be finite and positive, not " + std::to_string(distance));
+  // Unit normals are made with a square root in double: the points and the
+  // distance stay within the range where that neither overflows nor
+  // underflows. Displacements given by the caller are used as they are,
+  // exactly on an exact kernel.
+  constexpr bool unit_normals = parameters::is_default_parameter<NP, internal_np::vertex_displacement_t>::value;
+  const double largest_distance = unit_normals ? CGAL_ext::internal::max_abs_coordinate : HUGE_VAL;
+  if (!(distance > 0 && distance < HUGE_VAL && distance <= largest_distance)) {
+    std::ostringstream what;
+    what << "offset_mesh: the distance must be positive and "
+         << (unit_normals ? "at most 1e60 (as the coordinates)" : "finite") << ", not " << distance;
+    throw Parameter_error(what.str());
+  }
   CGAL_ext::internal::require_no_garbage(mesh, "offset_mesh");
-  // Unit normals are made with a square root in double; displacements given
-  // by the caller are used as they are, exactly on an exact kernel.
-  if constexpr (parameters::is_default_parameter<NP, internal_np::vertex_displacement_t>::value)
+  if constexpr (unit_normals)
     CGAL_ext::internal::require_coordinates_in_range(mesh, "offset_mesh");
   else
     CGAL_ext::internal::require_finite_points(mesh, "offset_mesh");

@@ -21,8 +21,10 @@
 #include <CGAL/tags.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -281,6 +283,34 @@ void read_points(const Mobius_mesh<P>& mesh, const VertexPointMap& vpm, const Re
   for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { values[v] = Point_values<P>::from(get(vpm, Vertex_index(v))); });
 }
 
+// Subdivision in double adds a ring's points up before it weights the sum:
+// beyond +-1e300 the sum of a ring of a few hundred points overflows to
+// infinity. Exact numbers do not overflow.
+constexpr double max_abs_subdivided_coordinate = 1e300;
+
+// Refuses a point in double beyond max_abs_subdivided_coordinate or not
+// finite (a NaN spreads to every point it is a term of), naming the first
+// such vertex.
+template <class ConcurrencyTag, class Values>
+void require_points_in_range(const Values& values)
+{
+  const u32 n = u32(values.size());
+  const auto out_of_range = [&](u32 v) {
+    const Vec3& p = values[v];
+    const double b = max_abs_subdivided_coordinate;
+    return !(std::abs(p.x) <= b && std::abs(p.y) <= b && std::abs(p.z) <= b); // true for NaN too
+  };
+  const u32 bad = reduce<ConcurrencyTag>(
+    n, null_u32, [&](u32 v) { return out_of_range(v) ? v : null_u32; }, [](u32 a, u32 b) { return (std::min)(a, b); });
+  if (bad == null_u32)
+    return;
+  std::ostringstream what;
+  what << "subdivision: vertex v" << bad << " at (" << values[bad].x << ", " << values[bad].y << ", "
+       << values[bad].z << ") has a coordinate that is not finite or beyond +-" << max_abs_subdivided_coordinate
+       << ", where the sums of a ring's points in double overflow";
+  throw Parameter_error(what.str());
+}
+
 // The interpolated `values` as the points of `out`.
 template <class ConcurrencyTag, class Values, class P>
 void write_points(const Values& values, const Refinement_options& options, Mobius_mesh<P>& out)
@@ -319,6 +349,8 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     // Points only: one pass, two levels alive at a time.
     internal::Array<Value> values; // each level's points are written in full: no zero-fill
     read_points<Tag>(mesh, vpm, options, values);
+    if constexpr (std::is_same_v<Value, Vec3>)
+      require_points_in_range<Tag>(values);
     if constexpr (Traits::round_trips) {
       refiner.template refine_and_interpolate_points<Traits, Tag>(mesh, levels, values, out, es, vs, write_sharpness);
     } else {
@@ -327,9 +359,11 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     }
   } else {
     // Other maps too: every level is kept, and each map interpolated through them.
-    refiner.template refine<Tag>(mesh, levels, es, vs);
     std::vector<Value> values, result;
     read_points<Tag>(mesh, vpm, options, values);
+    if constexpr (std::is_same_v<Value, Vec3>)
+      require_points_in_range<Tag>(values);
+    refiner.template refine<Tag>(mesh, levels, es, vs);
     refiner.template interpolate<Tag>(values, result);
     refiner.template build_mesh<Tag>(out, write_sharpness);
     write_points<Tag>(result, options, out);
@@ -355,6 +389,10 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
 /// (but the sharpness), vertex maps of types without a linear combination
 /// (integers, `bool`, strings, colours of bytes), and face maps of Doo–Sabin
 /// and √3, whose faces lie across several parent faces.
+///
+/// \throws Parameter_error as the scheme's own function does (a NaN or
+/// negative sharpness, a face the mask does not split, a point in double
+/// that is not finite or beyond +-1e300); `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class Mask, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
@@ -435,7 +473,9 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 /// `"v:sharpness"` with the decayed sharpness, so that subdividing it again
 /// continues the same surface.
 ///
-/// \throws Parameter_error if a sharpness is NaN or negative; `mesh` is then unchanged.
+/// \throws Parameter_error if a sharpness is NaN or negative, or (points in
+/// double) a point is not finite or has a coordinate beyond +-1e300, where
+/// the sums of a ring's points overflow; `mesh` is then unchanged.
 /// \throws Size_error, before anything is allocated, if the result would have
 /// more elements than a `Mobius_mesh` indexes, or its estimated peak of memory
 /// is more than `maximum_memory` (all the schemes); `mesh` is then unchanged.
@@ -459,8 +499,9 @@ void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters:
 /// `[vertex points | edge points]`. Named parameters as `catmull_clark()`,
 /// without `vertex_rule` and `triangle_subdivision`.
 ///
-/// \throws Parameter_error if a face is not a triangle or a sharpness is NaN or negative;
-/// `mesh` is then unchanged.
+/// \throws Parameter_error if a face is not a triangle, a sharpness is NaN or
+/// negative, or a point in double is not finite or beyond +-1e300; `mesh` is
+/// then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void loop(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -474,6 +515,9 @@ void loop(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_
 /// midpoints and face centroids and old points kept (OpenSubdiv's bilinear
 /// scheme). Named parameters `number_of_iterations`, `vertex_point_map` and
 /// `maximum_memory` (as `catmull_clark()`).
+///
+/// \throws Parameter_error if a point in double is not finite or beyond
+/// +-1e300; `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void bilinear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -489,7 +533,8 @@ void bilinear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::defa
 /// `[vertex points | edge points]`. Named parameters `number_of_iterations`,
 /// `vertex_point_map` and `maximum_memory`. For other polygons, `bilinear()`.
 ///
-/// \throws Parameter_error if a face is not a triangle; `mesh` is then unchanged.
+/// \throws Parameter_error if a face is not a triangle, or a point in double
+/// is not finite or beyond +-1e300; `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void linear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -506,6 +551,9 @@ void linear(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::defaul
 /// corner (faces in order, each face's corners from its first halfedge).
 /// Named parameters `number_of_iterations`, `vertex_point_map` and
 /// `maximum_memory`; sharpness and boundary options do not apply.
+///
+/// \throws Parameter_error if a point in double is not finite or beyond
+/// +-1e300; `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void doo_sabin(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
@@ -522,7 +570,8 @@ void doo_sabin(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::def
 /// `[vertices | centroids | border points]`. Named parameters
 /// `number_of_iterations`, `vertex_point_map` and `maximum_memory`.
 ///
-/// \throws Parameter_error if a face is not a triangle; `mesh` is then unchanged.
+/// \throws Parameter_error if a face is not a triangle, or a point in double
+/// is not finite or beyond +-1e300; `mesh` is then unchanged.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P,
           class NamedParameters = parameters::Default_named_parameters>
 void sqrt3(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())

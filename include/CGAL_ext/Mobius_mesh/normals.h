@@ -96,9 +96,10 @@ typename Traits::Vector_3 unit_vector(const typename Traits::Vector_3& v, const 
   // The square underflowed or overflowed (a face of side 1e-160 has a normal
   // of length 1e-320, whose square is 0 in double).
   const auto w = scaled_to_unit_box(v, traits);
-  if (squared_length(w) == 0)
+  const auto w_squared = squared_length(w);
+  if (w_squared == 0)
     return v; // a degenerate face has no direction: its zero vector stays zero
-  return divide(w, CGAL::approximate_sqrt(squared_length(w)));
+  return divide(w, CGAL::approximate_sqrt(w_squared));
 }
 
 // Newell's vector of face `f` in its own orientation: the sum over its edges

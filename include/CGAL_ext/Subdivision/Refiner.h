@@ -791,15 +791,12 @@ void Refiner<Mask, W>::check_sharpness(Level& L, const std::vector<float>& es, c
       n, null_u32, [&](u32 i) { return bad(i) ? i : null_u32; }, [](u32 a, u32 b) { return (std::min)(a, b); });
   };
   auto value = [](const std::vector<float>& s, u32 i) { return s.empty() ? 0.0f : s[i]; };
-  // A number of levels: NaN or negative means nothing.
-  const u32 bad_edge = first(ne, [&](u32 e) { return !(value(es, e) >= 0); });
+  const u32 bad_edge = first(ne, [&](u32 e) { return !CGAL_ext::internal::is_valid_sharpness(value(es, e)); });
   if (bad_edge != null_u32)
-    throw Parameter_error("subdivision: the sharpness of edge e" + std::to_string(bad_edge) + " is " +
-                          std::to_string(es[bad_edge]) + " (NaN or negative; 0 is smooth)");
-  const u32 bad_vertex = first(nv, [&](u32 v) { return !(value(vs, v) >= 0); });
+    throw CGAL_ext::internal::invalid_sharpness("subdivision", "edge e", bad_edge, es[bad_edge]);
+  const u32 bad_vertex = first(nv, [&](u32 v) { return !CGAL_ext::internal::is_valid_sharpness(value(vs, v)); });
   if (bad_vertex != null_u32)
-    throw Parameter_error("subdivision: the sharpness of vertex v" + std::to_string(bad_vertex) + " is " +
-                          std::to_string(vs[bad_vertex]) + " (NaN or negative; 0 is smooth)");
+    throw CGAL_ext::internal::invalid_sharpness("subdivision", "vertex v", bad_vertex, vs[bad_vertex]);
   internal::for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
     const bool border = L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32;
     L.e_sharp[e] = border ? infinitely_sharp : value(es, e); // border edges are infinitely sharp, as in OpenSubdiv

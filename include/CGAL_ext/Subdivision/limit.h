@@ -66,9 +66,11 @@ struct Limit_ring
   Crease::Rule rule = Crease::Rule::smooth;
   unsigned crease_ends[2] = {0, 0};
 
-  // Walks the ring of target(d) from next(d), the dart leaving it in d's face.
+  // Walks the ring of target(d) from next(d), the dart leaving it in d's
+  // face; `function` names the caller in the error for a bad sharpness.
   template <class EdgeSharpness>
-  void gather(Dart d, const Mobius_mesh<P>& mesh, const EdgeSharpness& es, float vs, bool corner_if_one_face)
+  void gather(const char* function, Dart d, const Mobius_mesh<P>& mesh, const EdgeSharpness& es, float vs,
+              bool corner_if_one_face)
   {
     center = mesh.target(d);
     edge_ends.clear();
@@ -85,14 +87,16 @@ struct Limit_ring
     border = mesh.is_border(mesh.opposite(o));
     const Dart start = o;
     do {
-      add_edge(o, mesh, es);
+      add_edge(function, o, mesh, es);
       face_corners.push_back(mesh.target(mesh.next(o)));
       o = mesh.opposite(mesh.prev(o)); // the next dart leaving the vertex, around it
       if (mesh.is_border(o)) {
-        add_edge(o, mesh, es); // the trailing border edge
+        add_edge(function, o, mesh, es); // the trailing border edge
         break;
       }
     } while (o != start);
+    if (!CGAL_ext::internal::is_valid_sharpness(vs))
+      throw CGAL_ext::internal::invalid_sharpness(function, "vertex v", center.idx(), vs);
     vertex_sharpness = vs;
     if (border && corner_if_one_face && face_corners.size() == 1)
       vertex_sharpness = infinitely_sharp;
@@ -100,11 +104,14 @@ struct Limit_ring
   }
 
   template <class EdgeSharpness>
-  void add_edge(Dart o, const Mobius_mesh<P>& mesh, const EdgeSharpness& es)
+  void add_edge(const char* function, Dart o, const Mobius_mesh<P>& mesh, const EdgeSharpness& es)
   {
     edge_ends.push_back(mesh.target(o));
     const Edge_index e = mesh.edge(o);
-    edge_sharpness.push_back(mesh.is_border(e) ? infinitely_sharp : es(e));
+    const float s = mesh.is_border(e) ? infinitely_sharp : es(e);
+    if (!CGAL_ext::internal::is_valid_sharpness(s))
+      throw CGAL_ext::internal::invalid_sharpness(function, "edge e", e.idx(), s);
+    edge_sharpness.push_back(s);
   }
 
   // OpenSubdiv's vertex rule at the last level, and the first two sharp edges.
@@ -354,7 +361,7 @@ void gather_ring(const char* function, Dart d, const Mobius_mesh<P>& mesh, const
   for (Dart c : CGAL_ext::halfedges_around_target(d, mesh))
     if (!mesh.is_border(c))
       check_face_degree<Mask>(function, mesh.face(c), mesh);
-  ring.gather(d, mesh, s.edge_sharpness, s.sharpness(mesh.target(d)), s.corner_if_one_face);
+  ring.gather(function, d, mesh, s.edge_sharpness, s.sharpness(mesh.target(d)), s.corner_if_one_face);
 }
 
 
@@ -444,7 +451,7 @@ void write_per_vertex(const char* function, const Mobius_mesh<P>& mesh, const Li
       result.push_back(isolated(v));
       continue;
     }
-    ring.gather(vertex_side_dart(v, mesh), mesh, s.edge_sharpness, s.sharpness(v), s.corner_if_one_face);
+    ring.gather(function, vertex_side_dart(v, mesh), mesh, s.edge_sharpness, s.sharpness(v), s.corner_if_one_face);
     result.push_back(of_ring(ring));
   }
   for (Vertex_index v : mesh.vertices())
@@ -478,8 +485,9 @@ void write_per_vertex(const char* function, const Mobius_mesh<P>& mesh, const Li
 ///     \cgalParamDefault{`mesh.points()`, the kernel of the point type}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \throws Parameter_error if `v` is not a vertex of `mesh`, or a face
-/// around it is not a quad (Catmull–Clark) or a triangle (Loop).
+/// \throws Parameter_error if `v` is not a vertex of `mesh`, a face
+/// around it is not a quad (Catmull–Clark) or a triangle (Loop), or a
+/// sharpness of its ring is NaN or negative.
 template <class Mask, class P, class NP = parameters::Default_named_parameters>
 typename internal::Normal_types<P, NP>::Point limit_point(Vertex_index v, const Mobius_mesh<P>& mesh,
                                                           const NP& np = parameters::default_values())
@@ -499,7 +507,8 @@ typename internal::Normal_types<P, NP>::Point limit_point(Vertex_index v, const 
 /// \brief writes `limit_point<Mask>(v, mesh, np)` for every vertex `v` into
 /// `limit_points` (which may be `mesh.points()`: all are computed first).
 /// \throws Parameter_error if a face is not a quad (Catmull–Clark) or a
-/// triangle (Loop), or `mesh` has removed elements; nothing is written then.
+/// triangle (Loop), a sharpness is NaN or negative, or `mesh` has removed
+/// elements; nothing is written then.
 template <class Mask, class P, class VertexPointMap, class NP = parameters::Default_named_parameters>
 void limit_points(const Mobius_mesh<P>& mesh, VertexPointMap limit_points, const NP& np = parameters::default_values())
 {
@@ -525,8 +534,9 @@ void limit_points(const Mobius_mesh<P>& mesh, VertexPointMap limit_points, const
 ///
 /// The tangent weights involve cosines and square roots: computed in
 /// `double`, then applied in the kernel. Named parameters as `limit_point()`.
-/// \throws Parameter_error if `d` is not a dart of a face of `mesh`, or a
-/// face around its target is not a quad (Catmull–Clark) or a triangle (Loop).
+/// \throws Parameter_error if `d` is not a dart of a face of `mesh`, a face
+/// around its target is not a quad (Catmull–Clark) or a triangle (Loop), or
+/// a sharpness of its ring is NaN or negative.
 template <class Mask, class P, class NP = parameters::Default_named_parameters>
 Limit_tangents<typename internal::Normal_types<P, NP>::Vector>
 limit_tangents(Dart d, const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values())

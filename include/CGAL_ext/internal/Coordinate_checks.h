@@ -61,8 +61,9 @@ void require_finite_points(const Mobius_mesh<P>& mesh, const char* function)
 // Refuses a mesh with a point beyond max_abs_coordinate (or not finite),
 // naming the first such vertex, or one whose bounding box is less than
 // min_extent across (but not a single point), before anything is touched.
+// Returns the largest absolute coordinate, for require_length_resolved().
 template <class P>
-void require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* function)
+double require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* function)
 {
   std::array<double, 3> low{}, high{};
   bool first = true;
@@ -89,21 +90,18 @@ void require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* functi
          << min_extent << ", where its areas in double underflow; scale it up first";
     throw Parameter_error(what.str());
   }
+  double largest = 0;
+  for (int i = 0; i < 3; ++i)
+    largest = (std::max)({largest, std::abs(low[i]), std::abs(high[i])});
+  return largest;
 }
 
-// Refuses a length that the mesh's coordinates cannot resolve: under 1024
-// times the spacing of doubles at its largest coordinate. Finer than that,
-// the midpoint of an edge rounds onto one of its ends (a split leaves a half
-// as long as the edge), and the lengths compared are rounding errors.
-template <class P>
-void require_length_resolved(const Mobius_mesh<P>& mesh, double length, const char* function)
+// Refuses a length that coordinates up to `largest` in absolute value
+// cannot resolve: under 1024 times the spacing of doubles there. Finer than
+// that, the midpoint of an edge rounds onto one of its ends (a split leaves
+// a half as long as the edge), and the lengths compared are rounding errors.
+inline void require_length_resolved(double largest, double length, const char* function)
 {
-  double largest = 0;
-  for (Vertex_index v : mesh.vertices()) {
-    const P& p = mesh.point(v);
-    largest = (std::max)({largest, std::abs(CGAL::to_double(p.x())), std::abs(CGAL::to_double(p.y())),
-                          std::abs(CGAL::to_double(p.z()))});
-  }
   const double spacing = std::nextafter(largest, HUGE_VAL) - largest;
   if (length >= 1024 * spacing)
     return;

@@ -411,18 +411,25 @@ private:
   int valence_deviation(Vertex_index v, int change) const
   {
     const int target = mesh_.is_border(v) ? 4 : 6;
-    return std::abs(int(mesh_.degree(v)) + change - target);
+    return std::abs(int(valence_[v.idx()]) + change - target);
   }
 
   // Flips every edge whose flip brings the valences of its four vertices
   // closer to 6 (4 on the border), if the two new triangles keep the side
   // the old ones face: their normals, taken in the orientation that the
-  // edge's darts carry, must agree with the old pair's.
+  // edge's darts carry, must agree with the old pair's. The valences are
+  // counted once and kept up to date: walking a vertex's fan for each of its
+  // edges is quadratic in its valence, which degenerate input makes large.
   void equalize_valences()
   {
+    valence_.assign(mesh_.num_vertices(), 0);
+    for (Edge_index e : mesh_.edges()) {
+      ++valence_[mesh_.vertex(e, 0).idx()];
+      ++valence_[mesh_.vertex(e, 1).idx()];
+    }
     for (Edge_index e : mesh_.edges()) {
       const Dart d = Mesh::halfedge(e);
-      if (is_protected(e) || !Euler::can_flip_edge(d, mesh_))
+      if (is_protected(e) || mesh_.is_border(e))
         continue;
       const Dart o = mesh_.opposite(d);
       const Vertex_index a = mesh_.source(d), b = mesh_.target(d);
@@ -431,10 +438,15 @@ private:
                          valence_deviation(x, 0);
       const int after = valence_deviation(a, -1) + valence_deviation(b, -1) + valence_deviation(c, 1) +
                         valence_deviation(x, 1);
+      // The counts first: can_flip_edge() walks the fan of c.
       if (after >= before || !keeps_valence_at_least_three(a) || !keeps_valence_at_least_three(b) ||
-          !flip_keeps_side(a, b, c, x))
+          !Euler::can_flip_edge(d, mesh_) || !flip_keeps_side(a, b, c, x))
         continue;
       Euler::flip_edge(d, mesh_, Euler::unchecked); // can_flip_edge() said yes above
+      --valence_[a.idx()];
+      --valence_[b.idx()];
+      ++valence_[c.idx()];
+      ++valence_[x.idx()];
       check_star(a);
       check_star(b);
     }
@@ -442,7 +454,7 @@ private:
 
   bool keeps_valence_at_least_three(Vertex_index v) const
   {
-    return mesh_.degree(v) > (mesh_.is_border(v) ? 2u : 3u);
+    return valence_[v.idx()] > (mesh_.is_border(v) ? 2u : 3u);
   }
 
   Remeshing_point approximate(Vertex_index v) const { return to_remeshing_point(mesh_.point(v)); }
@@ -561,6 +573,7 @@ private:
   // By edge: the input border loop a border edge is on (empty if closed).
   // Declared before input_, which fills it.
   std::vector<std::uint32_t> border_loop_;
+  std::vector<std::uint32_t> valence_; // during equalize_valences(), by vertex index
   const Remeshing_input_surface input_;
   const double low2_, high2_;
   std::optional<Sharpness_map> sharpness_;
