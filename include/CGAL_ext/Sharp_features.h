@@ -103,6 +103,14 @@ void require_valid_edge_sharpness(const Mobius_mesh<P>& mesh, const Sharpness& s
       throw invalid_sharpness(function, "edge e", e.idx(), s);
 }
 
+// The same for the mesh's own "e:sharpness", if it has one.
+template <class P>
+void require_valid_edge_sharpness(const Mobius_mesh<P>& mesh, const std::string& function)
+{
+  if (const auto own = mesh.template property_map<Edge_index, float>(edge_sharpness_name))
+    require_valid_edge_sharpness(mesh, [&](Edge_index e) { return (*own)[e]; }, function);
+}
+
 } // namespace internal
 } // namespace CGAL_ext
 

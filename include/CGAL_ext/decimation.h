@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -111,8 +112,8 @@ void require_valid_sharpness(const Mobius_mesh<P>& mesh, const NP& np)
     const auto sharpness = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
     CGAL_ext::internal::require_valid_edge_sharpness(mesh, [&](Edge_index e) { return double(get(sharpness, e)); },
                                                      "decimate");
-  } else if (const auto own = mesh.template property_map<Edge_index, float>(edge_sharpness_name)) {
-    CGAL_ext::internal::require_valid_edge_sharpness(mesh, [&](Edge_index e) { return (*own)[e]; }, "decimate");
+  } else {
+    CGAL_ext::internal::require_valid_edge_sharpness(mesh, "decimate");
   }
 }
 
@@ -446,7 +447,8 @@ void Decimator<P>::check_star(Vertex_index v) const
 /// distance of its star went down and no face turned over. Border vertices
 /// and the ends of feature edges do not move.
 ///
-/// \param mesh a mesh without removed elements; it is garbage-collected at the end
+/// \param mesh a mesh without removed elements; it is garbage-collected at the end and its
+///   unused capacity released
 /// \param np named parameters, at least one stop condition:
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{number_of_faces}
@@ -501,29 +503,40 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
   internal::require_valid_sharpness(mesh, np);
   triangulate_faces(mesh);
   // The input, for the distances of the relocation: a copy of its points
-  // and triangles now, its tree once the decimator's arrays are freed.
+  // and triangles now, its tree once the decimator and the removed elements
+  // are gone, so that the tree is never held beside them.
   std::optional<internal::Input_triangles> input;
   if (settings.relocate_vertices)
     input.emplace(mesh);
   Decimation_result result;
-  std::vector<char> feature;
+  std::vector<char> on_feature(mesh.num_vertices(), 0);
   {
     internal::Decimator<P> decimator(mesh, settings, internal::feature_edges(mesh, np, settings.protect_borders));
     result = decimator.run();
-    feature = decimator.take_features();
-  }
-  if (input && result.collapses > 0) {
-    input->build_tree();
     // Feature edges keep their ends where they are, as during the collapses.
-    const auto off_features = [&](Vertex_index v) {
-      for (Dart d : CGAL_ext::halfedges_around_target(v, mesh))
-        if (feature[mesh.edge(d).idx()])
-          return false;
-      return true;
-    };
-    result.relocations = internal::Distance_relocation<P>(mesh, *input, off_features).run(3);
+    const std::vector<char> feature = decimator.take_features();
+    for (Edge_index e : mesh.edges())
+      if (feature[e.idx()])
+        on_feature[mesh.vertex(e, 0).idx()] = on_feature[mesh.vertex(e, 1).idx()] = 1;
   }
-  mesh.collect_garbage();
+  typename Mobius_mesh<P>::Garbage_collection_maps moved;
+  mesh.collect_garbage(moved);
+  mesh.shrink_to_fit();
+  if (input && result.collapses > 0) {
+    // Each vertex's input vertex of the same old index: a point of the input near it.
+    std::vector<std::uint32_t> origin(mesh.num_vertices());
+    std::vector<char> movable(mesh.num_vertices());
+    for (std::size_t old = 0; old < moved.vertices.size(); ++old)
+      if (const Vertex_index v = moved.vertices[old]; v.is_valid()) {
+        origin[v.idx()] = std::uint32_t(old);
+        movable[v.idx()] = !on_feature[old];
+      }
+    std::vector<char>().swap(on_feature);
+    moved = {};
+    input->build_tree();
+    internal::Distance_relocation<P> relocation(mesh, *input, std::move(origin), std::move(movable));
+    result.relocations = relocation.run(3);
+  }
   return result;
 }
 

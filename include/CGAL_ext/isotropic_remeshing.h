@@ -235,8 +235,7 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
   const double largest_coordinate = internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
   internal::require_length_resolved(largest_coordinate, target_edge_length, "isotropic_remeshing");
   if (options.protect_sharp_edges)
-    if (const auto own = mesh.template property_map<Edge_index, float>(edge_sharpness_name))
-      internal::require_valid_edge_sharpness(mesh, [&](Edge_index e) { return (*own)[e]; }, "isotropic_remeshing");
+    internal::require_valid_edge_sharpness(mesh, "isotropic_remeshing");
   internal::check_remeshing_size(mesh, options,
                                  parameters::choose_parameter(
                                    parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),

@@ -272,17 +272,6 @@ bool gather_sharpness(const Mobius_mesh<P>& mesh, const NamedParameters& np, std
   return has_sharpness;
 }
 
-// The points of `mesh` as interpolated values, in parallel if the mesh is
-// large enough (`options`, as the refiner decides for a level).
-template <class ConcurrencyTag, class P, class VertexPointMap, class Values>
-void read_points(const Mobius_mesh<P>& mesh, const VertexPointMap& vpm, const Refinement_options& options,
-                 Values& values)
-{
-  const u32 n = u32(mesh.number_of_vertices());
-  values.resize(n);
-  for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { values[v] = Point_values<P>::from(get(vpm, Vertex_index(v))); });
-}
-
 // Subdivision in double adds a ring's points up before it weights the sum:
 // beyond +-1e300 the sum of a ring of a few hundred points overflows to
 // infinity. Exact numbers do not overflow.
@@ -309,6 +298,20 @@ void require_points_in_range(const Values& values)
        << values[bad].z << ") has a coordinate that is not finite or beyond +-" << max_abs_subdivided_coordinate
        << ", where the sums of a ring's points in double overflow";
   throw Parameter_error(what.str());
+}
+
+// The points of `mesh` as interpolated values, in parallel if the mesh is
+// large enough (`options`, as the refiner decides for a level); in double,
+// refused where they would overflow.
+template <class ConcurrencyTag, class P, class VertexPointMap, class Values>
+void read_points(const Mobius_mesh<P>& mesh, const VertexPointMap& vpm, const Refinement_options& options,
+                 Values& values)
+{
+  const u32 n = u32(mesh.number_of_vertices());
+  values.resize(n);
+  for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { values[v] = Point_values<P>::from(get(vpm, Vertex_index(v))); });
+  if constexpr (std::is_same_v<typename Values::value_type, Vec3>)
+    require_points_in_range<ConcurrencyTag>(values);
 }
 
 // The interpolated `values` as the points of `out`.
@@ -349,8 +352,6 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     // Points only: one pass, two levels alive at a time.
     internal::Array<Value> values; // each level's points are written in full: no zero-fill
     read_points<Tag>(mesh, vpm, options, values);
-    if constexpr (std::is_same_v<Value, Vec3>)
-      require_points_in_range<Tag>(values);
     if constexpr (Traits::round_trips) {
       refiner.template refine_and_interpolate_points<Traits, Tag>(mesh, levels, values, out, es, vs, write_sharpness);
     } else {
@@ -361,8 +362,6 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     // Other maps too: every level is kept, and each map interpolated through them.
     std::vector<Value> values, result;
     read_points<Tag>(mesh, vpm, options, values);
-    if constexpr (std::is_same_v<Value, Vec3>)
-      require_points_in_range<Tag>(values);
     refiner.template refine<Tag>(mesh, levels, es, vs);
     refiner.template interpolate<Tag>(values, result);
     refiner.template build_mesh<Tag>(out, write_sharpness);

@@ -115,9 +115,9 @@ private:
 // went down and no face turned over. Samples: the vertices, the edges'
 // midpoints and the faces' centroids.
 //
-// The mesh's vertex indices must still be those of the input (the
-// decimation's removed vertices not yet collected): input vertex v, a point
-// of the input near result vertex v, is the first hint of its queries.
+// Vertex v's first hint is input vertex origin[v], a point of the input near
+// it (for a decimation: the vertex of the same index before the garbage
+// collection).
 template <class P>
 class Distance_relocation
 {
@@ -125,14 +125,16 @@ class Distance_relocation
   using Vector = Input_triangles::K::Vector_3;
 
 public:
-  // `movable(v)` says whether vertex v may move (not on a border or feature).
-  template <class Movable>
-  Distance_relocation(Mobius_mesh<P>& mesh, const Input_triangles& input, const Movable& movable)
-    : m_(mesh), input_(input), movable_(mesh.num_vertices(), 0)
+  // `movable[v]` says whether vertex v may move; border and isolated vertices never do.
+  Distance_relocation(Mobius_mesh<P>& mesh, const Input_triangles& input, std::vector<std::uint32_t> origin,
+                      std::vector<char> movable)
+    : m_(mesh), input_(input), origin_(std::move(origin)), movable_(std::move(movable))
   {
-    CGAL_precondition(input.number_of_points() >= mesh.num_vertices());
-    for (Vertex_index v : m_.vertices())
-      movable_[v.idx()] = !m_.is_border(v) && !m_.is_isolated(v) && movable(v);
+    CGAL_precondition(origin_.size() == mesh.num_vertices() && movable_.size() == mesh.num_vertices());
+    for (Vertex_index v : m_.vertices()) {
+      CGAL_precondition(origin_[v.idx()] < input.number_of_points());
+      movable_[v.idx()] = movable_[v.idx()] && !m_.is_border(v) && !m_.is_isolated(v);
+    }
   }
 
   // Relocates for at most `passes` passes; returns the number of moves kept.
@@ -142,15 +144,20 @@ public:
     near_edge_.resize(m_.num_edges());
     near_face_.resize(m_.num_faces());
     for (Vertex_index v : m_.vertices())
-      near_vertex_[v.idx()] = input_.closest_point(point(v), input_.point(v.idx()));
+      near_vertex_[v.idx()] = input_.closest_point(point(v), input_.point(origin_[v.idx()]));
     for (Edge_index e : m_.edges())
       near_edge_[e.idx()] = input_.closest_point(midpoint(e), near_vertex_[m_.vertex(e, 0).idx()]);
     for (Face_index f : m_.faces())
       near_face_[f.idx()] = input_.closest_point(centroid(f), near_vertex_[m_.target(m_.halfedge(f)).idx()]);
+    double coordinate = 0;
+    for (Vertex_index v : m_.vertices()) {
+      const Point p = point(v);
+      coordinate = (std::max)({coordinate, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+    }
     std::size_t moves = 0;
     for (int pass = 0; pass < passes; ++pass) {
       std::size_t moved = 0;
-      for (Vertex_index v : worst_stars())
+      for (Vertex_index v : worst_stars(negligible * coordinate))
         moved += relocate(v);
       moves += moved;
       if (moved == 0)
@@ -194,19 +201,17 @@ private:
     return std::sqrt(largest);
   }
 
-  // The movable vertices whose stars hold the largest residuals, worst first.
-  std::vector<Vertex_index> worst_stars() const
+  // The movable vertices whose stars hold the largest residuals, worst
+  // first; none once the largest is not above `floor`.
+  std::vector<Vertex_index> worst_stars(double floor) const
   {
     std::vector<double> largest(m_.num_vertices(), 0);
-    double mesh_largest = 0, coordinate = 0;
-    for (Vertex_index v : m_.vertices()) {
-      const Point p = point(v);
-      coordinate = (std::max)({coordinate, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+    double mesh_largest = 0;
+    for (Vertex_index v : m_.vertices())
       if (movable_[v.idx()])
         mesh_largest = (std::max)(mesh_largest, largest[v.idx()] = star_largest(v));
-    }
     std::vector<Vertex_index> order;
-    if (!(mesh_largest > negligible * coordinate))
+    if (!(mesh_largest > floor))
       return order;
     for (Vertex_index v : m_.vertices())
       if (movable_[v.idx()] && largest[v.idx()] >= worst_share * mesh_largest)
@@ -325,6 +330,7 @@ private:
 
   Mobius_mesh<P>& m_;
   const Input_triangles& input_;
+  std::vector<std::uint32_t> origin_;
   std::vector<char> movable_;
   std::vector<Point> near_vertex_, near_edge_, near_face_; // closest input points of the samples, by index
   // Scratch of relocate(), kept to spare allocations.
