@@ -509,15 +509,18 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
   if (settings.relocate_vertices)
     input.emplace(mesh);
   Decimation_result result;
-  std::vector<char> on_feature(mesh.num_vertices(), 0);
+  std::vector<char> on_feature; // by vertex index, for the relocation only
   {
     internal::Decimator<P> decimator(mesh, settings, internal::feature_edges(mesh, np, settings.protect_borders));
     result = decimator.run();
-    // Feature edges keep their ends where they are, as during the collapses.
-    const std::vector<char> feature = decimator.take_features();
-    for (Edge_index e : mesh.edges())
-      if (feature[e.idx()])
-        on_feature[mesh.vertex(e, 0).idx()] = on_feature[mesh.vertex(e, 1).idx()] = 1;
+    if (input) {
+      // Feature edges keep their ends where they are, as during the collapses.
+      const std::vector<char> feature = decimator.take_features();
+      on_feature.assign(mesh.num_vertices(), 0);
+      for (Edge_index e : mesh.edges())
+        if (feature[e.idx()])
+          on_feature[mesh.vertex(e, 0).idx()] = on_feature[mesh.vertex(e, 1).idx()] = 1;
+    }
   }
   typename Mobius_mesh<P>::Garbage_collection_maps moved;
   mesh.collect_garbage(moved);
