@@ -1527,12 +1527,20 @@ Refined refine_with(const Built& b, const S::Refinement_options& options, unsign
 // Serial and parallel refinement of `b` (the parallel path forced on every
 // level) give the same mesh, array for array, the same points, sharpness
 // and holes, bit for bit.
+//
+// Then again with threads from the last step only (the threshold at its
+// parent's vertex count): the serial steps before it make the incidence
+// tables that the parallel one reads.
 template <class Mask>
 void check_parallel_stages(const std::string& what, const Built& b, S::Refinement_options options, unsigned n)
 {
-  options.parallel_min_vertices = 0;
+  const std::uint32_t last_parent =
+    std::uint32_t(S::refined_size(Mask::split, S::internal::size_of(b.mesh), n - 1).vertices);
+  for (std::uint32_t threshold : {std::uint32_t(0), last_parent})
   for (bool one_pass : {true, false}) {
-    SCOPED_TRACE(what + (one_pass ? ", one pass" : ", level by level"));
+    options.parallel_min_vertices = threshold;
+    SCOPED_TRACE(what + (one_pass ? ", one pass" : ", level by level") + ", threads from " +
+                 std::to_string(threshold) + " vertices");
     const Refined s = refine_with<Mask, CGAL::Sequential_tag>(b, options, n, one_pass);
     const Refined p = refine_with<Mask, CGAL::Parallel_tag>(b, options, n, one_pass);
     ASSERT_TRUE(p.mesh.is_valid(true));

@@ -246,6 +246,7 @@ public:
     weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
     incidence_.assign(uses_stencils ? 0 : levels, internal::Incidence());
+    serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k)
       internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv),
@@ -432,6 +433,29 @@ private:
   // the tag asks for it).
   bool parallel_level(u32 nv) const { return runs_in_parallel(nv, options_.parallel_min_vertices); }
 
+  // Whether a refinement of `mesh` by `levels` steps under `ConcurrencyTag`
+  // has a step that runs in parallel after one that does not: the levels
+  // grow, so whether the last step's parent is large enough. Then the serial
+  // steps make incidence tables too (the base's by a walk around its
+  // vertices, each child's derived by the split), so that the first level
+  // with threads gets its tables from its parent's split instead of walking
+  // around every one of its vertices; the walk cost more than the threads
+  // saved where only the last step runs in parallel (doc/benchmarks.md).
+  template <class ConcurrencyTag, class P>
+  bool later_step_in_parallel(const Mobius_mesh<P>& mesh, unsigned levels) const
+  {
+    if constexpr (!internal::is_parallel_tag<ConcurrencyTag> || uses_stencils) {
+      CGAL_USE(mesh);
+      CGAL_USE(levels);
+      return false;
+    } else {
+      if (levels < 2 || parallel_level(u32(mesh.number_of_vertices())))
+        return false;
+      const Mesh_size last_parent = refined_size(Mask::split, internal::size_of(mesh), levels - 1);
+      return parallel_level(u32(last_parent.vertices));
+    }
+  }
+
   // refine_and_interpolate(), or with `Convert` (not void)
   // refine_and_interpolate_points().
   template <class ConcurrencyTag, class Convert, class P, class Values, class Q>
@@ -442,6 +466,7 @@ private:
     check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     incidence_.clear();
+    serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k) {
       bool done = false;
@@ -630,7 +655,7 @@ private:
   {
     if (incidence_.size() < slot + 1)
       incidence_.resize(slot + 1);
-    if constexpr (internal::is_parallel_tag<ConcurrencyTag>) {
+    if (internal::is_parallel_tag<ConcurrencyTag> || serial_tables_) {
       if (incidence_[slot].empty())
         internal::build_incidence<ConcurrencyTag>(levels_[slot], Mask::split == Split::quad, incidence_[slot]);
     } else {
@@ -748,6 +773,9 @@ private:
   // be interpolated in parallel (empty for the others): derived by the split
   // that made the level, or made before its weights (prepare_interpolation()).
   std::vector<internal::Incidence> incidence_;
+  // Whether the serial steps of this refinement make incidence tables for a
+  // later step that runs in parallel (see later_step_in_parallel()).
+  bool serial_tables_ = false;
   std::vector<internal::Step_weights<W>> weights_;
   internal::Weight_builder<Mask, W> weight_builder_;
   // The sharpness of the next level, made by compute_weights() before the split.
@@ -868,7 +896,8 @@ void Refiner<Mask, W>::interpolate_level_into(unsigned k, const Value* src, cons
     internal::with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
       internal::interpolate_stencils<decltype(tag)>(stencils_[k], src, dst);
     });
-  } else if (k >= incidence_.size() || incidence_[k].empty()) {
+  } else if (k >= incidence_.size() || incidence_[k].empty() || !parallel_level(levels_[k].nv)) {
+    // Serial levels may have tables too, made for a later level's sake.
     interpolate_level_into<CGAL::Sequential_tag>(k, src, dst);
   } else {
     internal::interpolate_primal<ConcurrencyTag, Mask::split>(levels_[k], weights_[k], incidence_[k], src, dst);
