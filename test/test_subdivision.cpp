@@ -1536,41 +1536,42 @@ void check_parallel_stages(const std::string& what, const Built& b, S::Refinemen
 {
   const std::uint32_t last_parent =
     std::uint32_t(S::refined_size(Mask::split, S::internal::size_of(b.mesh), n - 1).vertices);
-  for (std::uint32_t threshold : {std::uint32_t(0), last_parent})
-  for (bool one_pass : {true, false}) {
-    options.parallel_min_vertices = threshold;
-    SCOPED_TRACE(what + (one_pass ? ", one pass" : ", level by level") + ", threads from " +
-                 std::to_string(threshold) + " vertices");
-    const Refined s = refine_with<Mask, CGAL::Sequential_tag>(b, options, n, one_pass);
-    const Refined p = refine_with<Mask, CGAL::Parallel_tag>(b, options, n, one_pass);
-    ASSERT_TRUE(p.mesh.is_valid(true));
-    ASSERT_EQ(p.mesh.number_of_faces(), s.mesh.number_of_faces());
-    const Connectivity cs = connectivity_of(s.mesh), cp = connectivity_of(p.mesh);
-    EXPECT_TRUE(same_bytes(cs.target, cp.target));
-    EXPECT_TRUE(same_bytes(cs.next, cp.next));
-    EXPECT_TRUE(same_bytes(cs.prev, cp.prev));
-    EXPECT_TRUE(same_bytes(cs.face, cp.face));
-    EXPECT_TRUE(same_bytes(cs.mobius, cp.mobius));
-    EXPECT_TRUE(same_bytes(cs.vertex_dart, cp.vertex_dart));
-    EXPECT_TRUE(same_bytes(cs.face_dart, cp.face_dart));
-    EXPECT_TRUE(same_bytes(s.points, p.points));
-    for (const char* name : {CGAL_ext::edge_sharpness_name, CGAL_ext::vertex_sharpness_name}) {
-      const bool on_edges = name == std::string(CGAL_ext::edge_sharpness_name);
-      std::vector<float> ss, sp;
-      if (on_edges) {
-        ss = s.mesh.property_map<CGAL_ext::Edge_index, float>(name)->data();
-        sp = p.mesh.property_map<CGAL_ext::Edge_index, float>(name)->data();
-      } else {
-        ss = s.mesh.property_map<CGAL_ext::Vertex_index, float>(name)->data();
-        sp = p.mesh.property_map<CGAL_ext::Vertex_index, float>(name)->data();
+  for (std::uint32_t threshold : {std::uint32_t(0), last_parent}) {
+    for (bool one_pass : {true, false}) {
+      options.parallel_min_vertices = threshold;
+      SCOPED_TRACE(what + (one_pass ? ", one pass" : ", level by level") + ", threads from " +
+                   std::to_string(threshold) + " vertices");
+      const Refined s = refine_with<Mask, CGAL::Sequential_tag>(b, options, n, one_pass);
+      const Refined p = refine_with<Mask, CGAL::Parallel_tag>(b, options, n, one_pass);
+      ASSERT_TRUE(p.mesh.is_valid(true));
+      ASSERT_EQ(p.mesh.number_of_faces(), s.mesh.number_of_faces());
+      const Connectivity cs = connectivity_of(s.mesh), cp = connectivity_of(p.mesh);
+      EXPECT_TRUE(same_bytes(cs.target, cp.target));
+      EXPECT_TRUE(same_bytes(cs.next, cp.next));
+      EXPECT_TRUE(same_bytes(cs.prev, cp.prev));
+      EXPECT_TRUE(same_bytes(cs.face, cp.face));
+      EXPECT_TRUE(same_bytes(cs.mobius, cp.mobius));
+      EXPECT_TRUE(same_bytes(cs.vertex_dart, cp.vertex_dart));
+      EXPECT_TRUE(same_bytes(cs.face_dart, cp.face_dart));
+      EXPECT_TRUE(same_bytes(s.points, p.points));
+      for (const char* name : {CGAL_ext::edge_sharpness_name, CGAL_ext::vertex_sharpness_name}) {
+        const bool on_edges = name == std::string(CGAL_ext::edge_sharpness_name);
+        std::vector<float> ss, sp;
+        if (on_edges) {
+          ss = s.mesh.property_map<CGAL_ext::Edge_index, float>(name)->data();
+          sp = p.mesh.property_map<CGAL_ext::Edge_index, float>(name)->data();
+        } else {
+          ss = s.mesh.property_map<CGAL_ext::Vertex_index, float>(name)->data();
+          sp = p.mesh.property_map<CGAL_ext::Vertex_index, float>(name)->data();
+        }
+        EXPECT_TRUE(same_bytes(ss, sp)) << name;
       }
-      EXPECT_TRUE(same_bytes(ss, sp)) << name;
-    }
-    auto hs = s.mesh.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
-    auto hp = p.mesh.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
-    ASSERT_EQ(hs.has_value(), hp.has_value());
-    if (hs) {
-      EXPECT_TRUE(same_bytes(hs->data(), hp->data()));
+      auto hs = s.mesh.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+      auto hp = p.mesh.property_map<CGAL_ext::Face_index, std::uint8_t>("f:hole");
+      ASSERT_EQ(hs.has_value(), hp.has_value());
+      if (hs) {
+        EXPECT_TRUE(same_bytes(hs->data(), hp->data()));
+      }
     }
   }
 }
