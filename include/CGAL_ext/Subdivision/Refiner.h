@@ -770,7 +770,8 @@ private:
   std::vector<Level> levels_;
   std::vector<internal::Stencils<W>> stencils_;
   // The vertex-to-edge and vertex-to-corner tables of each level that is to
-  // be interpolated in parallel (empty for the others): derived by the split
+  // be interpolated in parallel, and, if serial_tables_, of the serial levels
+  // before the first such one (empty for the others): derived by the split
   // that made the level, or made before its weights (prepare_interpolation()).
   std::vector<internal::Incidence> incidence_;
   // Whether the serial steps of this refinement make incidence tables for a
