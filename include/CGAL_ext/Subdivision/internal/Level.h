@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -238,6 +239,16 @@ void link(Child& c, u32 a, u32 b)
     c.h_prev[de::halfedge_of_dart(b)] = a;
 }
 
+// Writes `first` and `second` to the entries h and h + 1 of `array` (h even:
+// the two halfedges of an edge) in one 8-byte store. The splits are bound by
+// the number of stores: the compiler does not merge two of values it computes.
+template <class Array_or_pointer>
+inline void store_halfedge_pair(Array_or_pointer& array, u32 h, u32 first, u32 second)
+{
+  const u32 pair[2] = {first, second};
+  std::memcpy(data_of(array) + h, pair, sizeof(pair));
+}
+
 // Stands for the last level of a refinement in the splits, which then write
 // its connectivity straight into the arrays of `mesh`: that level is not
 // made twice. It has no corner table.
@@ -336,15 +347,11 @@ void fill_level(const Mobius_mesh<P>& m, Level& L)
 template <class ConcurrencyTag, class Child>
 void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
 {
-  // Parent halfedge h, h0 its first child.
-  auto split_halfedge = [&](u32 h, u32 h0) {
+  // The border loop of parent halfedge h (with no face), h0 its first
+  // child: h0 -> h1 -> (child of the next border halfedge), and (child of
+  // the previous one) -> h0, as link() would set them here.
+  auto split_border_halfedge = [&](u32 h, u32 h0) {
     const u32 h1 = Level::other_child(h0);
-    c.h_target[h0] = edge_point_offset + dart_encoding::edge_of_halfedge(h);
-    c.h_target[h1] = p.h_target[h];
-    if (p.h_face[h] != null_u32)
-      return;
-    // The border loop h0 -> h1 -> (child of the next border halfedge), and
-    // (child of the previous one) -> h0, as link() would set them here.
     c.h_face[h0] = c.h_face[h1] = null_u32;
     c.h_next[h0] = face_dart(h1);
     c.h_prev[h1] = face_dart(h0);
@@ -352,14 +359,24 @@ void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
     c.h_prev[h0] = p.child_dart_to_target(p.h_prev[h]);
   };
   // An edge and its two halfedges in one loop: one fork and join fewer.
-  for_each_index<ConcurrencyTag>(p.ne, [&](u32 e) {
+  for_each_index<ConcurrencyTag>(p.ne, [&, edge_point_offset](u32 e) {
     const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
     const u32 first0 = p.first_child(h0), first1 = p.first_child(h1);
-    split_halfedge(h0, first0);
-    split_halfedge(h1, first1);
+    // The targets of the edge's four children, 4e to 4e + 3, in one store
+    // (the splits are bound by their stores): the first child of each
+    // halfedge ends at the edge point, the second where the halfedge ends.
+    // first0 is 4e; first1 is 4e + 1 on a Möbius edge, 4e + 3 otherwise.
+    const u32 edge_point = edge_point_offset + e, end0 = p.h_target[h0], end1 = p.h_target[h1];
+    const bool first1_is_1 = (first1 & 2u) == 0;
+    const u32 targets[4] = {edge_point, first1_is_1 ? edge_point : end1, end0, first1_is_1 ? end1 : edge_point};
+    std::memcpy(data_of(c.h_target) + 4 * std::size_t(e), targets, sizeof(targets));
+    const bool border0 = p.h_face[h0] == null_u32, border1 = p.h_face[h1] == null_u32;
+    if (border0)
+      split_border_halfedge(h0, first0);
+    if (border1)
+      split_border_halfedge(h1, first1);
     // The edge point's dart: on the border halfedge, if the edge has one.
-    const bool on_h1 = p.h_face[h0] != null_u32 && p.h_face[h1] == null_u32;
-    c.v_dart[edge_point_offset + e] = face_dart(on_h1 ? first1 : first0);
+    c.v_dart[edge_point] = face_dart(!border0 && border1 ? first1 : first0);
   });
   for_each_index<ConcurrencyTag>(
     p.nv, [&](u32 v) { c.v_dart[v] = p.v_dart[v] == null_u32 ? null_u32 : p.child_dart_to_target(p.v_dart[v]); });
@@ -370,8 +387,10 @@ void split_edges_and_border(const Level& p, Child& c, u32 edge_point_offset)
   for_each_block<ConcurrencyTag>(p.ne, [&](u32 begin, u32 end) {
     const std::uint8_t* const parent = p.e_mobius.data();
     std::uint8_t* const child = data_of(c.e_mobius);
-    for (u32 e = begin; e != end; ++e)
-      child[2 * e] = child[2 * e + 1] = parent[e];
+    for (u32 e = begin; e != end; ++e) { // both halves in one store
+      const std::uint16_t halves = std::uint16_t(parent[e] * 0x101u);
+      std::memcpy(child + 2 * std::size_t(e), &halves, sizeof(halves));
+    }
   });
   for_each_block<ConcurrencyTag>(p.nc, [&](u32 begin, u32 end) {
     std::uint8_t* const inner = data_of(c.e_mobius) + 2 * std::size_t(p.ne);
@@ -441,28 +460,35 @@ void quad_split(const Level& p, Child& c, bool corner_table)
       namespace de = dart_encoding;
       c.v_dart[fp + f] = face_dart(de::halfedge_of_edge(2 * ne + k0, 0));
       for (u32 k = k0; k < k1; ++k) {
-        const u32 kn = (k + 1 == k1) ? k0 : k + 1;
+        const u32 kn = (k + 1 == k1) ? k0 : k + 1, kp = (k == k0) ? k1 - 1 : k - 1;
         // Corners run in cycle order: the next halfedge is the next corner's,
         // read in order rather than through h_next at a scattered index.
         const u32 h = p.corner_h[k], hn = p.corner_h[kn];
         const u32 ie = 2 * ne + k;
-        // Inner edge ie: halfedge 0 to the face point, 1 to the edge point of h.
-        c.h_target[de::halfedge_of_edge(ie, 0)] = fp + f;
-        c.h_target[de::halfedge_of_edge(ie, 1)] = nv + de::edge_of_halfedge(h);
-        // Quad at the corner where h ends: vertex point, edge point of hn,
-        // face point, edge point of h.
+        // Quad k, at the corner where h ends: vertex point, edge point of
+        // hn, face point, edge point of h.
         const u32 q[4] = {p.first_child(hn), de::halfedge_of_edge(2 * ne + kn, 0), de::halfedge_of_edge(ie, 1),
                           p.second_child(h)};
-        for (int i = 0; i < 4; ++i) {
+        // Inner edge ie, written whole (its halfedges together): halfedge 0
+        // runs to the face point in quad kp, from the first child of h to
+        // the inner edge of corner kp; halfedge 1 to the edge point of h in
+        // quad k (q[2]).
+        const u32 h_first = Level::other_child(q[3]), inner = de::halfedge_of_edge(ie, 0);
+        store_halfedge_pair(c.h_target, inner, fp + f, nv + de::edge_of_halfedge(h));
+        store_halfedge_pair(c.h_next, inner, face_dart(de::halfedge_of_edge(2 * ne + kp, 1)), face_dart(q[3]));
+        store_halfedge_pair(c.h_prev, inner, face_dart(h_first), face_dart(q[1]));
+        store_halfedge_pair(c.h_face, inner, kp, k);
+        for (int i = 0; i < 4; i += 3) { // the halves of the parent's edges
           c.h_next[q[i]] = face_dart(q[(i + 1) % 4]);
           c.h_prev[q[i]] = face_dart(q[(i + 3) % 4]);
           c.h_face[q[i]] = k;
-          if constexpr (decltype(with_corners)::value)
-            c.corner_h[4 * k + u32(i)] = q[i];
         }
         c.f_first[k] = q[0];
-        if constexpr (decltype(with_corners)::value)
+        if constexpr (decltype(with_corners)::value) {
+          for (u32 i = 0; i < 4; ++i)
+            c.corner_h[4 * k + i] = q[i];
           c.f_offset[k] = 4 * k;
+        }
       }
     });
   });
@@ -493,29 +519,29 @@ void triangle_split(const Level& p, Child& c, bool corner_table)
         const u32 k = k0 + i, kn = k0 + i_next;
         const u32 h = p.corner_h[k], hn = p.corner_h[kn];
         const u32 ie = 2 * ne + k;
-        // Inner edge ie, across corner k: halfedge 0 to the edge point of h
-        // (in the corner triangle), 1 to that of hn (in the centre one).
-        c.h_target[de::halfedge_of_edge(ie, 0)] = nv + de::edge_of_halfedge(h);
-        c.h_target[de::halfedge_of_edge(ie, 1)] = nv + de::edge_of_halfedge(hn);
+        // Inner edge ie, across corner k: halfedge 0 (in the corner triangle)
+        // to the edge point of h, 1 (in the centre one, whose halfedges run
+        // from edge point to edge point) to that of hn. Its two halfedges
+        // are written together.
         const u32 q[3] = {p.first_child(hn), de::halfedge_of_edge(ie, 0), p.second_child(h)};
-        for (u32 j = 0; j < 3; ++j) {
+        const u32 in = de::halfedge_of_edge(ie, 1), in_next = de::halfedge_of_edge(2 * ne + kn, 1),
+                  in_prev = de::halfedge_of_edge(2 * ne + k0 + (i + 2) % 3, 1);
+        store_halfedge_pair(c.h_target, q[1], nv + de::edge_of_halfedge(h), nv + de::edge_of_halfedge(hn));
+        store_halfedge_pair(c.h_next, q[1], face_dart(q[2]), face_dart(in_next));
+        store_halfedge_pair(c.h_prev, q[1], face_dart(q[0]), face_dart(in_prev));
+        store_halfedge_pair(c.h_face, q[1], k, centre);
+        for (u32 j = 0; j < 3; j += 2) { // the halves of the parent's edges
           c.h_next[q[j]] = face_dart(q[(j + 1) % 3]);
           c.h_prev[q[j]] = face_dart(q[(j + 2) % 3]);
           c.h_face[q[j]] = k;
-          if constexpr (corners)
-            c.corner_h[3 * k + j] = q[j];
         }
         c.f_first[k] = q[0];
-        if constexpr (corners)
+        if constexpr (corners) {
+          for (u32 j = 0; j < 3; ++j)
+            c.corner_h[3 * k + j] = q[j];
           c.f_offset[k] = 3 * k;
-        // Centre triangle: inner halfedges from edge point of h to that of hn.
-        const u32 in = de::halfedge_of_edge(ie, 1), in_next = de::halfedge_of_edge(2 * ne + kn, 1),
-                  in_prev = de::halfedge_of_edge(2 * ne + k0 + (i + 2) % 3, 1);
-        c.h_next[in] = face_dart(in_next);
-        c.h_prev[in] = face_dart(in_prev);
-        c.h_face[in] = centre;
-        if constexpr (corners)
           c.corner_h[3 * centre + i] = in;
+        }
       });
       c.f_first[centre] = de::halfedge_of_edge(2 * ne + k0, 1);
       if constexpr (corners)
