@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <memory>
@@ -1824,6 +1825,104 @@ TEST(SubdivisionParallel, ThresholdFollowsThreadsAndSize)
   EXPECT_TRUE(S::runs_in_parallel(0, 0));
   EXPECT_FALSE(S::runs_in_parallel(99, 100));
   EXPECT_TRUE(S::runs_in_parallel(100, 100));
+}
+
+// The tuner's rule on given timings: the smallest class without a verdict
+// runs with threads three times, then serially three times, and the faster
+// (per parent vertex, best of) is its verdict; a win of the threads carries
+// to larger classes, a loss to smaller ones; each number of threads learns
+// on its own.
+TEST(SubdivisionParallel, TunerTriesTheSmallestOpenClassBothWays)
+{
+  using Plan = S::internal::Parallel_plan;
+  using Modes = std::array<bool, 3>;
+  S::internal::Parallel_step_tuner tuner;
+  ASSERT_EQ(S::internal::Parallel_step_tuner::samples_per_verdict, 3u);
+  const auto prior = [](std::uint32_t n) { return n >= 16384; };
+  // Parents of 4 096 (class 12, below the prior), 20 000 (class 14), 80 000
+  // (class 16) and 320 000 (class 18) vertices.
+  const std::vector<std::uint32_t> parents = {4096, 20000, 80000, 320000};
+  auto modes = [&](unsigned threads) {
+    const Plan p = tuner.plan(threads, parents, prior);
+    return Modes{p.parallel_class(14), p.parallel_class(16), p.parallel_class(18)};
+  };
+  auto record = [&](std::uint32_t parent, bool parallel, std::initializer_list<double> seconds) {
+    for (double t : seconds)
+      tuner.record(2, parent, parallel, t);
+  };
+  EXPECT_EQ(modes(2), (Modes{true, true, true}));
+  // Class 14: threads at 2, 1.8 and 1.9 ms a step, serially 1, 1.2 and 1.1 ms.
+  record(20000, true, {2e-3, 1.8e-3});
+  EXPECT_EQ(modes(2), (Modes{true, true, true}));
+  record(20000, true, {1.9e-3});
+  EXPECT_EQ(modes(2), (Modes{false, true, true})); // now the serial tries
+  record(20000, false, {1e-3, 1.2e-3});
+  EXPECT_EQ(tuner.verdict(2, 14), -1);
+  EXPECT_EQ(modes(2), (Modes{false, true, true}));
+  record(20000, false, {1.1e-3});
+  EXPECT_EQ(tuner.verdict(2, 14), Plan::serial);
+  // Class 16 is next; class 14 stays serial, as do the classes below it.
+  EXPECT_EQ(modes(2), (Modes{false, true, true}));
+  EXPECT_FALSE(tuner.plan(2, parents, prior).parallel_class(13));
+  record(80000, true, {2e-3, 2.5e-3, 2.2e-3});
+  EXPECT_EQ(modes(2), (Modes{false, false, true}));
+  record(80000, false, {4e-3, 3.5e-3, 3.9e-3});
+  EXPECT_EQ(tuner.verdict(2, 16), Plan::parallel);
+  // Class 18 follows the win at 16 without a try; class 15, between a loss
+  // and a win, has no verdict yet.
+  EXPECT_EQ(modes(2), (Modes{false, true, true}));
+  EXPECT_EQ(tuner.verdict(2, 18), -1);
+  EXPECT_EQ(tuner.verdict(2, 15), -1);
+  // The time per vertex decides, not the time: serial steps from 65 536
+  // vertices (class 16 too) at 2.6 ms are faster per vertex than steps with
+  // threads from 80 000 at 3.5 ms.
+  S::internal::Parallel_step_tuner per_vertex;
+  for (int i = 0; i < 3; ++i) {
+    per_vertex.record(2, 80000, true, 3.5e-3);
+    per_vertex.record(2, 65536, false, 2.6e-3);
+  }
+  EXPECT_EQ(per_vertex.verdict(2, 16), Plan::serial);
+  // Four threads have learnt nothing.
+  EXPECT_EQ(modes(4), (Modes{true, true, true}));
+  EXPECT_EQ(tuner.verdict(4, 14), -1);
+}
+
+// A mask type of its own, so that its refiners' tuner starts empty here
+// whatever other tests ran before in this process.
+struct Tuned_catmull_clark_mask : S::Catmull_clark_mask
+{};
+
+// Refinements under CGAL::Parallel_tag with the automatic choice time their
+// steps: after three runs each way a class has its verdict, and every run,
+// whichever way each step went, gives the serial result bit for bit. An
+// explicit threshold times nothing.
+TEST(SubdivisionParallel, RepeatedRefinementsLearnAndStayBitIdentical)
+{
+  using R = S::Refiner<Tuned_catmull_clark_mask>;
+  Mesh torus;
+  CGAL_ext::make_torus(torus, 128, 128); // 16 384 vertices: the prior's least on two threads
+  const Built b = generated(torus, true);
+  tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 2);
+  tbb::task_arena arena(2);
+  arena.execute([&] {
+    const unsigned c = S::internal::size_class(16384);
+    S::Refinement_options fixed;
+    fixed.parallel_min_vertices = 16384;
+    refine_with<Tuned_catmull_clark_mask, CGAL::Parallel_tag>(b, fixed, 1, true);
+    EXPECT_EQ(R::tuner().verdict(2, c), -1);
+    const Refined s = refine_with<Tuned_catmull_clark_mask, CGAL::Sequential_tag>(b, S::Refinement_options(), 1, true);
+    for (int run = 0; run < 6; ++run) {
+      EXPECT_EQ(R::tuner().verdict(2, c), -1) << run;
+      const Refined p = refine_with<Tuned_catmull_clark_mask, CGAL::Parallel_tag>(b, S::Refinement_options(), 1, true);
+      EXPECT_TRUE(same_bytes(s.points, p.points)) << run;
+      const Connectivity cs = connectivity_of(s.mesh), cp = connectivity_of(p.mesh);
+      EXPECT_TRUE(same_bytes(cs.target, cp.target) && same_bytes(cs.next, cp.next) && same_bytes(cs.prev, cp.prev) &&
+                  same_bytes(cs.face, cp.face) && same_bytes(cs.mobius, cp.mobius) &&
+                  same_bytes(cs.vertex_dart, cp.vertex_dart) && same_bytes(cs.face_dart, cp.face_dart))
+        << run;
+    }
+    EXPECT_NE(R::tuner().verdict(2, c), -1);
+  });
 }
 #endif
 

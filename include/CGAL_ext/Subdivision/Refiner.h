@@ -14,6 +14,7 @@
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/Subdivision/internal/Interpolation.h>
 #include <CGAL_ext/Subdivision/internal/Level.h>
+#include <CGAL_ext/Subdivision/internal/Parallel_step_tuner.h>
 #include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
 #include <CGAL_ext/Subdivision/internal/Weights.h>
 #include <CGAL_ext/exceptions.h>
@@ -28,6 +29,7 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -50,11 +52,13 @@ struct Refinement_options
   static constexpr std::uint32_t automatic = 0xFFFFFFFFu;
   /// With `CGAL::Parallel_tag`, which levels are refined and interpolated
   /// with threads: `automatic` (the default), those that give every thread
-  /// of the task arena enough work (see `runs_in_parallel()`); any other
-  /// value, those of at least that many vertices (0: every level, however
-  /// small). The other levels are done serially, with the same result: on
-  /// small levels the threads and the tables of the parallel passes cost
-  /// more than they save. `CGAL::Sequential_tag` never uses threads.
+  /// of the task arena enough work (see `runs_in_parallel()`) and, once this
+  /// process has timed steps of their size both ways, those where the threads
+  /// were faster (see `Refiner`); any other value, those of at least that
+  /// many vertices (0: every level, however small), with no timing. The other
+  /// levels are done serially, with the same result: on small levels the
+  /// threads and the tables of the parallel passes cost more than they save.
+  /// `CGAL::Sequential_tag` never uses threads.
   std::uint32_t parallel_min_vertices = automatic;
   /// The most bytes a refinement may take (named parameter `maximum_memory`
   /// of the subdivision functions); by default the machine's physical memory.
@@ -74,31 +78,48 @@ struct Refinement_options
 /// threshold"). On 2 idle cores, in three runs, two threads lose below
 /// 8 192 vertices (0.54–0.69× the serial speed), are as often slower as
 /// faster at 8 281 (0.55–1.11×) and win from 16 384 on in every run
-/// (1.12–1.55×): a level needs 16 384 vertices on two threads. How the
-/// crossover moves with T was not measured; keeping the work per thread
-/// fixed is the conservative guess, since the threads' start-up grows with T
-/// while the serial time does not.
+/// (1.12–1.55×): a level needs 16 384 vertices on two threads. On another
+/// 2-core VM, whose cores read each other's writes 3–4 times slower than
+/// their own, two threads lost up to 131 072 vertices: this is the least a
+/// level needs, and with `automatic` a refinement raises it from its
+/// process's timings (see `Refiner`). Keeping the work per thread fixed is
+/// the conservative floor, since the threads' start-up grows with T while
+/// the serial time does not.
 constexpr std::uint32_t parallel_vertices_per_thread = 8192;
+
+namespace internal {
+
+// The threads a parallel step may use: the current task arena's slots,
+// within the cap of any tbb::global_control alive (1 without TBB).
+inline unsigned available_threads()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return unsigned((std::min)(std::size_t(tbb::this_task_arena::max_concurrency()),
+                             tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
+#else
+  return 1;
+#endif
+}
+
+} // namespace internal
 
 /// \ingroup PkgSubdivision
 ///
-/// Whether a step from a level of `level_vertices` vertices runs in
+/// Whether a step from a level of `level_vertices` vertices may run in
 /// parallel under `CGAL::Parallel_tag`, given the option
 /// `Refinement_options::parallel_min_vertices`: with `automatic`, if the
 /// current task arena has more than one thread
 /// (`tbb::this_task_arena::max_concurrency()`, and at most the
 /// `max_allowed_parallelism` of a `tbb::global_control`) and each gets at least
-/// `parallel_vertices_per_thread` vertices; otherwise if `level_vertices`
+/// `parallel_vertices_per_thread` vertices (a refinement then also asks what
+/// its process measured: see `Refiner`); otherwise if `level_vertices`
 /// is at least the option. Always false without TBB.
 inline bool runs_in_parallel(std::uint32_t level_vertices, std::uint32_t parallel_min_vertices)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if (parallel_min_vertices != Refinement_options::automatic)
     return level_vertices >= parallel_min_vertices;
-  // The arena's slots, within the cap of any tbb::global_control alive.
-  const std::size_t threads =
-    (std::min)(std::size_t(tbb::this_task_arena::max_concurrency()),
-               tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  const unsigned threads = internal::available_threads();
   return threads > 1 && level_vertices / threads >= parallel_vertices_per_thread;
 #else
   CGAL_USE(level_vertices);
@@ -196,6 +217,18 @@ void normalize_values(V* values, u32 n)
 /// normals, colours) from the base mesh to the last level, as often as needed.
 /// Buffers are kept and reused when the same refiner refines again.
 ///
+/// Under `CGAL::Parallel_tag` with `Refinement_options::automatic`, which
+/// steps use threads is learnt per process, per refiner type and per number
+/// of threads: `refine_and_interpolate()` and
+/// `refine_and_interpolate_points()` (which the subdivision functions call)
+/// time their steps that `runs_in_parallel()` allows, by size class (a power
+/// of two of the parent's vertices). The smallest class without a verdict
+/// runs with threads over the next three refinements that reach it, then
+/// without; the faster way (best of three) becomes its verdict, and the gain
+/// from threads growing with size, a class also follows a win of the threads
+/// in a smaller class or a loss in a larger one. Only the time changes: both
+/// ways give the same bits.
+///
 /// \tparam Mask a model of `SubdivisionMask`
 /// \tparam W the weight type: `double`, or the field type of an exact kernel
 template <class Mask, class W = double>
@@ -218,6 +251,14 @@ public:
   const Mask& mask() const { return mask_; }
   /// The options.
   const Refinement_options& options() const { return options_; }
+
+  /// What this process has timed and concluded of the steps of refiners of
+  /// this type, shared by all of them (see the class description).
+  static internal::Parallel_step_tuner& tuner()
+  {
+    static internal::Parallel_step_tuner shared;
+    return shared;
+  }
 
   /// Refines `mesh` `levels` times. `edge_sharpness` and `vertex_sharpness`
   /// hold one value per edge / vertex (an empty vector means all 0).
@@ -246,6 +287,7 @@ public:
     weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
     incidence_.assign(uses_stencils ? 0 : levels, internal::Incidence());
+    make_plan<ConcurrencyTag>(mesh, levels);
     serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k)
@@ -430,8 +472,54 @@ private:
   }
 
   // Whether the step from a level of `nv` vertices runs in parallel (if
-  // the tag asks for it).
-  bool parallel_level(u32 nv) const { return runs_in_parallel(nv, options_.parallel_min_vertices); }
+  // the tag asks for it): as the plan of the refinement says, within what
+  // runs_in_parallel() allows.
+  bool parallel_level(u32 nv) const
+  {
+    if (!runs_in_parallel(nv, options_.parallel_min_vertices))
+      return false;
+    return options_.parallel_min_vertices != Refinement_options::automatic ||
+           plan_.parallel_class(internal::size_class(nv));
+  }
+
+  // The plan of a refinement of `mesh` by `levels` steps: which size
+  // classes use threads (a refinement under CGAL::Parallel_tag with the
+  // automatic choice, on more than one thread), and whether its steps are
+  // timed for the tuner (those runs_in_parallel() allows).
+  template <class ConcurrencyTag, class P>
+  void make_plan(const Mobius_mesh<P>& mesh, unsigned levels)
+  {
+    plan_ = internal::Parallel_plan();
+    tuning_ = false;
+    if constexpr (internal::is_parallel_tag<ConcurrencyTag>) {
+      plan_threads_ = internal::available_threads();
+      if (options_.parallel_min_vertices != Refinement_options::automatic || plan_threads_ < 2)
+        return;
+      std::vector<u32> parents;
+      const Mesh_size base = internal::size_of(mesh);
+      for (unsigned k = 0; k < levels; ++k) {
+        const unsigned long long nv = refined_size(Mask::split, base, k).vertices;
+        if (nv > CGAL_ext::internal::max_vertices)
+          break;
+        parents.push_back(u32(nv));
+        tuning_ = tuning_ || runs_in_parallel(u32(nv), Refinement_options::automatic);
+      }
+      plan_ = tuner().plan(plan_threads_, parents,
+                           [](u32 n) { return runs_in_parallel(n, Refinement_options::automatic); });
+    } else {
+      CGAL_USE(mesh);
+      CGAL_USE(levels);
+    }
+  }
+
+  // Gives the tuner the time of a step from a level of `parent` vertices
+  // that runs_in_parallel() allows to use threads.
+  template <class Duration>
+  void record_step(u32 parent, bool parallel, Duration time) const
+  {
+    if (runs_in_parallel(parent, Refinement_options::automatic))
+      tuner().record(plan_threads_, parent, parallel, std::chrono::duration<double>(time).count());
+  }
 
   // Whether a refinement of `mesh` by `levels` steps under `ConcurrencyTag`
   // has a step that runs in parallel after one that does not: the levels
@@ -466,13 +554,19 @@ private:
     check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     incidence_.clear();
+    make_plan<ConcurrencyTag>(mesh, levels);
     serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k) {
       bool done = false;
-      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[0].nv), [&](auto tag) {
+      const u32 parent = levels_[0].nv;
+      const bool parallel = parallel_level(parent);
+      const auto start = std::chrono::steady_clock::now();
+      internal::with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
         done = one_pass_step<decltype(tag), Convert>(k, k + 1 == levels, values, out, write_sharpness);
       });
+      if (tuning_)
+        record_step(parent, parallel, std::chrono::steady_clock::now() - start);
       if (done)
         return;
     }
@@ -777,6 +871,11 @@ private:
   // Whether the serial steps of this refinement make incidence tables for a
   // later step that runs in parallel (see later_step_in_parallel()).
   bool serial_tables_ = false;
+  // Which size classes the current refinement runs with threads, on how
+  // many, and whether it times its steps (make_plan()).
+  internal::Parallel_plan plan_;
+  unsigned plan_threads_ = 1;
+  bool tuning_ = false;
   std::vector<internal::Step_weights<W>> weights_;
   internal::Weight_builder<Mask, W> weight_builder_;
   // The sharpness of the next level, made by compute_weights() before the split.
