@@ -222,7 +222,9 @@ void normalize_values(V* values, u32 n)
 /// of threads: `refine_and_interpolate()` and
 /// `refine_and_interpolate_points()` (which the subdivision functions call)
 /// time their steps that `runs_in_parallel()` allows, by size class (a power
-/// of two of the parent's vertices). The smallest class without a verdict
+/// of two of the parent's vertices), each from the start of the refinement,
+/// since a step with threads makes the serial steps before it build its
+/// incidence tables. The smallest class without a verdict
 /// runs with threads over the next three refinements that reach it, then
 /// without; the faster way (best of three) becomes its verdict, and the gain
 /// from threads growing with size, a class also follows a win of the threads
@@ -512,8 +514,11 @@ private:
     }
   }
 
-  // Gives the tuner the time of a step from a level of `parent` vertices
-  // that runs_in_parallel() allows to use threads.
+  // Gives the tuner the time of the refinement up to the end of a step from
+  // a level of `parent` vertices that runs_in_parallel() allows to use
+  // threads (the steps before are mostly fixed in their mode and four times
+  // smaller each, so the time follows that of the step and what it makes
+  // the earlier ones do).
   template <class Duration>
   void record_step(u32 parent, bool parallel, Duration time) const
   {
@@ -555,13 +560,15 @@ private:
     levels_.resize(levels == 0 ? 1 : 2);
     incidence_.clear();
     make_plan<ConcurrencyTag>(mesh, levels);
+    // A step is timed from the start: a later step with threads makes the
+    // serial steps before it build its incidence tables, which it costs.
+    const auto start = std::chrono::steady_clock::now();
     serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k) {
       bool done = false;
       const u32 parent = levels_[0].nv;
       const bool parallel = parallel_level(parent);
-      const auto start = std::chrono::steady_clock::now();
       internal::with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
         done = one_pass_step<decltype(tag), Convert>(k, k + 1 == levels, values, out, write_sharpness);
       });
