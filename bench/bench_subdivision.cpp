@@ -844,8 +844,9 @@ void register_one(const Case& c, unsigned level, Heap_mode mode, const Implement
 // Catmull–Clark step of an n x n torus (n² vertices), serially, in parallel
 // however small the level (`parallel_min_vertices` = 0) and with the
 // automatic choice, under a cap of N threads. Where `parallel_always` beats
-// `serial` at N = 2 is the threshold; `parallel_auto` should follow the
-// faster of the two.
+// `serial` at N = 2 is the crossover; `parallel_auto` should follow the
+// faster of the two once it has timed both (its first six iterations, where
+// the level may use threads at all).
 void register_threshold()
 {
   for (std::size_t n : {32, 45, 64, 91, 128, 181, 256, 362, 512}) {
@@ -891,6 +892,41 @@ void register_threshold()
   }
 }
 
+// How the machine hands data from core to core, beside the threshold: two
+// loops over arrays of 256 KiB to 64 MiB, the second reading what its own
+// writer (`own`) or another one (`other`) wrote in the first, on N threads;
+// `serial` is both loops on one thread. Where `other` is much slower than
+// `own`, a parallel pass whose loops hand data across cores gains little
+// until its levels outgrow the caches (doc/benchmarks.md).
+void register_cross_core()
+{
+  for (std::size_t kib : {256, 1024, 4096, 16384, 65536}) {
+    const std::string base = "subdivision/cross_core_reads/" + std::to_string(kib) + "KiB/";
+    auto bench = [kib](benchmark::State& st, unsigned threads, bool other) {
+      std::optional<Thread_limit> limit;
+      if (threads > 1)
+        limit.emplace(int(threads));
+      std::vector<double> data(kib * 1024 / sizeof(double) / 2, 1.0), sums(data.size(), 0.0);
+      for (auto _ : st)
+        benchmark::DoNotOptimize(write_then_read(data, sums, threads, other));
+      st.counters["bytes"] = double(kib * 1024);
+    };
+    benchmark::RegisterBenchmark((base + "serial").c_str(), [=](benchmark::State& st) { bench(st, 1, false); })
+      ->Unit(benchmark::kMicrosecond);
+    if (!parallel_available())
+      continue;
+    for (bool other : {false, true}) {
+      auto* b = benchmark::RegisterBenchmark((base + (other ? "other" : "own")).c_str(),
+                                             [=](benchmark::State& st) { bench(st, unsigned(st.range(0)), other); });
+      b->ArgName("threads");
+      for (unsigned t : thread_counts())
+        if (t > 1)
+          b->Arg(t);
+      b->Unit(benchmark::kMicrosecond);
+    }
+  }
+}
+
 void register_all()
 {
   // All cold benchmarks first: a warm run leaves its pages in the heap's free
@@ -910,7 +946,9 @@ void register_all()
         for (const Implementation& impl : implementations(in))
           register_one(c, level, mode, impl);
       }
-    }  register_threshold();
+    }
+  register_threshold();
+  register_cross_core();
 }
 
 } // namespace

@@ -91,6 +91,16 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
+/// What it costs the machine when one core reads what another wrote, the
+/// hand-over between the loops of a parallel pass: a loop rewrites `data`,
+/// then another adds to each element of `sums` the element of `data` at the
+/// same index (`other` false) or half the array further on (`other` true),
+/// each loop on `parts` threads by TBB's static partition, which gives each
+/// thread the same slice in both loops: with `other`, with two threads or
+/// more, each reads what another thread wrote. One thread for `parts` 1, or
+/// without the parallel path. Returns `data.size()`.
+std::size_t write_then_read(std::vector<double>& data, std::vector<double>& sums, unsigned parts, bool other);
+
 /// A block of bytes to write.
 struct Block
 {

@@ -14,6 +14,7 @@
 
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
 #include <CGAL/tags.h>
+#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
@@ -160,6 +161,33 @@ void write_blocks(const std::vector<Block>& blocks, unsigned parts)
 #endif
   for (std::size_t i = 0; i < parts; ++i)
     write_slice(i);
+}
+
+std::size_t write_then_read(std::vector<double>& data, std::vector<double>& sums, unsigned parts, bool other)
+{
+  const std::size_t n = data.size(), shift = other ? n / 2 : 0;
+  double* d = data.data();
+  double* s = sums.data();
+  auto write = [d](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      d[k] = d[k] * 0.5 + 1.0;
+  };
+  auto read = [d, s, n, shift](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+      s[k] += d[k < n - shift ? k + shift : k + shift - n];
+  };
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
+  if (parts > 1) {
+    // The static partition gives each thread the same slice in both loops.
+    using Range = tbb::blocked_range<std::size_t>;
+    tbb::parallel_for(Range(0, n), [&](const Range& r) { write(r.begin(), r.end()); }, tbb::static_partitioner());
+    tbb::parallel_for(Range(0, n), [&](const Range& r) { read(r.begin(), r.end()); }, tbb::static_partitioner());
+    return n;
+  }
+#endif
+  write(0, n);
+  read(0, n);
+  return n;
 }
 
 std::vector<std::size_t> mesh_array_bytes(std::size_t vertices, std::size_t edges, std::size_t faces)
