@@ -1851,6 +1851,8 @@ TEST(SubdivisionParallel, TunerTriesTheSmallestOpenClassBothWays)
       tuner.record(2, parent, parallel, t);
   };
   EXPECT_EQ(modes(2), (Modes{true, true, true}));
+  EXPECT_EQ(tuner.plan(2, parents, prior).tried, 14);
+  EXPECT_EQ(tuner.plan(2, parents, prior, false).tried, -1); // refine(): follows verdicts, tries nothing
   // Class 14: threads at 2, 1.8 and 1.9 ms a step, serially 1, 1.2 and 1.1 ms.
   record(20000, true, {2e-3, 1.8e-3});
   EXPECT_EQ(modes(2), (Modes{true, true, true}));
@@ -1863,6 +1865,7 @@ TEST(SubdivisionParallel, TunerTriesTheSmallestOpenClassBothWays)
   EXPECT_EQ(tuner.verdict(2, 14), Plan::serial);
   // Class 16 is next; class 14 stays serial, as do the classes below it.
   EXPECT_EQ(modes(2), (Modes{false, true, true}));
+  EXPECT_EQ(tuner.plan(2, parents, prior).tried, 16);
   EXPECT_FALSE(tuner.plan(2, parents, prior).parallel_class(13));
   record(80000, true, {2e-3, 2.5e-3, 2.2e-3});
   EXPECT_EQ(modes(2), (Modes{false, false, true}));
@@ -1871,8 +1874,13 @@ TEST(SubdivisionParallel, TunerTriesTheSmallestOpenClassBothWays)
   // Class 18 follows the win at 16 without a try; class 15, between a loss
   // and a win, has no verdict yet.
   EXPECT_EQ(modes(2), (Modes{false, true, true}));
+  EXPECT_EQ(tuner.plan(2, parents, prior).tried, -1);
   EXPECT_EQ(tuner.verdict(2, 18), -1);
   EXPECT_EQ(tuner.verdict(2, 15), -1);
+  // Class 15, between a loss below and a win above, is implied nothing: it
+  // uses threads, as a class with no verdict does, and is tried.
+  EXPECT_TRUE(tuner.plan(2, {32768}, prior).parallel_class(15));
+  EXPECT_EQ(tuner.plan(2, {32768}, prior).tried, 15);
   // The time per vertex decides, not the time: serial steps from 65 536
   // vertices (class 16 too) at 2.6 ms are faster per vertex than steps with
   // threads from 80 000 at 3.5 ms.
@@ -1899,6 +1907,7 @@ struct Tuned_catmull_clark_mask : S::Catmull_clark_mask
 TEST(SubdivisionParallel, RepeatedRefinementsLearnAndStayBitIdentical)
 {
   using R = S::Refiner<Tuned_catmull_clark_mask>;
+  R::tuner().clear(); // as new, also when the test repeats
   Mesh torus;
   CGAL_ext::make_torus(torus, 128, 128); // 16 384 vertices: the prior's least on two threads
   const Built b = generated(torus, true);
@@ -1922,6 +1931,53 @@ TEST(SubdivisionParallel, RepeatedRefinementsLearnAndStayBitIdentical)
         << run;
     }
     EXPECT_NE(R::tuner().verdict(2, c), -1);
+  });
+}
+
+// Threads in one step and none in the next, which no minimum size gives but
+// verdicts may (a win at 16 384 vertices, a loss at 65 536): the serial step
+// after a parallel one, in one pass and level by level, gives the serial
+// result bit for bit.
+struct Mixed_catmull_clark_mask : S::Catmull_clark_mask
+{};
+
+TEST(SubdivisionParallel, ThreadsThenNoneStayBitIdentical)
+{
+  using R = S::Refiner<Mixed_catmull_clark_mask>;
+  using Plan = S::internal::Parallel_plan;
+  R::tuner().clear();
+  for (int i = 0; i < 3; ++i) {
+    R::tuner().record(2, 16384, true, 1e-3);
+    R::tuner().record(2, 16384, false, 2e-3);
+    R::tuner().record(2, 65536, true, 2e-3);
+    R::tuner().record(2, 65536, false, 1e-3);
+  }
+  ASSERT_EQ(R::tuner().verdict(2, 14), Plan::parallel);
+  ASSERT_EQ(R::tuner().verdict(2, 16), Plan::serial);
+  Mesh torus;
+  CGAL_ext::make_torus(torus, 128, 128);
+  const Built b = generated(torus, true);
+  tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 2);
+  tbb::task_arena arena(2);
+  arena.execute([&] {
+    const Plan plan =
+      R::tuner().plan(2, {16384, 65536}, [](std::uint32_t n) { return S::runs_in_parallel(n, S::Refinement_options::automatic); });
+    ASSERT_TRUE(plan.parallel_class(14));
+    ASSERT_FALSE(plan.parallel_class(16));
+    EXPECT_TRUE(plan.parallel_class(15)); // a win below and a loss above as near: the win
+    EXPECT_EQ(plan.tried, -1);
+    for (bool one_pass : {true, false}) {
+      SCOPED_TRACE(one_pass ? "one pass" : "level by level");
+      const Refined s = refine_with<Mixed_catmull_clark_mask, CGAL::Sequential_tag>(b, S::Refinement_options(), 2, one_pass);
+      const Refined p = refine_with<Mixed_catmull_clark_mask, CGAL::Parallel_tag>(b, S::Refinement_options(), 2, one_pass);
+      EXPECT_TRUE(same_bytes(s.points, p.points));
+      const Connectivity cs = connectivity_of(s.mesh), cp = connectivity_of(p.mesh);
+      EXPECT_TRUE(same_bytes(cs.target, cp.target) && same_bytes(cs.next, cp.next) && same_bytes(cs.prev, cp.prev) &&
+                  same_bytes(cs.face, cp.face) && same_bytes(cs.mobius, cp.mobius) &&
+                  same_bytes(cs.vertex_dart, cp.vertex_dart) && same_bytes(cs.face_dart, cp.face_dart));
+      EXPECT_TRUE(same_bytes(s.mesh.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name)->data(),
+                             p.mesh.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name)->data()));
+    }
   });
 }
 #endif

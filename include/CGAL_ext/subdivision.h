@@ -415,9 +415,10 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag`, or `CGAL::Parallel_tag` to
 ///   refine and interpolate with TBB (if `CGAL_EXT_SUBDIVISION_PARALLEL` is
 ///   defined), bit for bit as the serial result, each step whose level is
-///   large enough for the threads available (`Subdivision::runs_in_parallel()`);
-///   the same for all schemes. Exact kernels are refined and interpolated
-///   serially.
+///   large enough for the threads available (`Subdivision::runs_in_parallel()`)
+///   and, for Catmull–Clark, Loop and bilinear, where this process's timings
+///   favour threads (see `Subdivision::Refiner`). Exact kernels are refined
+///   and interpolated serially.
 /// \param mesh the mesh, replaced by the result
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin

@@ -52,9 +52,9 @@ struct Refinement_options
   static constexpr std::uint32_t automatic = 0xFFFFFFFFu;
   /// With `CGAL::Parallel_tag`, which levels are refined and interpolated
   /// with threads: `automatic` (the default), those that give every thread
-  /// of the task arena enough work (see `runs_in_parallel()`) and, once this
-  /// process has timed steps of their size both ways, those where the threads
-  /// were faster (see `Refiner`); any other value, those of at least that
+  /// of the task arena enough work (see `runs_in_parallel()`) unless this
+  /// process has found, from its timings, that threads lose at their size
+  /// (see `Refiner`); any other value, those of at least that
   /// many vertices (0: every level, however small), with no timing. The other
   /// levels are done serially, with the same result: on small levels the
   /// threads and the tables of the parallel passes cost more than they save.
@@ -79,9 +79,9 @@ struct Refinement_options
 /// 8 192 vertices (0.54–0.69× the serial speed), are as often slower as
 /// faster at 8 281 (0.55–1.11×) and win from 16 384 on in every run
 /// (1.12–1.55×): a level needs 16 384 vertices on two threads. On another
-/// 2-core VM, whose cores read each other's writes 3–4 times slower than
-/// their own, two threads lost up to 131 072 vertices: this is the least a
-/// level needs, and with `automatic` a refinement raises it from its
+/// 2-core VM, whose cores read each other's writes 2–2.5 times slower than
+/// their own, two threads lost up to 131 072 vertices: 8 192 per thread
+/// stays the floor, and with `automatic` a refinement raises it from its
 /// process's timings (see `Refiner`). Keeping the work per thread fixed is
 /// the conservative floor, since the threads' start-up grows with T while
 /// the serial time does not.
@@ -218,18 +218,21 @@ void normalize_values(V* values, u32 n)
 /// Buffers are kept and reused when the same refiner refines again.
 ///
 /// Under `CGAL::Parallel_tag` with `Refinement_options::automatic`, which
-/// steps use threads is learnt per process, per refiner type and per number
-/// of threads: `refine_and_interpolate()` and
-/// `refine_and_interpolate_points()` (which the subdivision functions call)
-/// time their steps that `runs_in_parallel()` allows, by size class (a power
-/// of two of the parent's vertices), each from the start of the refinement,
-/// since a step with threads makes the serial steps before it build its
-/// incidence tables. The smallest class without a verdict
-/// runs with threads over the next three refinements that reach it, then
-/// without; the faster way (best of three) becomes its verdict, and the gain
-/// from threads growing with size, a class also follows a win of the threads
-/// in a smaller class or a loss in a larger one. Only the time changes: both
-/// ways give the same bits.
+/// steps of a quad or triangle split (Catmull–Clark, Loop, bilinear) use
+/// threads is learnt per process, per refiner type and per number of threads,
+/// by size class (a power of two of the parent's vertices), among those that
+/// `runs_in_parallel()` allows. In `refine_and_interpolate()` and
+/// `refine_and_interpolate_points()` (which the subdivision functions call
+/// when the mesh carries no other property maps), the smallest class without
+/// a verdict runs with threads in the next three refinements that reach it,
+/// then without in the next three, each timed from the start of the
+/// refinement (a step with threads makes the serial steps before it build
+/// its incidence tables); the faster way, best of three, becomes its
+/// verdict. The gain from threads growing with size, a class also follows a
+/// win of the threads in a smaller class or a loss in a larger one; a class
+/// with no verdict uses threads. `refine()` follows the verdicts and tries
+/// nothing. Doo–Sabin and √3 keep `runs_in_parallel()`. Only the time
+/// changes: both ways give the same bits.
 ///
 /// \tparam Mask a model of `SubdivisionMask`
 /// \tparam W the weight type: `double`, or the field type of an exact kernel
@@ -266,8 +269,9 @@ public:
   /// hold one value per edge / vertex (an empty vector means all 0).
   ///
   /// With `ConcurrencyTag` = `CGAL::Parallel_tag` (TBB needed), every step
-  /// from a level that `runs_in_parallel()` (see
-  /// `Refinement_options::parallel_min_vertices`) runs all its stages in
+  /// from a level that `runs_in_parallel()` allows and, with the automatic
+  /// choice, that the timings of this process favour (see the class
+  /// description and `Refinement_options::parallel_min_vertices`) runs all its stages in
   /// parallel (the splits, the weights, the incidence tables), with the
   /// serial numbering and bits, and gets the incidence tables of the
   /// parallel interpolation: only then does
@@ -289,7 +293,7 @@ public:
     weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
     incidence_.assign(uses_stencils ? 0 : levels, internal::Incidence());
-    make_plan<ConcurrencyTag>(mesh, levels);
+    make_plan<ConcurrencyTag>(mesh, levels, false);
     serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k)
@@ -438,7 +442,8 @@ public:
   /// rule). If the base had holes (boundary interpolation `none`), the face
   /// property "f:hole" marks the faces that descend from them.
   /// With `ConcurrencyTag` = `CGAL::Parallel_tag`, the arrays and maps are
-  /// written in parallel if the level `runs_in_parallel()`.
+  /// written in parallel if the step into the level ran in parallel, or
+  /// would have (`runs_in_parallel()`, and the last refinement's plan).
   template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
@@ -486,44 +491,29 @@ private:
 
   // The plan of a refinement of `mesh` by `levels` steps: which size
   // classes use threads (a refinement under CGAL::Parallel_tag with the
-  // automatic choice, on more than one thread), and whether its steps are
-  // timed for the tuner (those runs_in_parallel() allows).
+  // automatic choice, on more than one thread, by a quad or triangle split,
+  // whose level sizes refined_size() gives exactly), and, if it may try one
+  // (`try_class`: a refinement that times its steps), which class it times
+  // for the tuner.
   template <class ConcurrencyTag, class P>
-  void make_plan(const Mobius_mesh<P>& mesh, unsigned levels)
+  void make_plan(const Mobius_mesh<P>& mesh, unsigned levels, bool try_class)
   {
     plan_ = internal::Parallel_plan();
-    tuning_ = false;
-    if constexpr (internal::is_parallel_tag<ConcurrencyTag>) {
+    if constexpr (internal::is_parallel_tag<ConcurrencyTag> && !uses_stencils) {
       plan_threads_ = internal::available_threads();
       if (options_.parallel_min_vertices != Refinement_options::automatic || plan_threads_ < 2)
         return;
       std::vector<u32> parents;
       const Mesh_size base = internal::size_of(mesh);
-      for (unsigned k = 0; k < levels; ++k) {
-        const unsigned long long nv = refined_size(Mask::split, base, k).vertices;
-        if (nv > CGAL_ext::internal::max_vertices)
-          break;
-        parents.push_back(u32(nv));
-        tuning_ = tuning_ || runs_in_parallel(u32(nv), Refinement_options::automatic);
-      }
-      plan_ = tuner().plan(plan_threads_, parents,
-                           [](u32 n) { return runs_in_parallel(n, Refinement_options::automatic); });
+      for (unsigned k = 0; k < levels; ++k)
+        parents.push_back(u32(refined_size(Mask::split, base, k).vertices)); // check_size() bounded them
+      plan_ = tuner().plan(
+        plan_threads_, parents, [](u32 n) { return runs_in_parallel(n, Refinement_options::automatic); }, try_class);
     } else {
       CGAL_USE(mesh);
       CGAL_USE(levels);
+      CGAL_USE(try_class);
     }
-  }
-
-  // Gives the tuner the time of the refinement up to the end of a step from
-  // a level of `parent` vertices that runs_in_parallel() allows to use
-  // threads (the steps before are mostly fixed in their mode and four times
-  // smaller each, so the time follows that of the step and what it makes
-  // the earlier ones do).
-  template <class Duration>
-  void record_step(u32 parent, bool parallel, Duration time) const
-  {
-    if (runs_in_parallel(parent, Refinement_options::automatic))
-      tuner().record(plan_threads_, parent, parallel, std::chrono::duration<double>(time).count());
   }
 
   // Whether a refinement of `mesh` by `levels` steps under `ConcurrencyTag`
@@ -559,7 +549,7 @@ private:
     check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     incidence_.clear();
-    make_plan<ConcurrencyTag>(mesh, levels);
+    make_plan<ConcurrencyTag>(mesh, levels, true);
     // A step is timed from the start: a later step with threads makes the
     // serial steps before it build its incidence tables, which it costs.
     const auto start = std::chrono::steady_clock::now();
@@ -572,8 +562,9 @@ private:
       internal::with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
         done = one_pass_step<decltype(tag), Convert>(k, k + 1 == levels, values, out, write_sharpness);
       });
-      if (tuning_)
-        record_step(parent, parallel, std::chrono::steady_clock::now() - start);
+      if (int(internal::size_class(parent)) == plan_.tried)
+        tuner().record(plan_threads_, parent, parallel,
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       if (done)
         return;
     }
@@ -879,10 +870,9 @@ private:
   // later step that runs in parallel (see later_step_in_parallel()).
   bool serial_tables_ = false;
   // Which size classes the current refinement runs with threads, on how
-  // many, and whether it times its steps (make_plan()).
+  // many, and which it times (make_plan()).
   internal::Parallel_plan plan_;
   unsigned plan_threads_ = 1;
-  bool tuning_ = false;
   std::vector<internal::Step_weights<W>> weights_;
   internal::Weight_builder<Mask, W> weight_builder_;
   // The sharpness of the next level, made by compute_weights() before the split.

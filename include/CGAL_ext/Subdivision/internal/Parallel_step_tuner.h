@@ -39,6 +39,8 @@ struct Parallel_plan
 {
   enum Decision : std::int8_t { serial = 0, parallel = 1 };
   std::array<Decision, number_of_size_classes> by_class;
+  // The class whose timings the refinement gives the tuner (-1: none).
+  int tried = -1;
 
   Parallel_plan() { by_class.fill(parallel); }
   bool parallel_class(unsigned c) const { return by_class[c] == parallel; }
@@ -51,17 +53,20 @@ struct Parallel_plan
 // `runs_in_parallel()` allows them) gets:
 // - the verdict of the nearest class that implies one, the gain from
 //   threads growing with the level's size: threads won in this class or a
-//   smaller one, or lost in this class or a larger one;
-// - otherwise, for the refinement's smallest such class, threads until it
-//   has `samples_per_verdict` timings of them, then no threads as often, and
-//   the faster then becomes its verdict; the larger classes with no verdict
-//   run in parallel meanwhile. Only one class is tried per refinement, the
-//   smallest, where a serial try costs least. Each way runs several times
-//   in a row, not in turn: a step right after one the other way finds its
-//   data in another core's cache (on a machine where cores read each
-//   other's writes slowly, a serial step after a parallel one took 1.7
-//   times as long as after a serial one), and the best of each way's
-//   timings is that of a run that follows its own kind.
+//   smaller one, or lost in this class or a larger one (a win and a loss at
+//   the same distance: the win, as where nothing is known);
+// - otherwise, if the refinement may try (`try_open_class`) and this is its
+//   smallest such class, the class is tried: threads until it has
+//   `samples_per_verdict` timings of them, then no threads as often, and the
+//   faster then becomes its verdict; the larger classes with no verdict run
+//   in parallel meanwhile. Only one class is tried per refinement, the
+//   smallest, where a serial try costs least, and only the tried class's
+//   timings count, so that the two ways are timed alike. Each way runs
+//   several times in a row, not in turn: a step right after one the other
+//   way finds its data in another core's cache (on a machine where cores
+//   read each other's writes slowly, a serial step after a parallel one
+//   took 1.7 times as long as after a serial one), and the best of each
+//   way's timings is that of a run that follows its own kind.
 // Verdicts are final for the process: timings only become shorter (best
 // of), and a verdict taken on a loaded machine stays.
 class Parallel_step_tuner
@@ -72,26 +77,28 @@ public:
   // The plan of a refinement on `threads` threads whose steps start from
   // levels of `parents[k]` vertices; `may_run_parallel(n)` is the prior.
   template <class Prior>
-  Parallel_plan plan(unsigned threads, const std::vector<std::uint32_t>& parents, const Prior& may_run_parallel)
+  Parallel_plan plan(unsigned threads, const std::vector<std::uint32_t>& parents, const Prior& may_run_parallel,
+                     bool try_open_class = true)
   {
     std::lock_guard<std::mutex> lock(mutex_);
     const Table& t = table(threads);
     Parallel_plan p;
     for (unsigned c = 0; c < number_of_size_classes; ++c)
       p.by_class[c] = t.inferred(c).value_or(Parallel_plan::parallel);
-    bool trying = false;
     for (std::uint32_t n : parents) {
       const unsigned c = size_class(n);
-      if (!may_run_parallel(n) || trying || t.inferred(c))
+      if (!try_open_class || !may_run_parallel(n) || t.inferred(c))
         continue;
-      trying = true;
+      p.tried = int(c);
       p.by_class[c] = t.samples[c].count[Parallel_plan::parallel] < samples_per_verdict ? Parallel_plan::parallel
                                                                                         : Parallel_plan::serial;
+      break;
     }
     return p;
   }
 
-  // A step from a level of `parent_vertices` took `seconds`.
+  // A step from a level of `parent_vertices`, of the class a plan tried,
+  // took `seconds`.
   void record(unsigned threads, std::uint32_t parent_vertices, bool parallel, double seconds)
   {
     if (parent_vertices == 0)
@@ -116,6 +123,13 @@ public:
   {
     std::lock_guard<std::mutex> lock(mutex_);
     return table(threads).verdict[c];
+  }
+
+  // Forgets every timing and verdict (a test that starts from nothing).
+  void clear()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    tables_.clear();
   }
 
 private:
