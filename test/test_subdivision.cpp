@@ -1497,6 +1497,15 @@ bool same_bytes(const std::vector<T, A>& a, const std::vector<T, B>& b)
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
+// Whether two meshes have the same connectivity arrays, byte for byte.
+bool same_connectivity(const Mesh& a, const Mesh& b)
+{
+  const Connectivity ca = connectivity_of(a), cb = connectivity_of(b);
+  return same_bytes(ca.target, cb.target) && same_bytes(ca.next, cb.next) && same_bytes(ca.prev, cb.prev) &&
+         same_bytes(ca.face, cb.face) && same_bytes(ca.mobius, cb.mobius) &&
+         same_bytes(ca.vertex_dart, cb.vertex_dart) && same_bytes(ca.face_dart, cb.face_dart);
+}
+
 struct Refined
 {
   Mesh mesh;
@@ -1924,11 +1933,7 @@ TEST(SubdivisionParallel, RepeatedRefinementsLearnAndStayBitIdentical)
       EXPECT_EQ(R::tuner().verdict(2, c), -1) << run;
       const Refined p = refine_with<Tuned_catmull_clark_mask, CGAL::Parallel_tag>(b, S::Refinement_options(), 1, true);
       EXPECT_TRUE(same_bytes(s.points, p.points)) << run;
-      const Connectivity cs = connectivity_of(s.mesh), cp = connectivity_of(p.mesh);
-      EXPECT_TRUE(same_bytes(cs.target, cp.target) && same_bytes(cs.next, cp.next) && same_bytes(cs.prev, cp.prev) &&
-                  same_bytes(cs.face, cp.face) && same_bytes(cs.mobius, cp.mobius) &&
-                  same_bytes(cs.vertex_dart, cp.vertex_dart) && same_bytes(cs.face_dart, cp.face_dart))
-        << run;
+      EXPECT_TRUE(same_connectivity(s.mesh, p.mesh)) << run;
     }
     EXPECT_NE(R::tuner().verdict(2, c), -1);
   });
@@ -1937,7 +1942,7 @@ TEST(SubdivisionParallel, RepeatedRefinementsLearnAndStayBitIdentical)
 // Threads in one step and none in the next, which no minimum size gives but
 // verdicts may (a win at 16 384 vertices, a loss at 65 536): the serial step
 // after a parallel one, in one pass and level by level, gives the serial
-// result bit for bit.
+// result bit for bit, whether the base uses threads or not.
 struct Mixed_catmull_clark_mask : S::Catmull_clark_mask
 {};
 
@@ -1954,9 +1959,6 @@ TEST(SubdivisionParallel, ThreadsThenNoneStayBitIdentical)
   }
   ASSERT_EQ(R::tuner().verdict(2, 14), Plan::parallel);
   ASSERT_EQ(R::tuner().verdict(2, 16), Plan::serial);
-  Mesh torus;
-  CGAL_ext::make_torus(torus, 128, 128);
-  const Built b = generated(torus, true);
   tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 2);
   tbb::task_arena arena(2);
   arena.execute([&] {
@@ -1966,17 +1968,24 @@ TEST(SubdivisionParallel, ThreadsThenNoneStayBitIdentical)
     ASSERT_FALSE(plan.parallel_class(16));
     EXPECT_TRUE(plan.parallel_class(15)); // a win below and a loss above as near: the win
     EXPECT_EQ(plan.tried, -1);
-    for (bool one_pass : {true, false}) {
-      SCOPED_TRACE(one_pass ? "one pass" : "level by level");
-      const Refined s = refine_with<Mixed_catmull_clark_mask, CGAL::Sequential_tag>(b, S::Refinement_options(), 2, one_pass);
-      const Refined p = refine_with<Mixed_catmull_clark_mask, CGAL::Parallel_tag>(b, S::Refinement_options(), 2, one_pass);
-      EXPECT_TRUE(same_bytes(s.points, p.points));
-      const Connectivity cs = connectivity_of(s.mesh), cp = connectivity_of(p.mesh);
-      EXPECT_TRUE(same_bytes(cs.target, cp.target) && same_bytes(cs.next, cp.next) && same_bytes(cs.prev, cp.prev) &&
-                  same_bytes(cs.face, cp.face) && same_bytes(cs.mobius, cp.mobius) &&
-                  same_bytes(cs.vertex_dart, cp.vertex_dart) && same_bytes(cs.face_dart, cp.face_dart));
-      EXPECT_TRUE(same_bytes(s.mesh.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name)->data(),
-                             p.mesh.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name)->data()));
+    // From 16 384 vertices: threads, then none. From 4 096 (below the
+    // floor): none, threads, none, the serial base making the tables of the
+    // step with threads.
+    for (auto [n, levels] : {std::pair<std::size_t, unsigned>{128, 2}, std::pair<std::size_t, unsigned>{64, 3}}) {
+      Mesh torus;
+      CGAL_ext::make_torus(torus, n, n);
+      const Built b = generated(torus, true);
+      for (bool one_pass : {true, false}) {
+        SCOPED_TRACE(std::to_string(n) + (one_pass ? ", one pass" : ", level by level"));
+        const Refined s =
+          refine_with<Mixed_catmull_clark_mask, CGAL::Sequential_tag>(b, S::Refinement_options(), levels, one_pass);
+        const Refined p =
+          refine_with<Mixed_catmull_clark_mask, CGAL::Parallel_tag>(b, S::Refinement_options(), levels, one_pass);
+        EXPECT_TRUE(same_bytes(s.points, p.points));
+        EXPECT_TRUE(same_connectivity(s.mesh, p.mesh));
+        EXPECT_TRUE(same_bytes(s.mesh.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name)->data(),
+                               p.mesh.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name)->data()));
+      }
     }
   });
 }

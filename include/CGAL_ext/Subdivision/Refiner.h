@@ -288,13 +288,13 @@ public:
   void refine(const Mobius_mesh<P>& mesh, unsigned levels, const std::vector<float>& edge_sharpness = {},
               const std::vector<float>& vertex_sharpness = {})
   {
-    check_size(mesh, levels, 2.5, 0);
+    const Mesh_size base = check_size(mesh, levels, 2.5, 0);
     levels_.resize(levels + 1);
     weights_.resize(uses_stencils ? 0 : levels);
     stencils_.resize(uses_stencils ? levels : 0);
     incidence_.assign(uses_stencils ? 0 : levels, internal::Incidence());
-    make_plan<ConcurrencyTag>(mesh, levels, false);
-    serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
+    make_plan<ConcurrencyTag>(base, levels, false);
+    serial_tables_ = later_step_in_parallel<ConcurrencyTag>(base, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k)
       internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv),
@@ -461,21 +461,23 @@ private:
   // against the result's 98); by Doo–Sabin or √3, whose last step also holds
   // the child's face list and the builder's tables, twice (212 and 136
   // bytes per face against 98 and 68); one that keeps every level, two and
-  // a half.
+  // a half. Returns the counts of `mesh` that refined_size() starts from.
   template <class P>
-  void check_size(const Mobius_mesh<P>& mesh, unsigned levels, double kept, double value_bytes) const
+  Mesh_size check_size(const Mobius_mesh<P>& mesh, unsigned levels, double kept, double value_bytes) const
   {
     CGAL_ext::internal::require_no_garbage(mesh, "subdivision");
     if (!(options_.maximum_memory > 0))
       throw Parameter_error("subdivision: maximum_memory " + std::to_string(options_.maximum_memory) +
                             " is not a positive number");
     const std::string what = "subdividing " + std::to_string(levels) + " levels";
-    const Mesh_size result = refined_size(Mask::split, internal::size_of(mesh), levels);
+    const Mesh_size base = internal::size_of(mesh);
+    const Mesh_size result = refined_size(Mask::split, base, levels);
     CGAL_ext::internal::check_mesh_size(what, result);
     CGAL_ext::internal::check_memory(what,
                                      CGAL_ext::internal::mesh_bytes<P>(result) * kept +
                                        double(result.vertices) * value_bytes,
                                      options_.maximum_memory);
+    return base;
   }
 
   // Whether the step from a level of `nv` vertices runs in parallel (if
@@ -489,14 +491,14 @@ private:
            plan_.parallel_class(internal::size_class(nv));
   }
 
-  // The plan of a refinement of `mesh` by `levels` steps: which size
+  // The plan of a refinement by `levels` steps of a mesh of counts `base`: which size
   // classes use threads (a refinement under CGAL::Parallel_tag with the
   // automatic choice, on more than one thread, by a quad or triangle split,
   // whose level sizes refined_size() gives exactly), and, if it may try one
   // (`try_class`: a refinement that times its steps), which class it times
   // for the tuner.
-  template <class ConcurrencyTag, class P>
-  void make_plan(const Mobius_mesh<P>& mesh, unsigned levels, bool try_class)
+  template <class ConcurrencyTag>
+  void make_plan(const Mesh_size& base, unsigned levels, bool try_class)
   {
     plan_ = internal::Parallel_plan();
     if constexpr (internal::is_parallel_tag<ConcurrencyTag> && !uses_stencils) {
@@ -504,38 +506,39 @@ private:
       if (options_.parallel_min_vertices != Refinement_options::automatic || plan_threads_ < 2)
         return;
       std::vector<u32> parents;
-      const Mesh_size base = internal::size_of(mesh);
       for (unsigned k = 0; k < levels; ++k)
         parents.push_back(u32(refined_size(Mask::split, base, k).vertices)); // check_size() bounded them
       plan_ = tuner().plan(
         plan_threads_, parents, [](u32 n) { return runs_in_parallel(n, Refinement_options::automatic); }, try_class);
     } else {
-      CGAL_USE(mesh);
+      CGAL_USE(base);
       CGAL_USE(levels);
       CGAL_USE(try_class);
     }
   }
 
-  // Whether a refinement of `mesh` by `levels` steps under `ConcurrencyTag`
-  // has a step that runs in parallel after one that does not: the levels
-  // grow, so whether the last step's parent is large enough. Then the serial
-  // steps make incidence tables too (the base's by a walk around its
-  // vertices, each child's derived by the split), so that the first level
-  // with threads gets its tables from its parent's split instead of walking
-  // around every one of its vertices; the walk cost more than the threads
-  // saved where only the last step runs in parallel (doc/benchmarks.md).
-  template <class ConcurrencyTag, class P>
-  bool later_step_in_parallel(const Mobius_mesh<P>& mesh, unsigned levels) const
+  // Whether a refinement by `levels` steps of a mesh of counts `base` under
+  // `ConcurrencyTag` has a step that runs in parallel after the first, which
+  // does not (the plan, not only the levels' growth, decides which do). Then
+  // the serial steps make incidence tables too (the base's by a walk around
+  // its vertices, each child's derived by the split), so that the first
+  // level with threads gets its tables from its parent's split instead of
+  // walking around every one of its vertices; the walk cost more than the
+  // threads saved where only the last step runs in parallel (doc/benchmarks.md).
+  template <class ConcurrencyTag>
+  bool later_step_in_parallel(const Mesh_size& base, unsigned levels) const
   {
     if constexpr (!internal::is_parallel_tag<ConcurrencyTag> || uses_stencils) {
-      CGAL_USE(mesh);
+      CGAL_USE(base);
       CGAL_USE(levels);
       return false;
     } else {
-      if (levels < 2 || parallel_level(u32(mesh.number_of_vertices())))
+      if (levels < 2 || parallel_level(u32(base.vertices)))
         return false;
-      const Mesh_size last_parent = refined_size(Mask::split, internal::size_of(mesh), levels - 1);
-      return parallel_level(u32(last_parent.vertices));
+      for (unsigned k = 1; k < levels; ++k)
+        if (parallel_level(u32(refined_size(Mask::split, base, k).vertices)))
+          return true;
+      return false;
     }
   }
 
@@ -546,14 +549,15 @@ private:
                 const std::vector<float>& edge_sharpness, const std::vector<float>& vertex_sharpness,
                 bool write_sharpness)
   {
-    check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
+    const Mesh_size base =
+      check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     incidence_.clear();
-    make_plan<ConcurrencyTag>(mesh, levels, true);
+    make_plan<ConcurrencyTag>(base, levels, true);
     // A step is timed from the start: a later step with threads makes the
     // serial steps before it build its incidence tables, which it costs.
     const auto start = std::chrono::steady_clock::now();
-    serial_tables_ = later_step_in_parallel<ConcurrencyTag>(mesh, levels);
+    serial_tables_ = later_step_in_parallel<ConcurrencyTag>(base, levels);
     build_base<ConcurrencyTag>(mesh, edge_sharpness, vertex_sharpness);
     for (unsigned k = 0; k < levels; ++k) {
       bool done = false;

@@ -16,6 +16,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace CGAL_ext {
@@ -139,14 +140,6 @@ private:
     unsigned count[2] = {0, 0};
   };
 
-  struct Optional_decision
-  {
-    bool known = false;
-    Parallel_plan::Decision value = Parallel_plan::parallel;
-    explicit operator bool() const { return known; }
-    Parallel_plan::Decision value_or(Parallel_plan::Decision d) const { return known ? value : d; }
-  };
-
   struct Table
   {
     std::array<Samples, number_of_size_classes> samples;
@@ -156,15 +149,15 @@ private:
 
     // The verdict implied for class c: from the nearest class that implies
     // one (a win of the threads at c - d, a loss at c + d).
-    Optional_decision inferred(unsigned c) const
+    std::optional<Parallel_plan::Decision> inferred(unsigned c) const
     {
       for (unsigned d = 0; d < number_of_size_classes; ++d) {
         if (d <= c && verdict[c - d] == Parallel_plan::parallel)
-          return {true, Parallel_plan::parallel};
+          return Parallel_plan::parallel;
         if (c + d < number_of_size_classes && verdict[c + d] == Parallel_plan::serial)
-          return {true, Parallel_plan::serial};
+          return Parallel_plan::serial;
       }
-      return {};
+      return std::nullopt;
     }
   };
 
