@@ -1989,6 +1989,69 @@ TEST(SubdivisionParallel, ThreadsThenNoneStayBitIdentical)
     }
   });
 }
+
+// A mesh with maps of its own refines level by level; then each vertex map
+// is interpolated and each child face takes its base face's value. Under
+// CGAL::Parallel_tag, with threads in the last step (mask types of their own,
+// so that their refiners have no verdicts) and in the maps' loops, the
+// points and every map are the serial run's, bit for bit.
+struct Carried_catmull_clark_mask : S::Catmull_clark_mask
+{};
+struct Carried_loop_mask : S::Loop_mask
+{};
+
+template <class Mask>
+void expect_carried_maps_bit_identical(const std::string& what, const Mesh& base)
+{
+  SCOPED_TRACE(what);
+  using CGAL_ext::Face_index;
+  using CGAL_ext::Vertex_index;
+  S::Refiner<Mask>::tuner().clear();
+  Mesh m = base;
+  auto scalar = m.add_property_map<Vertex_index, double>("v:scalar").first;
+  auto colour = m.add_property_map<Vertex_index, std::array<float, 3>>("v:colour").first;
+  auto label = m.add_property_map<Face_index, int>("f:label").first;
+  auto name = m.add_property_map<Face_index, std::string>("f:name").first;
+  for (auto v : m.vertices()) {
+    const double t = double(v.idx());
+    scalar[v] = std::sin(0.37 * t) + 1e-3 * t;
+    colour[v] = {float(std::cos(t)), float(0.5 + 0.25 * std::sin(2 * t)), float(t / 7)};
+  }
+  for (auto f : m.faces()) {
+    label[f] = int(7 * f.idx() + 1);
+    name[f] = "face " + std::to_string(f.idx());
+  }
+  Mesh serial = m, parallel = m;
+  const auto two = CGAL_ext::parameters::number_of_iterations(2);
+  S::subdivide(serial, Mask(), two);
+  {
+    tbb::global_control cap(tbb::global_control::max_allowed_parallelism, 2);
+    tbb::task_arena arena(2);
+    arena.execute([&] { S::subdivide<CGAL::Parallel_tag>(parallel, Mask(), two); });
+  }
+  ASSERT_EQ(serial.number_of_faces(), 16 * base.number_of_faces());
+  // The result is large enough for threads in its maps' loops.
+  ASSERT_GE(serial.number_of_vertices(), 2 * S::parallel_vertices_per_thread);
+  EXPECT_TRUE(same_bytes(serial.points().data(), parallel.points().data()));
+  EXPECT_TRUE(same_connectivity(serial, parallel));
+  auto data = [](const Mesh& mesh, auto key, auto value, const char* map) {
+    return mesh.property_map<decltype(key), decltype(value)>(map).value().data();
+  };
+  EXPECT_TRUE(same_bytes(data(serial, Vertex_index(), 0.0, "v:scalar"), data(parallel, Vertex_index(), 0.0, "v:scalar")));
+  const std::array<float, 3> c{};
+  EXPECT_TRUE(same_bytes(data(serial, Vertex_index(), c, "v:colour"), data(parallel, Vertex_index(), c, "v:colour")));
+  EXPECT_EQ(data(serial, Face_index(), 0, "f:label"), data(parallel, Face_index(), 0, "f:label"));
+  EXPECT_EQ(data(serial, Face_index(), std::string(), "f:name"), data(parallel, Face_index(), std::string(), "f:name"));
+}
+
+TEST(SubdivisionParallel, CarriedMapsBitIdenticalToSerial)
+{
+  Mesh torus, strip;
+  CGAL_ext::make_torus(torus, 64, 64); // level 1: 16 384 vertices, threads from there on two
+  expect_carried_maps_bit_identical<Carried_catmull_clark_mask>("Catmull-Clark, torus", torus);
+  CGAL_ext::make_mobius_strip(strip, 128, 32, 1, 1.0, 0.5, false); // triangles, a border
+  expect_carried_maps_bit_identical<Carried_loop_mask>("Loop, Moebius strip", strip);
+}
 #endif
 
 TEST(SubdivisionApi, RefinerReinterpolatesOtherData)

@@ -230,9 +230,14 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
     });
   }
   if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle) {
-    const std::vector<std::uint32_t> parent = refiner.base_faces();
-    CGAL_ext::internal::transfer_properties<Face_index>(
-      mesh, out, 0, out.number_of_faces(), [&](Face_index f) { return Face_index(parent[f.idx()]); }, "f:hole");
+    const std::vector<std::uint32_t> parent = refiner.template base_faces<ConcurrencyTag>();
+    auto parent_of = [&](Face_index f) { return Face_index(parent[f.idx()]); };
+    // Threads by the rule for the vertex maps, on as many elements as faces.
+    with_concurrency<ConcurrencyTag>(
+      runs_in_parallel(u32(out.number_of_faces()), refiner.options().parallel_min_vertices), [&](auto tag) {
+        CGAL_ext::internal::transfer_properties<Face_index, decltype(tag)>(mesh, out, 0, out.number_of_faces(),
+                                                                           parent_of, "f:hole");
+      });
   }
 }
 

@@ -10,9 +10,11 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/internal/Parallel_loops.h>
 
 #include <CGAL/Cartesian_converter.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/tags.h>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -30,26 +32,32 @@ namespace internal {
 // map named `skip`) from `src` to `dst`, whatever its value type: element
 // `i` of `dst` in [begin, end) takes the value of `src_of(i)` (skipped where
 // that is invalid). A map of `dst` with the same name and another value type
-// is left alone.
-template <class I, class P1, class P2, class SrcOf>
+// is left alone. Under `CGAL::Parallel_tag` the elements are copied in
+// blocks by several threads (`src_of` is then called from several threads).
+template <class I, class ConcurrencyTag = CGAL::Sequential_tag, class P1, class P2, class SrcOf>
 void transfer_properties(const Mobius_mesh<P1>& src, Mobius_mesh<P2>& dst, std::size_t begin, std::size_t end,
                          SrcOf src_of, const std::string& skip = std::string())
 {
   const Property_container& from = Connectivity_access::properties<I>(src);
   Property_container& to = Connectivity_access::properties<I>(dst);
+  const std::uint32_t n = begin < end ? std::uint32_t(end - begin) : 0u;
   std::vector<std::uint32_t> source_of;
   for (const auto& array : from.arrays()) {
     if (array->name() == "v:point" || array->name() == skip)
       continue;
-    if (source_of.empty() && begin < end) { // the correspondence, once for all maps of this kind
-      source_of.resize(end - begin);
-      for (std::size_t i = begin; i < end; ++i) {
-        const I s = src_of(I(i));
-        source_of[i - begin] = s.is_valid() ? std::uint32_t(s.idx()) : Transfer_sources::no_source;
-      }
+    if (source_of.empty() && n > 0) { // the correspondence, once for all maps of this kind
+      source_of.resize(n);
+      for_each_index<ConcurrencyTag>(n, [&](std::uint32_t i) {
+        const I s = src_of(I(typename I::size_type(begin + i)));
+        source_of[i] = s.is_valid() ? std::uint32_t(s.idx()) : Transfer_sources::no_source;
+      });
     }
-    if (Base_property_array* target = to.add_like(*array))
-      target->transfer(*array, Transfer_sources{begin, source_of});
+    Base_property_array* target = to.add_like(*array);
+    if (!target)
+      continue;
+    for_each_block<ConcurrencyTag>(n, [&](std::uint32_t block_begin, std::uint32_t block_end) {
+      target->transfer(*array, Transfer_sources{begin, source_of, block_begin, block_end});
+    });
   }
 }
 

@@ -413,24 +413,32 @@ public:
 
   /// For each face of the last level, the face of the base mesh it lies in
   /// (quad and triangle splits, whose child faces each lie in one parent
-  /// face; the dual and √3 splits make faces across several).
+  /// face; the dual and √3 splits make faces across several). Each level's
+  /// faces are numbered in parallel under `CGAL::Parallel_tag` where its
+  /// refinement step used threads.
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
   std::vector<u32> base_faces() const
   {
     static_assert(!uses_stencils, "the faces of the dual and sqrt(3) splits have no single parent face");
-    std::vector<u32> origin(levels_.empty() ? 0 : levels_[0].nf), next;
-    for (u32 f = 0; f < origin.size(); ++f)
-      origin[f] = f;
+    if (levels_.empty())
+      return {};
+    std::vector<u32> origin(levels_[0].nf), next;
+    internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[0].nv), [&](auto tag) {
+      internal::for_each_index<decltype(tag)>(levels_[0].nf, [&](u32 f) { origin[f] = f; });
+    });
     for (unsigned k = 0; k + 1 < levels_.size(); ++k) {
       // The split's layout (Level.h): child face c is the one at parent
       // corner c, and the triangle split's centre triangles follow the corners.
       const Level& p = levels_[k];
       next.resize(levels_[k + 1].nf);
-      for (u32 f = 0; f < p.nf; ++f) {
-        for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
-          next[c] = origin[f];
-        if constexpr (Mask::split == Split::triangle)
-          next[p.nc + f] = origin[f];
-      }
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(p.nv), [&](auto tag) {
+        internal::for_each_index<decltype(tag)>(p.nf, [&](u32 f) {
+          for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+            next[c] = origin[f];
+          if constexpr (Mask::split == Split::triangle)
+            next[p.nc + f] = origin[f];
+        });
+      });
       origin.swap(next);
     }
     return origin;

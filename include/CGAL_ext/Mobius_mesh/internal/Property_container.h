@@ -43,6 +43,10 @@ struct Transfer_sources
   static constexpr std::uint32_t no_source = (std::numeric_limits<std::uint32_t>::max)();
   std::size_t first;
   const std::vector<std::uint32_t>& source_of;
+  // The entries of `source_of` to copy, [begin, end): all by default, or a
+  // block of them, which threads copy side by side.
+  std::size_t begin = 0;
+  std::size_t end = (std::numeric_limits<std::size_t>::max)();
 };
 
 class Base_property_array
@@ -148,7 +152,8 @@ public:
     if (source.value_type() != typeid(T))
       return false;
     const auto& from = static_cast<const Property_array&>(source).data_;
-    for (std::size_t i = 0; i < sources.source_of.size(); ++i)
+    const std::size_t end = (std::min)(sources.end, sources.source_of.size());
+    for (std::size_t i = sources.begin; i < end; ++i)
       if (sources.source_of[i] != Transfer_sources::no_source)
         data_[sources.first + i] = from[sources.source_of[i]];
     return true;
