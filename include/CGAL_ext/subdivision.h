@@ -191,14 +191,21 @@ bool has_carried_maps(const Mobius_mesh<P>& mesh)
   return false;
 }
 
-// Calls body(v) for the vertices v in [0, n): in parallel under
-// `CGAL::Parallel_tag` where a level of n vertices would be refined so
-// (runs_in_parallel()), serially otherwise.
+// Calls body(tag) for work on n elements of the maps: tag is `ConcurrencyTag`
+// where a level of n vertices would be refined with threads
+// (runs_in_parallel()), `CGAL::Sequential_tag` otherwise.
+template <class ConcurrencyTag, class Body>
+void with_concurrency_for(u32 n, const Refinement_options& options, const Body& body)
+{
+  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices), body);
+}
+
+// Calls body(v) for the vertices v in [0, n), with threads as
+// with_concurrency_for() says.
 template <class ConcurrencyTag, class Body>
 void for_each_vertex(u32 n, const Refinement_options& options, const Body& body)
 {
-  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices),
-                                   [&](auto tag) { for_each_index<decltype(tag)>(n, body); });
+  with_concurrency_for<ConcurrencyTag>(n, options, [&](auto tag) { for_each_index<decltype(tag)>(n, body); });
 }
 
 // Interpolates the vertex maps of `mesh` through the levels of `refiner`
@@ -232,12 +239,10 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
   if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle) {
     const std::vector<std::uint32_t> parent = refiner.template base_faces<ConcurrencyTag>();
     auto parent_of = [&](Face_index f) { return Face_index(parent[f.idx()]); };
-    // Threads by the rule for the vertex maps, on as many elements as faces.
-    with_concurrency<ConcurrencyTag>(
-      runs_in_parallel(u32(out.number_of_faces()), refiner.options().parallel_min_vertices), [&](auto tag) {
-        CGAL_ext::internal::transfer_properties<Face_index, decltype(tag)>(mesh, out, 0, out.number_of_faces(),
-                                                                           parent_of, "f:hole");
-      });
+    with_concurrency_for<ConcurrencyTag>(u32(out.number_of_faces()), refiner.options(), [&](auto tag) {
+      CGAL_ext::internal::transfer_properties<Face_index, decltype(tag)>(mesh, out, 0, out.number_of_faces(),
+                                                                         parent_of, "f:hole");
+    });
   }
 }
 
