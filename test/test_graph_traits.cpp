@@ -27,6 +27,9 @@
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/graph_concepts.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -382,6 +385,197 @@ TEST(GraphTraits, AnIsolatedVertexHasNoHalfedgeAndNoNeighbours)
   add_vertex(sm);
   EXPECT_FALSE(CGAL::is_valid_polygon_mesh(sm));
   EXPECT_FALSE(CGAL::is_valid_polygon_mesh(g));
+}
+
+// ---------------------------------------------------------------- CGAL's entry points build the mesh
+
+// The torus's soup, with every other polygon reversed if `mixed`: still an
+// orientable surface, stored as a careless exporter writes it.
+struct Soup
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+Soup torus_soup(bool mixed)
+{
+  const Mesh m = oriented_torus();
+  Soup s;
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    s.points.push_back(m.point(v));
+  std::size_t i = 0;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::vector<std::size_t> polygon;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, m))
+      polygon.push_back(v.idx());
+    if (mixed && i++ % 2 == 1)
+      std::reverse(polygon.begin(), polygon.end());
+    s.polygons.push_back(polygon);
+  }
+  return s;
+}
+
+TEST(GraphTraits, CgalReadPolygonMeshAsOnSurfaceMesh)
+{
+  const std::string file = test::data("nonorientable/torus_24x12_quads.obj");
+  Mesh m;
+  SM sm;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(file, m));
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(file, sm));
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+  EXPECT_EQ(faces_of(m), faces_of(sm));
+  EXPECT_EQ(num_halfedges(m), num_halfedges(sm));
+  EXPECT_EQ(CGAL_ext::euler_characteristic(m), 0);
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 0u);
+  // A non-orientable file: CGAL's builder refuses it on both meshes alike
+  // (it adds faces with Euler::add_face, which needs one orientation).
+  Mesh strip;
+  SM strip_sm;
+  EXPECT_EQ(CGAL::IO::read_polygon_mesh(test::data("nonorientable/mobius_20x4_quads.obj"), strip),
+            CGAL::IO::read_polygon_mesh(test::data("nonorientable/mobius_20x4_quads.obj"), strip_sm));
+}
+
+TEST(GraphTraits, CgalEulerAddFaceFromAnEmptyMesh)
+{
+  Mesh m;
+  SM sm;
+  const Point p[] = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(2, 0, 0)};
+  std::vector<GT::vertex_descriptor> v;
+  std::vector<SM::Vertex_index> w;
+  for (const Point& q : p) {
+    v.push_back(add_vertex(q, m));
+    w.push_back(sm.add_vertex(q));
+  }
+  // A face on isolated vertices, one beside it, one on its other side.
+  const std::vector<std::vector<int>> faces = {{0, 1, 2}, {1, 4, 2}, {0, 2, 3}};
+  for (const auto& f : faces) {
+    std::vector<GT::vertex_descriptor> fv;
+    std::vector<SM::Vertex_index> fw;
+    for (int i : f) {
+      fv.push_back(v[std::size_t(i)]);
+      fw.push_back(w[std::size_t(i)]);
+    }
+    EXPECT_NE(CGAL::Euler::add_face(fv, m), GT::null_face());
+    EXPECT_NE(CGAL::Euler::add_face(fw, sm), SM::null_face());
+    EXPECT_TRUE(m.is_valid(true));
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+    EXPECT_EQ(faces_of(m), faces_of(sm));
+  }
+  // A face that would make an edge non-manifold is refused on both.
+  std::vector<GT::vertex_descriptor> bad = {v[0], v[1], v[4]};
+  std::vector<SM::Vertex_index> bad_sm = {w[0], w[1], w[4]};
+  EXPECT_EQ(CGAL::Euler::add_face(bad, m), GT::null_face());
+  EXPECT_EQ(CGAL::Euler::add_face(bad_sm, sm), SM::null_face());
+  EXPECT_EQ(num_faces(m), 3u);
+}
+
+TEST(GraphTraits, CgalPolygonSoupToPolygonMeshAsOnSurfaceMesh)
+{
+  Soup s = torus_soup(true);
+  PMP::orient_polygon_soup(s.points, s.polygons);
+  Mesh m;
+  SM sm;
+  PMP::polygon_soup_to_polygon_mesh(s.points, s.polygons, m);
+  PMP::polygon_soup_to_polygon_mesh(s.points, s.polygons, sm);
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(faces_of(m), faces_of(sm));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), 0u);
+  triangulate(m);
+  triangulate(sm);
+  EXPECT_LT(relative_difference(PMP::volume(m), PMP::volume(sm)), 1e-12);
+}
+
+TEST(GraphTraits, SettersChangeWhatTheyNameOnly)
+{
+  Mesh m = oriented_torus();
+  const GT::face_descriptor f = *faces(m).begin();
+  const GT::halfedge_descriptor h = halfedge(f, m);
+  const GT::vertex_descriptor t = target(h, m);
+  const GT::halfedge_descriptor stored = halfedge(t, m);
+  set_face(h, GT::null_face(), m);
+  EXPECT_EQ(face(h, m), GT::null_face());
+  EXPECT_EQ(halfedge(t, m), stored);
+  set_face(h, f, m);
+  EXPECT_TRUE(m.is_valid(true));
+  // A fresh edge's halfedges are unlinked: null, as CGAL expects.
+  const GT::edge_descriptor e = add_edge(m);
+  EXPECT_EQ(next(halfedge(e, m), m), GT::null_halfedge());
+  EXPECT_EQ(target(halfedge(e, m), m), GT::null_vertex());
+}
+
+TEST(GraphTraits, CgalRemoveFaceOpensAClosedFan)
+{
+  Mesh m = oriented_torus();
+  SM sm = converted(m);
+  const GT::halfedge_descriptor h = halfedge(*faces(m).begin(), m);
+  std::vector<GT::vertex_descriptor> corners;
+  for (GT::vertex_descriptor v : vertices_around_face(h, m))
+    corners.push_back(v);
+  CGAL::Euler::remove_face(h, m);
+  CGAL::Euler::remove_face(halfedge(*sm.faces().begin(), sm), sm);
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(m));
+  for (GT::vertex_descriptor v : corners) {
+    EXPECT_TRUE(m.is_border(v));
+    EXPECT_TRUE(bool(CGAL::is_border(v, m)));
+  }
+  EXPECT_EQ(faces_of(m), faces_of(sm));
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 1u);
+  // Refilled by CGAL's Euler::add_face, the fan closes again.
+  EXPECT_NE(CGAL::Euler::add_face(corners, m), GT::null_face());
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(faces_of(m), faces_of(oriented_torus()));
+}
+
+TEST(GraphTraits, ReadersOrientAnOrientableSoup)
+{
+  const Soup mixed = torus_soup(true);
+  Mesh oriented, kept;
+  CGAL_ext::polygon_soup_to_mobius_mesh(mixed.points, mixed.polygons, oriented);
+  CGAL_ext::polygon_soup_to_mobius_mesh(mixed.points, mixed.polygons, kept,
+                                        CGAL_ext::parameters::keep_orientation(true));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(oriented), 0u);
+  EXPECT_GT(CGAL_ext::number_of_mobius_edges(kept), 0u); // every other face reversed
+  // The lowest polygon keeps its orientation; so all agree with the torus as built.
+  EXPECT_EQ(faces_of(oriented), faces_of(oriented_torus()));
+  // Non-orientable components keep the file's orientations.
+  Mesh strip = read_mesh("mobius_20x4_quads.obj");
+  Mesh strip_kept;
+  CGAL_ext::IO::read_polygon_mesh(test::data("nonorientable/mobius_20x4_quads.obj"), strip_kept,
+                                  CGAL_ext::parameters::keep_orientation(true));
+  EXPECT_EQ(faces_of(strip), faces_of(strip_kept));
+  // The oriented torus converts through CGAL's copy and measures as CGAL does.
+  SM copy;
+  CGAL::copy_face_graph(oriented, copy);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(copy));
+  triangulate(oriented);
+  triangulate(copy);
+  SM reference = converted(oriented_torus());
+  triangulate(reference);
+  EXPECT_GT(PMP::volume(oriented), 0.0);
+  EXPECT_LT(relative_difference(PMP::volume(oriented), PMP::volume(reference)), 1e-12);
+  EXPECT_LT(relative_difference(PMP::volume(copy), PMP::volume(reference)), 1e-12);
+}
+
+TEST(GraphTraits, CopyFaceGraphRefusesMobiusEdgesBeforeCopying)
+{
+  for (const char* file : {"mobius_20x4_quads.obj", "klein_fig8_24x12_quads.obj"}) {
+    SCOPED_TRACE(file);
+    const Mesh m = read_mesh(file);
+    SM sm = converted(oriented_torus());
+    const std::size_t faces_before = sm.number_of_faces();
+    EXPECT_THROW(CGAL::copy_face_graph(m, sm), CGAL_ext::Parameter_error);
+    EXPECT_EQ(sm.number_of_faces(), faces_before);
+    EXPECT_TRUE(CGAL::is_valid_polygon_mesh(sm));
+  }
+  // The torus as stored with mixed orientations, read keeping them: refused too.
+  const Soup mixed = torus_soup(true);
+  Mesh kept;
+  CGAL_ext::polygon_soup_to_mobius_mesh(mixed.points, mixed.polygons, kept,
+                                        CGAL_ext::parameters::keep_orientation(true));
+  SM sm;
+  EXPECT_THROW(CGAL::copy_face_graph(kept, sm), CGAL_ext::Parameter_error);
+  EXPECT_EQ(sm.number_of_faces(), 0u);
 }
 
 // ---------------------------------------------------------------- orientable: same as on Surface_mesh

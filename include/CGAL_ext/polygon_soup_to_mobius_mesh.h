@@ -9,6 +9,7 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
@@ -115,8 +116,13 @@ std::vector<std::uint32_t> merge_soup_points(std::uint32_t n_points, PointOf poi
 /// Builds a 2-manifold `Mobius_mesh` from a polygon soup and appends it to
 /// `mesh`. Two polygons that share an edge are connected whichever way they
 /// run along it: in opposite directions (a normal connection) or in the same
-/// direction (a Möbius connection). The polygons' orientations are kept; call
-/// `orient()` to reduce the Möbius edges to the fewest.
+/// direction (a Möbius connection). Each orientable connected component is
+/// oriented, as CGAL's readers orient a soup: its polygons are reversed where
+/// needed to agree with its lowest-numbered polygon, so that it has no Möbius
+/// edge and every CGAL algorithm that needs an orientation is right on it
+/// (`keep_orientation(true)` keeps every polygon as given). Non-orientable
+/// components keep their polygons' orientations; `orient()` reduces their
+/// Möbius edges.
 ///
 /// The soup is checked before anything is built, and bad input throws a
 /// `Soup_error` that names the polygons and points at fault; `mesh` is then
@@ -142,6 +148,12 @@ std::vector<std::uint32_t> merge_soup_points(std::uint32_t n_points, PointOf poi
 ///                           0 merges exact duplicates only}
 ///     \cgalParamType{`double` or the kernel's `FT`}
 ///     \cgalParamDefault{no merging}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{keep_orientation}
+///     \cgalParamDescription{if `true`, every polygon keeps its orientation, so that
+///                           an orientable soup whose polygons disagree is built
+///                           with Möbius edges}
+///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{split_non_manifold_vertices}
 ///     \cgalParamDescription{if `true`, a vertex whose polygons form several fans is
@@ -209,6 +221,8 @@ std::size_t polygon_soup_to_mobius_mesh(const PointRange& points, const PolygonR
   const std::size_t added_vertices = internal::build_mesh_from_faces(
     flat.view(n_vertices), [&](std::uint32_t v) { return P(point_of(representative.empty() ? v : representative[v])); },
     split, result);
+  if (!choose_parameter(get_parameter(np, CGAL_ext::internal_np::keep_orientation), false))
+    orient_orientable_components(result);
 
   internal::append_mesh(mesh, std::move(result));
   return added_vertices;

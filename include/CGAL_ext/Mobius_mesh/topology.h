@@ -227,6 +227,28 @@ void improve_orientation_locally(const Mobius_mesh<P>& mesh, std::vector<std::ui
 
 } // namespace internal
 
+/// Reverses faces so that every orientable connected component has no Möbius
+/// edge, each keeping the orientation of its lowest-numbered face, as CGAL's
+/// `orient_polygon_soup()` orients a soup before it becomes a `Surface_mesh`;
+/// non-orientable components keep their faces' orientations (`orient()`
+/// reduces their Möbius edges). Linear in the mesh's size.
+/// Returns the number of faces reversed.
+template <class P>
+std::size_t orient_orientable_components(Mobius_mesh<P>& mesh)
+{
+  std::vector<std::uint8_t> flip;
+  std::vector<std::uint32_t> component;
+  std::vector<bool> orientable;
+  internal::orientation_parities(mesh, flip, component, orientable);
+  std::size_t reversed = 0;
+  for (Face_index f : mesh.faces())
+    if (flip[f.idx()] && orientable[component[f.idx()]]) {
+      mesh.reverse_face_orientation(f);
+      ++reversed;
+    }
+  return reversed;
+}
+
 /// Reverses faces so that as few Möbius edges as possible remain: none on an
 /// orientable component. On a non-orientable component the Möbius edges form
 /// a seam that every orientation-reversing loop crosses; the shortest such

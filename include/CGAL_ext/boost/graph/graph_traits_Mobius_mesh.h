@@ -14,6 +14,7 @@
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/Iterator_range.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -341,19 +342,14 @@ void set_target(Dart d, Vertex_index v, Mobius_mesh<P>& m)
                           "~ is flipped; the target of a flipped dart is set through its halfedge's partner");
   m.set_target(d.halfedge(), v);
 }
-/// Setting a null face makes `d` a border dart; its target then keeps it as
-/// its halfedge, since the mesh requires border vertices to name a border
-/// dart, and CGAL's `Euler::remove_face()` updates no vertex when it opens a
-/// hole in a closed fan (Surface_mesh does not require it).
+/// Sets the face of `d`'s halfedge and nothing else, as CGAL's
+/// `MutableFaceGraph` requires (a null face makes it a border halfedge). A
+/// vertex whose stored dart is then no longer a border dart stays valid:
+/// `is_border(v)` looks at every dart around `v`, as `Surface_mesh` does.
 template <class P>
 void set_face(Dart d, Face_index f, Mobius_mesh<P>& m)
 {
   m.set_face(d.halfedge(), f);
-  if (f.is_valid())
-    return;
-  const Vertex_index v = m.target(d);
-  if (m.is_valid(v))
-    m.set_halfedge(v, d);
 }
 template <class P>
 void set_halfedge(Vertex_index v, Dart d, Mobius_mesh<P>& m) { m.set_halfedge(v, d); }
@@ -403,6 +399,26 @@ void require_orientable_model(const Mobius_mesh<P>& mesh, const std::string& wha
 }
 
 } // namespace CGAL_ext
+
+namespace CGAL {
+
+/// `CGAL::copy_face_graph()` from a `Mobius_mesh`: CGAL's copy maps each
+/// halfedge of the source to one of the target, which needs one global
+/// orientation; a mesh with Möbius edges is refused with
+/// `CGAL_ext::Parameter_error` before anything is copied (CGAL's generic copy
+/// would build a broken target). Without Möbius edges it is CGAL's copy.
+template <class P, class TargetMesh, class NamedParameters1 = parameters::Default_named_parameters,
+          class NamedParameters2 = parameters::Default_named_parameters>
+void copy_face_graph(const CGAL_ext::Mobius_mesh<P>& sm, TargetMesh& tm,
+                     const NamedParameters1& np1 = parameters::default_values(),
+                     const NamedParameters2& np2 = parameters::default_values())
+{
+  CGAL_ext::require_orientable_model(sm, "CGAL::copy_face_graph()");
+  // Explicit template arguments leave only CGAL's generic overload viable.
+  CGAL::copy_face_graph<CGAL_ext::Mobius_mesh<P>, TargetMesh, NamedParameters1, NamedParameters2>(sm, tm, np1, np2);
+}
+
+} // namespace CGAL
 
 namespace std {
 /// Hashes an edge descriptor by the edge it names.
