@@ -897,7 +897,7 @@ void register_threshold()
 // writer (`own`) or another one (`other`) wrote in the first, on N threads;
 // `serial` is both loops on one thread. Where `other` is much slower than
 // `own`, a parallel pass whose loops hand data across cores gains little
-// until its levels outgrow the caches (doc/benchmarks.md).
+// until its levels outgrow the caches (doc/benchmarks/subdivision_parallel.md).
 void register_cross_core()
 {
   for (std::size_t kib : {256, 1024, 4096, 16384, 65536}) {

@@ -159,7 +159,7 @@ double output_faces(const Mesh& mesh, const std::string& scheme, unsigned levels
 }
 
 // Bytes per output face: the subdivision's peak of about 123 bytes per quad
-// (doc/benchmarks.md) and the soup that writing copies the result into (a
+// (doc/benchmarks/subdivision.md) and the soup that writing copies the result into (a
 // vector of indices per face and a point per vertex, about 70 bytes per quad).
 constexpr double bytes_per_output_face = 190;
 

@@ -74,8 +74,8 @@ struct Refinement_options
 /// its vertices: the per-thread work must outweigh waking and joining the
 /// threads, whose cost grows with T. The rows `parallel_threshold` of
 /// bench_subdivision time one Catmull–Clark step of tori of 2^10 to 2^18
-/// vertices, serially against T threads (doc/benchmarks.md, "Parallel
-/// threshold"). On 2 idle cores, in three runs, two threads lose below
+/// vertices, serially against T threads (doc/benchmarks/subdivision_parallel.md,
+/// "Parallel threshold"). On 2 idle cores, in three runs, two threads lose below
 /// 8 192 vertices (0.54–0.69× the serial speed), are as often slower as
 /// faster at 8 281 (0.55–1.11×) and win from 16 384 on in every run
 /// (1.12–1.55×): a level needs 16 384 vertices on two threads. On another
@@ -532,7 +532,8 @@ private:
   // its vertices, each child's derived by the split), so that the first
   // level with threads gets its tables from its parent's split instead of
   // walking around every one of its vertices; the walk cost more than the
-  // threads saved where only the last step runs in parallel (doc/benchmarks.md).
+  // threads saved where only the last step runs in parallel
+  // (doc/benchmarks/subdivision_parallel.md).
   template <class ConcurrencyTag>
   bool later_step_in_parallel(const Mesh_size& base, unsigned levels) const
   {
