@@ -936,7 +936,8 @@ void Refiner<Mask, W>::check_sharpness(Level& L, const std::vector<float>& es, c
   if (bad_vertex != null_u32)
     throw CGAL_ext::internal::invalid_sharpness("subdivision", "vertex v", bad_vertex, vs[bad_vertex]);
   internal::for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
-    const bool border = L.h_face[2 * e] == null_u32 || L.h_face[2 * e + 1] == null_u32;
+    const bool border = L.h_face[CGAL_ext::internal::dart_encoding::halfedge_of_edge(e, 0)] == null_u32 ||
+                          L.h_face[CGAL_ext::internal::dart_encoding::halfedge_of_edge(e, 1)] == null_u32;
     L.e_sharp[e] = border ? infinitely_sharp : value(es, e); // border edges are infinitely sharp, as in OpenSubdiv
   });
   internal::for_each_index<ConcurrencyTag>(nv, [&](u32 v) { L.v_sharp[v] = value(vs, v); });

@@ -24,6 +24,8 @@ constexpr u32 null = (std::numeric_limits<u32>::max)();
 constexpr u32 edge_of_halfedge(u32 h) { return h >> 1; }
 constexpr u32 halfedge_of_edge(u32 e, u32 i) { return 2 * e + i; }
 constexpr u32 opposite_halfedge(u32 h) { return h ^ 1u; }
+/// Which of its edge's two halfedges `h` is: 0 or 1 (`h == halfedge_of_edge(edge_of_halfedge(h), side)`).
+constexpr u32 side_of_halfedge(u32 h) { return h & 1u; }
 
 // A dart is a halfedge and an orientation bit: halfedge << 1 | flipped.
 constexpr u32 dart(u32 h, bool flipped) { return (h << 1) | u32(flipped); }

@@ -53,7 +53,7 @@ inline u32 edge_end_of_dart(const Level& p, u32 d)
   namespace de = dart_encoding;
   const u32 h = de::halfedge_of_dart(d), e = de::edge_of_halfedge(h);
   const bool along = (is_first_halfedge(h) || p.e_mobius[e] != 0) != de::is_flipped(d);
-  return 2 * e + (along ? 1u : 0u);
+  return de::halfedge_of_edge(e, along ? 1u : 0u);
 }
 
 // The face of every corner of `p` into `inc`, unless the level gives all its
@@ -89,8 +89,8 @@ inline void build_incidence_serially(const Level& p, bool with_corners, Incidenc
   inc.edge_ends.resize(2 * std::size_t(p.ne));
   Array<u32> fill(inc.edge_offset.begin(), inc.edge_offset.end() - 1);
   for (u32 e = 0; e < p.ne; ++e) {
-    inc.edge_ends[fill[ends(e).first]++] = 2 * e;
-    inc.edge_ends[fill[ends(e).second]++] = 2 * e + 1;
+    inc.edge_ends[fill[ends(e).first]++] = dart_encoding::halfedge_of_edge(e, 0);
+    inc.edge_ends[fill[ends(e).second]++] = dart_encoding::halfedge_of_edge(e, 1);
   }
   if (!with_corners)
     return;
@@ -238,8 +238,9 @@ void derive_incidence(const Level& p, const Incidence& pinc, Incidence& inc)
   for_each_index<ConcurrencyTag>(nv + 1, [&](u32 v) { inc.edge_offset[v] = pinc.edge_offset[v]; });
   for_each_index<ConcurrencyTag>(ne, [&](u32 e) { inc.edge_offset[nv + e + 1] = edge_point_end(e + 1); });
   for_each_index<ConcurrencyTag>(2 * ne, [&](u32 i) {
-    const u32 end = pinc.edge_ends[i];
-    inc.edge_ends[i] = 2 * end + (end & 1u);
+    // The child edge 2e + s of parent edge e keeps end s of its parent.
+    const u32 end = pinc.edge_ends[i], s = de::side_of_halfedge(end);
+    inc.edge_ends[i] = de::halfedge_of_edge(2 * de::edge_of_halfedge(end) + s, s);
   });
   if constexpr (quad) {
     inc.corner_offset.resize(std::size_t(child_nv) + 1);
@@ -280,8 +281,8 @@ void derive_incidence(const Level& p, const Incidence& pinc, Incidence& inc)
   // edge's), then the faces' entries in order.
   for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
     u32* ends = inc.edge_ends.data() + edge_point_end(e);
-    ends[0] = 4 * e + 1;
-    ends[1] = 4 * e + 2;
+    ends[0] = de::halfedge_of_edge(2 * e, 1);
+    ends[1] = de::halfedge_of_edge(2 * e + 1, 0);
     sort_face_entries(ends + 2, edge_point_end(e + 1) - edge_point_end(e) - 2);
     if constexpr (quad)
       sort_face_entries(inc.corners.data() + edge_point_corner(e), edge_point_corner(e + 1) - edge_point_corner(e));

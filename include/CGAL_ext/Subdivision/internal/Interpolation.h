@@ -234,11 +234,11 @@ void interpolate_primal(const Level& p, const Step_weights<W>& sw, const Inciden
       Value sums[3] = {zero, zero, zero};
       if (takes_sums(w)) {
         for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
-          const u32 end = inc.edge_ends[i], e = end >> 1;
+          const u32 end = inc.edge_ends[i], e = de::edge_of_halfedge(end);
           const u32 h0 = de::halfedge_of_edge(e, 0);
           if (neighbours != Vertex_sums::none) // the vertex at the other end
             sums[index(neighbours)] =
-              sums[index(neighbours)] + src[(end & 1u) ? p.source(de::dart(h0, false)) : p.h_target[h0]];
+              sums[index(neighbours)] + src[de::side_of_halfedge(end) ? p.source(de::dart(h0, false)) : p.h_target[h0]];
           if (edge_points != Vertex_sums::none)
             sums[index(edge_points)] = sums[index(edge_points)] + internal::load(dst, nv + e);
         }

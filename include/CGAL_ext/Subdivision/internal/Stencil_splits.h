@@ -57,12 +57,20 @@ using CGAL_ext::internal::Face_list;
 // The corner at end `v` of face halfedge `h`.
 inline u32 corner_at(const Level& p, u32 h, u32 v)
 {
-  return p.h_target[h] == v ? p.h_corner[h] : p.h_corner[p.h_prev[h] >> 1];
+  return p.h_target[h] == v ? p.h_corner[h] : p.h_corner[dart_encoding::halfedge_of_dart(p.h_prev[h])];
 }
 
 inline bool is_border_edge(const Level& p, u32 e)
 {
-  return p.h_face[2 * e] == null_u32 || p.h_face[2 * e + 1] == null_u32;
+  return p.h_face[dart_encoding::halfedge_of_edge(e, 0)] == null_u32 ||
+         p.h_face[dart_encoding::halfedge_of_edge(e, 1)] == null_u32;
+}
+
+// The halfedge without a face of border edge `e`.
+inline u32 border_halfedge(const Level& p, u32 e)
+{
+  const u32 h0 = dart_encoding::halfedge_of_edge(e, 0);
+  return p.h_face[h0] == null_u32 ? h0 : dart_encoding::halfedge_of_edge(e, 1);
 }
 
 // Builds level `c` (nv vertices) from a face list, through the mesh's
@@ -196,7 +204,8 @@ u32 dual_corner_stencil(const Level& p, const Mask& mask, u32 k0, u32 n, u32 i, 
 {
   const u32 h_in = p.corner_h[k0 + i], h_out = p.corner_h[k0 + (i + 1) % n];
   const u32 v = p.h_target[h_in];
-  const bool in_border = p.h_face[h_in ^ 1u] == null_u32, out_border = p.h_face[h_out ^ 1u] == null_u32;
+  const bool in_border = p.h_face[dart_encoding::opposite_halfedge(h_in)] == null_u32,
+             out_border = p.h_face[dart_encoding::opposite_halfedge(h_out)] == null_u32;
   auto add = [&](u32 s, const W& x) {
     st.source[j] = s;
     st.weight[j] = x;
@@ -223,8 +232,8 @@ u32 dual_corner_stencil(const Level& p, const Mask& mask, u32 k0, u32 n, u32 i, 
 // The number of entries of the stencil of dual_corner_stencil().
 inline u32 dual_corner_size(const Level& p, u32 k0, u32 n, u32 i)
 {
-  const bool in_border = p.h_face[p.corner_h[k0 + i] ^ 1u] == null_u32,
-             out_border = p.h_face[p.corner_h[k0 + (i + 1) % n] ^ 1u] == null_u32;
+  const bool in_border = p.h_face[dart_encoding::opposite_halfedge(p.corner_h[k0 + i])] == null_u32,
+             out_border = p.h_face[dart_encoding::opposite_halfedge(p.corner_h[k0 + (i + 1) % n])] == null_u32;
   return in_border && out_border ? 1 : (in_border || out_border ? 2 : n);
 }
 
@@ -320,7 +329,7 @@ void number_sqrt3_points(const Level& p, bool refine_border, Sqrt3_points& pts)
     for_each_index<ConcurrencyTag>(ne, [&](u32 e) {
       if (!is_border_edge(p, e))
         return;
-      const u32 h = p.h_face[2 * e] == null_u32 ? 2 * e + 1 : 2 * e;
+      const u32 h = dart_encoding::opposite_halfedge(border_halfedge(p, e)); // the face's side
       CGAL_assertion(pts.face_border[p.h_face[h]] == null_u32); // true after a non-refining step
       pts.face_border[p.h_face[h]] = h;
     });
@@ -432,7 +441,7 @@ void sqrt3_split(const Level& p, const Mask& mask, bool refine_border, Face_list
       [&](u32 e, u32 list, u32 j, None&) {
         if (border_point[e] == null_u32)
           return;
-        const u32 d = (p.h_face[2 * e] == null_u32 ? 2 * e : 2 * e + 1) << 1; // the border dart
+        const u32 d = dart_encoding::dart(border_halfedge(p, e), false);
         const u32 s = p.source(d), t = p.target(d);
         const u32 src[6] = {p.source(p.prev(d)), s, t, s, t, p.target(p.next(d))};
         const int w27[6] = {1, 16, 10, 10, 16, 1};
@@ -448,7 +457,7 @@ void sqrt3_split(const Level& p, const Mask& mask, bool refine_border, Face_list
 
   // The border point of edge e nearest its end `x`.
   auto point_near = [&](u32 e, u32 x) {
-    const u32 d = (p.h_face[2 * e] == null_u32 ? 2 * e : 2 * e + 1) << 1;
+    const u32 d = dart_encoding::dart(border_halfedge(p, e), false);
     return p.source(d) == x ? border_point[e] : border_point[e] + 1;
   };
   // What replaces face f next to its edge with end `x`: the centroid, or in a
@@ -456,7 +465,7 @@ void sqrt3_split(const Level& p, const Mask& mask, bool refine_border, Face_list
   auto apex = [&](u32 f, u32 x, u32 y) {
     if (centroid[f] != null_u32)
       return centroid[f];
-    const u32 hb = face_border[f], eb = hb >> 1;
+    const u32 hb = face_border[f], eb = dart_encoding::edge_of_halfedge(hb);
     const u32 shared = (p.h_target[hb] == x || p.source_of(hb) == x) ? x : y;
     return point_near(eb, shared);
   };
@@ -465,7 +474,7 @@ void sqrt3_split(const Level& p, const Mask& mask, bool refine_border, Face_list
     p.ne, faces,
     [&](u32 e, None&) { return is_border_edge(p, e) ? std::pair<u32, u32>(1, 3) : std::pair<u32, u32>(2, 6); },
     [&](u32 e, u32 list, u32 j, None&) {
-      const u32 h0 = 2 * e, h1 = 2 * e + 1;
+      const u32 h0 = dart_encoding::halfedge_of_edge(e, 0), h1 = dart_encoding::halfedge_of_edge(e, 1);
       u32 t[6];
       u32 n = 3;
       if (!is_border_edge(p, e)) {
@@ -481,7 +490,7 @@ void sqrt3_split(const Level& p, const Mask& mask, bool refine_border, Face_list
         if (centroid[f] != null_u32) {
           t[0] = a, t[1] = b, t[2] = centroid[f];
         } else {
-          t[0] = point_near(e, a), t[1] = point_near(e, b), t[2] = p.h_target[p.h_next[h] >> 1];
+          t[0] = point_near(e, a), t[1] = point_near(e, b), t[2] = p.h_target[dart_encoding::halfedge_of_dart(p.h_next[h])];
         }
       }
       std::copy(t, t + n, faces.vertex.begin() + j);

@@ -278,7 +278,7 @@ private:
         u32 sharp = 0;
         Crease::Semi_sharp_edges semi_sharp;
         for (u32 i = i0; i < i1; ++i) {
-          const float s = p.e_sharp[inc.edge_ends[i] >> 1];
+          const float s = p.e_sharp[dart_encoding::edge_of_halfedge(inc.edge_ends[i])];
           if (Crease::is_sharp(s)) {
             ++sharp;
             semi_sharp.add(s);
