@@ -37,6 +37,8 @@
 #include <utility>
 #include <vector>
 
+#include <csignal>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace io_tests {
@@ -171,6 +173,16 @@ fs::path scratch_directory()
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
+}
+
+// The names of the entries of `dir`, sorted (hidden ones included).
+std::vector<std::string> files_in_directory(const fs::path& dir)
+{
+  std::vector<std::string> names;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 void write_text(const fs::path& file, const std::string& text)
@@ -778,6 +790,62 @@ TEST(IO_errors, missing_file_unknown_extension_and_unwritable_file)
   const fs::path dir = scratch_directory();
   EXPECT_THROW(write_polygon_mesh((dir / "x.stl").string(), mesh), IO_error);
   EXPECT_FALSE(fs::exists(dir / "x.stl"));
+  fs::remove_all(dir);
+}
+
+// The bytes of a file, to compare a file before and after a failed write.
+std::string file_bytes(const fs::path& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+TEST(IO_errors, failed_write_keeps_the_old_file)
+{
+  const fs::path dir = scratch_directory();
+  const fs::path out = dir / "out.obj";
+  Mesh_d small, large;
+  read_polygon_mesh(test::data("nonorientable/mobius_min_5tris.obj"), small);
+  read_polygon_mesh(test::data("nonorientable/torus_24x12_quads.obj"), large);
+  write_polygon_mesh(out.string(), small);
+  const std::string before = file_bytes(out);
+  ASSERT_FALSE(before.empty());
+  // A file-size limit below the large mesh's size: the write fails part way
+  // (EFBIG), as on a full disk. The old file stays, and no temporary file.
+  struct rlimit old_limit;
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  void (*old_handler)(int) = std::signal(SIGXFSZ, SIG_IGN);
+  struct rlimit limit = old_limit;
+  limit.rlim_cur = 4096;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limit), 0);
+  bool threw = false;
+  try {
+    write_polygon_mesh(out.string(), large);
+  } catch (const IO_error& e) {
+    threw = true;
+    EXPECT_NE(std::string(e.what()).find("the old file is unchanged"), std::string::npos) << e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &old_limit);
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_TRUE(threw);
+  EXPECT_EQ(file_bytes(out), before);
+  EXPECT_EQ(files_in_directory(dir), std::vector<std::string>{"out.obj"});
+  // A coordinate that cannot be written: refused before the file is touched.
+  Mesh_d bad = small;
+  bad.point(*bad.vertices().begin()) = test::Kd::Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  EXPECT_THROW(write_polygon_mesh(out.string(), bad), IO_error);
+  EXPECT_EQ(file_bytes(out), before);
+  // Writing over the file that was read: the output replaces the input whole.
+  Mesh_d same;
+  read_polygon_mesh(out.string(), same);
+  write_polygon_mesh(out.string(), same);
+  Mesh_d again;
+  read_polygon_mesh(out.string(), again);
+  EXPECT_EQ(again.number_of_faces(), small.number_of_faces());
+  EXPECT_EQ(files_in_directory(dir), std::vector<std::string>{"out.obj"});
+  // A directory as the output, and a missing directory: refused up front.
+  EXPECT_THROW(write_polygon_mesh(dir.string(), small), IO_error);
+  EXPECT_THROW(write_polygon_mesh((dir / "missing" / "x.obj").string(), small), IO_error);
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,7 @@
 #ifndef CGAL_EXT_IO_POLYGON_MESH_IO_H
 #define CGAL_EXT_IO_POLYGON_MESH_IO_H
 
+#include <CGAL_ext/IO/internal/Atomic_output_file.h>
 #include <CGAL_ext/IO/internal/OFF_reader.h>
 #include <CGAL_ext/IO/internal/PLY_reader.h>
 #include <CGAL_ext/IO/internal/Text_scanning.h>
@@ -582,7 +583,9 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mobius_mesh
 ///
 /// \throws IO_error if the extension is unknown, a coordinate is not a finite
 ///   double (NaN, infinite, or beyond the doubles' range in an exact kernel),
-///   or the file cannot be written; the file is not created in the first two cases.
+///   or the file cannot be written. The data goes to a temporary file beside
+///   `filename`, flushed to the disk and renamed over `filename` once
+///   complete: whatever fails, an existing `filename` is left as it was.
 template <class P, class NP = parameters::Default_named_parameters>
 void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
                         const NP& np = parameters::default_values(), const Sharp_feature_options& options = {})
@@ -616,10 +619,10 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
   const bool binary =
     format == internal::Mesh_format::ply && choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), true);
-  errno = 0;
-  std::ofstream out(filename, binary ? std::ios::out | std::ios::binary : std::ios::out);
-  if (!out)
-    throw IO_error(filename, 0, "cannot open the file for writing" + internal::system_reason());
+  // A temporary file beside the target, renamed over it once complete: a
+  // failed or interrupted write never destroys the old file.
+  internal::Atomic_output_file file(filename, binary ? std::ios::out | std::ios::binary : std::ios::out);
+  std::ofstream& out = file.stream();
   const auto cgal_np = CGAL::parameters::stream_precision(precision);
   bool written = false;
   if (format == internal::Mesh_format::obj) {
@@ -650,9 +653,9 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
     CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
     written = CGAL::IO::write_PLY(out, points, polygons, cgal_np);
   }
-  out.flush();
-  if (!written || !out)
-    throw IO_error(filename, 0, "writing the file failed" + internal::system_reason());
+  if (!written)
+    throw IO_error(filename, 0, "writing the file failed" + internal::system_reason() + "; the old file is unchanged");
+  file.commit();
 }
 
 } // namespace IO
