@@ -34,16 +34,10 @@ const examples::Tool_usage usage{
   "  --weighting  how face normals make a vertex normal: area (default), uniform or angle.\n"
   "Writes OUT and prints its counts and the time taken as one line of JSON.\n"};
 
-CGAL_ext::Vertex_normal_weighting weighting_argument(const std::string& text)
-{
-  if (text == "area")
-    return CGAL_ext::Vertex_normal_weighting::area;
-  if (text == "uniform")
-    return CGAL_ext::Vertex_normal_weighting::uniform;
-  if (text == "angle")
-    return CGAL_ext::Vertex_normal_weighting::angle;
-  throw examples::Usage_error("--weighting '" + text + "' is not uniform, area or angle");
-}
+const examples::Choices<CGAL_ext::Vertex_normal_weighting> weightings = {
+  {"uniform", CGAL_ext::Vertex_normal_weighting::uniform},
+  {"area", CGAL_ext::Vertex_normal_weighting::area},
+  {"angle", CGAL_ext::Vertex_normal_weighting::angle}};
 
 int offset(int argc, char** argv)
 {
@@ -57,7 +51,7 @@ int offset(int argc, char** argv)
   const double distance = examples::real_argument("--distance", args.value("--distance", ""));
   if (!(distance > 0))
     throw examples::Usage_error("--distance '" + args.value("--distance", "") + "' is not positive");
-  const auto weighting = weighting_argument(args.value("--weighting", "area"));
+  const auto weighting = examples::choice_argument("--weighting", args.value("--weighting", "area"), weightings);
 
   Mesh mesh, out;
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);

@@ -87,6 +87,10 @@ if(CGAL_EXT_BUILD_TESTS)
            COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
                    "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--levels;2;--max-memory;1000"
                    -DNAME=subdivide "-DEXPECT=make 96 faces" -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+  # A bad value of an enumerated option names the accepted ones.
+  cgal_ext_tool_fails(example.subdivide.bad_scheme subdivide
+    "${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--scheme;butterfly"
+    "^subdivide: --scheme 'butterfly' is not catmull-clark, loop, linear, doo-sabin or sqrt3; usage: subdivide [^\n]+\n$")
   set_tests_properties(example.subdivide.sqrt3_on_quads example.subdivide.bad_option
                        example.subdivide.loop_on_quads PROPERTIES WILL_FAIL TRUE)
 endif()
