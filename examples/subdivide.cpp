@@ -21,7 +21,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -248,11 +247,16 @@ void run(const Settings& s)
   if (s.triangles)
     out_tags.triangle_subdivision = s.triangles;
   CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
-  std::cout << "{\"scheme\":\"" << examples::choice_name(schemes, s.scheme) << "\",\"kernel\":\""
-            << examples::choice_name(kernels, s.kernel) << "\",\"levels\":" << s.levels
-            << ",\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-            << ",\"faces\":" << mesh.number_of_faces() << ",\"hole_faces_removed\":" << hole_faces
-            << ",\"seconds\":" << seconds << "}" << std::endl;
+  examples::Json_object line;
+  line.add("scheme", examples::choice_name(schemes, s.scheme))
+    .add("kernel", examples::choice_name(kernels, s.kernel))
+    .add("levels", s.levels)
+    .add("vertices", mesh.number_of_vertices())
+    .add("edges", mesh.number_of_edges())
+    .add("faces", mesh.number_of_faces())
+    .add("hole_faces_removed", hole_faces)
+    .add("seconds", seconds);
+  examples::print_json_line(line);
 }
 
 int subdivide(int argc, char** argv)
