@@ -18,15 +18,10 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 namespace {
 
@@ -49,18 +44,12 @@ const examples::Tool_usage usage{
   "  --triangles       catmark, or smooth: OpenSubdiv's smooth-triangle rule, a smoother\n"
   "                    Catmull-Clark edge rule next to triangles (OBJ tag 't smoothtriangles')\n"
   "  --kernel          double (the default), epick or epeck\n"
-  "  --max-memory      refuse before starting if the result would need more bytes (estimated\n"
-  "                    at about 190 per output face; default: the machine's physical memory)\n"
+  "  --max-memory      refuse before starting if the subdivision would need more bytes (the\n"
+  "                    library's estimate of its peak; default: the machine's physical memory)\n"
   "The OBJ tags give the defaults of --boundary (else edge-only), --crease-method (else uniform)\n"
   "and --triangles (else catmark); flags override them. The output carries the tags its input\n"
   "had or its flags set, and no others. Prints one JSON line with the result's counts and the\n"
   "subdivision time (without I/O).\n"};
-
-double physical_memory()
-{
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? double(pages) * double(page) : HUGE_VAL;
-}
 
 enum class Scheme { catmull_clark, loop, linear, doo_sabin, sqrt3 };
 enum class Kernel_choice { simple_cartesian, epick, epeck };
@@ -93,7 +82,7 @@ struct Settings
   std::optional<CGAL_ext::Boundary_interpolation> boundary;
   std::optional<CGAL_ext::Crease_method> crease_method;
   std::optional<CGAL_ext::Triangle_subdivision> triangles;
-  double max_memory = physical_memory();
+  double max_memory = S::Refinement_options().maximum_memory; // the library's default
 };
 
 Settings parse(int argc, char** argv)
@@ -130,43 +119,6 @@ bool is_triangle_mesh(const Mesh& mesh)
     if (mesh.degree(f) != 3)
       return false;
   return true;
-}
-
-// The faces after `levels` steps of `scheme`: exact for the schemes that split
-// every face alike, a lower bound for Doo-Sabin (each step at least triples).
-template <class Mesh>
-double output_faces(const Mesh& mesh, Scheme scheme, unsigned levels)
-{
-  const double f = double(mesh.number_of_faces());
-  if (levels == 0)
-    return f;
-  double corners = 0;
-  for (auto face : mesh.faces())
-    corners += double(mesh.degree(face));
-  if (scheme == Scheme::sqrt3 || scheme == Scheme::doo_sabin)
-    return f * std::pow(3.0, levels);
-  if (scheme == Scheme::loop || (scheme == Scheme::linear && is_triangle_mesh(mesh)))
-    return f * std::pow(4.0, levels);
-  return corners * std::pow(4.0, levels - 1); // an n-gon into n quads, then quads into four
-}
-
-// Bytes per output face: the subdivision's peak of about 123 bytes per quad
-// (doc/benchmarks.md) and the soup that writing copies the result into (a
-// vector of indices per face and a point per vertex, about 70 bytes per quad).
-constexpr double bytes_per_output_face = 190;
-
-template <class Mesh>
-void check_memory(const Mesh& mesh, const Settings& s)
-{
-  const double faces = output_faces(mesh, s.scheme, s.levels);
-  const double bytes = faces * bytes_per_output_face;
-  if (bytes > s.max_memory) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "%u levels of %s make %.0f faces, which need about %.3g bytes; the limit is %.3g (--max-memory)",
-                  s.levels, examples::choice_name(schemes, s.scheme), faces, bytes, s.max_memory);
-    throw std::runtime_error(text);
-  }
 }
 
 // Under Boundary_interpolation::none OpenSubdiv leaves out the faces it
@@ -213,13 +165,15 @@ void run(const Settings& s)
   const auto crease = s.crease_method ? *s.crease_method : tags.crease_method.value_or(CGAL_ext::Crease_method::uniform);
   const auto triangles =
     s.triangles ? *s.triangles : tags.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark);
+  // The library refuses, before it allocates anything, a subdivision whose
+  // estimated peak of memory is above the limit.
   const auto np = CGAL_ext::parameters::number_of_iterations(s.levels)
                     .boundary_interpolation(boundary)
                     .crease_method(crease)
                     .vertex_rule(s.vertex_rule)
-                    .triangle_subdivision(triangles);
+                    .triangle_subdivision(triangles)
+                    .maximum_memory(s.max_memory);
 
-  check_memory(mesh, s);
   const auto start = std::chrono::steady_clock::now();
   switch (s.scheme) {
   case Scheme::loop: S::loop(mesh, np); break;
