@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <exception>
 #include <initializer_list>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -102,6 +104,53 @@ inline double real_argument(const std::string& what, const std::string& text)
   if (text.empty() || *end != '\0' || !std::isfinite(x))
     throw Usage_error(what + " '" + text + "' is not a finite number");
   return x;
+}
+
+/// One accepted value of an enumerated option: its name on the command line
+/// and what it stands for.
+template <class T>
+struct Choice
+{
+  const char* name;
+  T value;
+};
+
+/// The accepted values of an enumerated option, in the order the error
+/// message lists them.
+template <class T>
+using Choices = std::vector<Choice<T>>;
+
+/// The value named `text` among `choices`, or a Usage_error
+/// "OPTION 'TEXT' is not A, B or C" listing the accepted names.
+template <class T>
+T choice_argument(const std::string& option, const std::string& text, const Choices<T>& choices)
+{
+  for (const Choice<T>& c : choices)
+    if (text == c.name)
+      return c.value;
+  std::string names;
+  for (std::size_t i = 0; i < choices.size(); ++i)
+    names += std::string(i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].name;
+  throw Usage_error(option + " '" + text + "' is not " + names);
+}
+
+/// The value of the enumerated `option` if it is given (see choice_argument()).
+template <class T>
+std::optional<T> choice_option(const Arguments& args, const std::string& option, const Choices<T>& choices)
+{
+  if (!args.has(option))
+    return std::nullopt;
+  return choice_argument(option, args.value(option, ""), choices);
+}
+
+/// The name of `value` among `choices` (the first that stands for it).
+template <class T>
+const char* choice_name(const Choices<T>& choices, T value)
+{
+  for (const Choice<T>& c : choices)
+    if (c.value == value)
+      return c.name;
+  throw std::logic_error("a value without a name among the choices");
 }
 
 /// Runs a tool: `--help` or `-h` anywhere prints the usage on stdout (exit

@@ -25,8 +25,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iostream>
-#include <sstream>
 #include <string>
 
 namespace S = CGAL_ext::Subdivision;
@@ -98,10 +96,9 @@ int custom_mask(int argc, char** argv)
   if (!out.empty())
     CGAL_ext::IO::write_polygon_mesh(out, warren);
 
-  std::cout << "{\"mask\":\"warren_loop\",\"levels\":" << levels << ",\"distance_to_loop\":" << largest << ",";
-  std::ostringstream summary;
-  examples::print_mesh_summary(warren, summary);
-  std::cout << summary.str().substr(1); // the summary's fields, in the same object
+  examples::Json_object line;
+  line.add("mask", "warren_loop").add("levels", levels).add("distance_to_loop", largest);
+  examples::print_json_line(line.append(examples::mesh_summary(warren)));
   return 0;
 }
 

@@ -26,10 +26,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
-#include <iostream>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <string>
 
 namespace {
@@ -108,16 +106,7 @@ int decimate(int argc, char** argv)
   CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same
   const std::optional<double> hausdorff = hausdorff_distance(mesh, input);
 
-  std::ostringstream summary;
-  examples::print_mesh_summary(mesh, summary);
-  std::string line = summary.str();
-  line.erase(line.find_last_of('}'));
-  std::cout << line << ",\"seconds\":" << seconds << ",\"hausdorff\":";
-  if (hausdorff)
-    std::cout << *hausdorff;
-  else
-    std::cout << "null";
-  std::cout << "}" << std::endl;
+  examples::print_json_line(examples::mesh_summary(mesh).add("seconds", seconds).add("hausdorff", hausdorff));
   return 0;
 }
 

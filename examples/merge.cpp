@@ -14,7 +14,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
-#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,7 +44,10 @@ const examples::Tool_usage usage{
   "mobius_edges (left once oriented), orientable, closed, components, euler_characteristic,\n"
   "valid.\n"};
 
-const std::map<std::string, CGAL_ext::Merge_strategy> manual_strategies = {
+// The strategies by name: auto (none of the library's manual strategies)
+// glues what lies within the tolerance.
+const examples::Choices<std::optional<CGAL_ext::Merge_strategy>> strategies = {
+  {"auto", std::nullopt},
   {"keep-first", CGAL_ext::Merge_strategy::keep_first},
   {"keep-second", CGAL_ext::Merge_strategy::keep_second},
   {"average", CGAL_ext::Merge_strategy::average},
@@ -66,11 +69,9 @@ int merge(int argc, char** argv)
   if (args.positional.size() != 3)
     throw examples::Usage_error("expected three file names, got " + std::to_string(args.positional.size()));
   const double tolerance = examples::real_argument("the tolerance", args.value("--tolerance", "0"));
-  const std::string strategy = args.value("--strategy", "auto");
-  const auto manual = manual_strategies.find(strategy);
-  if (strategy != "auto" && manual == manual_strategies.end())
-    throw examples::Usage_error("unknown strategy '" + strategy + "'");
-  if (strategy == "auto" && args.has("--loops"))
+  const std::optional<CGAL_ext::Merge_strategy> manual =
+    examples::choice_argument("--strategy", args.value("--strategy", "auto"), strategies);
+  if (!manual && args.has("--loops"))
     throw examples::Usage_error("--loops needs a manual strategy");
   std::string loops = args.value("--loops", "");
   const std::size_t comma = loops.find(',');
@@ -80,14 +81,14 @@ int merge(int argc, char** argv)
   Mesh a, b;
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], a);
   CGAL_ext::IO::read_polygon_mesh(args.positional[1], b);
-  if (strategy == "auto") {
+  if (!manual) {
     CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(tolerance));
   } else {
     const CGAL_ext::Border_pairing pairing =
       args.has("--loops") ? CGAL_ext::aligned_border_loops(a, loop_numbered(a, loops.substr(0, comma), "A"), b,
                                                            loop_numbered(b, loops.substr(comma + 1), "B"))
                           : CGAL_ext::facing_borders(a, b);
-    CGAL_ext::merge_borders(a, b, pairing, manual->second);
+    CGAL_ext::merge_borders(a, b, pairing, *manual);
   }
   CGAL_ext::IO::write_polygon_mesh(args.positional[2], a);
   examples::print_mesh_summary(a);

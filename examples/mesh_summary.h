@@ -3,6 +3,7 @@
 #define CGAL_EXT_EXAMPLES_MESH_SUMMARY_H
 
 #include "arguments.h"
+#include "json_line.h"
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -18,19 +19,29 @@ namespace examples {
 // as it stands depends on how its faces happen to be oriented; this one
 // depends on the surface only, so every tool gives the same number for it.
 template <class P>
-void print_mesh_summary(const CGAL_ext::Mobius_mesh<P>& mesh, std::ostream& out = std::cout)
+Json_object mesh_summary(const CGAL_ext::Mobius_mesh<P>& mesh)
 {
-  const char* const boolean[] = {"false", "true"};
   CGAL_ext::Mobius_mesh<P> oriented = mesh;
   const std::size_t mobius_edges = CGAL_ext::orient(oriented);
-  out << "{\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-      << ",\"faces\":" << mesh.number_of_faces() << ",\"border_loops\":" << CGAL_ext::number_of_border_cycles(mesh)
-      << ",\"mobius_edges\":" << mobius_edges
-      << ",\"orientable\":" << boolean[CGAL_ext::is_orientable(mesh)]
-      << ",\"closed\":" << boolean[CGAL_ext::is_closed(mesh)]
-      << ",\"components\":" << CGAL_ext::connected_components(mesh).count
-      << ",\"euler_characteristic\":" << CGAL_ext::euler_characteristic(mesh)
-      << ",\"valid\":" << boolean[mesh.is_valid()] << "}" << std::endl;
+  Json_object summary;
+  summary.add("vertices", mesh.number_of_vertices())
+    .add("edges", mesh.number_of_edges())
+    .add("faces", mesh.number_of_faces())
+    .add("border_loops", CGAL_ext::number_of_border_cycles(mesh))
+    .add("mobius_edges", mobius_edges)
+    .add("orientable", CGAL_ext::is_orientable(mesh))
+    .add("closed", CGAL_ext::is_closed(mesh))
+    .add("components", CGAL_ext::connected_components(mesh).count)
+    .add("euler_characteristic", CGAL_ext::euler_characteristic(mesh))
+    .add("valid", mesh.is_valid());
+  return summary;
+}
+
+/// Prints mesh_summary() as the tool's line.
+template <class P>
+void print_mesh_summary(const CGAL_ext::Mobius_mesh<P>& mesh, std::ostream& out = std::cout)
+{
+  print_json_line(mesh_summary(mesh), out);
 }
 
 } // namespace examples

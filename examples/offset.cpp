@@ -11,6 +11,7 @@
 // A bad file or option: one line on stderr, exit status 2.
 
 #include "arguments.h"
+#include "json_line.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
@@ -19,7 +20,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <chrono>
-#include <iostream>
 #include <string>
 
 namespace {
@@ -34,16 +34,10 @@ const examples::Tool_usage usage{
   "  --weighting  how face normals make a vertex normal: area (default), uniform or angle.\n"
   "Writes OUT and prints its counts and the time taken as one line of JSON.\n"};
 
-CGAL_ext::Vertex_normal_weighting weighting_argument(const std::string& text)
-{
-  if (text == "area")
-    return CGAL_ext::Vertex_normal_weighting::area;
-  if (text == "uniform")
-    return CGAL_ext::Vertex_normal_weighting::uniform;
-  if (text == "angle")
-    return CGAL_ext::Vertex_normal_weighting::angle;
-  throw examples::Usage_error("--weighting '" + text + "' is not uniform, area or angle");
-}
+const examples::Choices<CGAL_ext::Vertex_normal_weighting> weightings = {
+  {"uniform", CGAL_ext::Vertex_normal_weighting::uniform},
+  {"area", CGAL_ext::Vertex_normal_weighting::area},
+  {"angle", CGAL_ext::Vertex_normal_weighting::angle}};
 
 int offset(int argc, char** argv)
 {
@@ -57,7 +51,7 @@ int offset(int argc, char** argv)
   const double distance = examples::real_argument("--distance", args.value("--distance", ""));
   if (!(distance > 0))
     throw examples::Usage_error("--distance '" + args.value("--distance", "") + "' is not positive");
-  const auto weighting = weighting_argument(args.value("--weighting", "area"));
+  const auto weighting = examples::choice_argument("--weighting", args.value("--weighting", "area"), weightings);
 
   Mesh mesh, out;
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
@@ -66,12 +60,17 @@ int offset(int argc, char** argv)
     mesh, distance, out, CGAL_ext::parameters::solid(args.has("--solid")).vertex_normal_weighting(weighting));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], out);
-  const char* const boolean[] = {"false", "true"};
-  std::cout << "{\"vertices\":" << r.vertices << ",\"edges\":" << r.edges << ",\"faces\":" << r.faces
-            << ",\"rim_faces\":" << r.rim_faces << ",\"closed\":" << boolean[r.closed]
-            << ",\"orientable\":" << boolean[r.orientable] << ",\"components\":" << r.components
-            << ",\"euler_characteristic\":" << r.euler_characteristic << ",\"seconds\":" << seconds << "}"
-            << std::endl;
+  examples::Json_object line;
+  line.add("vertices", r.vertices)
+    .add("edges", r.edges)
+    .add("faces", r.faces)
+    .add("rim_faces", r.rim_faces)
+    .add("closed", r.closed)
+    .add("orientable", r.orientable)
+    .add("components", r.components)
+    .add("euler_characteristic", r.euler_characteristic)
+    .add("seconds", seconds);
+  examples::print_json_line(line);
   return 0;
 }
 

@@ -33,10 +33,14 @@ add_test(NAME offset.hemi_icosahedron_counts COMMAND offset ${_data}/rp2_hemi_ic
 set_tests_properties(offset.hemi_icosahedron_counts PROPERTIES PASS_REGULAR_EXPRESSION
   "^{\"vertices\":12,\"edges\":30,\"faces\":20,\"rim_faces\":0,")
 
-# A file that is not there, and a distance that is not a number: one line, exit 2.
+# A file that is not there, a distance that is not a number, a weighting that is none of the
+# accepted ones: one line, exit 2.
 cgal_ext_tool_fails(offset.fails.missing_file offset
   "${_out}/no_such.obj;${_out}/x.obj;--distance;1"
   "^offset: [^\n]+\n$")
 cgal_ext_tool_fails(offset.fails.distance offset
   "${_data}/mobius_min_5tris.obj;${_out}/x.obj;--distance;-1"
   "^offset: --distance '-1' is not positive; usage: [^\n]+\n$")
+cgal_ext_tool_fails(offset.fails.weighting offset
+  "${_data}/mobius_min_5tris.obj;${_out}/x.obj;--distance;1;--weighting;median"
+  "^offset: --weighting 'median' is not uniform, area or angle; usage: [^\n]+\n$")

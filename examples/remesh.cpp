@@ -11,6 +11,7 @@
 // A bad file or option: one line on stderr, exit status 2.
 
 #include "arguments.h"
+#include "json_line.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
@@ -20,7 +21,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <chrono>
-#include <iostream>
 #include <string>
 
 namespace {
@@ -86,16 +86,19 @@ int remesh(int argc, char** argv)
     CGAL_ext::isotropic_remeshing(mesh, L, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
-  const char* const boolean[] = {"false", "true"};
-  std::cout << "{\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-            << ",\"faces\":" << mesh.number_of_faces()
-            << ",\"border_loops\":" << CGAL_ext::number_of_border_cycles(mesh)
-            << ",\"orientable\":" << boolean[CGAL_ext::is_orientable(mesh)]
-            << ",\"closed\":" << boolean[CGAL_ext::is_closed(mesh)]
-            << ",\"components\":" << CGAL_ext::connected_components(mesh).count
-            << ",\"euler_characteristic\":" << CGAL_ext::euler_characteristic(mesh)
-            << ",\"valid\":" << boolean[mesh.is_valid()] << ",\"in_band\":" << share_in_band(mesh, L)
-            << ",\"seconds\":" << seconds << "}" << std::endl;
+  examples::Json_object line;
+  line.add("vertices", mesh.number_of_vertices())
+    .add("edges", mesh.number_of_edges())
+    .add("faces", mesh.number_of_faces())
+    .add("border_loops", CGAL_ext::number_of_border_cycles(mesh))
+    .add("orientable", CGAL_ext::is_orientable(mesh))
+    .add("closed", CGAL_ext::is_closed(mesh))
+    .add("components", CGAL_ext::connected_components(mesh).count)
+    .add("euler_characteristic", CGAL_ext::euler_characteristic(mesh))
+    .add("valid", mesh.is_valid())
+    .add("in_band", share_in_band(mesh, L))
+    .add("seconds", seconds);
+  examples::print_json_line(line);
   return 0;
 }
 

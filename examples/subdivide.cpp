@@ -18,17 +18,10 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <iostream>
-#include <map>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 namespace {
 
@@ -51,43 +44,46 @@ const examples::Tool_usage usage{
   "  --triangles       catmark, or smooth: OpenSubdiv's smooth-triangle rule, a smoother\n"
   "                    Catmull-Clark edge rule next to triangles (OBJ tag 't smoothtriangles')\n"
   "  --kernel          double (the default), epick or epeck\n"
-  "  --max-memory      refuse before starting if the result would need more bytes (estimated\n"
-  "                    at about 190 per output face; default: the machine's physical memory)\n"
+  "  --max-memory      refuse before starting if the subdivision would need more bytes (the\n"
+  "                    library's estimate of its peak; default: the machine's physical memory)\n"
   "The OBJ tags give the defaults of --boundary (else edge-only), --crease-method (else uniform)\n"
   "and --triangles (else catmark); flags override them. The output carries the tags its input\n"
   "had or its flags set, and no others. Prints one JSON line with the result's counts and the\n"
   "subdivision time (without I/O).\n"};
 
-double physical_memory()
-{
-  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && page > 0 ? double(pages) * double(page) : HUGE_VAL;
-}
+enum class Scheme { catmull_clark, loop, linear, doo_sabin, sqrt3 };
+enum class Kernel_choice { simple_cartesian, epick, epeck };
+
+const examples::Choices<Scheme> schemes = {{"catmull-clark", Scheme::catmull_clark},
+                                           {"loop", Scheme::loop},
+                                           {"linear", Scheme::linear},
+                                           {"doo-sabin", Scheme::doo_sabin},
+                                           {"sqrt3", Scheme::sqrt3}};
+const examples::Choices<Kernel_choice> kernels = {
+  {"double", Kernel_choice::simple_cartesian}, {"epick", Kernel_choice::epick}, {"epeck", Kernel_choice::epeck}};
+const examples::Choices<S::Vertex_rule> vertex_rules = {{"standard", S::Vertex_rule::standard},
+                                                        {"edge-points", S::Vertex_rule::edge_points}};
+const examples::Choices<CGAL_ext::Boundary_interpolation> boundaries = {
+  {"none", CGAL_ext::Boundary_interpolation::none},
+  {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
+  {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}};
+const examples::Choices<CGAL_ext::Crease_method> crease_methods = {
+  {"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}};
+const examples::Choices<CGAL_ext::Triangle_subdivision> triangle_rules = {
+  {"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}};
 
 struct Settings
 {
-  std::string in, out, scheme = "catmull-clark", kernel = "double";
+  std::string in, out;
+  Scheme scheme = Scheme::catmull_clark;
+  Kernel_choice kernel = Kernel_choice::simple_cartesian;
   unsigned levels = 1;
   S::Vertex_rule vertex_rule = S::Vertex_rule::standard;
   std::optional<CGAL_ext::Boundary_interpolation> boundary;
   std::optional<CGAL_ext::Crease_method> crease_method;
   std::optional<CGAL_ext::Triangle_subdivision> triangles;
-  double max_memory = physical_memory();
+  double max_memory = S::Refinement_options().maximum_memory; // the library's default
 };
-
-// The value of `option` among `choices`, if given.
-template <class T>
-std::optional<T> pick(const examples::Arguments& args, const std::string& option,
-                      const std::map<std::string, T>& choices)
-{
-  if (!args.has(option))
-    return std::nullopt;
-  const std::string value = args.value(option, "");
-  const auto it = choices.find(value);
-  if (it == choices.end())
-    throw examples::Usage_error("bad value '" + value + "' for " + option);
-  return it->second;
-}
 
 Settings parse(int argc, char** argv)
 {
@@ -100,29 +96,14 @@ Settings parse(int argc, char** argv)
   Settings s;
   s.in = args.positional[0];
   s.out = args.positional[1];
-  const std::map<std::string, std::string> schemes = {{"catmull-clark", "catmull-clark"}, {"loop", "loop"},
-                                                      {"linear", "linear"}, {"doo-sabin", "doo-sabin"},
-                                                      {"sqrt3", "sqrt3"}};
-  s.scheme = pick(args, "--scheme", schemes).value_or(s.scheme);
-  s.kernel = pick<std::string>(args, "--kernel", {{"double", "double"}, {"epick", "epick"}, {"epeck", "epeck"}})
-               .value_or(s.kernel);
+  s.scheme = examples::choice_argument("--scheme", args.value("--scheme", "catmull-clark"), schemes);
+  s.kernel = examples::choice_argument("--kernel", args.value("--kernel", "double"), kernels);
   if (args.has("--levels"))
     s.levels = unsigned(examples::integer_argument("--levels", args.value("--levels", ""), 0, 15));
-  s.vertex_rule = pick<S::Vertex_rule>(args, "--vertex-rule",
-                                       {{"standard", S::Vertex_rule::standard},
-                                        {"edge-points", S::Vertex_rule::edge_points}})
-                    .value_or(s.vertex_rule);
-  s.boundary = pick<CGAL_ext::Boundary_interpolation>(
-    args, "--boundary",
-    {{"none", CGAL_ext::Boundary_interpolation::none},
-     {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
-     {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}});
-  s.crease_method = pick<CGAL_ext::Crease_method>(
-    args, "--crease-method",
-    {{"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}});
-  s.triangles = pick<CGAL_ext::Triangle_subdivision>(
-    args, "--triangles",
-    {{"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}});
+  s.vertex_rule = examples::choice_argument("--vertex-rule", args.value("--vertex-rule", "standard"), vertex_rules);
+  s.boundary = examples::choice_option(args, "--boundary", boundaries);
+  s.crease_method = examples::choice_option(args, "--crease-method", crease_methods);
+  s.triangles = examples::choice_option(args, "--triangles", triangle_rules);
   if (args.has("--max-memory")) {
     s.max_memory = examples::real_argument("--max-memory", args.value("--max-memory", ""));
     if (!(s.max_memory > 0))
@@ -138,43 +119,6 @@ bool is_triangle_mesh(const Mesh& mesh)
     if (mesh.degree(f) != 3)
       return false;
   return true;
-}
-
-// The faces after `levels` steps of `scheme`: exact for the schemes that split
-// every face alike, a lower bound for Doo-Sabin (each step at least triples).
-template <class Mesh>
-double output_faces(const Mesh& mesh, const std::string& scheme, unsigned levels)
-{
-  const double f = double(mesh.number_of_faces());
-  if (levels == 0)
-    return f;
-  double corners = 0;
-  for (auto face : mesh.faces())
-    corners += double(mesh.degree(face));
-  if (scheme == "sqrt3" || scheme == "doo-sabin")
-    return f * std::pow(3.0, levels);
-  if (scheme == "loop" || (scheme == "linear" && is_triangle_mesh(mesh)))
-    return f * std::pow(4.0, levels);
-  return corners * std::pow(4.0, levels - 1); // an n-gon into n quads, then quads into four
-}
-
-// Bytes per output face: the subdivision's peak of about 123 bytes per quad
-// (doc/benchmarks/subdivision.md) and the soup that writing copies the result into (a
-// vector of indices per face and a point per vertex, about 70 bytes per quad).
-constexpr double bytes_per_output_face = 190;
-
-template <class Mesh>
-void check_memory(const Mesh& mesh, const Settings& s)
-{
-  const double faces = output_faces(mesh, s.scheme, s.levels);
-  const double bytes = faces * bytes_per_output_face;
-  if (bytes > s.max_memory) {
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "%u levels of %s make %.0f faces, which need about %.3g bytes; the limit is %.3g (--max-memory)",
-                  s.levels, s.scheme.c_str(), faces, bytes, s.max_memory);
-    throw std::runtime_error(text);
-  }
 }
 
 // Under Boundary_interpolation::none OpenSubdiv leaves out the faces it
@@ -221,26 +165,28 @@ void run(const Settings& s)
   const auto crease = s.crease_method ? *s.crease_method : tags.crease_method.value_or(CGAL_ext::Crease_method::uniform);
   const auto triangles =
     s.triangles ? *s.triangles : tags.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark);
+  // The library refuses, before it allocates anything, a subdivision whose
+  // estimated peak of memory is above the limit.
   const auto np = CGAL_ext::parameters::number_of_iterations(s.levels)
                     .boundary_interpolation(boundary)
                     .crease_method(crease)
                     .vertex_rule(s.vertex_rule)
-                    .triangle_subdivision(triangles);
+                    .triangle_subdivision(triangles)
+                    .maximum_memory(s.max_memory);
 
-  check_memory(mesh, s);
   const auto start = std::chrono::steady_clock::now();
-  if (s.scheme == "loop")
-    S::loop(mesh, np);
-  else if (s.scheme == "linear" && is_triangle_mesh(mesh))
-    S::linear(mesh, np); // midpoints, each triangle into four
-  else if (s.scheme == "linear")
-    S::bilinear(mesh, np); // midpoints and centroids, each n-gon into n quads
-  else if (s.scheme == "doo-sabin")
-    S::doo_sabin(mesh, np);
-  else if (s.scheme == "sqrt3")
-    S::sqrt3(mesh, np);
-  else
-    S::catmull_clark(mesh, np);
+  switch (s.scheme) {
+  case Scheme::loop: S::loop(mesh, np); break;
+  case Scheme::linear:
+    if (is_triangle_mesh(mesh))
+      S::linear(mesh, np); // midpoints, each triangle into four
+    else
+      S::bilinear(mesh, np); // midpoints and centroids, each n-gon into n quads
+    break;
+  case Scheme::doo_sabin: S::doo_sabin(mesh, np); break;
+  case Scheme::sqrt3: S::sqrt3(mesh, np); break;
+  case Scheme::catmull_clark: S::catmull_clark(mesh, np); break;
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::size_t hole_faces = boundary == CGAL_ext::Boundary_interpolation::none ? remove_hole_faces(mesh) : 0;
 
@@ -255,21 +201,26 @@ void run(const Settings& s)
   if (s.triangles)
     out_tags.triangle_subdivision = s.triangles;
   CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
-  std::cout << "{\"scheme\":\"" << s.scheme << "\",\"kernel\":\"" << s.kernel << "\",\"levels\":" << s.levels
-            << ",\"vertices\":" << mesh.number_of_vertices() << ",\"edges\":" << mesh.number_of_edges()
-            << ",\"faces\":" << mesh.number_of_faces() << ",\"hole_faces_removed\":" << hole_faces
-            << ",\"seconds\":" << seconds << "}" << std::endl;
+  examples::Json_object line;
+  line.add("scheme", examples::choice_name(schemes, s.scheme))
+    .add("kernel", examples::choice_name(kernels, s.kernel))
+    .add("levels", s.levels)
+    .add("vertices", mesh.number_of_vertices())
+    .add("edges", mesh.number_of_edges())
+    .add("faces", mesh.number_of_faces())
+    .add("hole_faces_removed", hole_faces)
+    .add("seconds", seconds);
+  examples::print_json_line(line);
 }
 
 int subdivide(int argc, char** argv)
 {
   const Settings s = parse(argc, argv);
-  if (s.kernel == "epick")
-    run<CGAL::Exact_predicates_inexact_constructions_kernel>(s);
-  else if (s.kernel == "epeck")
-    run<CGAL::Exact_predicates_exact_constructions_kernel>(s);
-  else
-    run<CGAL::Simple_cartesian<double>>(s);
+  switch (s.kernel) {
+  case Kernel_choice::epick: run<CGAL::Exact_predicates_inexact_constructions_kernel>(s); break;
+  case Kernel_choice::epeck: run<CGAL::Exact_predicates_exact_constructions_kernel>(s); break;
+  case Kernel_choice::simple_cartesian: run<CGAL::Simple_cartesian<double>>(s); break;
+  }
   return 0;
 }
 

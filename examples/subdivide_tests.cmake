@@ -76,17 +76,29 @@ if(CGAL_EXT_BUILD_TESTS)
                    -DIN=${_data}/opensubdiv/catmark_edgecorner.obj -DOUT=${CMAKE_CURRENT_BINARY_DIR}/edgecorner.obj
                    "-DARGS=--crease-method;chaikin"
                    "-DTAGS=t interpolateboundary 1/0/0 1;t creasemethod 0/0/1 chaikin" -P ${_tags_script})
-  # Refused up front: the cube's 6 quads at level 12 are 6 * 4^12 = 100663296
-  # faces; level 2 (96 faces) under a limit of 1000 bytes.
+  # Refused up front by the library, under the limit --max-memory passes to it:
+  # the cube's 6 quads at level 12 are 6 * 4^12 = 100663296 faces (about 11 GB);
+  # level 2 (96 faces) under a limit of 1000 bytes; Doo-Sabin, whose faces also
+  # grow fourfold, at level 10 (about 6 M faces) under 0.2 GB.
   add_test(NAME example.subdivide.too_large_for_memory
            COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
                    "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--levels;12;--max-memory;1e9"
-                   -DNAME=subdivide "-DEXPECT=make 100663296 faces, which need about [0-9.e+]+ bytes; the limit is 1e\\+09"
+                   -DNAME=subdivide
+                   "-DEXPECT=subdividing 12 levels would need about [0-9.]+ GB of memory, more than the limit of 1 GB"
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
   add_test(NAME example.subdivide.over_a_given_limit
            COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
                    "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--levels;2;--max-memory;1000"
-                   -DNAME=subdivide "-DEXPECT=make 96 faces" -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+                   -DNAME=subdivide "-DEXPECT=subdividing 2 levels would need about" -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+  add_test(NAME example.subdivide.doo_sabin_over_a_given_limit
+           COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
+                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--scheme;doo-sabin;--levels;10;--max-memory;2e8"
+                   -DNAME=subdivide "-DEXPECT=subdividing 10 levels would need about [0-9.]+ GB of memory, more than the limit of 0.2 GB"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+  # A bad value of an enumerated option names the accepted ones.
+  cgal_ext_tool_fails(example.subdivide.bad_scheme subdivide
+    "${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--scheme;butterfly"
+    "^subdivide: --scheme 'butterfly' is not catmull-clark, loop, linear, doo-sabin or sqrt3; usage: subdivide [^\n]+\n$")
   set_tests_properties(example.subdivide.sqrt3_on_quads example.subdivide.bad_option
                        example.subdivide.loop_on_quads PROPERTIES WILL_FAIL TRUE)
 endif()

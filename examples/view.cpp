@@ -10,6 +10,7 @@
 // A bad file or option, or no display: one line on stderr, exit status 2.
 
 #include "arguments.h"
+#include "json_line.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
@@ -18,7 +19,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <array>
-#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -97,15 +97,14 @@ int view(int argc, char** argv)
     mobius += mesh.is_mobius(e);
     border += mesh.is_border(e);
   }
-  std::string quoted; // the name as a JSON string
-  for (const char c : out) {
-    if (c == '"' || c == '\\')
-      quoted += '\\';
-    quoted += c;
-  }
-  std::cout << "{\"screenshot\":\"" << quoted << "\",\"width\":" << settings.width << ",\"height\":" << settings.height
-            << ",\"faces\":" << mesh.number_of_faces() << ",\"mobius_edges\":" << mobius
-            << ",\"border_edges\":" << border << "}" << std::endl;
+  examples::Json_object line;
+  line.add("screenshot", out)
+    .add("width", settings.width)
+    .add("height", settings.height)
+    .add("faces", mesh.number_of_faces())
+    .add("mobius_edges", mobius)
+    .add("border_edges", border);
+  examples::print_json_line(line);
   return 0;
 }
 
