@@ -9,6 +9,7 @@
 
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
+#include <CGAL_ext/Mobius_mesh/internal/Corner_channel_array.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
 #include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
@@ -304,6 +305,12 @@ public:
   /// `LvaluePropertyMap`; it converts to `false` when null.
   template <class I, class T>
   using Property_map = internal::Property_map<I, T>;
+
+  /// A corner channel with values of type `T`: per-corner data (texture
+  /// coordinates, corner normals) as OBJ and OpenSubdiv model it, an index
+  /// per face corner into the channel's own values (see `add_corner_channel()`).
+  template <class T>
+  using Corner_channel = internal::Corner_channel<Halfedge_index, T>;
 
   ///@{
   /// Ranges of the indices of one kind of element, in index order, removed
@@ -617,9 +624,65 @@ public:
     map = Property_map<I, T>();
     return removed;
   }
-  /// The names of the property maps with key type `I`, the point map included.
+  /// The names of the property maps with key type `I`, the point map
+  /// included (for `Halfedge_index`, the corner channels too).
   template <class I>
   std::vector<std::string> properties() const { return container<I>().names(); }
+
+  /// \name Corner channels
+  /// Per-corner data, one more kind of property: each face corner holds an
+  /// index into the channel's own array of values, so that corners at one
+  /// vertex share a value where the data is continuous and hold different
+  /// ones along a *seam* (OBJ's `f v/vt/vn`, OpenSubdiv's face-varying
+  /// channels). The indices are a halfedge property (the names share the
+  /// halfedge maps' namespace, `"c:uv"` by convention), so every operation
+  /// that keeps halfedge maps keeps channels: copies, `join()` (the joined
+  /// mesh's values follow this mesh's), `collect_garbage()`; and
+  /// `reverse_face_orientation()` (and so `orient()`) keeps each corner's
+  /// index at its vertex. A corner is the corner of `face(d)` at `target(d)`
+  /// for a face dart `d`; its value does not depend on the way the face is
+  /// walked, so Möbius edges need nothing special.
+  /// @{
+
+  /// Adds a corner channel named `name` with values of type `T`, or returns
+  /// the existing one; `second` tells whether it was created. If a halfedge
+  /// map or channel of that name exists with another type, returns a null
+  /// channel and `false`. A new channel has no values and no corner has an index.
+  template <class T>
+  std::pair<Corner_channel<T>, bool> add_corner_channel(const std::string& name)
+  {
+    auto [array, created] = hprops_.template add_array<internal::Corner_channel_array<T>>(name);
+    return {Corner_channel<T>(array), created};
+  }
+  /// The corner channel named `name` with values of type `T`, if any.
+  template <class T>
+  std::optional<Corner_channel<T>> corner_channel(const std::string& name) const
+  {
+    if (auto* array = hprops_.template find_array<internal::Corner_channel_array<T>>(name))
+      return Corner_channel<T>(array);
+    return std::nullopt;
+  }
+  /// Removes a corner channel (and nulls the handle); false if it was not one of this mesh.
+  template <class T>
+  bool remove_corner_channel(Corner_channel<T>& channel)
+  {
+    const bool removed = channel && hprops_.remove(channel.array());
+    channel = Corner_channel<T>();
+    return removed;
+  }
+  /// The names of the corner channels, in order of creation.
+  std::vector<std::string> corner_channels() const
+  {
+    std::vector<std::string> names;
+    hprops_.template for_each_array<internal::Base_corner_channel>(
+      [&](const internal::Base_corner_channel& c) { names.push_back(c.name()); });
+    return names;
+  }
+  /// The slot of the corner of `face(d)` at `target(d)`: the halfedge of that
+  /// face that ends there along the face's orientation (`d`'s own halfedge
+  /// unless `d` is flipped). `d` must not be a border dart.
+  Halfedge_index corner(Dart d) const { return d.is_flipped() ? next(d).halfedge() : d.halfedge(); }
+  /// @}
 
   // ---------------------------------------------------------------- construction
 
@@ -1664,6 +1727,13 @@ void Mobius_mesh<P>::reverse_face_orientation(Face_index f)
     const size_type h = hs[i].idx();
     h_target_[h] = sources[i];
     std::swap(h_next_[h], h_prev_[h]);
+  }
+  // Corner values stay at their vertices (the corner slots move).
+  if (!hprops_.arrays().empty()) {
+    std::vector<std::uint32_t> cycle(hs.size());
+    std::transform(hs.begin(), hs.end(), cycle.begin(), [](Halfedge_index h) { return h.idx(); });
+    for (const auto& array : hprops_.arrays())
+      array->reverse_face(cycle.data(), cycle.size());
   }
   for (Halfedge_index h : hs) {
     const Face_index other = face(opposite_halfedge(h));

@@ -40,6 +40,19 @@ enum class Crease_method { uniform, chaikin };
 /// weights next to triangles.
 enum class Triangle_subdivision { catmark, smooth };
 
+/// How corner channels are smoothed where they are not continuous
+/// (OpenSubdiv's `FVarLinearInterpolation`): which values along a seam or
+/// the border of a channel are kept linear (as sharp corners or creases) and
+/// which are smoothed. Away from seams a channel follows the vertex rules.
+enum class Face_varying_interpolation {
+  none,          ///< smooth everywhere, seams as smooth borders ("edge only")
+  corners_only,  ///< corners of the channel (a value on one face) kept
+  corners_plus1, ///< also values where three or more regions of the channel meet (OpenSubdiv's default)
+  corners_plus2, ///< also darts and concave corners of the channel
+  boundaries,    ///< linear along every seam and border of the channel
+  all            ///< linear everywhere (as bilinear subdivision)
+};
+
 /// The smooth Catmull–Clark vertex rule.
 enum class Vertex_rule {
   standard,   ///< (n−2)/n V + 1/n² Σ neighbours + 1/n² Σ face points (DeRose et al., OpenSubdiv)

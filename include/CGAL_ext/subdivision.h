@@ -176,12 +176,42 @@ void for_each_interpolated_type(F&& f)
   f(Type_tag<std::array<double, 4>>());
 }
 
+// The kernel's 2D points and vectors (texture coordinates).
+template <class W, class K>
+struct Linear_value<W, K, typename K::Point_2, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_2;
+  static Value from(const typename K::Point_2& p) { return p - CGAL::ORIGIN; }
+  static typename K::Point_2 to(const Value& v) { return CGAL::ORIGIN + v; }
+};
+template <class W, class K>
+struct Linear_value<W, K, typename K::Vector_2, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_2;
+  static Value from(const Value& v) { return v; }
+  static Value to(const Value& v) { return v; }
+};
+
+// The value types of the corner channels that are interpolated: those of the
+// vertex maps, and the kernel's 2D points and vectors.
+template <class K, class F>
+void for_each_channel_type(F&& f)
+{
+  for_each_interpolated_type<K>(f);
+  f(CGAL_ext::internal::Type_tag<typename K::Point_2>());
+  f(CGAL_ext::internal::Type_tag<typename K::Vector_2>());
+}
+
 // The maps of `mesh` that a subdivision carries: vertex maps of the types
 // above, face maps of any type (but the points, the sharpness and the hole
-// flags, which the subdivision writes itself).
+// flags, which the subdivision writes itself), corner channels.
 template <class P>
 bool has_carried_maps(const Mobius_mesh<P>& mesh)
 {
+  if (!mesh.corner_channels().empty())
+    return true;
   for (const std::string& name : mesh.template properties<Vertex_index>())
     if (name != "v:point" && name != vertex_sharpness_name)
       return true; // perhaps not of an interpolated type: then the maps are merely dropped
@@ -243,6 +273,89 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
       CGAL_ext::internal::transfer_properties<Face_index, decltype(tag)>(mesh, out, 0, out.number_of_faces(),
                                                                          parent_of, "f:hole");
     });
+  }
+}
+
+// The corner channel `name` of `mesh` as the refiner takes it: the value
+// index of each halfedge's corner (null on the border). A face corner
+// without a valid index is refused.
+template <class P, class Channel>
+std::vector<u32> base_corners(const Mobius_mesh<P>& mesh, const Channel& channel)
+{
+  std::vector<u32> corners(mesh.number_of_halfedges(), null_u32);
+  const std::size_t n = channel.number_of_values();
+  for (Halfedge_index h : mesh.halfedges()) {
+    if (mesh.is_border(h))
+      continue;
+    const u32 i = channel.index(h);
+    if (i == Channel::no_value() || i >= n) {
+      std::ostringstream what;
+      what << "subdivision: corner channel \"" << channel.name() << "\": the corner of face " << mesh.face(h)
+           << " at vertex " << mesh.target(h) << " (" << h << ") has "
+           << (i == Channel::no_value() ? std::string("no value") : "value index " + std::to_string(i) + " of " + std::to_string(n));
+      throw Parameter_error(what.str());
+    }
+    corners[h.idx()] = i;
+  }
+  return corners;
+}
+
+// Interpolates the corner channels of `mesh` through the levels of `refiner`
+// into channels of `out`; a channel whose values have no linear combination
+// is refused (checked by `check_channels()` before anything is refined).
+template <class ConcurrencyTag, class W, class Mask, class P>
+void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation mode, const Mobius_mesh<P>& mesh,
+                    Mobius_mesh<P>& out)
+{
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  for (const std::string& name : mesh.corner_channels()) {
+    for_each_channel_type<K>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      using L = Linear_value<W, K, T>;
+      if constexpr (L::defined) {
+        const auto from = mesh.template corner_channel<T>(name);
+        if (!from)
+          return;
+        std::vector<u32> corners = base_corners(mesh, *from);
+        std::vector<typename L::Value> values;
+        values.reserve(from->number_of_values());
+        for (const T& t : from->values())
+          values.push_back(L::from(t));
+        refiner.template interpolate_face_varying<ConcurrencyTag>(mode, corners, values);
+        auto to = out.template add_corner_channel<T>(name).first;
+        to.values().clear();
+        to.values().reserve(values.size());
+        for (const auto& v : values)
+          to.values().push_back(L::to(v));
+        for (u32 h = 0; h < u32(corners.size()); ++h)
+          to.set_index(Halfedge_index(h), corners[h]);
+      }
+    });
+  }
+}
+
+// Refuses, before anything is refined, a mesh with a corner channel that a
+// subdivision by `Mask` cannot carry: one whose values have no linear
+// combination, or any channel for the dual and √3 splits, whose new corners
+// lie across several parent faces.
+template <class W, class Mask, class P>
+void check_channels(const Mobius_mesh<P>& mesh)
+{
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  for (const std::string& name : mesh.corner_channels()) {
+    bool interpolated = false;
+    for_each_channel_type<K>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      if constexpr (Linear_value<W, K, T>::defined)
+        interpolated = interpolated || mesh.template corner_channel<T>(name).has_value();
+    });
+    if (Mask::split == Split::dual || Mask::split == Split::sqrt3)
+      throw Parameter_error("subdivision: Doo-Sabin and sqrt(3) subdivision do not carry corner channels (\"" + name +
+                            "\"); remove the channel or subdivide with Catmull-Clark, Loop, bilinear or linear");
+    if (!interpolated)
+      throw Parameter_error("subdivision: corner channel \"" + name +
+                            "\" has values of a type that is not interpolated (floating-point numbers, arrays of them, the "
+                            "kernel's points and vectors are); remove it before subdividing");
   }
 }
 
@@ -352,8 +465,12 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
   options.maximum_memory = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
                                                 options.maximum_memory);
+  const Face_varying_interpolation fvar_mode =
+    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation),
+                         Face_varying_interpolation::corners_plus1);
   std::vector<float> es, vs;
   const bool write_sharpness = gather_sharpness(mesh, np, es, vs) && Mask::creases;
+  check_channels<typename Traits::Weight, Mask>(mesh);
 
   // Build the result aside: on failure the caller's mesh stays as it was.
   Mobius_mesh<P> out;
@@ -377,6 +494,8 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     refiner.template build_mesh<Tag>(out, write_sharpness);
     write_points<Tag>(result, options, out);
     carry_maps<Tag>(refiner, mesh, out);
+    if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle)
+      carry_channels<Tag>(refiner, fvar_mode, mesh, out);
   }
   mesh = std::move(out);
 }

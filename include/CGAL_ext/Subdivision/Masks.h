@@ -59,6 +59,7 @@ using CGAL_ext::Boundary_interpolation;
 using CGAL_ext::Crease_method;
 using CGAL_ext::Triangle_subdivision;
 using CGAL_ext::Vertex_rule;
+using CGAL_ext::Face_varying_interpolation;
 
 /// The weights that make the child of a parent edge with ends `a`, `b`:
 /// `vertex * (a + b) + face * (F0 + F1)`, where `F0`, `F1` are the face

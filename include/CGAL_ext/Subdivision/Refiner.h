@@ -12,6 +12,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/internal/Face_varying.h>
 #include <CGAL_ext/Subdivision/internal/Interpolation.h>
 #include <CGAL_ext/Subdivision/internal/Level.h>
 #include <CGAL_ext/Subdivision/internal/Parallel_step_tuner.h>
@@ -409,6 +410,28 @@ public:
   {
     std::vector<Value> scratch;
     interpolate<ConcurrencyTag>(base, result, scratch);
+  }
+
+  /// Interpolates a corner channel (face-varying data) through all levels,
+  /// with OpenSubdiv's face-varying rules: away from seams the channel
+  /// follows the vertex rules (creases and borders included), along seams and
+  /// at the channel's own corners `mode` decides what stays linear
+  /// (`Face_varying_interpolation`). `corners` holds, per halfedge of the base
+  /// mesh, the index in `values` of the value of its corner (the corner of
+  /// its face at its target; `internal::null_u32` on border halfedges), and
+  /// is replaced by the same per halfedge of the last level, `values` by that
+  /// level's values. `Value` needs `Value + Value` and `W * Value`. Quad and
+  /// triangle splits only; every face corner must have an index.
+  /// With `CGAL::Parallel_tag` (TBB needed) the levels that
+  /// `refine<CGAL::Parallel_tag>()` ran with threads run with threads,
+  /// bit for bit as the serial result.
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Value>
+  void interpolate_face_varying(Face_varying_interpolation mode, std::vector<u32>& corners,
+                                std::vector<Value>& values) const
+  {
+    static_assert(!uses_stencils, "the dual and sqrt(3) splits have no face-varying rules");
+    internal::interpolate_face_varying<ConcurrencyTag>(*this, mode, corners, values,
+                                                       [this](u32 nv) { return parallel_level(nv); });
   }
 
   /// For each face of the last level, the face of the base mesh it lies in

@@ -18,6 +18,7 @@ CGAL_EXT_add_named_parameter(crease_method_t, crease_method, crease_method)
 CGAL_EXT_add_named_parameter(vertex_rule_t, vertex_rule, vertex_rule)
 CGAL_EXT_add_named_parameter(triangle_subdivision_t, triangle_subdivision, triangle_subdivision)
 CGAL_EXT_add_named_parameter(maximum_memory_t, maximum_memory, maximum_memory)
+CGAL_EXT_add_named_parameter(face_varying_interpolation_t, face_varying_interpolation, face_varying_interpolation)
 // offsets
 CGAL_EXT_add_named_parameter(solid_t, solid, solid)
 CGAL_EXT_add_named_parameter(vertex_displacement_t, vertex_displacement, vertex_displacement_map)

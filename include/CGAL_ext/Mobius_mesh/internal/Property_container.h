@@ -72,6 +72,10 @@ public:
   virtual void copy(std::size_t from, std::size_t to) = 0;
   // Element `i` takes the default value again (a recycled slot).
   virtual void reset(std::size_t i) = 0;
+  // The face whose halfedges are `hs` (in cycle order) was reversed. A
+  // halfedge value stays with its halfedge; a corner channel's moves with
+  // the corner (Corner_channel_array.h).
+  virtual void reverse_face(const std::uint32_t* hs, std::size_t n) { (void)hs, (void)n; }
   virtual std::unique_ptr<Base_property_array> clone() const = 0;
   virtual std::unique_ptr<Base_property_array> empty_clone() const = 0;
   virtual const std::type_info& value_type() const = 0;
@@ -369,6 +373,36 @@ public:
     Property_array<T>* raw = array.get();
     arrays_.push_back(std::move(array));
     return {raw, true};
+  }
+
+  // The array of type `A` (a subclass of Base_property_array) named
+  // `name`, added if there is none (built from `name`); null and false if
+  // the name is taken by an array of another type.
+  template <class A>
+  std::pair<A*, bool> add_array(const std::string& name)
+  {
+    if (Base_property_array* a = find_by_name(name))
+      return {dynamic_cast<A*>(a), false};
+    auto array = std::make_unique<A>(name);
+    array->reserve(reserved_);
+    array->resize(size_);
+    A* raw = array.get();
+    arrays_.push_back(std::move(array));
+    return {raw, true};
+  }
+  // The array of type `A` named `name`, or null.
+  template <class A>
+  A* find_array(const std::string& name) const
+  {
+    return dynamic_cast<A*>(find_by_name(name));
+  }
+  // Calls f(array) for each array of type `A` (a base class included).
+  template <class A, class F>
+  void for_each_array(F&& f) const
+  {
+    for (const auto& a : arrays_)
+      if (auto* x = dynamic_cast<A*>(a.get()))
+        f(*x);
   }
 
   template <class T>

@@ -1,0 +1,629 @@
+// Corner channels (face-varying data): the API, the mesh operations that
+// keep them, and subdivision against OpenSubdiv 3.5's
+// PrimvarRefinerReal<double>::InterpolateFaceVarying in each of its six
+// linear-interpolation modes, on its own shapes and on the orientation double
+// cover of a Möbius strip; the parallel path against the serial one, bit for bit.
+#include "test_util.h"
+
+#include <CGAL_ext/Mobius_mesh/generators.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/subdivision.h>
+
+#include <gtest/gtest.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#endif
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace corner_channel_tests {
+
+namespace {
+
+namespace S = CGAL_ext::Subdivision;
+using CGAL_ext::Dart;
+using CGAL_ext::Face_varying_interpolation;
+using Point = test::Kd::Point_3;
+using Mesh = CGAL_ext::Mobius_mesh<Point>;
+using UV = std::array<double, 2>;
+
+// Each corner gets its own value, (vertex, face): a seam everywhere, so the
+// value of a corner tells where it must stay.
+void fill_distinct(Mesh& m)
+{
+  auto uv = m.add_corner_channel<UV>("c:uv").first;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m))
+      uv.set_index(m.corner(d), uv.add_value({double(m.target(d).idx()), double(f.idx())}));
+}
+
+// Every corner of `m` holds the value (its vertex, its face), up to the
+// offsets of a copy.
+void expect_at_their_corners(const Mesh& m, unsigned vertex_offset = 0, unsigned face_offset = 0,
+                             unsigned first_face = 0, unsigned end_face = UINT32_MAX)
+{
+  const auto uv = m.corner_channel<UV>("c:uv");
+  ASSERT_TRUE(uv.has_value());
+  for (CGAL_ext::Face_index f : m.faces()) {
+    if (f.idx() < first_face || f.idx() >= end_face)
+      continue;
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      const UV& x = (*uv)[m.corner(d)];
+      EXPECT_EQ(x[0] + vertex_offset, double(m.target(d).idx()));
+      EXPECT_EQ(x[1] + face_offset, double(f.idx()));
+      // The flipped dart walks the face the other way; its corner at its own target.
+      EXPECT_EQ(m.corner(d.flipped()), m.corner(m.prev(d)));
+    }
+  }
+}
+
+TEST(CornerChannels, AddFindRemove)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 6, 2);
+  auto [uv, created] = m.add_corner_channel<UV>("c:uv");
+  EXPECT_TRUE(created);
+  EXPECT_FALSE(m.add_corner_channel<UV>("c:uv").second);
+  EXPECT_EQ(m.add_corner_channel<UV>("c:uv").first, uv);
+  EXPECT_FALSE((m.add_corner_channel<std::array<float, 2>>("c:uv").first)); // the name is taken by another type
+  EXPECT_FALSE((m.corner_channel<std::array<float, 2>>("c:uv").has_value()));
+  EXPECT_FALSE((m.property_map<CGAL_ext::Halfedge_index, std::uint32_t>("c:uv").has_value()));
+  auto normal = m.add_corner_channel<test::Kd::Vector_3>("c:normal").first;
+  EXPECT_EQ(m.corner_channels(), (std::vector<std::string>{"c:uv", "c:normal"}));
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    EXPECT_EQ(uv.index(h), uv.no_value());
+  const std::uint32_t i = uv.add_value({0.25, 0.5});
+  const Dart d = m.halfedge(CGAL_ext::Face_index(0));
+  uv.set_index(m.corner(d), i);
+  EXPECT_EQ(uv[m.corner(d)], (UV{0.25, 0.5}));
+  EXPECT_TRUE(m.remove_corner_channel(normal));
+  EXPECT_FALSE(normal);
+  EXPECT_EQ(m.corner_channels(), (std::vector<std::string>{"c:uv"}));
+  EXPECT_TRUE(m.is_valid());
+}
+
+TEST(CornerChannels, MeshOperationsKeepCorners)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 10, 3);
+  fill_distinct(m);
+  for (CGAL_ext::Face_index f : m.faces()) // corners stay at their vertices
+    if (f.idx() % 3 != 1)
+      m.reverse_face_orientation(f);
+  expect_at_their_corners(m);
+  CGAL_ext::orient(m);
+  expect_at_their_corners(m);
+  const Mesh copy = m;
+  expect_at_their_corners(copy);
+  Mesh joined = m;
+  const auto off = joined.join(m);
+  expect_at_their_corners(joined, off.vertices, off.faces, off.faces);
+  expect_at_their_corners(joined, 0, 0, 0, off.faces); // the first part
+  EXPECT_EQ(joined.corner_channel<UV>("c:uv")->number_of_values(), 2 * m.corner_channel<UV>("c:uv")->number_of_values());
+}
+
+TEST(CornerChannels, GarbageCollection)
+{
+  Mesh m;
+  CGAL_ext::make_torus(m, 6, 4, 2.0, 0.5);
+  fill_distinct(m);
+  // Remove a face, its edges and vertices that have no other face are kept: a hole.
+  const CGAL_ext::Face_index gone(3);
+  std::vector<std::pair<double, double>> expected; // (vertex, face) of the corners that stay, by old indices
+  m.remove_face(gone);
+  for (Dart d : CGAL_ext::halfedges_around_face(gone, m))
+    m.set_face(d.halfedge(), CGAL_ext::Face_index());
+  Mesh::Garbage_collection_maps maps;
+  m.collect_garbage(maps);
+  const auto uv = *m.corner_channel<UV>("c:uv");
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      const UV& x = uv[m.corner(d)];
+      EXPECT_EQ(maps(CGAL_ext::Vertex_index(std::uint32_t(x[0]))), m.target(d));
+      EXPECT_EQ(maps(CGAL_ext::Face_index(std::uint32_t(x[1]))), f);
+    }
+}
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+namespace Far = OpenSubdiv::Far;
+namespace Sdc = OpenSubdiv::Sdc;
+
+// An OpenSubdiv shape with its `vt` corner indices (a small parser: the
+// library's OBJ reader does not read them yet).
+struct Shape
+{
+  std::vector<Point> points;
+  std::vector<UV> uvs;
+  std::vector<std::vector<int>> faces, uv_faces;
+  std::vector<int> crease_pairs, corners;
+  std::vector<float> crease_values, corner_values;
+  CGAL_ext::Boundary_interpolation boundary = CGAL_ext::Boundary_interpolation::edge_only;
+  CGAL_ext::Crease_method crease_method = CGAL_ext::Crease_method::uniform;
+};
+
+Shape read_shape(const std::string& file)
+{
+  Shape s;
+  std::ifstream in(file);
+  EXPECT_TRUE(bool(in)) << file;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string tag;
+    ls >> tag;
+    if (tag == "v") {
+      double x, y, z;
+      ls >> x >> y >> z;
+      s.points.emplace_back(x, y, z);
+    } else if (tag == "vt") {
+      UV t;
+      ls >> t[0] >> t[1];
+      s.uvs.push_back(t);
+    } else if (tag == "f") {
+      std::vector<int> f, ft;
+      std::string c;
+      while (ls >> c) { // v/vt or v/vt/vn
+        const std::size_t slash = c.find('/');
+        f.push_back(std::stoi(c.substr(0, slash)) - 1);
+        ft.push_back(std::stoi(c.substr(slash + 1)) - 1);
+      }
+      s.faces.push_back(f);
+      s.uv_faces.push_back(ft);
+    } else if (tag == "t") {
+      std::string name, counts;
+      ls >> name >> counts;
+      int ni = 0, nf = 0, ns = 0;
+      char sep;
+      std::istringstream cs(counts);
+      cs >> ni >> sep >> nf >> sep >> ns;
+      std::vector<int> ints(ni);
+      std::vector<float> floats(nf);
+      std::vector<std::string> strings(ns);
+      for (int& i : ints)
+        ls >> i;
+      for (float& x : floats)
+        ls >> x;
+      for (std::string& x : strings)
+        ls >> x;
+      if (name == "crease")
+        for (int i = 0; i + 1 < ni; i += 2) {
+          s.crease_pairs.insert(s.crease_pairs.end(), {ints[i], ints[i + 1]});
+          s.crease_values.push_back(nf == 1 ? floats[0] : floats[i / 2]);
+        }
+      else if (name == "corner")
+        for (int i = 0; i < ni; ++i) {
+          s.corners.push_back(ints[i]);
+          s.corner_values.push_back(nf == 1 ? floats[0] : floats[i]);
+        }
+      else if (name == "interpolateboundary")
+        s.boundary = ints[0] == 0 ? CGAL_ext::Boundary_interpolation::none
+                                  : ints[0] == 1 ? CGAL_ext::Boundary_interpolation::edge_and_corner
+                                                 : CGAL_ext::Boundary_interpolation::edge_only;
+      else if (name == "creasemethod")
+        s.crease_method = strings[0] == "chaikin" ? CGAL_ext::Crease_method::chaikin : CGAL_ext::Crease_method::uniform;
+    }
+  }
+  return s;
+}
+
+// The mesh of a shape with its sharpness maps and its channel "c:uv", filled
+// through the API from the `f v/vt` indices.
+Mesh build(const Shape& s)
+{
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
+  auto es = m.add_property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name, 0.0f).first;
+  auto vs = m.add_property_map<CGAL_ext::Vertex_index, float>(CGAL_ext::vertex_sharpness_name, 0.0f).first;
+  for (std::size_t i = 0; i < s.crease_values.size(); ++i)
+    for (Dart d : CGAL_ext::halfedges_around_target(CGAL_ext::Vertex_index(s.crease_pairs[2 * i + 1]), m))
+      if (m.source(d) == CGAL_ext::Vertex_index(s.crease_pairs[2 * i]))
+        es[m.edge(d)] = s.crease_values[i];
+  for (std::size_t i = 0; i < s.corners.size(); ++i)
+    vs[CGAL_ext::Vertex_index(s.corners[i])] = s.corner_values[i];
+  auto uv = m.add_corner_channel<UV>("c:uv").first;
+  uv.values() = s.uvs;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    const std::vector<int>& vs_of_f = s.faces[f.idx()]; // the import keeps the soup's order
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      const auto at = std::find(vs_of_f.begin(), vs_of_f.end(), int(m.target(d).idx()));
+      EXPECT_NE(at, vs_of_f.end());
+      uv.set_index(m.corner(d), std::uint32_t(s.uv_faces[f.idx()][std::size_t(at - vs_of_f.begin())]));
+    }
+  }
+  return m;
+}
+
+struct Osd_value
+{
+  double p[3];
+  void Clear(void* = nullptr) { p[0] = p[1] = p[2] = 0.0; }
+  void AddWithWeight(const Osd_value& s, double w)
+  {
+    for (int i = 0; i < 3; ++i)
+      p[i] += w * s.p[i];
+  }
+};
+
+// A face corner of the last level: where it is, and its value.
+struct Corner
+{
+  std::array<double, 3> centre, point;
+  UV uv;
+};
+
+// OpenSubdiv's last level's corners after `levels` steps.
+std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int levels, Face_varying_interpolation mode)
+{
+  std::vector<int> sizes, indices, uv_indices;
+  for (std::size_t f = 0; f < s.faces.size(); ++f) {
+    sizes.push_back(int(s.faces[f].size()));
+    indices.insert(indices.end(), s.faces[f].begin(), s.faces[f].end());
+    uv_indices.insert(uv_indices.end(), s.uv_faces[f].begin(), s.uv_faces[f].end());
+  }
+  Far::TopologyDescriptor desc;
+  desc.numVertices = int(s.points.size());
+  desc.numFaces = int(s.faces.size());
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  desc.numCreases = int(s.crease_values.size());
+  desc.creaseVertexIndexPairs = s.crease_pairs.data();
+  desc.creaseWeights = s.crease_values.data();
+  desc.numCorners = int(s.corners.size());
+  desc.cornerVertexIndices = s.corners.data();
+  desc.cornerWeights = s.corner_values.data();
+  Far::TopologyDescriptor::FVarChannel channel;
+  channel.numValues = int(s.uvs.size());
+  channel.valueIndices = uv_indices.data();
+  desc.numFVarChannels = 1;
+  desc.fvarChannels = &channel;
+  Sdc::Options options;
+  using B = CGAL_ext::Boundary_interpolation;
+  options.SetVtxBoundaryInterpolation(s.boundary == B::none ? Sdc::Options::VTX_BOUNDARY_NONE
+                                      : s.boundary == B::edge_only ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
+                                                                   : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  options.SetCreasingMethod(s.crease_method == CGAL_ext::Crease_method::chaikin ? Sdc::Options::CREASE_CHAIKIN
+                                                                                 : Sdc::Options::CREASE_UNIFORM);
+  // The enums list the modes in the same order.
+  options.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(int(mode)));
+  std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
+    desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(type, options)));
+  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+  Far::PrimvarRefinerReal<double> primvar(*refiner);
+  std::vector<Osd_value> points, uvs;
+  for (const Point& p : s.points)
+    points.push_back({{p.x(), p.y(), p.z()}});
+  for (const UV& t : s.uvs)
+    uvs.push_back({{t[0], t[1], 0.0}});
+  for (int k = 1; k <= levels; ++k) {
+    std::vector<Osd_value> p(refiner->GetLevel(k).GetNumVertices()), u(refiner->GetLevel(k).GetNumFVarValues(0));
+    Osd_value *ps = points.data(), *pd = p.data(), *us = uvs.data(), *ud = u.data();
+    primvar.Interpolate(k, ps, pd);
+    primvar.InterpolateFaceVarying(k, us, ud, 0);
+    points.swap(p);
+    uvs.swap(u);
+  }
+  std::vector<Corner> corners;
+  const Far::TopologyLevel& last = refiner->GetLevel(levels);
+  for (int f = 0; f < last.GetNumFaces(); ++f) {
+    const auto fv = last.GetFaceVertices(f);
+    const auto fu = last.GetFaceFVarValues(f, 0);
+    std::array<double, 3> c{0, 0, 0};
+    for (int i = 0; i < fv.size(); ++i)
+      for (int j = 0; j < 3; ++j)
+        c[j] += points[fv[i]].p[j] / fv.size();
+    for (int i = 0; i < fv.size(); ++i)
+      corners.push_back({c, {points[fv[i]].p[0], points[fv[i]].p[1], points[fv[i]].p[2]}, {uvs[fu[i]].p[0], uvs[fu[i]].p[1]}});
+  }
+  return corners;
+}
+
+std::vector<Corner> our_corners(const Mesh& m)
+{
+  std::vector<Corner> corners;
+  const auto uv = *m.corner_channel<UV>("c:uv");
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::array<double, 3> c{0, 0, 0};
+    const double n = double(CGAL_ext::halfedges_around_face(f, m).size());
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, m)) {
+      c[0] += m.point(v).x() / n;
+      c[1] += m.point(v).y() / n;
+      c[2] += m.point(v).z() / n;
+    }
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      const Point& p = m.point(m.target(d));
+      corners.push_back({c, {p.x(), p.y(), p.z()}, uv[m.corner(d)]});
+    }
+  }
+  return corners;
+}
+
+// The largest difference of values between corners at the same place (face
+// centre and point within 1e-9); every corner of each side must find one.
+double max_difference(const std::vector<Corner>& ours, std::vector<Corner> theirs)
+{
+  EXPECT_EQ(ours.size(), theirs.size());
+  auto before = [](const Corner& a, const Corner& b) { return a.centre[0] < b.centre[0]; };
+  std::sort(theirs.begin(), theirs.end(), before);
+  double worst = 0.0;
+  std::size_t unmatched = 0;
+  for (const Corner& c : ours) {
+    Corner low = c;
+    low.centre[0] -= 1e-9;
+    bool found = false;
+    for (auto it = std::lower_bound(theirs.begin(), theirs.end(), low, before);
+         it != theirs.end() && it->centre[0] <= c.centre[0] + 1e-9; ++it) {
+      bool same = true;
+      for (int j = 0; j < 3; ++j)
+        same = same && std::abs(it->centre[j] - c.centre[j]) <= 1e-9 && std::abs(it->point[j] - c.point[j]) <= 1e-9;
+      if (same) {
+        worst = std::max({worst, std::abs(it->uv[0] - c.uv[0]), std::abs(it->uv[1] - c.uv[1])});
+        found = true;
+      }
+    }
+    unmatched += found ? 0 : 1;
+  }
+  EXPECT_EQ(unmatched, 0u);
+  return worst;
+}
+
+constexpr Face_varying_interpolation all_modes[] = {
+  Face_varying_interpolation::none,          Face_varying_interpolation::corners_only,
+  Face_varying_interpolation::corners_plus1, Face_varying_interpolation::corners_plus2,
+  Face_varying_interpolation::boundaries,    Face_varying_interpolation::all};
+
+const char* mode_name(Face_varying_interpolation mode)
+{
+  static const char* names[] = {"none", "corners_only", "corners_plus1", "corners_plus2", "boundaries", "all"};
+  return names[int(mode)];
+}
+
+template <class ConcurrencyTag = CGAL::Sequential_tag>
+void subdivide(Mesh& m, bool loop, int levels, Face_varying_interpolation mode, const Shape& s)
+{
+  const auto np = CGAL_ext::parameters::number_of_iterations(levels)
+                    .boundary_interpolation(s.boundary)
+                    .crease_method(s.crease_method)
+                    .face_varying_interpolation(mode);
+  if (loop)
+    S::loop<ConcurrencyTag>(m, np);
+  else
+    S::catmull_clark<ConcurrencyTag>(m, np);
+}
+
+// Ours against OpenSubdiv, each mode, levels 1-3; returns the worst difference per mode.
+std::array<double, 6> compare_shape(const Shape& s, bool loop)
+{
+  std::array<double, 6> worst{};
+  for (Face_varying_interpolation mode : all_modes)
+    for (int levels = 1; levels <= 3; ++levels) {
+      SCOPED_TRACE(std::string(mode_name(mode)) + ", levels " + std::to_string(levels));
+      Mesh m = build(s);
+      subdivide(m, loop, levels, mode, s);
+      const double d = max_difference(
+        our_corners(m), opensubdiv_corners(s, loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, levels, mode));
+      EXPECT_LE(d, 1e-12);
+      worst[int(mode)] = std::max(worst[int(mode)], d);
+    }
+  return worst;
+}
+
+void report(const std::string& name, const std::array<double, 6>& worst)
+{
+  std::ostringstream line;
+  line << name << ":";
+  for (double w : worst)
+    line << " " << w;
+  std::cout << "[ max |ours - OpenSubdiv| per mode none..all ] " << line.str() << "\n";
+}
+#endif
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+#define REQUIRE_OPENSUBDIV()
+#else
+#define REQUIRE_OPENSUBDIV() GTEST_SKIP() << "OpenSubdiv not found"
+#endif
+
+TEST(CornerChannelsOpenSubdiv, CatmullClarkShapes)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"catmark_cube.obj", "catmark_cube_corner4.obj", "catmark_cube_creases1.obj",
+                           "catmark_chaikin1.obj", "catmark_edgecorner.obj", "catmark_nonquads.obj"}) {
+    SCOPED_TRACE(name);
+    report(name, compare_shape(read_shape(test::data(std::string("opensubdiv/") + name)), false));
+  }
+#endif
+}
+
+TEST(CornerChannelsOpenSubdiv, LoopShapes)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"loop_tetrahedron.obj", "loop_icos_semisharp.obj", "loop_triangle_edgeonly.obj"}) {
+    SCOPED_TRACE(name);
+    report(name, compare_shape(read_shape(test::data(std::string("opensubdiv/") + name)), true));
+  }
+#endif
+}
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+// A Möbius strip whose texture coordinates (angle around, height) have one
+// seam, where the angle wraps; as a shape, with its `vt` indices.
+Shape mobius_shape(bool quads)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3, 1, 1.0, 0.4, quads);
+  Shape s;
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    s.points.push_back(m.point(v));
+  std::map<std::pair<int, int>, int> value_of; // (vertex, wrapped) -> value
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::vector<int> vs;
+    std::vector<double> u;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, m)) {
+      vs.push_back(int(v.idx()));
+      const Point& p = m.point(v);
+      u.push_back(std::atan2(p.y(), p.x()) / (2 * M_PI) + 0.5);
+    }
+    const bool straddles = *std::max_element(u.begin(), u.end()) - *std::min_element(u.begin(), u.end()) > 0.5;
+    std::vector<int> ft;
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      const int wrapped = straddles && u[i] < 0.5 ? 1 : 0;
+      auto [it, fresh] = value_of.emplace(std::make_pair(vs[i], wrapped), int(s.uvs.size()));
+      if (fresh)
+        s.uvs.push_back({u[i] + wrapped, m.point(CGAL_ext::Vertex_index(vs[i])).z()});
+      ft.push_back(it->second);
+    }
+    s.faces.push_back(vs);
+    s.uv_faces.push_back(ft);
+  }
+  return s;
+}
+
+// The orientation double cover of a shape: two copies of each face, one per
+// side, glued so that the cover is orientable (vertex v has the twins 2v and
+// 2v + 1); each corner keeps its value index.
+Shape double_cover(const Shape& s)
+{
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
+  Shape c;
+  c.uvs = s.uvs;
+  for (const Point& p : s.points)
+    c.points.insert(c.points.end(), {p, p});
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::vector<int> sheet_vs, sheet, values;
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      sheet_vs.push_back(int(m.target(d).idx()));
+      // The sheet of the face at a vertex: whether it runs against the walk around the vertex.
+      for (Dart a : CGAL_ext::halfedges_around_target(m.target(d), m))
+        if (m.face(a) == f)
+          sheet.push_back(a.is_flipped() ? 1 : 0);
+      const std::vector<int>& sf = s.faces[f.idx()];
+      values.push_back(s.uv_faces[f.idx()][std::size_t(std::find(sf.begin(), sf.end(), sheet_vs.back()) - sf.begin())]);
+    }
+    for (int sigma : {0, 1}) {
+      std::vector<int> face, ft;
+      for (std::size_t i = 0; i < sheet_vs.size(); ++i) {
+        face.push_back(2 * sheet_vs[i] + (sigma ^ sheet[i]));
+        ft.push_back(values[i]);
+      }
+      if (sigma) {
+        std::reverse(face.begin(), face.end());
+        std::reverse(ft.begin(), ft.end());
+      }
+      c.faces.push_back(face);
+      c.uv_faces.push_back(ft);
+    }
+  }
+  return c;
+}
+#endif
+
+TEST(CornerChannelsOpenSubdiv, MobiusStripWithSeam)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (bool quads : {true, false}) {
+    SCOPED_TRACE(quads ? "quads" : "triangles");
+    const Shape s = mobius_shape(quads), cover = double_cover(s);
+    std::array<double, 6> worst{};
+    for (Face_varying_interpolation mode : all_modes)
+      for (int levels = 1; levels <= 3; ++levels) {
+        SCOPED_TRACE(std::string(mode_name(mode)) + ", levels " + std::to_string(levels));
+        Mesh m = build(s);
+        ASSERT_GT(CGAL_ext::number_of_mobius_edges(m), 0u);
+        subdivide(m, !quads, levels, mode, s);
+        std::vector<Corner> ours = our_corners(m), twice = ours;
+        twice.insert(twice.end(), ours.begin(), ours.end()); // each corner's twin has its value
+        const double d = max_difference(
+          twice, opensubdiv_corners(cover, quads ? Sdc::SCHEME_CATMARK : Sdc::SCHEME_LOOP, levels, mode));
+        EXPECT_LE(d, 1e-12);
+        worst[int(mode)] = std::max(worst[int(mode)], d);
+      }
+    report(quads ? "mobius (Catmull-Clark)" : "mobius (Loop)", worst);
+  }
+#endif
+}
+
+#if defined(CGAL_EXT_SUBDIVISION_PARALLEL) && defined(CGAL_EXT_HAVE_OPENSUBDIV)
+// Texture coordinates as the refiner interpolates them.
+struct Vec2
+{
+  double u, v;
+};
+Vec2 operator+(const Vec2& a, const Vec2& b) { return {a.u + b.u, a.v + b.v}; }
+Vec2 operator*(double w, const Vec2& a) { return {w * a.u, w * a.v}; }
+
+// Every level with threads (parallel_min_vertices 0), against the serial
+// refinement: the same indices and values, bit for bit.
+TEST(CornerChannels, ParallelIsSerialBitForBit)
+{
+  const Shape s = read_shape(test::data("opensubdiv/catmark_chaikin1.obj"));
+  const Mesh m = build(s);
+  const auto uv = *m.corner_channel<UV>("c:uv");
+  std::vector<std::uint32_t> base(m.number_of_halfedges());
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    base[h.idx()] = m.is_border(h) ? S::internal::null_u32 : uv.index(h);
+  std::vector<float> es(m.number_of_edges()), vs(m.number_of_vertices());
+  for (CGAL_ext::Edge_index e : m.edges())
+    es[e.idx()] = (*m.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name))[e];
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
+  for (Face_varying_interpolation mode : all_modes) {
+    S::Refinement_options options;
+    options.crease_method = s.crease_method;
+    options.parallel_min_vertices = 0;
+    S::Refiner<S::Catmull_clark_mask> serial(S::Catmull_clark_mask(), options), parallel(S::Catmull_clark_mask(), options);
+    serial.refine(m, 4, es, vs);
+    parallel.refine<CGAL::Parallel_tag>(m, 4, es, vs);
+    std::vector<std::uint32_t> ca = base, cb = base;
+    std::vector<Vec2> va, vb;
+    for (const UV& t : uv.values())
+      va.push_back({t[0], t[1]});
+    vb = va;
+    serial.interpolate_face_varying(mode, ca, va);
+    parallel.interpolate_face_varying<CGAL::Parallel_tag>(mode, cb, vb);
+    EXPECT_EQ(ca, cb);
+    ASSERT_EQ(va.size(), vb.size());
+    EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(Vec2)));
+  }
+}
+#endif
+
+TEST(CornerChannels, RefusedWhereNotCarried)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 8, 2);
+  fill_distinct(m);
+  const Mesh before = m;
+  EXPECT_THROW(S::doo_sabin(m), CGAL_ext::Parameter_error);
+  EXPECT_THROW(S::sqrt3(m), CGAL_ext::Parameter_error);
+  EXPECT_EQ(m.number_of_faces(), before.number_of_faces());
+  // A corner without a value.
+  m.corner_channel<UV>("c:uv")->set_index(m.corner(m.halfedge(CGAL_ext::Face_index(2))), UINT32_MAX);
+  EXPECT_THROW(S::catmull_clark(m), CGAL_ext::Parameter_error);
+  // Values that have no linear combination.
+  Mesh n;
+  CGAL_ext::make_mobius_strip(n, 8, 2);
+  n.add_corner_channel<int>("c:id");
+  EXPECT_THROW(S::catmull_clark(n), CGAL_ext::Parameter_error);
+}
+
+} // namespace
+
+} // namespace corner_channel_tests
