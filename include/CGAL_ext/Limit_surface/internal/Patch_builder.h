@@ -576,6 +576,12 @@ Dart copy_neighbourhood(const Level_mesh<P>& L, Dart d, Level_mesh<P>& out)
       }
     }
   }
+  // An edge the copy cuts is a border of the copy: infinitely sharp, as in
+  // the local mesh of Bfr, where it counts for no semi-sharp average.
+  if (es)
+    for (Edge_index e : out.mesh.edges())
+      if (out.mesh.is_border(e))
+        (*es)[e] = infinitely_sharp;
   if (L.vs) {
     auto vs = out.mesh.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first;
     for (const auto& [a, b] : map)
