@@ -1,0 +1,276 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The limit surface of a Catmull–Clark mesh at any point of any face, with
+// derivatives and normal, parameterised as OpenSubdiv's Bfr parameterises a
+// base face, and evaluated as Bfr evaluates it.
+
+#ifndef CGAL_EXT_LIMIT_SURFACE_H
+#define CGAL_EXT_LIMIT_SURFACE_H
+
+#include <CGAL_ext/Limit_surface/internal/Patch_builder.h>
+#include <CGAL_ext/Limit_surface/internal/Patches.h>
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/subdivision.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Subdivision {
+
+/// \ingroup PkgSubdivision
+/// The refinement depths at which `Limit_surface` stops and approximates
+/// the surface near irregular features, as OpenSubdiv's
+/// `Bfr::SurfaceFactory::Options` (same names, same defaults).
+struct Limit_surface_options
+{
+  /// Depth of refinement around smooth extraordinary vertices, irregular
+  /// borders and faces that are not quads (OpenSubdiv's `approxLevelSmooth`).
+  unsigned approx_level_smooth = 2;
+  /// Depth of refinement around semi-sharp creases and irregular corners
+  /// (OpenSubdiv's `approxLevelSharp`); at least `approx_level_smooth`.
+  unsigned approx_level_sharp = 6;
+};
+
+/// \ingroup PkgSubdivision
+/// A point of a limit surface with its derivatives, as
+/// `Limit_surface::evaluate()` returns it.
+template <class Kernel>
+struct Limit_surface_point
+{
+  typename Kernel::Point_3 point;  ///< the position
+  typename Kernel::Vector_3 du;    ///< ∂/∂u
+  typename Kernel::Vector_3 dv;    ///< ∂/∂v
+  typename Kernel::Vector_3 duu;   ///< ∂²/∂u²
+  typename Kernel::Vector_3 duv;   ///< ∂²/∂u∂v
+  typename Kernel::Vector_3 dvv;   ///< ∂²/∂v²
+  typename Kernel::Vector_3 normal; ///< `du × dv`, of unit length (the null vector where it vanishes)
+};
+
+/// \ingroup PkgSubdivision
+/// \brief The limit surface of a mesh under `Mask` (`Catmull_clark_mask`),
+/// evaluated at any parameter of any face, with first and second
+/// derivatives and the unit normal.
+///
+/// Built once from a mesh; the patches of a face are made the first time
+/// the face is evaluated and kept (one lock per face, so many threads may
+/// evaluate one surface at once). The mesh is copied: later changes to it
+/// do not reach the surface.
+///
+/// **Parameterisation** (OpenSubdiv's `Bfr::Parameterization`): a quad is
+/// [0, 1]², its corner i being the i-th vertex of
+/// `vertices_around_face(f)` at (0, 0), (1, 0), (1, 1), (0, 1). A face of n ≠ 4
+/// sides is split into n quad sub-faces, laid out in rows of
+/// `ceil(sqrt(n))` unit tiles: sub-face k (the quarter at corner k, its u
+/// from corner k towards corner k + 1) covers [x, x + ½] × [y, y + ½] with
+/// x = k mod the row length, y = k div it; derivatives are with respect to
+/// those (u, v).
+///
+/// **How it is evaluated** (as OpenSubdiv's `Bfr::Surface`): a quad whose four
+/// corners are regular (valence 4 inside, two faces at a border or along an
+/// infinitely sharp crease, one face at a corner, no semi-sharp edge at a
+/// corner) is one bicubic B-spline patch of its 16 points, gathered by
+/// darts: exact, and exact in an exact kernel at rational (u, v); a border
+/// or infinite crease extrapolates the missing row (2 P − Q). Other faces
+/// are refined, their neighbourhood subdivided by the library's own
+/// Catmull–Clark rules, regular sub-faces becoming B-spline patches, to
+/// `approx_level_smooth` levels around smooth irregularities and
+/// `approx_level_sharp` around semi-sharp ones; an irregular sub-face at the
+/// last level is OpenSubdiv's 20-point Gregory patch. The Gregory points and
+/// its derivatives (those of the Bezier patch its blended points make) are
+/// those of OpenSubdiv's `Far::PatchBuilder`. At a corner of a face the
+/// position is the limit position of that vertex (`limit_point()`).
+///
+/// On a one-sided surface every neighbourhood is gathered by darts, so a
+/// patch across a Möbius edge is the patch of the orientation double cover;
+/// the normal is that of the face's own orientation.
+///
+/// \tparam Mask `Catmull_clark_mask`
+/// \tparam P the point type of the mesh, of a CGAL kernel
+template <class Mask, class P>
+class Limit_surface
+{
+  static_assert(std::is_same_v<Mask, Catmull_clark_mask>, "Limit_surface evaluates Catmull-Clark surfaces");
+
+public:
+  /// The kernel of `P`.
+  using Kernel = typename CGAL::Kernel_traits<P>::Kernel;
+  /// The number type of the kernel.
+  using FT = typename Kernel::FT;
+  /// What `evaluate()` returns.
+  using Evaluation = Limit_surface_point<Kernel>;
+
+  /// \brief makes the limit surface of `mesh` (which may be freed afterwards).
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{edge_sharpness_map, vertex_sharpness_map}
+  ///     \cgalParamDefault{the maps `"e:sharpness"` / `"v:sharpness"` of `mesh` if it has them, else all 0}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{boundary_interpolation}
+  ///     \cgalParamDefault{`Boundary_interpolation::edge_only`; `none` is refused}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{crease_method}
+  ///     \cgalParamDefault{`Crease_method::uniform`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDefault{`mesh.points()`}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  /// \throws Parameter_error if `mesh` has removed elements, a sharpness is
+  /// NaN or negative, or the boundary interpolation is `none`.
+  template <class NP = parameters::Default_named_parameters>
+  explicit Limit_surface(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values(),
+                         const Limit_surface_options& options = Limit_surface_options())
+  {
+    namespace pm = CGAL_ext::parameters;
+    CGAL_ext::internal::require_no_garbage(mesh, "Limit_surface");
+    options_.boundary = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation),
+                                             Boundary_interpolation::edge_only);
+    options_.crease =
+      pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+    options_.level_smooth = options.approx_level_smooth;
+    options_.level_sharp = std::max(options.approx_level_sharp, options.approx_level_smooth);
+    if (options_.boundary == Boundary_interpolation::none)
+      throw Parameter_error("Limit_surface: Boundary_interpolation::none is not supported");
+    base_.mesh = mesh;
+    const auto points = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
+    for (Vertex_index v : mesh.vertices())
+      base_.mesh.point(v) = get(points, v);
+    copy_sharpness(mesh, np);
+    faces_.resize(mesh.number_of_faces());
+    once_.reset(new std::once_flag[mesh.number_of_faces()]);
+  }
+
+  /// \brief the limit surface at parameter (`u`, `v`) of face `f` (see the
+  /// class for the parameterisation).
+  /// \throws Parameter_error if `f` is not a face of the mesh or (`u`, `v`)
+  /// lies outside its parameter domain.
+  Evaluation evaluate(Face_index f, const FT& u, const FT& v) const
+  {
+    if (!base_.mesh.is_valid(f) || f.idx() >= faces_.size())
+      throw Parameter_error("Limit_surface::evaluate: f" + std::to_string(f.idx()) + " is not a face of the mesh");
+    const Face_patches& patches = patches_of(f);
+    std::size_t list = 0;
+    FT su = u, sv = v, scale = FT(1);
+    if (patches.sub_faces.size() > 1) { // Bfr's quad sub-faces
+      const int n = int(patches.sub_faces.size()), row = sub_face_row(n);
+      int ut = int(CGAL::to_double(u) + 0.25), vt = int(CGAL::to_double(v) + 0.25);
+      ut = std::max(0, std::min(ut, row - 1));
+      vt = std::max(0, vt);
+      if (vt * row + ut >= n)
+        vt = n / row - 1 + (ut < n % row ? 1 : 0);
+      list = std::size_t(vt * row + ut);
+      su = FT(2) * (u - FT(ut));
+      sv = FT(2) * (v - FT(vt));
+      scale = FT(2);
+    }
+    // Half-open squares, as Bfr's quadtree descends (a parameter on the
+    // line between two patches belongs to the upper one), closed at 1.
+    if (su < FT(0) || sv < FT(0) || su > FT(1) || sv > FT(1))
+      throw Parameter_error("Limit_surface::evaluate: (u, v) lies outside the parameter domain of face f" +
+                            std::to_string(f.idx()));
+    for (const auto& patch : patches.sub_faces[list]) {
+      const FT u0(patch.u0), v0(patch.v0), u1(patch.u0 + patch.size), v1(patch.v0 + patch.size), size(patch.size);
+      if (su < u0 || sv < v0 || (su >= u1 && u1 < FT(1)) || (sv >= v1 && v1 < FT(1)))
+        continue;
+      return finish(internal::evaluate_patch(patch, (su - u0) / size, (sv - v0) / size), scale / size);
+    }
+    throw Parameter_error("Limit_surface::evaluate: (u, v) lies outside the parameter domain of face f" +
+                          std::to_string(f.idx()));
+  }
+
+  /// The number of patches face `f` is pieced from (built if not yet).
+  std::size_t number_of_patches(Face_index f) const
+  {
+    std::size_t n = 0;
+    for (const auto& list : patches_of(f).sub_faces)
+      n += list.size();
+    return n;
+  }
+
+private:
+  struct Face_patches
+  {
+    std::vector<std::vector<internal::Patch<FT>>> sub_faces;
+  };
+
+  // Bfr's row length of a sub-face layout.
+  static int sub_face_row(int n) { return n < 10 ? (2 + (n > 4 ? 1 : 0)) : (1 + int(std::sqrt(float(n - 1)))); }
+
+  template <class NP>
+  void copy_sharpness(const Mobius_mesh<P>& mesh, const NP& np)
+  {
+    std::vector<float> es, vs;
+    internal::gather_sharpness(mesh, np, es, vs);
+    for (float s : es)
+      if (!CGAL_ext::internal::is_valid_sharpness(s))
+        throw Parameter_error("Limit_surface: a sharpness is NaN or negative");
+    for (float s : vs)
+      if (!CGAL_ext::internal::is_valid_sharpness(s))
+        throw Parameter_error("Limit_surface: a sharpness is NaN or negative");
+    if (!es.empty())
+      base_.mesh.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first.data() = es;
+    if (!vs.empty())
+      base_.mesh.template add_property_map<Vertex_index, float>(vertex_sharpness_name, 0.0f).first.data() = vs;
+    base_.bind();
+  }
+
+  const Face_patches& patches_of(Face_index f) const
+  {
+    std::call_once(once_[f.idx()], [&] {
+      auto patches = std::make_unique<Face_patches>();
+      const Dart d = base_.mesh.next(base_.mesh.halfedge(f)); // corner 0 -> corner 1
+      if (base_.mesh.degree(f) == 4) {
+        patches->sub_faces.resize(1);
+        internal::Patch_tree_builder<FT, P>(options_, patches->sub_faces[0]).build(base_, d, 0, 0.0, 0.0, 1.0);
+      } else {
+        std::vector<internal::Patch<FT>> unused;
+        internal::Patch_tree_builder<FT, P>(options_, unused).build_sub_faces(base_, d, patches->sub_faces);
+      }
+      faces_[f.idx()] = std::move(patches);
+    });
+    return *faces_[f.idx()];
+  }
+
+  Evaluation finish(const internal::Patch_value<FT>& r, const FT& scale) const
+  {
+    auto vec = [](const internal::Coordinates<FT>& c, const FT& s) {
+      return typename Kernel::Vector_3(c[0] * s, c[1] * s, c[2] * s);
+    };
+    Evaluation e;
+    e.point = typename Kernel::Point_3(r.p[0], r.p[1], r.p[2]);
+    e.du = vec(r.ds, scale);
+    e.dv = vec(r.dt, scale);
+    const FT s2 = scale * scale;
+    e.duu = vec(r.dss, s2);
+    e.duv = vec(r.dst, s2);
+    e.dvv = vec(r.dtt, s2);
+    const typename Kernel::Vector_3 n = CGAL::cross_product(e.du, e.dv);
+    const double length = std::sqrt(CGAL::to_double(n.squared_length()));
+    e.normal = length > 0 ? n / FT(length) : CGAL::NULL_VECTOR;
+    return e;
+  }
+
+  internal::Level_mesh<P> base_;
+  internal::Limit_options options_;
+  mutable std::vector<std::unique_ptr<Face_patches>> faces_;
+  std::unique_ptr<std::once_flag[]> once_;
+};
+
+} // namespace Subdivision
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_LIMIT_SURFACE_H

@@ -1,0 +1,436 @@
+// The limit surface at any point: against OpenSubdiv 3.5's Bfr (surface
+// factory on a Far refiner, same options) at a grid of parameters in every
+// face of its regression shapes; against the closed-form bicubic B-spline on
+// a regular torus, in double and exactly with rationals; against
+// limit_point() at the corners; and a Möbius strip against Bfr on its
+// orientation double cover.
+#include "test_util.h"
+
+#include <CGAL_ext/Limit_surface.h>
+#include <CGAL_ext/Mobius_mesh/generators.h>
+#include <CGAL_ext/Subdivision/limit.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+
+#include <CGAL/Gmpq.h>
+
+#include <gtest/gtest.h>
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace limit_surface_tests {
+
+namespace {
+
+namespace S = CGAL_ext::Subdivision;
+using K = test::Kd;
+using Point = K::Point_3;
+using Mesh = CGAL_ext::Mobius_mesh<Point>;
+using Surface = S::Limit_surface<S::Catmull_clark_mask, Point>;
+
+struct Shape
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  std::vector<std::array<int, 2>> creases;
+  std::vector<float> crease_values;
+  std::vector<int> corners;
+  std::vector<float> corner_values;
+  CGAL_ext::Boundary_interpolation boundary = CGAL_ext::Boundary_interpolation::edge_only;
+  CGAL_ext::Crease_method method = CGAL_ext::Crease_method::uniform;
+};
+
+Shape read_shape(const std::string& file)
+{
+  Shape s;
+  const bool opened = test::read_obj_lines(
+    file, [&](double x, double y, double z) { s.points.emplace_back(x, y, z); },
+    [&](const std::vector<std::size_t>& f) { s.faces.push_back(f); },
+    [&](const std::string& tag, const std::string&, std::istream& ls) {
+      if (tag != "t")
+        return;
+      std::string name, counts;
+      ls >> name >> counts;
+      int ni = 0, nf = 0, ns = 0;
+      char sep;
+      std::istringstream cs(counts);
+      cs >> ni >> sep >> nf >> sep >> ns;
+      std::vector<int> ints(ni);
+      std::vector<float> floats(nf);
+      std::vector<std::string> strings(ns);
+      for (int& i : ints)
+        ls >> i;
+      for (float& f : floats)
+        ls >> f;
+      for (std::string& t : strings)
+        ls >> t;
+      if (name == "crease") {
+        for (int i = 0; i + 1 < ni; i += 2) {
+          s.creases.push_back({ints[i], ints[i + 1]});
+          s.crease_values.push_back(nf == 1 ? floats[0] : floats[i / 2]);
+        }
+      } else if (name == "corner") {
+        for (int i = 0; i < ni; ++i) {
+          s.corners.push_back(ints[i]);
+          s.corner_values.push_back(nf == 1 ? floats[0] : floats[i]);
+        }
+      } else if (name == "interpolateboundary") {
+        s.boundary = ints[0] == 1 ? CGAL_ext::Boundary_interpolation::edge_and_corner
+                                  : CGAL_ext::Boundary_interpolation::edge_only;
+      } else if (name == "creasemethod") {
+        s.method = strings[0] == "chaikin" ? CGAL_ext::Crease_method::chaikin : CGAL_ext::Crease_method::uniform;
+      }
+    });
+  EXPECT_TRUE(opened) << file;
+  return s;
+}
+
+// The mesh of a shape with its sharpness in the mesh's own maps.
+Mesh build(const Shape& s)
+{
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
+  auto es = m.add_property_map<CGAL_ext::Edge_index, float>("e:sharpness", 0.0f).first;
+  auto vs = m.add_property_map<CGAL_ext::Vertex_index, float>("v:sharpness", 0.0f).first;
+  for (std::size_t i = 0; i < s.creases.size(); ++i)
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(CGAL_ext::Vertex_index(s.creases[i][1]), m))
+      if (m.source(d) == CGAL_ext::Vertex_index(s.creases[i][0]))
+        es[m.edge(d)] = s.crease_values[i];
+  for (std::size_t i = 0; i < s.corners.size(); ++i)
+    vs[CGAL_ext::Vertex_index(s.corners[i])] = s.corner_values[i];
+  return m;
+}
+
+double largest_coordinate(const Mesh& m)
+{
+  double b = 0;
+  for (const Point& p : m.points().data())
+    b = std::max({b, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+  return b;
+}
+
+double gap(const K::Vector_3& a, const double b[3])
+{
+  return std::max({std::abs(a.x() - b[0]), std::abs(a.y() - b[1]), std::abs(a.z() - b[2])});
+}
+
+// Bfr's row length of the sub-faces of an n-gon.
+int sub_face_row(int n) { return n < 10 ? (2 + (n > 4)) : (1 + int(std::sqrt(float(n - 1)))); }
+
+// The parameters of a grid of (k + 1)² points in each quad or sub-face of a face of n sides.
+std::vector<std::array<double, 2>> parameter_grid(int n, int k)
+{
+  std::vector<std::array<double, 2>> uv;
+  const int subs = n == 4 ? 1 : n, row = sub_face_row(n);
+  for (int s = 0; s < subs; ++s)
+    for (int i = 0; i <= k; ++i)
+      for (int j = 0; j <= k; ++j) {
+        double u = double(i) / k, v = double(j) / k;
+        if (n != 4) {
+          u = s % row + 0.5 * u;
+          v = s / row + 0.5 * v;
+        }
+        uv.push_back({u, v});
+      }
+  return uv;
+}
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+namespace Far = OpenSubdiv::Far;
+namespace Bfr = OpenSubdiv::Bfr;
+namespace Sdc = OpenSubdiv::Sdc;
+
+struct Differences
+{
+  double position = 0, first = 0, second = 0;
+};
+
+// Bfr on the faces, creases and corners of `faces` / the maps of `m`
+// (which share the vertex numbering), against `surface` on the faces of `m`:
+// `face_of(f)` is the face of the reference standing for f.
+template <class FaceOf>
+Differences against_bfr(const Mesh& m, const Surface& surface, const std::vector<std::vector<int>>& faces,
+                        const std::vector<Point>& points, const std::vector<std::array<int, 2>>& creases,
+                        const std::vector<float>& crease_values, CGAL_ext::Boundary_interpolation boundary,
+                        CGAL_ext::Crease_method method, const FaceOf& face_of)
+{
+  std::vector<int> sizes, indices, crease_indices, corner_indices;
+  std::vector<float> corner_values;
+  for (const auto& f : faces) {
+    sizes.push_back(int(f.size()));
+    indices.insert(indices.end(), f.begin(), f.end());
+  }
+  for (const auto& c : creases)
+    crease_indices.insert(crease_indices.end(), c.begin(), c.end());
+  if (auto vs = m.property_map<CGAL_ext::Vertex_index, float>("v:sharpness"); vs && points.size() == m.number_of_vertices())
+    for (CGAL_ext::Vertex_index v : m.vertices())
+      if ((*vs)[v] > 0) {
+        corner_indices.push_back(int(v.idx()));
+        corner_values.push_back((*vs)[v]);
+      }
+  Far::TopologyDescriptor desc;
+  desc.numVertices = int(points.size());
+  desc.numFaces = int(faces.size());
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  desc.numCreases = int(crease_values.size());
+  desc.creaseVertexIndexPairs = crease_indices.data();
+  desc.creaseWeights = crease_values.data();
+  desc.numCorners = int(corner_values.size());
+  desc.cornerVertexIndices = corner_indices.data();
+  desc.cornerWeights = corner_values.data();
+  Sdc::Options options;
+  options.SetVtxBoundaryInterpolation(boundary == CGAL_ext::Boundary_interpolation::edge_and_corner
+                                        ? Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
+                                        : Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  options.SetCreasingMethod(method == CGAL_ext::Crease_method::chaikin ? Sdc::Options::CREASE_CHAIKIN
+                                                                       : Sdc::Options::CREASE_UNIFORM);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  std::unique_ptr<Far::TopologyRefiner> refiner(
+    Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
+  Bfr::RefinerSurfaceFactory<> factory(*refiner); // approxLevelSmooth 2, approxLevelSharp 6
+  std::vector<double> xyz;
+  for (const Point& p : points)
+    xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  Differences d;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    Bfr::Surface<double> bfr;
+    EXPECT_TRUE(factory.InitVertexSurface(face_of(f), &bfr));
+    std::vector<double> patch_points(std::size_t(bfr.GetNumPatchPoints()) * 3);
+    bfr.PreparePatchPoints(xyz.data(), 3, patch_points.data(), 3);
+    for (const auto& uv : parameter_grid(int(m.degree(f)), 8)) {
+      double p[3], du[3], dv[3], duu[3], duv[3], dvv[3];
+      bfr.Evaluate(uv.data(), patch_points.data(), 3, p, du, dv, duu, duv, dvv);
+      const auto r = surface.evaluate(f, uv[0], uv[1]);
+      d.position = std::max(d.position, gap(r.point - CGAL::ORIGIN, p));
+      d.first = std::max({d.first, gap(r.du, du), gap(r.dv, dv)});
+      d.second = std::max({d.second, gap(r.duu, duu), gap(r.duv, duv), gap(r.dvv, dvv)});
+    }
+  }
+  return d;
+}
+
+class Against_bfr : public ::testing::TestWithParam<const char*>
+{};
+
+TEST_P(Against_bfr, PositionsAndDerivatives)
+{
+  const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
+  const Mesh m = build(s);
+  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.method));
+  // The reference reads the faces as the mesh walks them, and every edge's
+  // sharpness from the mesh's map (so that both see the same creases).
+  std::vector<std::vector<int>> faces;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    faces.emplace_back();
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+      faces.back().push_back(int(v.idx()));
+  }
+  std::vector<std::array<int, 2>> creases;
+  std::vector<float> values;
+  const auto es = *m.property_map<CGAL_ext::Edge_index, float>("e:sharpness");
+  for (CGAL_ext::Edge_index e : m.edges())
+    if (es[e] > 0 && !m.is_border(e)) {
+      creases.push_back({int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
+      values.push_back(es[e]);
+    }
+  const Differences d = against_bfr(m, surface, faces, m.points().data(), creases, values, s.boundary, s.method,
+                                    [](CGAL_ext::Face_index f) { return int(f.idx()); });
+  const double scale = largest_coordinate(m);
+  EXPECT_LE(d.position, 1e-10 * scale) << GetParam();
+  EXPECT_LE(d.first, 1e-10 * scale) << GetParam();
+  EXPECT_LE(d.second, 1e-9 * scale) << GetParam();
+  RecordProperty("position", std::to_string(d.position / scale));
+  RecordProperty("first_derivatives", std::to_string(d.first / scale));
+  RecordProperty("second_derivatives", std::to_string(d.second / scale));
+}
+
+// Regular and extraordinary, closed and bordered, quads and n-gons, semi-sharp
+// and infinitely sharp creases, corners under both boundary rules.
+INSTANTIATE_TEST_SUITE_P(Shapes, Against_bfr,
+                         ::testing::Values("catmark_cube", "catmark_cube_creases1", "catmark_cube_corner4",
+                                           "catmark_edgecorner", "catmark_nonquads", "catmark_pole64",
+                                           "catmark_torus_creases1", "catmark_smoothtris1"));
+
+// A Möbius strip evaluated as Bfr evaluates its orientation double cover:
+// each face twice (once reversed), vertex v doubled into 2v and 2v + 1, the
+// copy of a face taken on the sheet its darts give each of its corners.
+TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3);
+  const Surface surface(m);
+  std::vector<Point> points;
+  for (const Point& p : m.points().data()) {
+    points.push_back(p);
+    points.push_back(p);
+  }
+  std::vector<std::vector<std::pair<int, int>>> sheet(m.number_of_faces());
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(v, m))
+      if (!m.is_border(d))
+        sheet[m.face(d).idx()].push_back({int(v.idx()), d.is_flipped() ? 1 : 0});
+  std::vector<std::vector<int>> faces;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (int sigma : {0, 1}) {
+      std::vector<int> face;
+      for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+        for (auto [w, s] : sheet[f.idx()])
+          if (w == int(v.idx())) {
+            face.push_back(2 * w + (sigma ^ s));
+            break;
+          }
+      if (sigma)
+        std::reverse(face.begin(), face.end());
+      faces.push_back(face);
+    }
+  const Differences d =
+    against_bfr(m, surface, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
+                CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()); });
+  const double scale = largest_coordinate(m);
+  EXPECT_LE(d.position, 1e-10 * scale);
+  EXPECT_LE(d.first, 1e-10 * scale);
+  RecordProperty("position", std::to_string(d.position / scale));
+  RecordProperty("first_derivatives", std::to_string(d.first / scale));
+}
+#endif // CGAL_EXT_HAVE_OPENSUBDIV
+
+// The uniform cubic B-spline basis, written out here from its definition.
+template <class FT>
+std::array<FT, 4> bspline(const FT& t)
+{
+  const FT s = FT(1) - t;
+  return {s * s * s / FT(6), (FT(3) * t * t * t - FT(6) * t * t + FT(4)) / FT(6),
+          (-FT(3) * t * t * t + FT(3) * t * t + FT(3) * t + FT(1)) / FT(6), t * t * t / FT(6)};
+}
+
+// A torus of nu x nv quads, every vertex of valence 4, with rational
+// coordinates (a bumpy square torus: the closed form does not care about
+// the shape), built face (i, j) = (i, j), (i+1, j), (i+1, j+1), (i, j+1).
+template <class P>
+CGAL_ext::Mobius_mesh<P> torus(int nu, int nv, std::vector<P>& points)
+{
+  points.clear();
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      points.emplace_back(i * 4 + (j % 3), j * 5 - (i % 2), (i * j) % 7);
+  std::vector<std::vector<std::size_t>> faces;
+  auto id = [&](int i, int j) { return std::size_t(((i + nu) % nu) * nv + (j + nv) % nv); };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  CGAL_ext::Mobius_mesh<P> m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
+  return m;
+}
+
+// The closed form at (u, v) of face (i, j): Σ B_a(u) B_b(v) P(i - 1 + a, j - 1 + b),
+// oriented by the face's own first corner (which the import may have rotated).
+template <class P, class FT>
+P closed_form(const CGAL_ext::Mobius_mesh<P>& m, CGAL_ext::Face_index f, int nu, int nv, const FT& u, const FT& v)
+{
+  std::vector<CGAL_ext::Vertex_index> c;
+  for (CGAL_ext::Vertex_index x : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+    c.push_back(x);
+  // Grid coordinates of the corners, and the directions of u and v.
+  auto ij = [&](CGAL_ext::Vertex_index x) { return std::array<int, 2>{int(x.idx()) / nv, int(x.idx()) % nv}; };
+  auto step = [&](int a, int b, int n) { return ((b - a) % n + n) % n == 1 ? 1 : -1; };
+  const auto o = ij(c[0]), x1 = ij(c[1]), x3 = ij(c[3]);
+  // u runs from corner 0 to corner 1, v from corner 0 to corner 3, each along i or j.
+  const bool u_along_i = x1[0] != o[0];
+  const int su = u_along_i ? step(o[0], x1[0], nu) : step(o[1], x1[1], nv);
+  const int sv = u_along_i ? step(o[1], x3[1], nv) : step(o[0], x3[0], nu);
+  const auto bu = bspline(u), bv = bspline(v);
+  FT x(0), y(0), z(0);
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      const int di = u_along_i ? su * (a - 1) : sv * (b - 1), dj = u_along_i ? sv * (b - 1) : su * (a - 1);
+      const P& p = m.point(CGAL_ext::Vertex_index(std::size_t(((o[0] + di) % nu + nu) % nu * nv + ((o[1] + dj) % nv + nv) % nv)));
+      const FT w = bu[a] * bv[b];
+      x += w * p.x();
+      y += w * p.y();
+      z += w * p.z();
+    }
+  return P(x, y, z);
+}
+
+TEST(Limit_surface, RegularTorusIsTheBicubicBSpline)
+{
+  std::vector<Point> points;
+  const Mesh m = torus<Point>(6, 5, points);
+  const Surface surface(m);
+  const double scale = largest_coordinate(m);
+  double worst = 0;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    EXPECT_EQ(surface.number_of_patches(f), 1u);
+    for (const auto& uv : parameter_grid(4, 5)) {
+      const Point a = surface.evaluate(f, uv[0], uv[1]).point, b = closed_form(m, f, 6, 5, uv[0], uv[1]);
+      worst = std::max(worst, std::sqrt(CGAL::squared_distance(a, b)));
+    }
+  }
+  EXPECT_LE(worst, 1e-14 * scale);
+}
+
+TEST(Limit_surface, RegularTorusIsExactWithRationals)
+{
+  using Kq = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  using Pq = Kq::Point_3;
+  std::vector<Pq> points;
+  const CGAL_ext::Mobius_mesh<Pq> m = torus<Pq>(5, 4, points);
+  const S::Limit_surface<S::Catmull_clark_mask, Pq> surface(m);
+  for (CGAL_ext::Face_index f : m.faces())
+    for (const auto& uv : {std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(1, 3), CGAL::Gmpq(2, 7)},
+                           std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(0), CGAL::Gmpq(1)},
+                           std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(5, 9), CGAL::Gmpq(1, 2)}})
+      EXPECT_EQ(surface.evaluate(f, uv[0], uv[1]).point, closed_form(m, f, 5, 4, uv[0], uv[1]));
+}
+
+// At the corners of a face, the limit position of the vertex there.
+TEST(Limit_surface, CornersAreLimitPoints)
+{
+  // Quad meshes only: limit_point() reads the limit masks of a quad ring.
+  for (const char* name : {"catmark_cube", "catmark_cube_corner4", "catmark_edgecorner"}) {
+    const Shape s = read_shape(test::data(std::string("opensubdiv/") + name + ".obj"));
+    const Mesh m = build(s);
+    const auto np = CGAL_ext::parameters::boundary_interpolation(s.boundary);
+    const Surface surface(m, np);
+    double worst = 0;
+    for (CGAL_ext::Face_index f : m.faces()) {
+      std::vector<CGAL_ext::Vertex_index> c;
+      for (CGAL_ext::Vertex_index x : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+        c.push_back(x);
+      const double uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+      for (int k = 0; k < 4; ++k) {
+        const Point a = surface.evaluate(f, uv[k][0], uv[k][1]).point;
+        const Point b = S::limit_point<S::Catmull_clark_mask>(c[k], m, np);
+        worst = std::max(worst, std::sqrt(CGAL::squared_distance(a, b)));
+      }
+    }
+    EXPECT_LE(worst, 1e-14 * largest_coordinate(m)) << name;
+    RecordProperty(std::string("corners_") + name, std::to_string(worst));
+  }
+}
+
+TEST(Limit_surface, RefusesWhatItCannotEvaluate)
+{
+  std::vector<Point> points;
+  const Mesh m = torus<Point>(4, 4, points);
+  const Surface surface(m);
+  EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(99), 0.5, 0.5), CGAL_ext::Parameter_error);
+  EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), 1.5, 0.5), CGAL_ext::Parameter_error);
+  EXPECT_THROW(Surface(m, CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none)),
+               CGAL_ext::Parameter_error);
+}
+
+} // namespace
+} // namespace limit_surface_tests
