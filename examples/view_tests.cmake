@@ -4,7 +4,7 @@
 # one-sided surface shows both colours, the closed torus (its faces pointing
 # outwards in the file) the front's only. (An open two-sided band would show
 # both too: that the colours swap across Möbius edges is tested on the scene
-# itself, in test_normals.cpp.) One virtual screen at a time: xvfb-run -a
+# itself, in test_two_sided_scene.cpp.) One virtual screen at a time: xvfb-run -a
 # races for display numbers when several start together.
 if(NOT CGAL_EXT_BUILD_TESTS)
   return()
