@@ -235,8 +235,11 @@ typename Mobius_mesh<P>::size_type in_degree(Vertex_index v, const Mobius_mesh<P
 
 // ============================================================================
 // The list concepts: ranges skip removed elements, num_*() count the slots
-// (as for Surface_mesh); num_halfedges() counts darts, two per halfedge slot,
-// the range of the halfedge index map.
+// (as for Surface_mesh). num_halfedges() is the halfedge slots, as for
+// Surface_mesh: the halfedge index map gives both darts of a halfedge that
+// halfedge's index, so the slots bound it, and CGAL's own tests and
+// algorithms, which compare num_halfedges() with the halfedges they count or
+// size per-halfedge arrays with it, see the numbers they expect.
 // ============================================================================
 
 template <class P>
@@ -269,7 +272,7 @@ auto faces(const Mobius_mesh<P>& m)
 template <class P>
 typename Mobius_mesh<P>::size_type num_vertices(const Mobius_mesh<P>& m) { return m.num_vertices(); }
 template <class P>
-typename Mobius_mesh<P>::size_type num_halfedges(const Mobius_mesh<P>& m) { return 2 * m.num_halfedges(); }
+typename Mobius_mesh<P>::size_type num_halfedges(const Mobius_mesh<P>& m) { return m.num_halfedges(); }
 template <class P>
 typename Mobius_mesh<P>::size_type num_edges(const Mobius_mesh<P>& m) { return m.num_edges(); }
 template <class P>
@@ -419,6 +422,38 @@ void copy_face_graph(const CGAL_ext::Mobius_mesh<P>& sm, TargetMesh& tm,
 }
 
 } // namespace CGAL
+
+// The graph functions are found by argument-dependent lookup, but some of
+// CGAL's generic code calls them qualified, as `CGAL::halfedges(tm)`
+// (`CGAL::Seam_mesh` does, and finds those of Surface_mesh and Polyhedron_3,
+// which CGAL defines in its own namespace): the same functions, named in
+// namespace CGAL as well.
+/// \cond
+namespace CGAL {
+using CGAL_ext::target;
+using CGAL_ext::source;
+using CGAL_ext::next;
+using CGAL_ext::prev;
+using CGAL_ext::opposite;
+using CGAL_ext::face;
+using CGAL_ext::edge;
+using CGAL_ext::halfedge;
+using CGAL_ext::vertices;
+using CGAL_ext::halfedges;
+using CGAL_ext::edges;
+using CGAL_ext::faces;
+using CGAL_ext::num_vertices;
+using CGAL_ext::num_halfedges;
+using CGAL_ext::num_edges;
+using CGAL_ext::num_faces;
+using CGAL_ext::degree;
+using CGAL_ext::out_degree;
+using CGAL_ext::in_degree;
+using CGAL_ext::out_edges;
+using CGAL_ext::in_edges;
+using CGAL_ext::adjacent_vertices;
+} // namespace CGAL
+/// \endcond
 
 namespace std {
 /// Hashes an edge descriptor by the edge it names.

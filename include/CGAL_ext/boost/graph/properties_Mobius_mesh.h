@@ -11,6 +11,9 @@
 #include <CGAL_ext/boost/graph/graph_traits_Mobius_mesh.h>
 
 #include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/boost/graph/properties.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -25,10 +28,10 @@
 namespace CGAL_ext {
 namespace internal {
 
-// The index of a descriptor in the arrays the dynamic maps size with
-// `num_vertices()`, `num_halfedges()`, ...: a dart's is its bits, which stay
-// as the mesh grows, so the two darts of a halfedge have two indices. (The
-// halfedge index map that CGAL's algorithms see is numbered otherwise: below.)
+// The index of a descriptor in the vectors of the dynamic maps of a const
+// mesh: a dart's is its bits, so the two darts of a halfedge have two cells
+// (those vectors have two per halfedge). The halfedge index map that CGAL's
+// algorithms see is numbered otherwise: below.
 inline std::uint32_t graph_index(Vertex_index v) { return v.idx(); }
 inline std::uint32_t graph_index(Face_index f) { return f.idx(); }
 inline std::uint32_t graph_index(Dart d) { return d.bits(); }
@@ -46,11 +49,13 @@ struct Graph_index_map
   friend value_type get(Graph_index_map, Key k) { return graph_index(k); }
 };
 
-// The halfedge index CGAL's algorithms see. The unflipped dart of halfedge h
-// gets h, so that, as in Surface_mesh, the two halfedges of edge e are 2e and
-// 2e + 1 (Surface_mesh_simplification takes index / 2 as the edge's index);
-// the flipped one gets h plus the mesh's halfedge slots when the map was
-// taken, below num_halfedges(g), twice those slots.
+// The halfedge index CGAL's algorithms see: the index of the dart's halfedge,
+// for both darts of it. So, as in Surface_mesh, the two halfedges of edge e
+// are 2e and 2e + 1 (Surface_mesh_simplification takes index / 2 as the
+// edge's index), and the indices stay below num_halfedges(g), the halfedge
+// slots, which CGAL's tests compare with the halfedges they count. The map is
+// one-to-one over `halfedges(g)`, which yields each halfedge once; what must
+// tell the two darts apart uses the dynamic halfedge maps, one value per dart.
 template <>
 struct Graph_index_map<Dart>
 {
@@ -59,9 +64,7 @@ struct Graph_index_map<Dart>
   using reference = std::uint32_t;
   using category = boost::readable_property_map_tag;
 
-  std::uint32_t flipped_offset = 0; ///< the mesh's halfedge slots
-
-  value_type operator[](Dart d) const { return d.halfedge().idx() + (d.is_flipped() ? flipped_offset : 0); }
+  value_type operator[](Dart d) const { return d.halfedge().idx(); }
   friend value_type get(const Graph_index_map& map, Dart d) { return map[d]; }
 };
 
@@ -172,6 +175,30 @@ void remove_property(Dart_edge_property_map<T> map, Mobius_mesh<P>& m)
   m.remove_property_map(base);
 }
 
+// The edge_weight map: an edge's length, as Surface_mesh and Polyhedron_3
+// give (Boost's shortest paths and CGAL's concept checks read it).
+template <class P>
+class Edge_length_map
+{
+public:
+  using key_type = Dart_edge;
+  using value_type = typename CGAL::Kernel_traits<P>::Kernel::FT;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+
+  Edge_length_map() = default;
+  explicit Edge_length_map(const Mobius_mesh<P>& m) : m_(&m) {}
+
+  value_type operator[](Dart_edge e) const
+  {
+    return CGAL::approximate_sqrt(CGAL::squared_distance(m_->point(m_->source(e.dart())), m_->point(m_->target(e.dart()))));
+  }
+  friend value_type get(const Edge_length_map& m, Dart_edge e) { return m[e]; }
+
+private:
+  const Mobius_mesh<P>* m_ = nullptr;
+};
+
 // The maps behind CGAL's dynamic property tags, by element kind.
 template <class P, class T>
 struct Dynamic_maps
@@ -211,6 +238,13 @@ CGAL_EXT_INDEX_PROPERTY_MAP(boost::halfedge_index_t, CGAL_ext::Dart)
 CGAL_EXT_INDEX_PROPERTY_MAP(boost::edge_index_t, CGAL_ext::Dart_edge)
 CGAL_EXT_INDEX_PROPERTY_MAP(boost::face_index_t, CGAL_ext::Face_index)
 #undef CGAL_EXT_INDEX_PROPERTY_MAP
+
+template <class P>
+struct property_map<CGAL_ext::Mobius_mesh<P>, boost::edge_weight_t>
+{
+  using type = CGAL_ext::internal::Edge_length_map<P>;
+  using const_type = type;
+};
 
 template <class P, class T>
 struct property_map<CGAL_ext::Mobius_mesh<P>, CGAL::dynamic_vertex_property_t<T>>
@@ -263,14 +297,16 @@ internal::Property_map<Vertex_index, P> get(CGAL::vertex_point_t, const Mobius_m
 template <class P>
 internal::Graph_index_map<Vertex_index> get(boost::vertex_index_t, const Mobius_mesh<P>&) { return {}; }
 template <class P>
-internal::Graph_index_map<Dart> get(boost::halfedge_index_t, const Mobius_mesh<P>& m)
-{
-  return {std::uint32_t(m.num_halfedges())};
-}
+internal::Graph_index_map<Dart> get(boost::halfedge_index_t, const Mobius_mesh<P>&) { return {}; }
 template <class P>
 internal::Graph_index_map<Dart_edge> get(boost::edge_index_t, const Mobius_mesh<P>&) { return {}; }
 template <class P>
 internal::Graph_index_map<Face_index> get(boost::face_index_t, const Mobius_mesh<P>&) { return {}; }
+
+template <class P>
+internal::Edge_length_map<P> get(boost::edge_weight_t, const Mobius_mesh<P>& m) { return internal::Edge_length_map<P>(m); }
+template <class P>
+auto get(boost::edge_weight_t, const Mobius_mesh<P>& m, Dart_edge e) { return internal::Edge_length_map<P>(m)[e]; }
 
 template <class P>
 const P& get(CGAL::vertex_point_t, const Mobius_mesh<P>& m, Vertex_index v) { return m.point(v); }
@@ -320,7 +356,7 @@ auto get(CGAL::dynamic_vertex_property_t<T>, const Mobius_mesh<P>& m)
 template <class P, class T>
 auto get(CGAL::dynamic_halfedge_property_t<T>, const Mobius_mesh<P>& m)
 {
-  return internal::Vector_property_map<Dart, T>(num_halfedges(m));
+  return internal::Vector_property_map<Dart, T>(2 * std::size_t(m.num_halfedges())); // by dart: two per halfedge
 }
 template <class P, class T>
 auto get(CGAL::dynamic_edge_property_t<T>, const Mobius_mesh<P>& m)
