@@ -55,3 +55,16 @@ file(WRITE ${_out}/far_triangle.obj "v 0 0 0\nv 1e70 0 0\nv 0 1 0\nf 1 2 3\n")
 cgal_ext_tool_fails(decimate.fails.far_point decimate
   "${_out}/far_triangle.obj;${_out}/x.obj;--ratio;0"
   "^decimate: decimate: vertex 1 at [^\n]+ beyond [^\n]+\n$")
+
+# The Hausdorff distance is between surfaces: stray vertices on no face are
+# not sampled, so a decimation that leaves a triangle as it was is at 0
+# (it used to report the stray vertices' distance, 9.8).
+add_test(NAME decimate.hausdorff_ignores_isolated_vertices COMMAND decimate
+         ${PROJECT_SOURCE_DIR}/test/data/tools/triangle_two_stray_vertices.obj ${_out}/decimate_stray.obj --ratio 1)
+set_tests_properties(decimate.hausdorff_ignores_isolated_vertices PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"faces\":1,.*\"hausdorff\":(0|[0-9.]+e-(1[0-9]|[2-9][0-9]))}")
+# --no-hausdorff: the distance is left out (null), the rest as usual.
+add_test(NAME decimate.no_hausdorff COMMAND decimate ${_data}/torus_24x12_quads.obj ${_out}/decimate_torus_nh.obj
+         --faces 100 --no-hausdorff)
+set_tests_properties(decimate.no_hausdorff PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":50,\"edges\":150,\"faces\":100,.*\"hausdorff\":null}")
