@@ -13,7 +13,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
-#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Sharp_feature_options.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/Modifiable_priority_queue.h>

@@ -13,7 +13,7 @@
 #include <CGAL_ext/Remeshing/internal/Constraint_polylines.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
-#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Sharp_feature_options.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
