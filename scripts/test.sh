@@ -5,7 +5,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-# The API reference first: it takes seconds and fails on an undocumented
+# The include arrows first: no header includes one of a higher layer, and a
+# family's internal/ serves that family only (scripts/check_include_layers.py).
+python3 scripts/check_include_layers.py
+# Then the API reference: it takes seconds and fails on an undocumented
 # public class, function or named parameter.
 bash scripts/reference.sh
 

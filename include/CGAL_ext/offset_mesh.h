@@ -11,9 +11,9 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/Mobius_mesh/internal/Coordinate_checks.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
-#include <CGAL_ext/internal/Coordinate_checks.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
 #include <CGAL/Kernel_traits.h>

@@ -10,7 +10,7 @@
 #ifndef CGAL_EXT_SUBDIVISION_CREASE_H
 #define CGAL_EXT_SUBDIVISION_CREASE_H
 
-#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Sharp_feature_options.h>
 
 namespace CGAL_ext {
 namespace Subdivision {

@@ -9,7 +9,7 @@
 #ifndef CGAL_EXT_SUBDIVISION_MASKS_H
 #define CGAL_EXT_SUBDIVISION_MASKS_H
 
-#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Sharp_feature_options.h>
 
 #include <cmath>
 #include <cstdint>

@@ -11,8 +11,8 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
+#include <CGAL_ext/Mobius_mesh/internal/Coordinate_checks.h>
 #include <CGAL_ext/exceptions.h>
-#include <CGAL_ext/internal/Coordinate_checks.h>
 
 #include <CGAL/number_utils.h>
 

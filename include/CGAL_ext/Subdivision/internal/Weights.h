@@ -10,7 +10,7 @@
 #define CGAL_EXT_SUBDIVISION_INTERNAL_WEIGHTS_H
 
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
-#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Sharp_feature_options.h>
 #include <CGAL_ext/Subdivision/Crease.h>
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/Subdivision/internal/Incidence.h>

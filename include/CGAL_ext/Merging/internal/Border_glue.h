@@ -5,8 +5,8 @@
 // proportional to the glued border (the fans around the glued vertices),
 // not to the mesh: the merges of merge_borders.h glue through it.
 
-#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_BORDER_GLUE_H
-#define CGAL_EXT_MOBIUS_MESH_INTERNAL_BORDER_GLUE_H
+#ifndef CGAL_EXT_MERGING_INTERNAL_BORDER_GLUE_H
+#define CGAL_EXT_MERGING_INTERNAL_BORDER_GLUE_H
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
@@ -530,4 +530,4 @@ private:
 } // namespace internal
 } // namespace CGAL_ext
 
-#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_BORDER_GLUE_H
+#endif // CGAL_EXT_MERGING_INTERNAL_BORDER_GLUE_H

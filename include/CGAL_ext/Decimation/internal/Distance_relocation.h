@@ -4,8 +4,8 @@
 // After a decimation: vertices moved to lower the largest distance between
 // the result and its input, measured with an AABB tree of the input.
 
-#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_DISTANCE_RELOCATION_H
-#define CGAL_EXT_MOBIUS_MESH_INTERNAL_DISTANCE_RELOCATION_H
+#ifndef CGAL_EXT_DECIMATION_INTERNAL_DISTANCE_RELOCATION_H
+#define CGAL_EXT_DECIMATION_INTERNAL_DISTANCE_RELOCATION_H
 
 #include <CGAL_ext/Mobius_mesh.h>
 
@@ -343,4 +343,4 @@ private:
 } // namespace internal
 } // namespace CGAL_ext
 
-#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_DISTANCE_RELOCATION_H
+#endif // CGAL_EXT_DECIMATION_INTERNAL_DISTANCE_RELOCATION_H

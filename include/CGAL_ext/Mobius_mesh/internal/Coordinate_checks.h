@@ -6,8 +6,8 @@
 // computations in double neither overflow nor underflow for those that
 // measure areas and angles in double.
 
-#ifndef CGAL_EXT_INTERNAL_COORDINATE_CHECKS_H
-#define CGAL_EXT_INTERNAL_COORDINATE_CHECKS_H
+#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_COORDINATE_CHECKS_H
+#define CGAL_EXT_MOBIUS_MESH_INTERNAL_COORDINATE_CHECKS_H
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/exceptions.h>
@@ -114,4 +114,4 @@ inline void require_length_resolved(double largest, double length, const char* f
 } // namespace internal
 } // namespace CGAL_ext
 
-#endif // CGAL_EXT_INTERNAL_COORDINATE_CHECKS_H
+#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_COORDINATE_CHECKS_H

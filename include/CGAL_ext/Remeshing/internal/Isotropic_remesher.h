@@ -4,16 +4,16 @@
 // The loop of isotropic_remeshing(): Botsch and Kobbelt's split / collapse /
 // flip / relax / project, on darts, so that it runs across Möbius edges.
 
-#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_ISOTROPIC_REMESHER_H
-#define CGAL_EXT_MOBIUS_MESH_INTERNAL_ISOTROPIC_REMESHER_H
+#ifndef CGAL_EXT_REMESHING_INTERNAL_ISOTROPIC_REMESHER_H
+#define CGAL_EXT_REMESHING_INTERNAL_ISOTROPIC_REMESHER_H
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
-#include <CGAL_ext/Mobius_mesh/internal/Constraint_polylines.h>
+#include <CGAL_ext/Remeshing/internal/Constraint_polylines.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
-#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Sharp_feature_options.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -584,4 +584,4 @@ private:
 } // namespace internal
 } // namespace CGAL_ext
 
-#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_ISOTROPIC_REMESHER_H
+#endif // CGAL_EXT_REMESHING_INTERNAL_ISOTROPIC_REMESHER_H

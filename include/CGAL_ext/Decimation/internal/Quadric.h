@@ -4,8 +4,8 @@
 // Garland–Heckbert plane quadrics in double: the weighted sum of squared
 // distances to a set of planes, and the point that minimises it.
 
-#ifndef CGAL_EXT_INTERNAL_QUADRIC_H
-#define CGAL_EXT_INTERNAL_QUADRIC_H
+#ifndef CGAL_EXT_DECIMATION_INTERNAL_QUADRIC_H
+#define CGAL_EXT_DECIMATION_INTERNAL_QUADRIC_H
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -107,4 +107,4 @@ struct Quadric
 } // namespace internal
 } // namespace CGAL_ext
 
-#endif // CGAL_EXT_INTERNAL_QUADRIC_H
+#endif // CGAL_EXT_DECIMATION_INTERNAL_QUADRIC_H

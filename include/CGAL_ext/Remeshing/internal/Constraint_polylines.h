@@ -5,8 +5,8 @@
 // corners and measured by arc length, so that isotropic_remeshing() can
 // slide their vertices along them (CGAL's relax_constraints).
 
-#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_CONSTRAINT_POLYLINES_H
-#define CGAL_EXT_MOBIUS_MESH_INTERNAL_CONSTRAINT_POLYLINES_H
+#ifndef CGAL_EXT_REMESHING_INTERNAL_CONSTRAINT_POLYLINES_H
+#define CGAL_EXT_REMESHING_INTERNAL_CONSTRAINT_POLYLINES_H
 
 #include <CGAL_ext/Mobius_mesh.h>
 
@@ -205,4 +205,4 @@ private:
 } // namespace internal
 } // namespace CGAL_ext
 
-#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_CONSTRAINT_POLYLINES_H
+#endif // CGAL_EXT_REMESHING_INTERNAL_CONSTRAINT_POLYLINES_H
