@@ -39,6 +39,10 @@ LAYERS = [
     (r"(Sharp_features|polygon_soup_to_mobius_mesh)\.h", 2, "mesh algorithms"),
     # 3: the algorithm families, each in its folder with its internal/.
     (r"(Subdivision|Merging|Conversion|Decimation|Remeshing|IO)/([^/]+|internal/[^/]+)\.h", 3, "families"),
+    # 4, with the top-level headers: families built on another family's
+    # public entry (the limit surface refines a face's neighbourhood with
+    # subdivision.h).
+    (r"(Limit_surface)/([^/]+|internal/[^/]+)\.h", 4, "families on families"),
     # 4: the top-level public headers, each the entry of a family.
     (r"[^/]+\.h", 4, "top-level public headers"),
 ]
@@ -55,12 +59,13 @@ def layer_of(path):
 
 def family_of(path):
     """The folder a header belongs to ('' for the top level and the core's
-    internal/); Mobius_mesh.h belongs to Mobius_mesh/."""
+    internal/); a top-level header named as a folder (Mobius_mesh.h,
+    Limit_surface.h) is that folder's entry and belongs to it."""
     if path.startswith("internal/"):
         return ""
     if "/" in path:
         return path.split("/", 1)[0]
-    return "Mobius_mesh" if path == "Mobius_mesh.h" else ""
+    return path[:-2] if path in ("Mobius_mesh.h", "Limit_surface.h") else ""
 
 
 def internal_family(path):
