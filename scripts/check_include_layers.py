@@ -24,10 +24,13 @@ import sys
 LAYERS = [
     # 0: core utilities, which know nothing of the mesh.
     (r"internal/[^/]+\.h", 0, "core utilities"),
-    (r"(exceptions|Named_parameters|Sharp_feature_options)\.h", 0, "core"),
+    (r"(exceptions|Named_parameters|Sharp_feature_options|Mobius_mesh/Vertex_normal_weighting)\.h", 0, "core"),
     # 2, ahead of the rest of Mobius_mesh/internal/: the checks of a collapse
     # are built on the Euler operations, and serve the algorithms that collapse.
-    (r"Mobius_mesh/internal/Collapse_checks\.h", 2, "mesh algorithms"),
+    # So are the engines of the mesh algorithms of Mobius_mesh/ that build on
+    # other mesh algorithms (the Euler operations, copies, the topology).
+    (r"Mobius_mesh/internal/(Collapse_checks|Fan_triangulation|Shape_builders|Soup_import|Mesh_copy)\.h", 2,
+     "mesh algorithms"),
     # 1: the mesh and its internals.
     (r"Mobius_mesh\.h", 1, "mesh"),
     (r"Mobius_mesh/internal/[^/]+\.h", 1, "mesh"),
@@ -59,13 +62,16 @@ def layer_of(path):
 
 def family_of(path):
     """The folder a header belongs to ('' for the top level and the core's
-    internal/); a top-level header named as a folder (Mobius_mesh.h,
-    Limit_surface.h) is that folder's entry and belongs to it."""
+    internal/); a top-level header that is a folder's entry belongs to it:
+    Mobius_mesh.h and Limit_surface.h, and the mesh algorithms with top-level
+    paths (the soup import, the sharpness maps) to Mobius_mesh/."""
     if path.startswith("internal/"):
         return ""
     if "/" in path:
         return path.split("/", 1)[0]
-    return path[:-2] if path in ("Mobius_mesh.h", "Limit_surface.h") else ""
+    entries = {"Mobius_mesh.h": "Mobius_mesh", "Limit_surface.h": "Limit_surface",
+               "polygon_soup_to_mobius_mesh.h": "Mobius_mesh", "Sharp_features.h": "Mobius_mesh"}
+    return entries.get(path, "")
 
 
 def internal_family(path):

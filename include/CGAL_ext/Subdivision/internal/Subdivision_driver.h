@@ -1,0 +1,498 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The engine of <CGAL_ext/subdivision.h>: the driver of the subdivision functions: parameters, carried maps, writing the result.
+
+#ifndef CGAL_EXT_SUBDIVISION_INTERNAL_SUBDIVISION_DRIVER_H
+#define CGAL_EXT_SUBDIVISION_INTERNAL_SUBDIVISION_DRIVER_H
+
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/transform.h>
+#include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/Refiner.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Origin.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/tags.h>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace Subdivision {
+namespace internal {
+
+// Coordinates in a flat, fast form for floating-point kernels.
+struct Vec3
+{
+  double x, y, z;
+};
+inline Vec3 operator+(const Vec3& a, const Vec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+inline Vec3 operator*(double w, const Vec3& a) { return {w * a.x, w * a.y, w * a.z}; }
+
+// How points are interpolated: as Vec3 with double weights for
+// floating-point kernels, as the kernel's vectors with its field type as
+// weights otherwise (exact kernels stay exact).
+template <class P, class K = typename CGAL::Kernel_traits<P>::Kernel,
+          bool = std::is_floating_point_v<typename K::FT>>
+struct Point_values
+{
+  using Value = Vec3;
+  using Weight = double;
+  static Value from(const P& p) { return {double(p.x()), double(p.y()), double(p.z())}; }
+  static P to(const Value& v) { return P(v.x, v.y, v.z); }
+  // Whether from(to(v)) is v, bit for bit (a point of doubles holds a Vec3
+  // exactly), and a point is plain data (not the reference-counted points
+  // of CGAL::Cartesian, which allocate even when default-constructed): then
+  // the last level is interpolated straight into the result's points
+  // (Refiner::refine_and_interpolate_points()).
+  static constexpr bool round_trips = std::is_same_v<typename K::FT, double> && std::is_trivially_copyable_v<P>;
+};
+template <class P, class K>
+struct Point_values<P, K, false>
+{
+  using Value = typename K::Vector_3;
+  using Weight = typename K::FT;
+  // Exact: values would be rebuilt from points wherever they were read back.
+  static constexpr bool round_trips = false;
+  static Value from(const P& p) { return p - CGAL::ORIGIN; }
+  static P to(const Value& v) { return CGAL::ORIGIN + v; }
+};
+
+// ---- the property maps carried through subdivision
+
+// How a vertex value of type T is interpolated: as `Value`, which has
+// `Value + Value` and `W * Value`, the weights being of type W. Not defined
+// for types without a linear combination (integers, strings, colours of
+// bytes): their maps are dropped.
+template <class W, class K, class T, class = void>
+struct Linear_value
+{
+  static constexpr bool defined = false;
+};
+// Floating-point numbers, as the weights' number type (exact with an exact kernel).
+template <class W, class K, class T>
+struct Linear_value<W, K, T, std::enable_if_t<std::is_floating_point_v<T>>>
+{
+  static constexpr bool defined = true;
+  using Value = W;
+  static Value from(const T& t) { return W(t); }
+  static T to(const Value& v) { return T(CGAL::to_double(v)); }
+};
+// The kernel's points and vectors (when its number type is the weights').
+template <class W, class K>
+struct Linear_value<W, K, typename K::Point_3, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_3;
+  static Value from(const typename K::Point_3& p) { return p - CGAL::ORIGIN; }
+  static typename K::Point_3 to(const Value& v) { return CGAL::ORIGIN + v; }
+};
+template <class W, class K>
+struct Linear_value<W, K, typename K::Vector_3, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_3;
+  static Value from(const Value& v) { return v; }
+  static Value to(const Value& v) { return v; }
+};
+
+// A fixed-size array of interpolated values (colours, texture coordinates).
+template <class V, std::size_t N>
+struct Value_array
+{
+  std::array<V, N> a;
+};
+template <class V, std::size_t N>
+Value_array<V, N> operator+(const Value_array<V, N>& x, const Value_array<V, N>& y)
+{
+  Value_array<V, N> r = x;
+  for (std::size_t i = 0; i < N; ++i)
+    r.a[i] = r.a[i] + y.a[i];
+  return r;
+}
+template <class W, class V, std::size_t N>
+Value_array<V, N> operator*(const W& w, const Value_array<V, N>& x)
+{
+  Value_array<V, N> r = x;
+  for (std::size_t i = 0; i < N; ++i)
+    r.a[i] = w * r.a[i];
+  return r;
+}
+template <class W, class K, class E, std::size_t N>
+struct Linear_value<W, K, std::array<E, N>, std::enable_if_t<Linear_value<W, K, E>::defined>>
+{
+  static constexpr bool defined = true;
+  using Element = Linear_value<W, K, E>;
+  using Value = Value_array<typename Element::Value, N>;
+  static Value from(const std::array<E, N>& t)
+  {
+    Value v{};
+    for (std::size_t i = 0; i < N; ++i)
+      v.a[i] = Element::from(t[i]);
+    return v;
+  }
+  static std::array<E, N> to(const Value& v)
+  {
+    std::array<E, N> t{};
+    for (std::size_t i = 0; i < N; ++i)
+      t[i] = Element::to(v.a[i]);
+    return t;
+  }
+};
+
+// The vertex value types whose maps are interpolated: a list, as the maps'
+// types are known only at run time (by name and type_info).
+template <class K, class F>
+void for_each_interpolated_type(F&& f)
+{
+  using CGAL_ext::internal::Type_tag;
+  f(Type_tag<float>());
+  f(Type_tag<double>());
+  f(Type_tag<typename K::Point_3>());
+  f(Type_tag<typename K::Vector_3>());
+  f(Type_tag<std::array<float, 2>>());
+  f(Type_tag<std::array<float, 3>>());
+  f(Type_tag<std::array<float, 4>>());
+  f(Type_tag<std::array<double, 2>>());
+  f(Type_tag<std::array<double, 3>>());
+  f(Type_tag<std::array<double, 4>>());
+}
+
+// The kernel's 2D points and vectors (texture coordinates).
+template <class W, class K>
+struct Linear_value<W, K, typename K::Point_2, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_2;
+  static Value from(const typename K::Point_2& p) { return p - CGAL::ORIGIN; }
+  static typename K::Point_2 to(const Value& v) { return CGAL::ORIGIN + v; }
+};
+template <class W, class K>
+struct Linear_value<W, K, typename K::Vector_2, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
+{
+  static constexpr bool defined = true;
+  using Value = typename K::Vector_2;
+  static Value from(const Value& v) { return v; }
+  static Value to(const Value& v) { return v; }
+};
+
+// The value types of the corner channels that are interpolated: those of the
+// vertex maps, and the kernel's 2D points and vectors.
+template <class K, class F>
+void for_each_channel_type(F&& f)
+{
+  for_each_interpolated_type<K>(f);
+  f(CGAL_ext::internal::Type_tag<typename K::Point_2>());
+  f(CGAL_ext::internal::Type_tag<typename K::Vector_2>());
+}
+
+// The maps of `mesh` that a subdivision carries: vertex maps of the types
+// above, face maps of any type (but the points, the sharpness and the hole
+// flags, which the subdivision writes itself), corner channels.
+template <class P>
+bool has_carried_maps(const Mobius_mesh<P>& mesh)
+{
+  if (!mesh.corner_channels().empty())
+    return true;
+  for (const std::string& name : mesh.template properties<Vertex_index>())
+    if (name != "v:point" && name != vertex_sharpness_name)
+      return true; // perhaps not of an interpolated type: then the maps are merely dropped
+  for (const std::string& name : mesh.template properties<Face_index>())
+    if (name != "f:hole")
+      return true;
+  return false;
+}
+
+// Calls body(tag) for work on n elements of the maps: tag is `ConcurrencyTag`
+// where a level of n vertices would be refined with threads
+// (runs_in_parallel()), `CGAL::Sequential_tag` otherwise.
+template <class ConcurrencyTag, class Body>
+void with_concurrency_for(u32 n, const Refinement_options& options, const Body& body)
+{
+  with_concurrency<ConcurrencyTag>(runs_in_parallel(n, options.parallel_min_vertices), body);
+}
+
+// Calls body(v) for the vertices v in [0, n), with threads as
+// with_concurrency_for() says.
+template <class ConcurrencyTag, class Body>
+void for_each_vertex(u32 n, const Refinement_options& options, const Body& body)
+{
+  with_concurrency_for<ConcurrencyTag>(n, options, [&](auto tag) { for_each_index<decltype(tag)>(n, body); });
+}
+
+// Interpolates the vertex maps of `mesh` through the levels of `refiner`
+// into new maps of `out`, and gives each face of `out` the face maps' values
+// of the base face it lies in (quad and triangle splits).
+template <class ConcurrencyTag, class W, class Mask, class P>
+void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mobius_mesh<P>& out)
+{
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  for (const std::string& name : mesh.template properties<Vertex_index>()) {
+    if (name == "v:point" || name == vertex_sharpness_name)
+      continue;
+    for_each_interpolated_type<K>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      using L = Linear_value<W, K, T>;
+      if constexpr (L::defined) {
+        const auto from = mesh.template property_map<Vertex_index, T>(name);
+        if (!from)
+          return;
+        std::vector<typename L::Value> base, result;
+        const u32 n = u32(mesh.number_of_vertices());
+        base.resize(n);
+        for_each_vertex<ConcurrencyTag>(n, refiner.options(), [&](u32 v) { base[v] = L::from((*from)[Vertex_index(v)]); });
+        refiner.template interpolate<ConcurrencyTag>(base, result);
+        auto to = out.template add_property_map<Vertex_index, T>(name, from->array()->default_value()).first;
+        const u32 m = u32(out.number_of_vertices());
+        for_each_vertex<ConcurrencyTag>(m, refiner.options(), [&](u32 v) { to[Vertex_index(v)] = L::to(result[v]); });
+      }
+    });
+  }
+  if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle) {
+    const std::vector<std::uint32_t> parent = refiner.template base_faces<ConcurrencyTag>();
+    auto parent_of = [&](Face_index f) { return Face_index(parent[f.idx()]); };
+    with_concurrency_for<ConcurrencyTag>(u32(out.number_of_faces()), refiner.options(), [&](auto tag) {
+      CGAL_ext::internal::transfer_properties<Face_index, decltype(tag)>(mesh, out, 0, out.number_of_faces(),
+                                                                         parent_of, "f:hole");
+    });
+  }
+}
+
+// The corner channel `name` of `mesh` as the refiner takes it: the value
+// index of each halfedge's corner (null on the border). A face corner
+// without a valid index is refused.
+template <class P, class Channel>
+std::vector<u32> base_corners(const Mobius_mesh<P>& mesh, const Channel& channel)
+{
+  std::vector<u32> corners(mesh.number_of_halfedges(), null_u32);
+  const std::size_t n = channel.number_of_values();
+  for (Halfedge_index h : mesh.halfedges()) {
+    if (mesh.is_border(h))
+      continue;
+    const u32 i = channel.index(h);
+    if (i == Channel::no_value() || i >= n) {
+      std::ostringstream what;
+      what << "subdivision: corner channel \"" << channel.name() << "\": the corner of face " << mesh.face(h)
+           << " at vertex " << mesh.target(h) << " (" << h << ") has "
+           << (i == Channel::no_value() ? std::string("no value") : "value index " + std::to_string(i) + " of " + std::to_string(n));
+      throw Parameter_error(what.str());
+    }
+    corners[h.idx()] = i;
+  }
+  return corners;
+}
+
+// Interpolates the corner channels of `mesh` through the levels of `refiner`
+// into channels of `out`; a channel whose values have no linear combination
+// is refused (checked by `check_channels()` before anything is refined).
+template <class ConcurrencyTag, class W, class Mask, class P>
+void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation mode, const Mobius_mesh<P>& mesh,
+                    Mobius_mesh<P>& out)
+{
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  for (const std::string& name : mesh.corner_channels()) {
+    for_each_channel_type<K>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      using L = Linear_value<W, K, T>;
+      if constexpr (L::defined) {
+        const auto from = mesh.template corner_channel<T>(name);
+        if (!from)
+          return;
+        std::vector<u32> corners = base_corners(mesh, *from);
+        std::vector<typename L::Value> values;
+        values.reserve(from->number_of_values());
+        for (const T& t : from->values())
+          values.push_back(L::from(t));
+        refiner.template interpolate_face_varying<ConcurrencyTag>(mode, corners, values);
+        auto to = out.template add_corner_channel<T>(name).first;
+        to.values().clear();
+        to.values().reserve(values.size());
+        for (const auto& v : values)
+          to.values().push_back(L::to(v));
+        for (u32 h = 0; h < u32(corners.size()); ++h)
+          to.set_index(Halfedge_index(h), corners[h]);
+      }
+    });
+  }
+}
+
+// Refuses, before anything is refined, a mesh with a corner channel that a
+// subdivision by `Mask` cannot carry: one whose values have no linear
+// combination, or any channel for the dual and √3 splits, whose new corners
+// lie across several parent faces.
+template <class W, class Mask, class P>
+void check_channels(const Mobius_mesh<P>& mesh)
+{
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  for (const std::string& name : mesh.corner_channels()) {
+    bool interpolated = false;
+    for_each_channel_type<K>([&](auto tag) {
+      using T = typename decltype(tag)::type;
+      if constexpr (Linear_value<W, K, T>::defined)
+        interpolated = interpolated || mesh.template corner_channel<T>(name).has_value();
+    });
+    if (Mask::split == Split::dual || Mask::split == Split::sqrt3)
+      throw Parameter_error("subdivision: Doo-Sabin and sqrt(3) subdivision do not carry corner channels (\"" + name +
+                            "\"); remove the channel or subdivide with Catmull-Clark, Loop, bilinear or linear");
+    if (!interpolated)
+      throw Parameter_error("subdivision: corner channel \"" + name +
+                            "\" has values of a type that is not interpolated (floating-point numbers, arrays of them, the "
+                            "kernel's points and vectors are); remove it before subdividing");
+  }
+}
+
+template <class Map, class Key>
+std::vector<float> gather_sharpness(const Map& map, std::size_t n)
+{
+  std::vector<float> s(n);
+  for (std::size_t i = 0; i < n; ++i)
+    s[i] = float(get(map, Key(typename Key::size_type(i))));
+  return s;
+}
+
+// The sharpness of `mesh`: the maps given, else its "e:sharpness" /
+// "v:sharpness". Returns whether there is any.
+template <class P, class NamedParameters>
+bool gather_sharpness(const Mobius_mesh<P>& mesh, const NamedParameters& np, std::vector<float>& es,
+                      std::vector<float>& vs)
+{
+  namespace pm = CGAL_ext::parameters;
+  bool has_sharpness = false;
+  const auto esm_param = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
+  if constexpr (!pm::is_default_parameter<NamedParameters, CGAL_ext::internal_np::edge_sharpness_t>::value) {
+    es = gather_sharpness<decltype(esm_param), Edge_index>(esm_param, mesh.number_of_edges());
+    has_sharpness = true;
+  } else if (auto m = mesh.template property_map<Edge_index, float>(edge_sharpness_name)) {
+    es = m->data();
+    has_sharpness = true;
+  }
+  const auto vsm_param = pm::get_parameter(np, CGAL_ext::internal_np::vertex_sharpness);
+  if constexpr (!pm::is_default_parameter<NamedParameters, CGAL_ext::internal_np::vertex_sharpness_t>::value) {
+    vs = gather_sharpness<decltype(vsm_param), Vertex_index>(vsm_param, mesh.number_of_vertices());
+    has_sharpness = true;
+  } else if (auto m = mesh.template property_map<Vertex_index, float>(vertex_sharpness_name)) {
+    vs = m->data();
+    has_sharpness = true;
+  }
+  return has_sharpness;
+}
+
+// Subdivision in double adds a ring's points up before it weights the sum:
+// beyond +-1e300 the sum of a ring of a few hundred points overflows to
+// infinity. Exact numbers do not overflow.
+constexpr double max_abs_subdivided_coordinate = 1e300;
+
+// Refuses a point in double beyond max_abs_subdivided_coordinate or not
+// finite (a NaN spreads to every point it is a term of), naming the first
+// such vertex.
+template <class ConcurrencyTag, class Values>
+void require_points_in_range(const Values& values)
+{
+  const u32 n = u32(values.size());
+  const auto out_of_range = [&](u32 v) {
+    const Vec3& p = values[v];
+    const double b = max_abs_subdivided_coordinate;
+    return !(std::abs(p.x) <= b && std::abs(p.y) <= b && std::abs(p.z) <= b); // true for NaN too
+  };
+  const u32 bad = reduce<ConcurrencyTag>(
+    n, null_u32, [&](u32 v) { return out_of_range(v) ? v : null_u32; }, [](u32 a, u32 b) { return (std::min)(a, b); });
+  if (bad == null_u32)
+    return;
+  std::ostringstream what;
+  what << "subdivision: vertex v" << bad << " at (" << values[bad].x << ", " << values[bad].y << ", "
+       << values[bad].z << ") has a coordinate that is not finite or beyond +-" << max_abs_subdivided_coordinate
+       << ", where the sums of a ring's points in double overflow";
+  throw Parameter_error(what.str());
+}
+
+// The points of `mesh` as interpolated values, in parallel if the mesh is
+// large enough (`options`, as the refiner decides for a level); in double,
+// refused where they would overflow.
+template <class ConcurrencyTag, class P, class VertexPointMap, class Values>
+void read_points(const Mobius_mesh<P>& mesh, const VertexPointMap& vpm, const Refinement_options& options,
+                 Values& values)
+{
+  const u32 n = u32(mesh.number_of_vertices());
+  values.resize(n);
+  for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { values[v] = Point_values<P>::from(get(vpm, Vertex_index(v))); });
+  if constexpr (std::is_same_v<typename Values::value_type, Vec3>)
+    require_points_in_range<ConcurrencyTag>(values);
+}
+
+// The interpolated `values` as the points of `out`.
+template <class ConcurrencyTag, class Values, class P>
+void write_points(const Values& values, const Refinement_options& options, Mobius_mesh<P>& out)
+{
+  const u32 n = u32(out.number_of_vertices());
+  for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { out.point(Vertex_index(v)) = Point_values<P>::to(values[v]); });
+}
+
+template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
+void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
+{
+  namespace pm = CGAL_ext::parameters;
+  using Traits = Point_values<P>;
+  using Value = typename Traits::Value;
+  // Exact kernels stay serial: their lazy numbers share construction history
+  // between threads.
+  using Tag = std::conditional_t<std::is_same_v<Value, Vec3>, ConcurrencyTag, CGAL::Sequential_tag>;
+
+  const unsigned levels =
+    unsigned(pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::number_of_iterations), 1));
+  auto vpm = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
+  Refinement_options options;
+  options.boundary_interpolation = pm::choose_parameter(
+    pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation), Boundary_interpolation::edge_only);
+  options.crease_method =
+    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+  options.maximum_memory = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
+                                                options.maximum_memory);
+  const Face_varying_interpolation fvar_mode =
+    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation),
+                         Face_varying_interpolation::corners_plus1);
+  std::vector<float> es, vs;
+  const bool write_sharpness = gather_sharpness(mesh, np, es, vs) && Mask::creases;
+  check_channels<typename Traits::Weight, Mask>(mesh);
+
+  // Build the result aside: on failure the caller's mesh stays as it was.
+  Mobius_mesh<P> out;
+  Refiner<Mask, typename Traits::Weight> refiner(mask, options);
+  if (!has_carried_maps(mesh)) {
+    // Points only: one pass, two levels alive at a time.
+    internal::Array<Value> values; // each level's points are written in full: no zero-fill
+    read_points<Tag>(mesh, vpm, options, values);
+    if constexpr (Traits::round_trips) {
+      refiner.template refine_and_interpolate_points<Traits, Tag>(mesh, levels, values, out, es, vs, write_sharpness);
+    } else {
+      refiner.template refine_and_interpolate<Tag>(mesh, levels, values, out, es, vs, write_sharpness);
+      write_points<Tag>(values, options, out);
+    }
+  } else {
+    // Other maps too: every level is kept, and each map interpolated through them.
+    std::vector<Value> values, result;
+    read_points<Tag>(mesh, vpm, options, values);
+    refiner.template refine<Tag>(mesh, levels, es, vs);
+    refiner.template interpolate<Tag>(values, result);
+    refiner.template build_mesh<Tag>(out, write_sharpness);
+    write_points<Tag>(result, options, out);
+    carry_maps<Tag>(refiner, mesh, out);
+    if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle)
+      carry_channels<Tag>(refiner, fvar_mode, mesh, out);
+  }
+  mesh = std::move(out);
+}
+
+} // namespace internal
+} // namespace Subdivision
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_SUBDIVISION_INTERNAL_SUBDIVISION_DRIVER_H
