@@ -194,6 +194,23 @@ TEST(Geodesics, ExactGeodesicsThroughTheLibraryEqualTheCover)
   exact_geodesics_equal_cover(klein);
 }
 
+TEST(Geodesics, CgalsShortestPathsOnAMeshWithMobiusEdgesAreRefusedNotHung)
+{
+  using Traits = CGAL::Surface_mesh_shortest_path_traits<K, Mesh>;
+  for (Shape s : {mobius, klein}) {
+    const Mesh m = make(s);
+    EXPECT_THROW(CGAL::Surface_mesh_shortest_path<Traits>{m}, CGAL_ext::Parameter_error);
+  }
+  // Without Möbius edges it is CGAL's class at work on the mesh.
+  const Mesh t = make(torus);
+  CGAL::Surface_mesh_shortest_path<Traits> sp(t);
+  sp.add_source_point(Vertex_index(0));
+  const Vertex_index v = t.target(t.halfedge(Vertex_index(0)).is_valid() ? t.next(t.halfedge(Vertex_index(0)))
+                                                                         : t.halfedge(Vertex_index(0)));
+  EXPECT_NEAR(sp.shortest_distance_to_source_points(v).first,
+              std::sqrt(CGAL::squared_distance(t.point(v), t.point(Vertex_index(0)))), 1e-12);
+}
+
 TEST(Geodesics, ExactAndHeatOnAnOrientedTorusEqualSurfaceMesh)
 {
   const Mesh m = make(torus);

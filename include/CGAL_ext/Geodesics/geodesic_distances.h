@@ -168,6 +168,67 @@ void exact_geodesic_distances(const Mobius_mesh<P>& mesh, VertexDistanceMap dist
   exact_geodesic_distances(mesh, distances, std::vector<Vertex_index>{source});
 }
 
+namespace internal {
+
+// The traits of CGAL's shortest paths on a Mobius_mesh under another name, so
+// that the class below can be CGAL's class for them.
+template <class K, class P>
+struct Mobius_shortest_path_traits : CGAL::Surface_mesh_shortest_path_traits<K, Mobius_mesh<P>>
+{
+  using Base = CGAL::Surface_mesh_shortest_path_traits<K, Mobius_mesh<P>>;
+  Mobius_shortest_path_traits() = default;
+  Mobius_shortest_path_traits(const Base& traits) : Base(traits) {}
+};
+
+template <class P>
+const Mobius_mesh<P>& checked_for_shortest_paths(const Mobius_mesh<P>& mesh)
+{
+  require_orientable_model(mesh, "CGAL::Surface_mesh_shortest_path (CGAL_ext::exact_geodesic_distances() "
+                                 "runs it on the orientation double cover)");
+  return mesh;
+}
+
+} // namespace internal
+
 } // namespace CGAL_ext
+
+namespace CGAL {
+
+/// CGAL's `Surface_mesh_shortest_path` on a `Mobius_mesh`: CGAL's class,
+/// whose constructors first refuse a mesh with Möbius edges with
+/// `CGAL_ext::Parameter_error` (CGAL's algorithm would walk a face's cycle for
+/// ever looking for a flipped dart); `CGAL_ext::exact_geodesic_distances()`
+/// computes the distances on such a mesh. Seen by code that includes
+/// `<CGAL_ext/Geodesics/geodesic_distances.h>` before it names the class.
+template <class K, class P, class VIM, class HIM, class FIM, class VPM>
+class Surface_mesh_shortest_path<Surface_mesh_shortest_path_traits<K, CGAL_ext::Mobius_mesh<P>>, VIM, HIM, FIM, VPM>
+  : public Surface_mesh_shortest_path<CGAL_ext::internal::Mobius_shortest_path_traits<K, P>, VIM, HIM, FIM, VPM>
+{
+  using Base = Surface_mesh_shortest_path<CGAL_ext::internal::Mobius_shortest_path_traits<K, P>, VIM, HIM, FIM, VPM>;
+  using Base_traits = CGAL_ext::internal::Mobius_shortest_path_traits<K, P>;
+
+public:
+  /// The traits the class was named with.
+  using Traits = Surface_mesh_shortest_path_traits<K, CGAL_ext::Mobius_mesh<P>>;
+  using typename Base::Face_index_map;
+  using typename Base::Halfedge_index_map;
+  using typename Base::Triangle_mesh;
+  using typename Base::Vertex_index_map;
+  using typename Base::Vertex_point_map;
+
+  /// CGAL's constructor, after the check.
+  Surface_mesh_shortest_path(const Triangle_mesh& tm, const Traits& traits = Traits())
+    : Base(CGAL_ext::internal::checked_for_shortest_paths(tm), Base_traits(traits))
+  {}
+  /// CGAL's constructor with index and point maps, after the check.
+  Surface_mesh_shortest_path(const Triangle_mesh& tm, Vertex_index_map vertex_index_map,
+                             Halfedge_index_map halfedge_index_map, Face_index_map face_index_map,
+                             Vertex_point_map vertex_point_map, const Traits& traits = Traits())
+    : Base(CGAL_ext::internal::checked_for_shortest_paths(tm), vertex_index_map, halfedge_index_map, face_index_map,
+           vertex_point_map, Base_traits(traits))
+  {}
+};
+
+} // namespace CGAL
 
 #endif // CGAL_EXT_GEODESICS_GEODESIC_DISTANCES_H
