@@ -22,6 +22,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <type_traits>
 
 #ifdef CGAL_USE_BASIC_VIEWER
 #include <CGAL/Qt/Basic_viewer_qt.h>
@@ -86,6 +87,9 @@ public:
     if (context())
       QObject::disconnect(context(), nullptr, this, nullptr);
   }
+
+  /// Shows the faces, or hides them (`draw()`'s `nofill`; the `F` key).
+  void set_draw_faces(bool faces) { m_draw_faces = faces; }
 
   /// Adds the faces and segments of `scene` to what is drawn.
   void add_scene(const Two_sided_scene& scene)
@@ -174,6 +178,28 @@ private:
 
 #endif // CGAL_USE_BASIC_VIEWER || CGAL_EXT_DOXYGEN_RUNNING
 
+namespace internal {
+
+template <class P, class NP>
+void draw_two_sided(const Mobius_mesh<P>& mesh, const NP& np, const char* title, bool nofill)
+{
+#ifdef CGAL_USE_BASIC_VIEWER
+  const Two_sided_scene scene = make_two_sided_scene(mesh, np);
+  if (qEnvironmentVariableIsSet("CGAL_TEST_SUITE"))
+    return;
+  internal::Viewer_application app("draw");
+  Mobius_mesh_viewer_qt viewer(nullptr, scene, title);
+  viewer.set_draw_faces(!nofill);
+  viewer.show();
+  app.exec();
+#else
+  (void)mesh, (void)np, (void)title, (void)nofill;
+  std::cerr << "CGAL_ext::draw: built without CGAL_USE_BASIC_VIEWER (link with CGAL::CGAL_Basic_viewer)\n";
+#endif
+}
+
+} // namespace internal
+
 /// \ingroup PkgMobiusMeshDrawing
 /// \brief opens a window showing `mesh` and returns when it is closed, as
 /// `CGAL::draw()` does.
@@ -189,22 +215,25 @@ private:
 /// `CGAL::draw()`).
 /// \throws Parameter_error as `make_two_sided_scene()`, before a window opens;
 /// \throws Error when there is no display to open it on.
-template <class P, class NP = parameters::Default_named_parameters>
+///
+/// The call shapes of CGAL's `draw()` for a `Surface_mesh` work too:
+/// `draw(mesh)`, `draw(mesh, title)` and `draw(mesh, title, nofill)`.
+template <class P, class NP = parameters::Default_named_parameters,
+          std::enable_if_t<!std::is_convertible<const NP&, const char*>::value, int> = 0>
 void draw(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values(),
           const char* title = "Mobius_mesh viewer")
 {
-#ifdef CGAL_USE_BASIC_VIEWER
-  const Two_sided_scene scene = make_two_sided_scene(mesh, np);
-  if (qEnvironmentVariableIsSet("CGAL_TEST_SUITE"))
-    return;
-  internal::Viewer_application app("draw");
-  Mobius_mesh_viewer_qt viewer(nullptr, scene, title);
-  viewer.show();
-  app.exec();
-#else
-  (void)mesh, (void)np, (void)title;
-  std::cerr << "CGAL_ext::draw: built without CGAL_USE_BASIC_VIEWER (link with CGAL::CGAL_Basic_viewer)\n";
-#endif
+  internal::draw_two_sided(mesh, np, title, false);
+}
+
+/// \ingroup PkgMobiusMeshDrawing
+/// \brief `draw()` called as CGAL's `draw(sm, title, nofill)`: opens a window
+/// titled `title` showing `mesh`; with `nofill` the faces are hidden (the
+/// viewer's `F` key shows them), as in CGAL.
+template <class P>
+void draw(const Mobius_mesh<P>& mesh, const char* title, bool nofill = false)
+{
+  internal::draw_two_sided(mesh, parameters::default_values(), title, nofill);
 }
 
 /// \ingroup PkgMobiusMeshDrawing
