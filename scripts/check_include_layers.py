@@ -41,7 +41,8 @@ LAYERS = [
     (r"boost/graph/[^/]+\.h", 2, "mesh algorithms"),
     (r"(Sharp_features|polygon_soup_to_mobius_mesh)\.h", 2, "mesh algorithms"),
     # 3: the algorithm families, each in its folder with its internal/.
-    (r"(Subdivision|Merging|Conversion|Decimation|Remeshing|IO)/([^/]+|internal/[^/]+)\.h", 3, "families"),
+    (r"(Subdivision|Merging|Conversion|Decimation|Remeshing|IO|Geodesics|Curvature|Hole_filling|Smoothing|"
+     r"Polygon_mesh_processing)/([^/]+|internal/[^/]+)\.h", 3, "families"),
     # 4, with the top-level headers: families built on another family's
     # public entry (the limit surface refines a face's neighbourhood with
     # subdivision.h).
