@@ -125,3 +125,8 @@ set_tests_properties(merge.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION
 
 add_test(NAME example.pmp_on_mobius COMMAND pmp_on_mobius)
 set_tests_properties(example.pmp_on_mobius PROPERTIES PASS_REGULAR_EXPRESSION "non-orientable, [0-9]+ Möbius edges: same topology")
+# A polygon that CGAL's triangulation splits: the removed polygon is collected
+# before the conversion (it used to stop with "the mesh has removed elements").
+add_test(NAME example.pmp_on_mobius_pentagon COMMAND pmp_on_mobius ${PROJECT_SOURCE_DIR}/test/data/tools/pentagon.obj)
+set_tests_properties(example.pmp_on_mobius_pentagon PROPERTIES PASS_REGULAR_EXPRESSION
+  "1 border loop\\(s\\), orientable, 0 Möbius edges: same topology")

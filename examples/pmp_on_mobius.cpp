@@ -62,6 +62,9 @@ int pmp_on_mobius(int argc, char** argv)
   // Orientation-free algorithms, directly on the mesh. Triangulation splits
   // each face inside itself, so it needs no global orientation either.
   PMP::triangulate_faces(mesh);
+  // CGAL's triangulation removes each polygon it splits (through the graph
+  // traits' remove_face()); the removed slots go before the conversion below.
+  mesh.collect_garbage();
   const auto components =
     PMP::connected_components(mesh, get(CGAL::dynamic_face_property_t<std::size_t>(), mesh));
   const CGAL::Bbox_3 box = PMP::bbox(mesh);
