@@ -642,6 +642,22 @@ TEST(IsotropicRemeshing, BadParametersLeaveTheMeshUntouched)
   EXPECT_EQ(test::snapshot(m), with_garbage);
 }
 
+// Two triangles on the same three corners (a "pillow", as a careless
+// exporter writes a double-sided face) pass every check, and an edit is
+// refused part way: the caller's mesh is then as it was.
+TEST(IsotropicRemeshing, AFailurePartWayLeavesTheMeshAsItWas)
+{
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  const std::vector<std::vector<std::size_t>> faces = {{0, 1, 2}, {0, 2, 1}};
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
+  ASSERT_TRUE(m.is_valid());
+  const std::string before = test::snapshot(m);
+  EXPECT_THROW(CGAL_ext::isotropic_remeshing(m, 0.1), CGAL_ext::Euler_error);
+  EXPECT_EQ(test::snapshot(m), before);
+  EXPECT_TRUE(m.is_valid());
+}
+
 // Protected sharp edges are those of sharpness > 0; a NaN or negative
 // sharpness is no number of levels and is refused, naming the edge, as
 // subdivision and decimation refuse it. Unprotected, the map is not read.

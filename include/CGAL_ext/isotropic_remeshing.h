@@ -111,8 +111,11 @@ namespace CGAL_ext {
 /// of doubles at the largest coordinate (too fine for the coordinates).
 /// \throws Size_error if the estimated result has more elements than the
 /// mesh's indices hold or needs more than `maximum_memory`.
-/// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()).
-/// In all these cases `mesh` is untouched.
+/// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()),
+/// or if an edit is refused part way (two faces on the same corners, say).
+/// In all these cases `mesh` is as it was before the call: the checks run
+/// before it is touched, and a failure part way puts it back from a copy
+/// (property maps taken before such a failure must then be taken again).
 template <class P, class NP = parameters::Default_named_parameters>
 void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const NP& np = parameters::default_values())
 {
@@ -126,20 +129,31 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
                                  parameters::choose_parameter(
                                    parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
                                    internal::physical_memory()));
-  triangulate_faces(mesh);
-  {
-    // The remesher keeps edge indices across splits and collapses: added
-    // elements must not take the slots of removed ones while it runs.
-    struct Appending
+  // An operation that fails part way (an Euler operation refused on input
+  // the checks above cannot see, such as two faces on the same corners)
+  // must leave the caller's mesh as it was: the mesh is edited in place, so
+  // that the caller's property maps stay valid, and put back from a copy if
+  // anything throws.
+  const Mobius_mesh<P> before = mesh;
+  try {
+    triangulate_faces(mesh);
     {
-      Mobius_mesh<P>& mesh;
-      const bool recycled = mesh.does_recycle_garbage();
-      explicit Appending(Mobius_mesh<P>& m) : mesh(m) { mesh.set_recycle_garbage(false); }
-      ~Appending() { mesh.set_recycle_garbage(recycled); }
-    } appending(mesh);
-    internal::Isotropic_remesher<P>(mesh, options).run();
+      // The remesher keeps edge indices across splits and collapses: added
+      // elements must not take the slots of removed ones while it runs.
+      struct Appending
+      {
+        Mobius_mesh<P>& mesh;
+        const bool recycled = mesh.does_recycle_garbage();
+        explicit Appending(Mobius_mesh<P>& m) : mesh(m) { mesh.set_recycle_garbage(false); }
+        ~Appending() { mesh.set_recycle_garbage(recycled); }
+      } appending(mesh);
+      internal::Isotropic_remesher<P>(mesh, options).run();
+    }
+    mesh.collect_garbage();
+  } catch (...) {
+    mesh = before;
+    throw;
   }
-  mesh.collect_garbage();
 }
 
 } // namespace CGAL_ext
