@@ -29,7 +29,7 @@ LAYERS = [
     # are built on the Euler operations, and serve the algorithms that collapse.
     # So are the engines of the mesh algorithms of Mobius_mesh/ that build on
     # other mesh algorithms (the Euler operations, copies, the topology).
-    (r"Mobius_mesh/internal/(Collapse_checks|Fan_triangulation|Shape_builders|Soup_import|Mesh_copy)\.h", 2,
+    (r"Mobius_mesh/internal/(Collapse_checks|Fan_triangulation|Shape_builders|Soup_import|Mesh_copy|Two_sided_geometry)\.h", 2,
      "mesh algorithms"),
     # 1: the mesh and its internals.
     (r"Mobius_mesh\.h", 1, "mesh"),
