@@ -171,7 +171,7 @@ TEST(Conversion, InconsistentOrientationIsOrientedAndRestored)
   std::vector<std::vector<int>> quads = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   std::reverse(quads[3].begin(), quads[3].end());
   CGAL_ext::Mobius_mesh<Epick::Point_3> mesh;
-  CGAL_ext::polygon_soup_to_mobius_mesh(pts, quads, mesh);
+  CGAL_ext::polygon_soup_to_mobius_mesh(pts, quads, mesh, CGAL_ext::parameters::keep_orientation(true));
   ASSERT_EQ(CGAL_ext::number_of_mobius_edges(mesh), 4u);
   const auto before = face_cycles(mesh);
 

@@ -41,7 +41,9 @@ template <class P>
 Mesh<P> from_soup(const std::vector<P>& points, const std::vector<std::vector<std::size_t>>& polygons)
 {
   Mesh<P> m;
-  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m);
+  // The faces as given: the merges keep orientations, and the tests count
+  // the Möbius edges they leave.
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, CGAL_ext::parameters::keep_orientation(true));
   return m;
 }
 
@@ -870,7 +872,7 @@ std::size_t soup_vertices_after_merge(const Tolerance_case& c)
                                  P(c.dx, c.dy, c.dz), P(1, 0.5, 0),    P(c.dx, 1 + c.dy, c.dz)};
   const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {3, 4, 5}};
   Mesh<P> m;
-  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, CGAL_ext::parameters::tolerance(c.tolerance));
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, CGAL_ext::parameters::tolerance(c.tolerance).keep_orientation(true));
   return m.number_of_vertices();
 }
 
@@ -1028,7 +1030,8 @@ Topology stitched_by_cgal(const Soup& soup)
 Mesh<P> imported_glued(const Soup& soup)
 {
   Mesh<P> m;
-  CGAL_ext::polygon_soup_to_mobius_mesh(soup.points, soup.polygons, m, CGAL_ext::parameters::tolerance(0.0));
+  CGAL_ext::polygon_soup_to_mobius_mesh(soup.points, soup.polygons, m,
+                                        CGAL_ext::parameters::tolerance(0.0).keep_orientation(true));
   return m;
 }
 
@@ -1266,7 +1269,7 @@ TEST(MergeInPlace, RandomSplitsOfClosedSurfacesGlueBack)
       Mesh<P> a, b;
       for (unsigned k : {0u, 1u})
         CGAL_ext::polygon_soup_to_mobius_mesh(part[k].points, part[k].polygons, k ? b : a,
-                                              CGAL_ext::parameters::split_non_manifold_vertices(true));
+                                              CGAL_ext::parameters::split_non_manifold_vertices(true).keep_orientation(true));
       split += a.number_of_vertices() + b.number_of_vertices() - part[0].points.size() - part[1].points.size();
       Soup both = part[0];
       both.append(part[1]);

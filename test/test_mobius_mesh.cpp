@@ -168,7 +168,7 @@ protected:
       quads.push_back(q);
     }
     Mesh m;
-    CGAL_ext::polygon_soup_to_mobius_mesh(ring_points(), quads, m);
+    CGAL_ext::polygon_soup_to_mobius_mesh(ring_points(), quads, m, CGAL_ext::parameters::keep_orientation(true)); // Möbius connections as drawn
     return m;
   }
   // Edge neighbours of the centre in walk order, as angles' indices 1, 3, 5, 7.

@@ -99,7 +99,7 @@ X::Mobius_mesh<typename K::Point_3> soup_mesh(const std::vector<std::array<doubl
   for (const auto& c : coordinates)
     points.emplace_back(c[0], c[1], c[2]);
   X::Mobius_mesh<typename K::Point_3> mesh;
-  X::polygon_soup_to_mobius_mesh(points, polygons, mesh);
+  X::polygon_soup_to_mobius_mesh(points, polygons, mesh, X::parameters::keep_orientation(true)); // as given
   return mesh;
 }
 
