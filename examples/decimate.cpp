@@ -40,8 +40,8 @@ using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 
 const examples::Tool_usage usage{
   "decimate",
-  "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders] [--no-relocation]\n"
-  "         [--no-hausdorff]",
+  "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders] [--no-relocation] "
+  "[--no-hausdorff]",
   "Reads a polygon mesh (.obj, .off, .ply), orientable or not, triangulates it and collapses\n"
   "edges, cheapest first by Garland-Heckbert quadric error, until a stop condition holds (give\n"
   "one or more; the first reached stops):\n"
