@@ -3,7 +3,7 @@
 set -euo pipefail
 
 required=(cmake g++ make ccache libcgal-dev libboost-dev libeigen3-dev libgmp-dev libmpfr-dev
-          libgtest-dev libbenchmark-dev libtbb-dev doxygen)
+          libgtest-dev libbenchmark-dev libtbb-dev doxygen python3)
 # Peers used only for reference tests and benchmarks, the viewer (CGAL's Qt5
 # component, with a virtual screen and software OpenGL for its tests) and the
 # readers' fuzz targets (clang's libFuzzer):
