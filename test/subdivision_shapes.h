@@ -6,6 +6,7 @@
 #ifndef CGAL_EXT_TEST_SUBDIVISION_SHAPES_H
 #define CGAL_EXT_TEST_SUBDIVISION_SHAPES_H
 
+#include "opensubdiv_tags.h"
 #include "test_util.h"
 
 #include <CGAL_ext/Mobius_mesh.h>
@@ -42,18 +43,11 @@ using Level = S::internal::Level;
 
 // ----------------------------------------------------------------- shapes
 
-// An OBJ file with OpenSubdiv's tags, read by a small local parser.
-struct Shape
+// An OBJ file with OpenSubdiv's tags.
+struct Shape : test::Osd_tags
 {
   std::vector<Point> points;
   std::vector<std::vector<int>> faces;
-  std::vector<std::array<int, 2>> crease_pairs;
-  std::vector<float> crease_values;
-  std::vector<int> corners;
-  std::vector<float> corner_values;
-  Boundary_interpolation boundary = Boundary_interpolation::edge_only;
-  Crease_method crease_method = Crease_method::uniform;
-  Triangle_subdivision triangles = Triangle_subdivision::catmark;
 };
 
 inline Shape read_shape(const std::string& file)
@@ -63,42 +57,8 @@ inline Shape read_shape(const std::string& file)
     file, [&](double x, double y, double z) { s.points.emplace_back(x, y, z); },
     [&](const std::vector<std::size_t>& f) { s.faces.emplace_back(f.begin(), f.end()); },
     [&](const std::string& tag, const std::string&, std::istream& ls) {
-      if (tag != "t")
-        return;
-      std::string name, counts;
-      ls >> name >> counts;
-      int ni = 0, nf = 0, ns = 0;
-      char sep;
-      std::istringstream cs(counts);
-      cs >> ni >> sep >> nf >> sep >> ns;
-      std::vector<int> ints(ni);
-      std::vector<float> floats(nf);
-      std::vector<std::string> strings(ns);
-      for (int& i : ints)
-        ls >> i;
-      for (float& f : floats)
-        ls >> f;
-      for (std::string& t : strings)
-        ls >> t;
-      if (name == "crease") {
-        for (int i = 0; i + 1 < ni; i += 2) {
-          s.crease_pairs.push_back({ints[i], ints[i + 1]});
-          s.crease_values.push_back(nf == 1 ? floats[0] : floats[i / 2]);
-        }
-      } else if (name == "corner") {
-        for (int i = 0; i < ni; ++i) {
-          s.corners.push_back(ints[i]);
-          s.corner_values.push_back(nf == 1 ? floats[0] : floats[i]);
-        }
-      } else if (name == "interpolateboundary") {
-        s.boundary = ints[0] == 0 ? Boundary_interpolation::none
-                                  : (ints[0] == 1 ? Boundary_interpolation::edge_and_corner
-                                                  : Boundary_interpolation::edge_only);
-      } else if (name == "creasemethod") {
-        s.crease_method = strings[0] == "chaikin" ? Crease_method::chaikin : Crease_method::uniform;
-      } else if (name == "smoothtriangles") {
-        s.triangles = strings[0] == "smooth" ? Triangle_subdivision::smooth : Triangle_subdivision::catmark;
-      }
+      if (tag == "t")
+        s.read(ls);
     });
   EXPECT_TRUE(opened) << file;
   return s;
@@ -145,7 +105,7 @@ std::vector<std::vector<V3>> our_levels(S::Refiner<Mask>& r, const Built& b, uns
   for (const Point& p : b.mesh.points().data())
     levels[0].push_back({p.x(), p.y(), p.z()});
   for (unsigned k = 0; k < n; ++k) {
-    levels[k + 1].resize(r.level(k + 1).nv);
+    levels[k + 1].resize(r.level_size(k + 1).vertices);
     r.interpolate_level(k, levels[k].data(), levels[k + 1].data());
   }
   return levels;
@@ -248,11 +208,7 @@ inline Osd_run run_opensubdiv(const Shape& s, const Shape& tags, Sdc::SchemeType
     sizes.push_back(int(f.size()));
     indices.insert(indices.end(), f.begin(), f.end());
   }
-  std::vector<int> crease_indices;
-  for (const auto& p : tags.crease_pairs) {
-    crease_indices.push_back(p[0]);
-    crease_indices.push_back(p[1]);
-  }
+  const std::vector<int> crease_indices = tags.crease_indices();
   Far::TopologyDescriptor desc;
   desc.numVertices = int(s.points.size());
   desc.numFaces = int(s.faces.size());
@@ -265,16 +221,7 @@ inline Osd_run run_opensubdiv(const Shape& s, const Shape& tags, Sdc::SchemeType
   desc.cornerVertexIndices = tags.corners.data();
   desc.cornerWeights = tags.corner_values.data();
 
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(
-    tags.boundary == Boundary_interpolation::none
-      ? Sdc::Options::VTX_BOUNDARY_NONE
-      : (tags.boundary == Boundary_interpolation::edge_only ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                                            : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER));
-  options.SetCreasingMethod(tags.crease_method == Crease_method::chaikin ? Sdc::Options::CREASE_CHAIKIN
-                                                                          : Sdc::Options::CREASE_UNIFORM);
-  options.SetTriangleSubdivision(tags.triangles == Triangle_subdivision::smooth ? Sdc::Options::TRI_SUB_SMOOTH
-                                                                                : Sdc::Options::TRI_SUB_CATMARK);
+  const Sdc::Options options = test::opensubdiv_options(tags);
   Osd_run run;
   run.refiner.reset(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
     desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(type, options)));

@@ -3,6 +3,7 @@
 // PrimvarRefinerReal<double>::InterpolateFaceVarying in each of its six
 // linear-interpolation modes, on its own shapes and on the orientation double
 // cover of a Möbius strip; the parallel path against the serial one, bit for bit.
+#include "opensubdiv_tags.h"
 #include "test_util.h"
 
 #include <CGAL_ext/Mobius_mesh/generators.h>
@@ -145,15 +146,11 @@ namespace Sdc = OpenSubdiv::Sdc;
 
 // An OpenSubdiv shape with its `vt` corner indices (a small parser: the
 // library's OBJ reader does not read them yet).
-struct Shape
+struct Shape : test::Osd_tags
 {
   std::vector<Point> points;
   std::vector<UV> uvs;
   std::vector<std::vector<int>> faces, uv_faces;
-  std::vector<int> crease_pairs, corners;
-  std::vector<float> crease_values, corner_values;
-  CGAL_ext::Boundary_interpolation boundary = CGAL_ext::Boundary_interpolation::edge_only;
-  CGAL_ext::Crease_method crease_method = CGAL_ext::Crease_method::uniform;
 };
 
 Shape read_shape(const std::string& file)
@@ -185,37 +182,7 @@ Shape read_shape(const std::string& file)
       s.faces.push_back(f);
       s.uv_faces.push_back(ft);
     } else if (tag == "t") {
-      std::string name, counts;
-      ls >> name >> counts;
-      int ni = 0, nf = 0, ns = 0;
-      char sep;
-      std::istringstream cs(counts);
-      cs >> ni >> sep >> nf >> sep >> ns;
-      std::vector<int> ints(ni);
-      std::vector<float> floats(nf);
-      std::vector<std::string> strings(ns);
-      for (int& i : ints)
-        ls >> i;
-      for (float& x : floats)
-        ls >> x;
-      for (std::string& x : strings)
-        ls >> x;
-      if (name == "crease")
-        for (int i = 0; i + 1 < ni; i += 2) {
-          s.crease_pairs.insert(s.crease_pairs.end(), {ints[i], ints[i + 1]});
-          s.crease_values.push_back(nf == 1 ? floats[0] : floats[i / 2]);
-        }
-      else if (name == "corner")
-        for (int i = 0; i < ni; ++i) {
-          s.corners.push_back(ints[i]);
-          s.corner_values.push_back(nf == 1 ? floats[0] : floats[i]);
-        }
-      else if (name == "interpolateboundary")
-        s.boundary = ints[0] == 0 ? CGAL_ext::Boundary_interpolation::none
-                                  : ints[0] == 1 ? CGAL_ext::Boundary_interpolation::edge_and_corner
-                                                 : CGAL_ext::Boundary_interpolation::edge_only;
-      else if (name == "creasemethod")
-        s.crease_method = strings[0] == "chaikin" ? CGAL_ext::Crease_method::chaikin : CGAL_ext::Crease_method::uniform;
+      s.read(ls);
     }
   }
   return s;
@@ -227,14 +194,7 @@ Mesh build(const Shape& s)
 {
   Mesh m;
   CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
-  auto es = m.add_property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name, 0.0f).first;
-  auto vs = m.add_property_map<CGAL_ext::Vertex_index, float>(CGAL_ext::vertex_sharpness_name, 0.0f).first;
-  for (std::size_t i = 0; i < s.crease_values.size(); ++i)
-    for (Dart d : CGAL_ext::halfedges_around_target(CGAL_ext::Vertex_index(s.crease_pairs[2 * i + 1]), m))
-      if (m.source(d) == CGAL_ext::Vertex_index(s.crease_pairs[2 * i]))
-        es[m.edge(d)] = s.crease_values[i];
-  for (std::size_t i = 0; i < s.corners.size(); ++i)
-    vs[CGAL_ext::Vertex_index(s.corners[i])] = s.corner_values[i];
+  s.add_sharpness_maps(m);
   auto uv = m.add_corner_channel<UV>("c:uv").first;
   uv.values() = s.uvs;
   for (CGAL_ext::Face_index f : m.faces()) {
@@ -281,7 +241,8 @@ std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int
   desc.numVertsPerFace = sizes.data();
   desc.vertIndicesPerFace = indices.data();
   desc.numCreases = int(s.crease_values.size());
-  desc.creaseVertexIndexPairs = s.crease_pairs.data();
+  const std::vector<int> crease_indices = s.crease_indices();
+  desc.creaseVertexIndexPairs = crease_indices.data();
   desc.creaseWeights = s.crease_values.data();
   desc.numCorners = int(s.corners.size());
   desc.cornerVertexIndices = s.corners.data();
@@ -291,13 +252,7 @@ std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int
   channel.valueIndices = uv_indices.data();
   desc.numFVarChannels = 1;
   desc.fvarChannels = &channel;
-  Sdc::Options options;
-  using B = CGAL_ext::Boundary_interpolation;
-  options.SetVtxBoundaryInterpolation(s.boundary == B::none ? Sdc::Options::VTX_BOUNDARY_NONE
-                                      : s.boundary == B::edge_only ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                                                   : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  options.SetCreasingMethod(s.crease_method == CGAL_ext::Crease_method::chaikin ? Sdc::Options::CREASE_CHAIKIN
-                                                                                 : Sdc::Options::CREASE_UNIFORM);
+  Sdc::Options options = test::opensubdiv_options(s.boundary, s.crease_method);
   // The enums list the modes in the same order.
   options.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(int(mode)));
   std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(

@@ -75,7 +75,7 @@ void compare_limit(const Built& b, const Shape& osd_shape, const Shape& tags, Ma
   const auto ours = our_levels(r, b, k);
   const Osd_run osd = run_opensubdiv(osd_shape, tags, type, int(k));
   for (unsigned j = 0; j < k; ++j)
-    map = child_map(r.level(j), map, osd.refiner->GetLevel(int(j)), quad);
+    map = child_map(S::internal::level_of(r, j), map, osd.refiner->GetLevel(int(j)), quad);
   Mesh m;
   r.build_mesh(m, true);
   for (CGAL_ext::Vertex_index v : m.vertices())

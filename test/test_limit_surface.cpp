@@ -4,6 +4,7 @@
 // a regular torus, in double and exactly with rationals; against
 // limit_point() at the corners; and a Möbius strip against Bfr on its
 // orientation double cover.
+#include "opensubdiv_tags.h"
 #include "test_util.h"
 
 #include <CGAL_ext/Limit_surface.h>
@@ -38,16 +39,11 @@ using Point = K::Point_3;
 using Mesh = CGAL_ext::Mobius_mesh<Point>;
 using Surface = S::Limit_surface<S::Catmull_clark_mask, Point>;
 
-struct Shape
+// An OBJ file with OpenSubdiv's tags.
+struct Shape : test::Osd_tags
 {
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> faces;
-  std::vector<std::array<int, 2>> creases;
-  std::vector<float> crease_values;
-  std::vector<int> corners;
-  std::vector<float> corner_values;
-  CGAL_ext::Boundary_interpolation boundary = CGAL_ext::Boundary_interpolation::edge_only;
-  CGAL_ext::Crease_method method = CGAL_ext::Crease_method::uniform;
 };
 
 Shape read_shape(const std::string& file)
@@ -57,39 +53,8 @@ Shape read_shape(const std::string& file)
     file, [&](double x, double y, double z) { s.points.emplace_back(x, y, z); },
     [&](const std::vector<std::size_t>& f) { s.faces.push_back(f); },
     [&](const std::string& tag, const std::string&, std::istream& ls) {
-      if (tag != "t")
-        return;
-      std::string name, counts;
-      ls >> name >> counts;
-      int ni = 0, nf = 0, ns = 0;
-      char sep;
-      std::istringstream cs(counts);
-      cs >> ni >> sep >> nf >> sep >> ns;
-      std::vector<int> ints(ni);
-      std::vector<float> floats(nf);
-      std::vector<std::string> strings(ns);
-      for (int& i : ints)
-        ls >> i;
-      for (float& f : floats)
-        ls >> f;
-      for (std::string& t : strings)
-        ls >> t;
-      if (name == "crease") {
-        for (int i = 0; i + 1 < ni; i += 2) {
-          s.creases.push_back({ints[i], ints[i + 1]});
-          s.crease_values.push_back(nf == 1 ? floats[0] : floats[i / 2]);
-        }
-      } else if (name == "corner") {
-        for (int i = 0; i < ni; ++i) {
-          s.corners.push_back(ints[i]);
-          s.corner_values.push_back(nf == 1 ? floats[0] : floats[i]);
-        }
-      } else if (name == "interpolateboundary") {
-        s.boundary = ints[0] == 1 ? CGAL_ext::Boundary_interpolation::edge_and_corner
-                                  : CGAL_ext::Boundary_interpolation::edge_only;
-      } else if (name == "creasemethod") {
-        s.method = strings[0] == "chaikin" ? CGAL_ext::Crease_method::chaikin : CGAL_ext::Crease_method::uniform;
-      }
+      if (tag == "t")
+        s.read(ls);
     });
   EXPECT_TRUE(opened) << file;
   return s;
@@ -100,14 +65,7 @@ Mesh build(const Shape& s)
 {
   Mesh m;
   CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
-  auto es = m.add_property_map<CGAL_ext::Edge_index, float>("e:sharpness", 0.0f).first;
-  auto vs = m.add_property_map<CGAL_ext::Vertex_index, float>("v:sharpness", 0.0f).first;
-  for (std::size_t i = 0; i < s.creases.size(); ++i)
-    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(CGAL_ext::Vertex_index(s.creases[i][1]), m))
-      if (m.source(d) == CGAL_ext::Vertex_index(s.creases[i][0]))
-        es[m.edge(d)] = s.crease_values[i];
-  for (std::size_t i = 0; i < s.corners.size(); ++i)
-    vs[CGAL_ext::Vertex_index(s.corners[i])] = s.corner_values[i];
+  s.add_sharpness_maps(m);
   return m;
 }
 
@@ -189,12 +147,7 @@ Differences against_bfr(const Mesh& m, const Surface& surface, const std::vector
   desc.numCorners = int(corner_values.size());
   desc.cornerVertexIndices = corner_indices.data();
   desc.cornerWeights = corner_values.data();
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(boundary == CGAL_ext::Boundary_interpolation::edge_and_corner
-                                        ? Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
-                                        : Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-  options.SetCreasingMethod(method == CGAL_ext::Crease_method::chaikin ? Sdc::Options::CREASE_CHAIKIN
-                                                                       : Sdc::Options::CREASE_UNIFORM);
+  const Sdc::Options options = test::opensubdiv_options(boundary, method);
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
     Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
@@ -227,7 +180,7 @@ TEST_P(Against_bfr, PositionsAndDerivatives)
 {
   const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
   const Mesh m = build(s);
-  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.method));
+  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
   // The reference reads the faces as the mesh walks them, and every edge's
   // sharpness from the mesh's map (so that both see the same creases).
   std::vector<std::vector<int>> faces;
@@ -244,7 +197,7 @@ TEST_P(Against_bfr, PositionsAndDerivatives)
       creases.push_back({int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
       values.push_back(es[e]);
     }
-  const Differences d = against_bfr(m, surface, faces, m.points().data(), creases, values, s.boundary, s.method,
+  const Differences d = against_bfr(m, surface, faces, m.points().data(), creases, values, s.boundary, s.crease_method,
                                     [](CGAL_ext::Face_index f) { return int(f.idx()); });
   const double scale = largest_coordinate(m);
   EXPECT_LE(d.position, 1e-10 * scale) << GetParam();

@@ -322,7 +322,7 @@ void check_incidence_tables(const std::string& what, const Mesh& m, unsigned n)
   ASSERT_EQ(r.number_of_levels(), n);
   for (unsigned k = 0; k <= n; ++k) {
     SCOPED_TRACE("level " + std::to_string(k));
-    const Level& L = r.level(k);
+    const Level& L = S::internal::level_of(r, k);
     S::internal::Incidence reference, walked;
     S::internal::build_incidence_serially(L, corners, reference);
     ASSERT_EQ(reference.edge_ends.size(), 2 * std::size_t(L.ne));
@@ -332,8 +332,8 @@ void check_incidence_tables(const std::string& what, const Mesh& m, unsigned n)
     if (k == 0)
       continue;
     S::internal::Incidence parent, derived;
-    S::internal::build_incidence_serially(r.level(k - 1), corners, parent);
-    S::internal::derive_incidence<CGAL::Parallel_tag, Mask::split>(r.level(k - 1), parent, derived);
+    S::internal::build_incidence_serially(S::internal::level_of(r, k - 1), corners, parent);
+    S::internal::derive_incidence<CGAL::Parallel_tag, Mask::split>(S::internal::level_of(r, k - 1), parent, derived);
     expect_incidence(L, derived, reference);
   }
 }

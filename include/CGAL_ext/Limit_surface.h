@@ -137,10 +137,8 @@ public:
   {
     namespace pm = CGAL_ext::parameters;
     CGAL_ext::internal::require_no_garbage(mesh, "Limit_surface");
-    options_.boundary = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation),
-                                             Boundary_interpolation::edge_only);
-    options_.crease =
-      pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+    options_.boundary = CGAL_ext::internal::boundary_interpolation_of(np);
+    options_.crease = CGAL_ext::internal::crease_method_of(np);
     options_.level_smooth = options.approx_level_smooth;
     options_.level_sharp = std::max(options.approx_level_sharp, options.approx_level_smooth);
     if (options_.boundary == Boundary_interpolation::none)

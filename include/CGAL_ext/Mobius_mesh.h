@@ -1832,7 +1832,7 @@ template <class P>
 std::string Mobius_mesh<P>::check_halfedge_links() const
 {
   std::ostringstream out;
-  auto live = [this](auto x) { return is_valid(x) && !is_removed(x); };
+  auto live = [&](auto x) { return is_valid(x) && !is_removed(x); };
   for (Halfedge_index h : halfedges()) {
     const size_type i = h.idx();
     if (!live(h_target_[i]))

@@ -62,10 +62,11 @@ struct Refinement_options
   /// `CGAL::Sequential_tag` never uses threads.
   std::uint32_t parallel_min_vertices = automatic;
   /// The most bytes a refinement may take (named parameter `maximum_memory`
-  /// of the subdivision functions); by default the machine's physical memory.
+  /// of the subdivision functions); by default the memory available when the
+  /// options are made (Linux's `MemAvailable`, else the physical memory).
   /// A refinement whose estimated peak is larger is refused before anything
   /// is allocated.
-  double maximum_memory = CGAL_ext::internal::physical_memory();
+  double maximum_memory = CGAL_ext::internal::available_memory();
 };
 
 /// With `Refinement_options::automatic`, the fewest vertices per thread of a
@@ -243,8 +244,6 @@ class Refiner
 public:
   /// The weight type.
   using Weight = W;
-  /// The topology of one level: its counts and connectivity arrays.
-  using Level = internal::Level;
   /// The type of the element indices of a level (32 bits, as in `Mobius_mesh`).
   using u32 = internal::u32;
 
@@ -347,18 +346,21 @@ public:
 
   /// The number of refinement steps done by the last `refine()`.
   unsigned number_of_levels() const { return levels_.empty() ? 0u : unsigned(levels_.size() - 1); }
-  /// The topology of level `k` (0 is the base mesh).
-  const Level& level(unsigned k) const { return levels_[k]; }
+  /// The counts of level `k` (0 is the base mesh): its vertices, edges,
+  /// faces and border edges.
+  Mesh_size level_size(unsigned k) const
+  {
+    const Level& L = levels_[k];
+    Mesh_size s{L.nv, L.ne, L.nf, 0};
+    for (u32 h = 0; h < 2 * L.ne; h += 2)
+      s.border_edges += L.is_border_dart(internal::face_dart(h)) || L.is_border_dart(internal::face_dart(h + 1));
+    return s;
+  }
   /// The weights of edge `e` of level `k` in step `k` (primal schemes: quad
   /// and triangle splits).
   const Edge_weights<W>& edge_weights(unsigned k, u32 e) const { return weights_[k].edge(e); }
   /// The weights of vertex `v` of level `k` in step `k` (primal schemes).
   const Vertex_weights<W>& vertex_weights(unsigned k, u32 v) const { return weights_[k].vertex(v); }
-  /// The stencils of step `k` (Doo–Sabin and √3): child vertex `i` is the sum
-  /// of `weight[j]` times parent vertex `source[j]` over `j` in
-  /// `[offset[i], offset[i+1])`.
-  const internal::Stencils<W>& stencils(unsigned k) const { return stencils_[k]; }
-
   /// Interpolates one level: `src` holds a value per vertex of level `k`,
   /// `dst` receives one per vertex of level `k+1`. `Value` needs `Value + Value`
   /// and `W * Value`.
@@ -479,6 +481,12 @@ public:
   void build_mesh(Mobius_mesh<P>& out, bool write_sharpness) const;
 
 private:
+  // The engine's arrays of a level, for the engine (internal::level_of()) and
+  // its white-box tests: not part of the interface.
+  using Level = internal::Level;
+  friend struct internal::Refiner_access;
+  const Level& level(unsigned k) const { return levels_[k]; }
+
   // interpolate_level() into `dst`: values, or a mesh's points (internal::Point_output).
   template <class ConcurrencyTag, class Value, class Out>
   void interpolate_level_into(unsigned k, const Value* src, const Out& dst) const;

@@ -84,14 +84,7 @@ Decimation_settings decimation_settings(std::size_t faces, const NP& np)
 template <class P, class NP>
 void require_valid_sharpness(const Mobius_mesh<P>& mesh, const NP& np)
 {
-  namespace pm = CGAL_ext::parameters;
-  if constexpr (!pm::is_default_parameter<NP, CGAL_ext::internal_np::edge_sharpness_t>::value) {
-    const auto sharpness = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
-    CGAL_ext::internal::require_valid_edge_sharpness(mesh, [&](Edge_index e) { return double(get(sharpness, e)); },
-                                                     "decimate");
-  } else {
-    CGAL_ext::internal::require_valid_edge_sharpness(mesh, "decimate");
-  }
+  CGAL_ext::internal::require_valid_edge_sharpness(mesh, np, "decimate");
 }
 
 // Which edges are features, by edge index: sharpness > 0 (the map given or
@@ -101,15 +94,10 @@ std::vector<char> feature_edges(const Mobius_mesh<P>& mesh, const NP& np, bool p
 {
   namespace pm = CGAL_ext::parameters;
   std::vector<char> feature(mesh.num_edges(), 0);
-  const auto sharpness = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
+  const auto sharpness = CGAL_ext::internal::edge_sharpness_of(mesh, np);
   const auto constrained = pm::get_parameter(np, CGAL::internal_np::edge_is_constrained);
-  const auto own = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
   for (Edge_index e : mesh.edges()) {
-    bool f = protect_borders && mesh.is_border(e);
-    if constexpr (!pm::is_default_parameter<NP, CGAL_ext::internal_np::edge_sharpness_t>::value)
-      f = f || get(sharpness, e) > 0;
-    else if (own)
-      f = f || (*own)[e] > 0;
+    bool f = (protect_borders && mesh.is_border(e)) || sharpness(e) > 0;
     if constexpr (!pm::is_default_parameter<NP, CGAL::internal_np::edge_is_constrained_t>::value)
       f = f || get(constrained, e);
     feature[e.idx()] = f;

@@ -117,16 +117,10 @@ void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, c
 template <class P, class NP>
 std::vector<float> edge_sharpness_values(const Mobius_mesh<P>& mesh, const NP& np)
 {
-  namespace pm = CGAL_ext::parameters;
   std::vector<float> values(mesh.num_edges(), 0.0f);
-  if constexpr (!pm::is_default_parameter<NP, CGAL_ext::internal_np::edge_sharpness_t>::value) {
-    const auto given = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
-    for (Edge_index e : mesh.edges())
-      values[e.idx()] = float(get(given, e));
-  } else if (const auto own = mesh.template property_map<Edge_index, float>(edge_sharpness_name)) {
-    for (Edge_index e : mesh.edges())
-      values[e.idx()] = (*own)[e];
-  }
+  const auto sharpness = edge_sharpness_of(mesh, np);
+  for (Edge_index e : mesh.edges())
+    values[e.idx()] = sharpness(e);
   return values;
 }
 

@@ -343,7 +343,7 @@ public:
   static constexpr bool quad = Mask::split == Split::quad;
 
   Fvar_step(const Refiner& r, unsigned k, const Fvar_rules& rules, bool linear)
-    : r_(r), k_(k), P_(r.level(k)), C_(r.level(k + 1)), rules_(rules), linear_(linear)
+    : r_(r), k_(k), P_(level_of(r, k)), C_(level_of(r, k + 1)), rules_(rules), linear_(linear)
   {}
 
   template <class Tag>
@@ -627,11 +627,11 @@ void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode,
   const Fvar_rules rules(mode, r.options().boundary_interpolation);
   const bool linear = rules.linear_all || !Mask::creases;
   Fvar_level parent, child;
-  analyse_base(r.level(0), corners, rules, parent);
+  analyse_base(level_of(r, 0), corners, rules, parent);
   std::vector<Value> child_values;
   for (unsigned k = 0; k < r.number_of_levels(); ++k) {
     Fvar_step<Refiner, Value> step(r, k, rules, linear);
-    with_concurrency<Tag>(parallel(r.level(k).nv),
+    with_concurrency<Tag>(parallel(level_of(r, k).nv),
                           [&](auto tag) { step.template run<decltype(tag)>(parent, values, child, child_values); });
     std::swap(parent, child);
     values.swap(child_values);

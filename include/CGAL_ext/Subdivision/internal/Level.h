@@ -209,6 +209,24 @@ struct Level
   }
 };
 
+// What the engine (face-varying interpolation) and the white-box tests read
+// of a Refiner beyond its interface: the arrays of its levels.
+struct Refiner_access
+{
+  template <class Refiner>
+  static const Level& level(const Refiner& r, unsigned k)
+  {
+    return r.level(k);
+  }
+};
+
+// The arrays of level `k` of refiner `r`.
+template <class Refiner>
+const Level& level_of(const Refiner& r, unsigned k)
+{
+  return Refiner_access::level(r, k);
+}
+
 // The unflipped dart of halfedge h: how face cycles are linked.
 constexpr u32 face_dart(u32 h) { return dart_encoding::dart(h, false); }
 

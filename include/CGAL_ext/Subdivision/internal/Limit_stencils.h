@@ -298,32 +298,12 @@ struct Limit_settings : Normal_settings<P, NP>
 
   Limit_settings(const Mobius_mesh<P>& mesh, const NP& np) : Normal_settings<P, NP>(mesh, np)
   {
-    namespace pm = CGAL_ext::parameters;
-    edge_sharpness = sharpness_lookup<Edge_index, CGAL_ext::internal_np::edge_sharpness_t>(
-      mesh, pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness), edge_sharpness_name);
-    vertex_sharpness = sharpness_lookup<Vertex_index, CGAL_ext::internal_np::vertex_sharpness_t>(
-      mesh, pm::get_parameter(np, CGAL_ext::internal_np::vertex_sharpness), vertex_sharpness_name);
-    corner_if_one_face = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation),
-                                              Boundary_interpolation::edge_only) ==
-                         Boundary_interpolation::edge_and_corner;
+    edge_sharpness = CGAL_ext::internal::edge_sharpness_of(mesh, np);
+    vertex_sharpness = CGAL_ext::internal::vertex_sharpness_of(mesh, np);
+    corner_if_one_face =
+      CGAL_ext::internal::boundary_interpolation_of(np) == Boundary_interpolation::edge_and_corner;
   }
   float sharpness(Vertex_index v) const { return vertex_sharpness(v); }
-
-private:
-  // The map given as a named parameter, else the mesh's map `name`, else 0.
-  template <class Key, class Tag, class Given>
-  static std::function<float(Key)> sharpness_lookup(const Mobius_mesh<P>& mesh, const Given& given, const char* name)
-  {
-    if constexpr (!parameters::is_default_parameter<NP, Tag>::value) {
-      return [given](Key k) { return float(get(given, k)); };
-    } else {
-      if (auto m = mesh.template property_map<Key, float>(name)) {
-        const auto map = *m;
-        return [map](Key k) { return map[k]; };
-      }
-      return [](Key) { return 0.0f; };
-    }
-  }
 };
 
 template <class Mask, class P>

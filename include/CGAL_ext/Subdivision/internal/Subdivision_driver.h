@@ -350,12 +350,12 @@ void check_channels(const Mobius_mesh<P>& mesh)
   }
 }
 
-template <class Map, class Key>
-std::vector<float> gather_sharpness(const Map& map, std::size_t n)
+template <class Key, class Sharpness>
+std::vector<float> gather_sharpness(const Sharpness& sharpness, std::size_t n)
 {
   std::vector<float> s(n);
   for (std::size_t i = 0; i < n; ++i)
-    s[i] = float(get(map, Key(typename Key::size_type(i))));
+    s[i] = sharpness(Key(typename Key::size_type(i)));
   return s;
 }
 
@@ -365,25 +365,13 @@ template <class P, class NamedParameters>
 bool gather_sharpness(const Mobius_mesh<P>& mesh, const NamedParameters& np, std::vector<float>& es,
                       std::vector<float>& vs)
 {
-  namespace pm = CGAL_ext::parameters;
-  bool has_sharpness = false;
-  const auto esm_param = pm::get_parameter(np, CGAL_ext::internal_np::edge_sharpness);
-  if constexpr (!pm::is_default_parameter<NamedParameters, CGAL_ext::internal_np::edge_sharpness_t>::value) {
-    es = gather_sharpness<decltype(esm_param), Edge_index>(esm_param, mesh.number_of_edges());
-    has_sharpness = true;
-  } else if (auto m = mesh.template property_map<Edge_index, float>(edge_sharpness_name)) {
-    es = m->data();
-    has_sharpness = true;
-  }
-  const auto vsm_param = pm::get_parameter(np, CGAL_ext::internal_np::vertex_sharpness);
-  if constexpr (!pm::is_default_parameter<NamedParameters, CGAL_ext::internal_np::vertex_sharpness_t>::value) {
-    vs = gather_sharpness<decltype(vsm_param), Vertex_index>(vsm_param, mesh.number_of_vertices());
-    has_sharpness = true;
-  } else if (auto m = mesh.template property_map<Vertex_index, float>(vertex_sharpness_name)) {
-    vs = m->data();
-    has_sharpness = true;
-  }
-  return has_sharpness;
+  const auto edge_sharpness = CGAL_ext::internal::edge_sharpness_of(mesh, np);
+  const auto vertex_sharpness = CGAL_ext::internal::vertex_sharpness_of(mesh, np);
+  if (edge_sharpness.has_map())
+    es = gather_sharpness<Edge_index>(edge_sharpness, mesh.number_of_edges());
+  if (vertex_sharpness.has_map())
+    vs = gather_sharpness<Vertex_index>(vertex_sharpness, mesh.number_of_vertices());
+  return edge_sharpness.has_map() || vertex_sharpness.has_map();
 }
 
 // Subdivision in double adds a ring's points up before it weights the sum:
@@ -450,10 +438,8 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np
     unsigned(pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::number_of_iterations), 1));
   auto vpm = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
   Refinement_options options;
-  options.boundary_interpolation = pm::choose_parameter(
-    pm::get_parameter(np, CGAL_ext::internal_np::boundary_interpolation), Boundary_interpolation::edge_only);
-  options.crease_method =
-    pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+  options.boundary_interpolation = CGAL_ext::internal::boundary_interpolation_of(np);
+  options.crease_method = CGAL_ext::internal::crease_method_of(np);
   options.maximum_memory = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
                                                 options.maximum_memory);
   const Face_varying_interpolation fvar_mode =
