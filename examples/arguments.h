@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
@@ -165,6 +166,11 @@ int run_tool(const Tool_usage& usage, int argc, char** argv, Body&& body)
       std::cout << "usage: " << usage.synopsis << "\n\n" << usage.description;
       return 0;
     }
+#ifdef SIGXFSZ
+  // Past a file-size limit a write fails (and the library says so, leaving
+  // the old file) instead of the signal killing the tool without a word.
+  std::signal(SIGXFSZ, SIG_IGN);
+#endif
   try {
     return body();
   } catch (const Usage_error& e) {

@@ -44,6 +44,7 @@ int convert(int argc, char** argv)
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   Mesh mesh;
+  CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
   CGAL::Surface_mesh<Kernel::Point_3> sm;
   CGAL_ext::to_surface_mesh(mesh, sm);

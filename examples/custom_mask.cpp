@@ -70,6 +70,8 @@ int custom_mask(int argc, char** argv)
     throw examples::Usage_error("expected at most one file name, got " + std::to_string(args.positional.size()));
   const std::string out = args.positional.empty() ? "" : args.positional[0];
   const unsigned levels = unsigned(examples::integer_argument("--levels", args.value("--levels", "3"), 0, 10));
+  if (!out.empty())
+    CGAL_ext::IO::check_output_file(out); // before the work, not after it
 
   // Boy's surface of quads, each cut into two triangles.
   CGAL_ext::Mobius_mesh<Point> quads;

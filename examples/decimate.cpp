@@ -101,6 +101,7 @@ int decimate(int argc, char** argv)
     throw examples::Usage_error("--max-angle '" + args.value("--max-angle", "") + "' is not in (0, 180]");
 
   Mesh input;
+  CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], input);
   Mesh mesh = input;
   const auto start = std::chrono::steady_clock::now();

@@ -79,6 +79,7 @@ int merge(int argc, char** argv)
     throw examples::Usage_error("--loops takes two numbers I,J, not '" + loops + "'");
 
   Mesh a, b;
+  CGAL_ext::IO::check_output_file(args.positional[2]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], a);
   CGAL_ext::IO::read_polygon_mesh(args.positional[1], b);
   if (!manual) {

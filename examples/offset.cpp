@@ -54,6 +54,7 @@ int offset(int argc, char** argv)
   const auto weighting = examples::choice_argument("--weighting", args.value("--weighting", "area"), weightings);
 
   Mesh mesh, out;
+  CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
   const auto start = std::chrono::steady_clock::now();
   const CGAL_ext::Offset_result r = CGAL_ext::offset_mesh(

@@ -38,7 +38,7 @@ const examples::Tool_usage usage{
   "  --relax-constraints  the vertices of protected borders and sharp edges slide along them\n"
   "                       to even out their edges; corners stay\n"
   "  --max-memory BYTES   refuse before starting if the remeshing would need more (estimated\n"
-  "                       from the input and L; default: the machine's physical memory)\n"
+  "                       from the input and L; default: the memory available)\n"
   "Writes OUT and prints its counts, topology, the share of edges between 4/5 L and 4/3 L and\n"
   "the time taken as one line of JSON.\n"};
 
@@ -74,6 +74,7 @@ int remesh(int argc, char** argv)
     throw examples::Usage_error("--max-memory '" + args.value("--max-memory", "") + "' is not positive");
 
   Mesh mesh;
+  CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
   const auto start = std::chrono::steady_clock::now();
   const auto np = CGAL_ext::parameters::number_of_iterations(unsigned(iterations))
@@ -82,7 +83,7 @@ int remesh(int argc, char** argv)
                     .relax_constraints(args.has("--relax-constraints"));
   if (args.has("--max-memory"))
     CGAL_ext::isotropic_remeshing(mesh, L, np.maximum_memory(max_memory));
-  else // the library's default: the machine's memory
+  else // the library's default: the memory available
     CGAL_ext::isotropic_remeshing(mesh, L, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);

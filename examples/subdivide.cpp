@@ -45,7 +45,7 @@ const examples::Tool_usage usage{
   "                    Catmull-Clark edge rule next to triangles (OBJ tag 't smoothtriangles')\n"
   "  --kernel          double (the default), epick or epeck\n"
   "  --max-memory      refuse before starting if the subdivision would need more bytes (the\n"
-  "                    library's estimate of its peak; default: the machine's physical memory)\n"
+  "                    library's estimate of its peak; default: the memory available)\n"
   "The OBJ tags give the defaults of --boundary (else edge-only), --crease-method (else uniform)\n"
   "and --triangles (else catmark); flags override them. The output carries the tags its input\n"
   "had or its flags set, and no others. Prints one JSON line with the result's counts and the\n"
@@ -159,6 +159,7 @@ template <class K>
 void run(const Settings& s)
 {
   CGAL_ext::Mobius_mesh<typename K::Point_3> mesh;
+  CGAL_ext::IO::check_output_file(s.out); // before the work, not after it
   CGAL_ext::Sharp_feature_options tags = CGAL_ext::IO::read_polygon_mesh(s.in, mesh);
   const auto boundary =
     s.boundary ? *s.boundary : tags.boundary_interpolation.value_or(CGAL_ext::Boundary_interpolation::edge_only);

@@ -7,3 +7,22 @@ function(cgal_ext_tool_fails name tool args stderr)
     COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:${tool}> "-DARGS=${args}" -DSTATUS=2 "-DSTDERR=${stderr}"
             -P ${PROJECT_SOURCE_DIR}/examples/check_tool.cmake)
 endfunction()
+
+# Every tool that writes a mesh, through data_loss.cmake: a failed write, an
+# output that is the input, and a tool killed part way lose no file.
+if(CGAL_EXT_BUILD_TESTS)
+  set(_torus ${PROJECT_SOURCE_DIR}/test/data/nonorientable/torus_24x12_quads.obj)
+  set(_data_loss_convert "@IN@;@OUT@")
+  set(_data_loss_subdivide "@IN@;@OUT@;--levels;2")
+  set(_data_loss_merge "@IN@;${_torus};@OUT@")
+  set(_data_loss_offset "@IN@;@OUT@;--distance;0.05")
+  set(_data_loss_remesh "@IN@;@OUT@;--edge-length;0.4")
+  set(_data_loss_decimate "@IN@;@OUT@;--ratio;0.5;--no-hausdorff")
+  set(_data_loss_custom_mask "@OUT@;--levels;2")
+  file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/data_loss)
+  foreach(_tool convert subdivide merge offset remesh decimate custom_mask)
+    add_test(NAME data_loss.${_tool}
+      COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:${_tool}> "-DARGS=${_data_loss_${_tool}}" -DINPUT=${_torus}
+              -DOUT=${CMAKE_CURRENT_BINARY_DIR}/data_loss/${_tool}.obj -P ${PROJECT_SOURCE_DIR}/examples/data_loss.cmake)
+  endforeach()
+endif()

@@ -39,6 +39,8 @@
 
 #include <csignal>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <thread>
 #include <unistd.h>
 
 namespace io_tests {
@@ -846,6 +848,44 @@ TEST(IO_errors, failed_write_keeps_the_old_file)
   // A directory as the output, and a missing directory: refused up front.
   EXPECT_THROW(write_polygon_mesh(dir.string(), small), IO_error);
   EXPECT_THROW(write_polygon_mesh((dir / "missing" / "x.obj").string(), small), IO_error);
+  fs::remove_all(dir);
+}
+
+// A pipe has no size to check up front: it is read in blocks up to the
+// reader's limit, and one that runs past it is refused, not read until the
+// machine runs out of memory. A short one reads as a file does.
+TEST(IO_errors, a_fifo_is_read_up_to_the_limit)
+{
+  const fs::path dir = scratch_directory();
+  const fs::path fifo = dir / "mesh.obj";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const auto write_into_fifo = [&](std::size_t copies) {
+    return std::thread([&, copies] {
+      std::ofstream out(fifo, std::ios::binary);
+      for (std::size_t i = 0; i < copies && out; ++i)
+        out << triangle;
+    });
+  };
+  std::thread writer = write_into_fifo(1);
+  EXPECT_EQ(CGAL_ext::IO::internal::read_whole_file(fifo.string(), 1 << 16), triangle);
+  writer.join();
+  // 1 MB into a reader that takes 64 kB: refused, naming the file. The
+  // writer stops on the broken pipe (SIGPIPE ignored meanwhile).
+  void (*old_handler)(int) = std::signal(SIGPIPE, SIG_IGN);
+  writer = write_into_fifo((1 << 20) / triangle.size());
+  try {
+    CGAL_ext::IO::internal::read_whole_file(fifo.string(), 1 << 16);
+    ADD_FAILURE() << "a FIFO longer than the limit was read";
+  } catch (const IO_error& e) {
+    EXPECT_NE(std::string(e.what()).find("mesh.obj"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("is longer than 65536 bytes"), std::string::npos) << e.what();
+  }
+  writer.join();
+  std::signal(SIGPIPE, old_handler);
+  // A regular file past the limit is refused before it is read.
+  std::ofstream(dir / "big.obj") << triangle;
+  EXPECT_THROW(CGAL_ext::IO::internal::read_whole_file((dir / "big.obj").string(), 10), IO_error);
   fs::remove_all(dir);
 }
 

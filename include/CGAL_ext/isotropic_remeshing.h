@@ -99,7 +99,7 @@ namespace CGAL_ext {
 ///       iterations tend to (the input's area in equilateral triangles of
 ///       side L/2, and two per 4/5 L of border)}
 ///     \cgalParamType{`double`, > 0}
-///     \cgalParamDefault{the machine's physical memory}
+///     \cgalParamDefault{the memory available (Linux's `MemAvailable`, else the physical memory)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if L is not positive and finite, the number of
@@ -124,11 +124,11 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
   const double largest_coordinate = internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
   internal::require_length_resolved(largest_coordinate, target_edge_length, "isotropic_remeshing");
   if (options.protect_sharp_edges)
-    internal::require_valid_edge_sharpness(mesh, "isotropic_remeshing");
+    internal::require_valid_edge_sharpness(mesh, parameters::default_values(), "isotropic_remeshing");
   internal::check_remeshing_size(mesh, options,
                                  parameters::choose_parameter(
                                    parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
-                                   internal::physical_memory()));
+                                   internal::available_memory()));
   // An operation that fails part way (an Euler operation refused on input
   // the checks above cannot see, such as two faces on the same corners)
   // must leave the caller's mesh as it was: the mesh is edited in place, so

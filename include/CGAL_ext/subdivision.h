@@ -131,7 +131,7 @@ void subdivide(Mobius_mesh<P>& mesh, const Mask& mask,
 ///   \cgalParamNBegin{maximum_memory}
 ///     \cgalParamDescription{the most memory, in bytes, the subdivision may take: a larger
 ///       estimated peak is refused with `Size_error` before anything is allocated}
-///     \cgalParamDefault{the machine's physical memory}
+///     \cgalParamDefault{the memory available (Linux's `MemAvailable`, else the physical memory)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

@@ -89,38 +89,25 @@ inline std::string float_text(float s)
   return buffer;
 }
 
-template <class P, class Map>
-void write_crease_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Map& sharpness)
+template <class P, class Sharpness>
+void write_crease_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Sharpness& sharpness)
 {
   for (Edge_index e : mesh.edges()) {
-    const float s = float(get(sharpness, e));
+    const float s = sharpness(e);
     if (s != 0)
       out << "t crease 2/1/0 " << mesh.vertex(e, 0).idx() << ' ' << mesh.vertex(e, 1).idx() << ' ' << float_text(s)
           << '\n';
   }
 }
-// The mesh's own map may be missing; a map given as a parameter is not optional.
-template <class P, class Map>
-void write_crease_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const std::optional<Map>& sharpness)
-{
-  if (sharpness)
-    write_crease_tags(out, mesh, *sharpness);
-}
 
-template <class P, class Map>
-void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Map& sharpness)
+template <class P, class Sharpness>
+void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Sharpness& sharpness)
 {
   for (Vertex_index v : mesh.vertices()) {
-    const float s = float(get(sharpness, v));
+    const float s = sharpness(v);
     if (s != 0)
       out << "t corner 1/1/0 " << v.idx() << ' ' << float_text(s) << '\n';
   }
-}
-template <class P, class Map>
-void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const std::optional<Map>& sharpness)
-{
-  if (sharpness)
-    write_corner_tags(out, mesh, *sharpness);
 }
 
 // read_polygon_mesh() without its translation of foreign exceptions.
@@ -227,6 +214,20 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mobius_mesh
 }
 
 /// \ingroup PkgMobiusMeshIO
+/// \brief checks, before any work, that `write_polygon_mesh()` could write
+/// `filename`: a known extension (`.obj`, `.off`, `.ply`, any letter case),
+/// not a directory, in a directory that exists and is writable.
+///
+/// A program that computes for long calls it first, so that a typo in the
+/// output name costs nothing. The write itself checks again.
+/// \throws IO_error naming `filename` and what is wrong.
+inline void check_output_file(const std::string& filename)
+{
+  internal::format_of(filename);
+  internal::check_output_path(filename);
+}
+
+/// \ingroup PkgMobiusMeshIO
 ///
 /// Writes `mesh` to an OBJ, OFF or PLY file, chosen by the file name's
 /// extension (in any letter case), through CGAL's polygon soup writers.
@@ -317,13 +318,8 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   if (format == internal::Mesh_format::obj) {
     written = CGAL::IO::write_OBJ(out, points, polygons, cgal_np);
     // OpenSubdiv's tags; vertex indices in tags count from 0.
-    internal::write_crease_tags(out, mesh,
-                                choose_parameter(get_parameter(np, CGAL_ext::internal_np::edge_sharpness),
-                                                 mesh.template property_map<Edge_index, float>(edge_sharpness_name)));
-    internal::write_corner_tags(
-      out, mesh,
-      choose_parameter(get_parameter(np, CGAL_ext::internal_np::vertex_sharpness),
-                       mesh.template property_map<Vertex_index, float>(vertex_sharpness_name)));
+    internal::write_crease_tags(out, mesh, CGAL_ext::internal::edge_sharpness_of(mesh, np));
+    internal::write_corner_tags(out, mesh, CGAL_ext::internal::vertex_sharpness_of(mesh, np));
     if (options.boundary_interpolation) {
       const int k = *options.boundary_interpolation == Boundary_interpolation::none              ? 0
                     : *options.boundary_interpolation == Boundary_interpolation::edge_and_corner ? 1

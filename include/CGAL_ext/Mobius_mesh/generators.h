@@ -57,9 +57,10 @@ namespace CGAL_ext {
 /// \param quads quads if `true`, triangles otherwise
 ///
 /// \returns a border dart of the new band whose target is the vertex (0, 0).
-/// \throws Parameter_error if a resolution is below its minimum or too large
-///   for the index type, or a length is not finite and positive; `mesh` is
-///   then left unchanged.
+/// \throws Parameter_error if a resolution is below its minimum, or a length
+///   is not finite and positive; `Size_error` (a `Parameter_error`) if the new
+///   part is too large for the index type or for the memory available;
+///   `mesh` is then left unchanged.
 template <class P>
 Dart make_mobius_strip(Mobius_mesh<P>& mesh, std::size_t n_around, std::size_t n_across, int half_twists = 1,
                        double radius = 1.0, double width = 0.5, bool quads = true)
@@ -69,7 +70,7 @@ Dart make_mobius_strip(Mobius_mesh<P>& mesh, std::size_t n_around, std::size_t n
   internal::check_resolution(fn, "n_across", n_across, 1);
   internal::check_length(fn, "radius", radius);
   internal::check_length(fn, "width", width);
-  internal::check_edge_count(fn, mesh.num_edges(), n_around, n_across + 1, quads ? 2 : 3);
+  internal::check_edge_count<P>(fn, mesh.num_edges(), n_around, n_across + 1, quads ? 2 : 3);
   const internal::Periodic_grid grid{n_around, n_across + 1, false, half_twists % 2 != 0};
   return internal::make_periodic_grid(mesh, grid, quads, [&](std::size_t i, std::size_t j) {
     const double u = 2 * internal::generator_pi * double(i) / double(n_around);
@@ -110,7 +111,7 @@ Dart make_klein_bottle(Mobius_mesh<P>& mesh, std::size_t nu, std::size_t nv, dou
   internal::check_resolution(fn, "nu", nu, 3);
   internal::check_resolution(fn, "nv", nv, 3);
   internal::check_length(fn, "radius", radius);
-  internal::check_edge_count(fn, mesh.num_edges(), nu, nv, 2);
+  internal::check_edge_count<P>(fn, mesh.num_edges(), nu, nv, 2);
   const internal::Periodic_grid grid{nu, nv, true, true};
   return internal::make_periodic_grid(mesh, grid, true, [&](std::size_t i, std::size_t j) {
     const double u = 2 * internal::generator_pi * double(i) / double(nu);
@@ -145,7 +146,7 @@ Dart make_torus(Mobius_mesh<P>& mesh, std::size_t nu, std::size_t nv, double R =
   internal::check_resolution(fn, "nv", nv, 3);
   internal::check_length(fn, "R", R);
   internal::check_length(fn, "r", r);
-  internal::check_edge_count(fn, mesh.num_edges(), nu, nv, 2);
+  internal::check_edge_count<P>(fn, mesh.num_edges(), nu, nv, 2);
   const internal::Periodic_grid grid{nu, nv, true, false};
   return internal::make_periodic_grid(mesh, grid, true, [&](std::size_t i, std::size_t j) {
     const double u = 2 * internal::generator_pi * double(i) / double(nu);
@@ -176,14 +177,14 @@ Dart make_torus(Mobius_mesh<P>& mesh, std::size_t nu, std::size_t nv, double R =
 /// \param k number of quads along each side of a sector, at least 1
 ///
 /// \returns the unflipped dart of the first new face from the centre vertex.
-/// \throws Parameter_error if `k` is 0 or too large for the index type; `mesh`
-///   is then left unchanged.
+/// \throws Parameter_error if `k` is 0; `Size_error` if it is too large for the
+///   index type or for the memory available; `mesh` is then left unchanged.
 template <class P>
 Dart make_projective_plane(Mobius_mesh<P>& mesh, std::size_t k)
 {
   const char* fn = "make_projective_plane";
   internal::check_resolution(fn, "k", k, 1);
-  internal::check_edge_count(fn, mesh.num_edges(), k, k, 6);
+  internal::check_edge_count<P>(fn, mesh.num_edges(), k, k, 6);
   using Complex = std::complex<double>;
   const double pi = internal::generator_pi;
 

@@ -9,6 +9,7 @@
 #ifndef CGAL_EXT_IO_INTERNAL_TEXT_SCANNING_H
 #define CGAL_EXT_IO_INTERNAL_TEXT_SCANNING_H
 
+#include <CGAL_ext/Mobius_mesh/internal/Size_limits.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/IO/io.h>
@@ -40,7 +41,38 @@ inline std::string system_reason()
   return errno != 0 ? std::string(": ") + std::strerror(errno) : std::string();
 }
 
-inline std::string read_whole_file(const std::string& filename)
+// The longest file a reader takes: its text, its points and faces and the
+// mesh built from them take several times its size, so a quarter of the
+// memory available. Past it a file, or a pipe that never ends, is refused
+// before the machine runs out of memory.
+inline double longest_readable_file() { return CGAL_ext::internal::available_memory() / 4; }
+
+inline IO_error file_too_long(const std::string& filename, double limit)
+{
+  return IO_error(filename, 0,
+                  "is longer than " + std::to_string(static_cast<unsigned long long>(limit)) +
+                    " bytes, the most a reader takes (a quarter of the memory available)");
+}
+
+// A stream that cannot tell its size (a pipe, a FIFO), copied through in
+// blocks up to `limit` bytes.
+inline std::string read_unsized_stream(std::ifstream& in, const std::string& filename, double limit)
+{
+  in.clear();
+  std::string text;
+  std::vector<char> block(1 << 16);
+  while (in.read(block.data(), std::streamsize(block.size())) || in.gcount() > 0) {
+    text.append(block.data(), std::size_t(in.gcount()));
+    if (double(text.size()) > limit)
+      throw file_too_long(filename, limit);
+    if (in.eof())
+      break;
+  }
+  return text;
+}
+
+// The whole file, up to `limit` bytes (else IO_error).
+inline std::string read_whole_file(const std::string& filename, double limit = longest_readable_file())
 {
   std::error_code ec;
   if (std::filesystem::is_directory(filename, ec))
@@ -54,15 +86,13 @@ inline std::string read_whole_file(const std::string& filename)
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
   in.seekg(0, std::ios::beg);
+  if (double(size) > limit)
+    throw file_too_long(filename, limit);
   if (size > 0) {
     text.resize(std::size_t(size));
     in.read(&text[0], size);
   } else if (size < 0) { // not seekable (a pipe): copy it through
-    in.clear();
-    std::ostringstream buffer;
-    if (in.peek() != std::ifstream::traits_type::eof())
-      buffer << in.rdbuf();
-    text = std::move(buffer).str();
+    text = read_unsized_stream(in, filename, limit);
   }
   if (in.bad())
     throw IO_error(filename, 0, "cannot read the file" + system_reason());

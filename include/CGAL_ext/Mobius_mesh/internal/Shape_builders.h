@@ -49,16 +49,21 @@ inline void check_length(const char* function, const char* name, double value)
 }
 
 // The edges of the new part and of the mesh it joins, checked by the one
-// rule of the mesh's size (Size_limits.h). `a` and `b` are factors of the
-// edge count, capped (past any mesh's size) so that the product cannot wrap.
-inline void check_edge_count(const char* function, std::size_t existing_edges, std::size_t a, std::size_t b,
-                             std::size_t edges_per_cell)
+// rule of the mesh's size (Size_limits.h), and the memory of the new part
+// (a vertex and about `edges_per_cell` - 1 faces per cell) against the
+// memory available. `a` and `b` are factors of the edge count, capped (past
+// any mesh's size) so that the product cannot wrap.
+template <class P>
+void check_edge_count(const char* function, std::size_t existing_edges, std::size_t a, std::size_t b,
+                      std::size_t edges_per_cell)
 {
   using Wide = unsigned long long;
   constexpr Wide cap = Wide(1) << 31;
-  const Wide edges = Wide(existing_edges) + (std::min)(Wide(a), cap) * (std::min)(Wide(b), cap) * edges_per_cell;
-  check_mesh_size(std::string(function) + ": the resolution " + std::to_string(a) + " x " + std::to_string(b),
-                  Mesh_size{0, edges, 0, 0});
+  const Wide cells = (std::min)(Wide(a), cap) * (std::min)(Wide(b), cap);
+  const std::string what = std::string(function) + ": the resolution " + std::to_string(a) + " x " + std::to_string(b);
+  check_mesh_size(what, Mesh_size{0, Wide(existing_edges) + cells * edges_per_cell, 0, 0});
+  const Mesh_size part{cells, cells * edges_per_cell, cells * (edges_per_cell - 1), 0};
+  check_memory(what, mesh_bytes<P>(part), available_memory());
 }
 
 // A grid of nu x nvv vertices (i, j). Column i = nu is column 0 again,

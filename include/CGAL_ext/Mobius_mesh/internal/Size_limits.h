@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -69,6 +70,29 @@ inline double physical_memory()
   return HUGE_VAL;
 }
 
+/// The memory the machine can give a process now, in bytes: Linux's
+/// `MemAvailable` (free memory plus the caches it can drop), else the free
+/// pages, else the physical memory. The default limit of every operation that
+/// estimates its memory: the physical memory would let a second large mesh,
+/// or other processes, push a call that fits alone into an out-of-memory kill.
+inline double available_memory()
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kilobytes = 0;
+  while (meminfo >> key >> kilobytes) {
+    if (key == "MemAvailable:" && kilobytes > 0)
+      return kilobytes * 1024;
+    meminfo.ignore(256, '\n');
+  }
+#if defined(_SC_AVPHYS_PAGES) && defined(_SC_PAGE_SIZE)
+  const long pages = ::sysconf(_SC_AVPHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages > 0 && page > 0)
+    return double(pages) * double(page);
+#endif
+  return physical_memory();
+}
+
 /// The bytes the arrays of a `Mobius_mesh` of point type `Point` and counts
 /// `size` take: per vertex its point and a dart, per edge two halfedges of
 /// four indices each and the Möbius flag, per face a halfedge. A point that
@@ -93,7 +117,7 @@ inline void check_memory(const std::string& what, double bytes, double limit)
     return text.str();
   };
   throw Size_error(what + " would need about " + gigabytes(bytes) + " GB of memory, more than the limit of " +
-                     gigabytes(limit) + " GB (named parameter maximum_memory; by default the machine's memory)",
+                     gigabytes(limit) + " GB (named parameter maximum_memory; by default the memory available)",
                    "bytes", static_cast<unsigned long long>(std::min(bytes, 1.8e19)),
                    static_cast<unsigned long long>(std::min(limit, 1.8e19)));
 }
