@@ -36,6 +36,28 @@ foreach(_case "mobius_20x4_quads;both" "klein_fig8_24x12_quads;both" "boys_surfa
   set_tests_properties(view.${_name} PROPERTIES ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
 endforeach()
 
+# What float alone would lose: a view direction of 1e200 (normalised by the
+# library, not by OpenGL), a cube at 1e50 (drawn in a box of size 1), and a
+# face of ten collinear corners beside a square (no area, no normal: its
+# edges are drawn, the face is not). Each must show the front.
+set(_tools ${PROJECT_SOURCE_DIR}/test/data/tools)
+set(_far_direction_input ${_data}/torus_24x12_quads.obj)
+set(_far_direction_args "--direction;1e200,0,0")
+set(_cube_1e50_input ${_tools}/cube_1e50.obj)
+set(_collinear_face_input ${_tools}/collinear_decagon_and_square.obj)
+foreach(_name far_direction cube_1e50 collinear_face)
+  add_test(NAME view.${_name}
+    COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${CGAL_EXT_XVFB_RUN} -DVIEW=$<TARGET_FILE:view>
+            -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${_${_name}_input} -DPICTURE=${_out}/view_${_name}.png
+            -DSIDES=front "-DVIEW_ARGS=${_${_name}_args}" -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+  set_tests_properties(view.${_name} PROPERTIES ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
+endforeach()
+# Past the range of the library's algorithms in double: one line, exit 2.
+cgal_ext_tool_fails(view.fails.coordinates_beyond_range view
+  "${_tools}/cube_1e155.obj;--screenshot;${_out}/x.png"
+  "^view: make_two_sided_scene: vertex 1 at \\(1e\\+155, 0, 0\\) has a coordinate beyond \\+-1e\\+60[^\n]*\n$")
+set_tests_properties(view.fails.coordinates_beyond_range PROPERTIES ENVIRONMENT "${_environment}")
+
 # No display: one line naming what is missing, exit 2, no picture.
 add_test(NAME view.fails.no_display
   COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY --unset=QT_QPA_PLATFORM

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -205,6 +206,47 @@ TEST(TwoSidedScene, BadInputIsRefused)
 #endif
   strip.remove_face(*strip.faces().begin());
   EXPECT_THROW(X::make_two_sided_scene(strip), X::Parameter_error);
+}
+
+// The range of the library's algorithms in double, for the scene too: its
+// normals and gap come from squared lengths. A strip scaled to 1e50 is drawn
+// (its normals are the unit strip's), one scaled to 1e155 is refused naming
+// a vertex, and so is one scaled to 1e-70 (its areas underflow). The view
+// direction and up vector of a picture must be finite and not zero; their
+// length does not matter.
+TEST(TwoSidedScene, CoordinatesBeyondTheRangeAreRefused)
+{
+  using P = Kd::Point_3;
+  X::Mobius_mesh<P> strip;
+  X::make_mobius_strip(strip, 6, 2);
+  const X::Two_sided_scene unit = X::make_two_sided_scene(strip);
+  const auto scaled = [&](double factor) {
+    X::Mobius_mesh<P> m = strip;
+    for (X::Vertex_index v : m.vertices())
+      m.point(v) = P(m.point(v).x() * factor, m.point(v).y() * factor, m.point(v).z() * factor);
+    return m;
+  };
+  const X::Two_sided_scene large = X::make_two_sided_scene(scaled(1e50));
+  ASSERT_EQ(large.normals.size(), unit.normals.size());
+  for (std::size_t i = 0; i < unit.normals.size(); ++i)
+    EXPECT_LT(std::sqrt((large.normals[i] - unit.normals[i]).squared_length()), 1e-12);
+  for (const double factor : {1e155, 1e-70}) {
+    try {
+      X::make_two_sided_scene(scaled(factor));
+      ADD_FAILURE() << "a strip scaled by " << factor << " was drawn";
+    } catch (const X::Parameter_error& e) {
+      EXPECT_NE(std::string(e.what()).find("make_two_sided_scene"), std::string::npos) << e.what();
+    }
+  }
+  for (const std::array<double, 3>& bad : {std::array<double, 3>{0, 0, 0}, std::array<double, 3>{HUGE_VAL, 0, 0},
+                                           std::array<double, 3>{std::nan(""), 1, 0}}) {
+    X::Screenshot_settings settings;
+    settings.view_direction = bad;
+    EXPECT_THROW(X::save_screenshot(strip, "never_written.png", settings), X::Parameter_error);
+    settings = X::Screenshot_settings();
+    settings.up_vector = bad;
+    EXPECT_THROW(X::save_screenshot(strip, "never_written.png", settings), X::Parameter_error);
+  }
 }
 
 } // namespace

@@ -10,11 +10,13 @@
 #ifndef CGAL_EXT_DRAW_MOBIUS_MESH_H
 #define CGAL_EXT_DRAW_MOBIUS_MESH_H
 
+#include <CGAL_ext/IO/internal/Atomic_output_file.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/two_sided_scene.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/exceptions.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -91,17 +93,48 @@ public:
   /// Shows the faces, or hides them (`draw()`'s `nofill`; the `F` key).
   void set_draw_faces(bool faces) { m_draw_faces = faces; }
 
-  /// Adds the faces and segments of `scene` to what is drawn.
+  /// Adds the faces and segments of `scene` to what is drawn, moved and
+  /// scaled into a box of size 1 about the origin: OpenGL computes in float,
+  /// which overflows or underflows long before the scene's double does.
   void add_scene(const Two_sided_scene& scene)
   {
+    const auto& b = scene.bbox;
+    const Two_sided_scene::Vector centre((b.xmin() + b.xmax()) / 2, (b.ymin() + b.ymax()) / 2,
+                                         (b.zmin() + b.zmax()) / 2);
+    const double span = (std::max)({b.x_span(), b.y_span(), b.z_span()});
+    const double scale = span > 0 && std::isfinite(span) ? 1 / span : 1;
+    const auto unit = [&](const Two_sided_scene::Point& p) {
+      return CGAL::ORIGIN + ((p - CGAL::ORIGIN) - centre) * scale;
+    };
     for (const auto& face : scene.faces) {
+      if (has_no_area(scene, face))
+        continue;
       face_begin(face.color);
       for (std::size_t i = face.first_corner; i < face.first_corner + face.size; ++i)
-        add_point_in_face(scene.corners[i], scene.normals[i]);
+        add_point_in_face(unit(scene.corners[i]), scene.normals[i]);
       face_end();
     }
     for (const auto& segment : scene.segments)
-      add_segment(segment.source, segment.target, segment.color);
+      add_segment(unit(segment.source), unit(segment.target), segment.color);
+  }
+
+  /// Whether `face` is flat to within rounding (its corners on one line, or
+  /// on one point): it has no plane for CGAL's viewer to triangulate it in,
+  /// and nothing to show but its edges, which are segments of the scene.
+  static bool has_no_area(const Two_sided_scene& scene, const Two_sided_scene::Face& face)
+  {
+    // The area vector, twice over, from the first corner (no cancellation
+    // of large coordinates).
+    Two_sided_scene::Vector newell = CGAL::NULL_VECTOR;
+    double squared_perimeter = 0;
+    const auto& origin = scene.corners[face.first_corner];
+    for (std::size_t i = 0; i < face.size; ++i) {
+      const auto& p = scene.corners[face.first_corner + i];
+      const auto& q = scene.corners[face.first_corner + (i + 1) % face.size];
+      newell = newell + CGAL::cross_product(p - origin, q - origin);
+      squared_perimeter += CGAL::squared_distance(p, q);
+    }
+    return newell.squared_length() <= 1e-24 * squared_perimeter * squared_perimeter;
   }
 
   /// Looks in `direction`, with `up` up, at the whole scene once the window
@@ -180,6 +213,19 @@ private:
 
 namespace internal {
 
+// `d` divided by its largest coordinate: the camera normalises it in float,
+// where a direction of 1e200 (or 1e-200) would be infinite (or zero).
+inline std::array<double, 3> scaled_direction(std::array<double, 3> d, const char* what)
+{
+  const double largest = (std::max)({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+  if (!(largest > 0) || !std::isfinite(largest))
+    throw Parameter_error(std::string("save_screenshot: the ") + what + " (" + std::to_string(d[0]) + ", " +
+                          std::to_string(d[1]) + ", " + std::to_string(d[2]) + ") is zero or not finite");
+  for (double& x : d)
+    x /= largest;
+  return d;
+}
+
 template <class P, class NP>
 void draw_two_sided(const Mobius_mesh<P>& mesh, const NP& np, const char* title, bool nofill)
 {
@@ -246,10 +292,13 @@ void draw(const Mobius_mesh<P>& mesh, const char* title, bool nofill = false)
 /// a Qt program may call it from its running loop. The picture is written
 /// aside and renamed into place, so a failure leaves an existing `file` as
 /// it was. Takes the named parameters of `make_two_sided_scene()`.
-/// \throws Parameter_error as `make_two_sided_scene()`, or when the picture
-/// is not between 16 and 8192 pixels wide and high;
+/// \throws Parameter_error as `make_two_sided_scene()`, when the picture
+/// is not between 16 and 8192 pixels wide and high, or when the view
+/// direction or the up vector is zero or not finite;
 /// \throws Error when there is no display;
-/// \throws IO_error if no picture could be written to `file`, or when built
+/// \throws IO_error if `file` is a directory or its directory is missing or
+/// not writable (checked before drawing), if no picture could be written to
+/// `file`, or when built
 /// without `CGAL_USE_BASIC_VIEWER`.
 template <class P, class NP = parameters::Default_named_parameters>
 void save_screenshot(const Mobius_mesh<P>& mesh, const std::string& file, const Screenshot_settings& settings = {},
@@ -259,6 +308,9 @@ void save_screenshot(const Mobius_mesh<P>& mesh, const std::string& file, const 
   if (!in_range(settings.width) || !in_range(settings.height))
     throw Parameter_error("save_screenshot: a picture of " + std::to_string(settings.width) + " x " +
                           std::to_string(settings.height) + " pixels; each side must be from 16 to 8192");
+  IO::internal::check_output_path(file); // before the drawing, not after it
+  const auto direction = internal::scaled_direction(settings.view_direction, "view direction");
+  const auto up = internal::scaled_direction(settings.up_vector, "up vector");
 #ifdef CGAL_USE_BASIC_VIEWER
   const Two_sided_scene scene = make_two_sided_scene(mesh, np);
   const std::size_t dot = file.find_last_of('.');
@@ -270,7 +322,7 @@ void save_screenshot(const Mobius_mesh<P>& mesh, const std::string& file, const 
     internal::Viewer_application app("save_screenshot");
     QEventLoop loop;
     Mobius_mesh_viewer_qt viewer(nullptr, scene, "Mobius_mesh screenshot");
-    viewer.set_view(settings.view_direction, settings.up_vector);
+    viewer.set_view(direction, up);
     viewer.take_screenshot(aside, [&loop] { loop.quit(); });
     viewer.resize(settings.width, settings.height);
     // A window that is never drawn (no OpenGL) must not hang the caller.
@@ -285,7 +337,7 @@ void save_screenshot(const Mobius_mesh<P>& mesh, const std::string& file, const 
     throw IO_error(file, 0, "the picture could not be moved into place");
   }
 #else
-  (void)mesh, (void)np;
+  (void)mesh, (void)np, (void)direction, (void)up;
   throw IO_error(file, 0, "save_screenshot: built without CGAL_USE_BASIC_VIEWER (link with CGAL::CGAL_Basic_viewer)");
 #endif
 }

@@ -12,6 +12,7 @@
 #define CGAL_EXT_MOBIUS_MESH_TWO_SIDED_SCENE_H
 
 #include <CGAL_ext/Mobius_mesh/Two_sided_style.h>
+#include <CGAL_ext/Mobius_mesh/internal/Coordinate_checks.h>
 #include <CGAL_ext/Mobius_mesh/internal/Two_sided_geometry.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
@@ -67,7 +68,10 @@ namespace CGAL_ext {
 ///     \cgalParamDefault{the kernel of the point type, through `CGAL::Kernel_traits`}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \throws Parameter_error if the mesh has garbage or the gap is negative or not finite.
+/// \throws Parameter_error if the mesh has garbage, the gap is negative or not
+/// finite, or a point is not in the range of the library's algorithms in
+/// double (coordinates within +-1e60, the mesh at least 1e-60 across, unless
+/// it is a single point).
 template <class P, class NP = parameters::Default_named_parameters>
 Two_sided_scene make_two_sided_scene(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values())
 {
@@ -79,6 +83,9 @@ Two_sided_scene make_two_sided_scene(const Mobius_mesh<P>& mesh, const NP& np = 
     throw Parameter_error("make_two_sided_scene: the gap " + std::to_string(style.gap) +
                           " is not a finite number >= 0");
   const internal::Two_sided_geometry<P, NP> geometry(mesh, np);
+  // Normals and the gap are computed in double from squared lengths.
+  internal::require_coordinates_in_range(mesh, "make_two_sided_scene",
+                                         [&](Vertex_index v) { return geometry.point(v); });
   Two_sided_scene scene;
   for (Vertex_index v : mesh.vertices())
     scene.bbox += geometry.point(v).bbox();

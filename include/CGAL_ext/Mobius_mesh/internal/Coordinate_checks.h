@@ -33,10 +33,9 @@ namespace internal {
 constexpr double max_abs_coordinate = 1e60;
 constexpr double min_extent = 1e-60;
 
-template <class P>
-std::string describe_vertex(const Mobius_mesh<P>& mesh, Vertex_index v)
+template <class Point>
+std::string describe_vertex(Vertex_index v, const Point& p)
 {
-  const P& p = mesh.point(v);
   std::ostringstream what;
   what << "vertex " << v.idx() << " at (" << CGAL::to_double(p.x()) << ", " << CGAL::to_double(p.y()) << ", "
        << CGAL::to_double(p.z()) << ")";
@@ -53,7 +52,7 @@ void require_finite_points(const Mobius_mesh<P>& mesh, const char* function)
     if (std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
         std::isfinite(CGAL::to_double(p.z())))
       continue;
-    throw Parameter_error(std::string(function) + ": " + describe_vertex(mesh, v) +
+    throw Parameter_error(std::string(function) + ": " + describe_vertex(v, p) +
                           " has a coordinate that is not finite");
   }
 }
@@ -62,18 +61,19 @@ void require_finite_points(const Mobius_mesh<P>& mesh, const char* function)
 // naming the first such vertex, or one whose bounding box is less than
 // min_extent across (but not a single point), before anything is touched.
 // Returns the largest absolute coordinate, for require_length_resolved().
-template <class P>
-double require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* function)
+// `point_of(v)` gives the point of vertex v (a vertex point map's, say).
+template <class P, class Point_of>
+double require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* function, const Point_of& point_of)
 {
   std::array<double, 3> low{}, high{};
   bool first = true;
   for (Vertex_index v : mesh.vertices()) {
-    const P& p = mesh.point(v);
+    const auto& p = point_of(v);
     const std::array<double, 3> x{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     const double b = max_abs_coordinate;
     if (!(std::abs(x[0]) <= b && std::abs(x[1]) <= b && std::abs(x[2]) <= b)) { // true for NaN too
       std::ostringstream what;
-      what << function << ": " << describe_vertex(mesh, v) << " has a coordinate beyond +-" << max_abs_coordinate
+      what << function << ": " << describe_vertex(v, p) << " has a coordinate beyond +-" << max_abs_coordinate
            << ", where its computations in double overflow";
       throw Parameter_error(what.str());
     }
@@ -94,6 +94,13 @@ double require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* func
   for (int i = 0; i < 3; ++i)
     largest = (std::max)({largest, std::abs(low[i]), std::abs(high[i])});
   return largest;
+}
+
+// The same for the mesh's own points.
+template <class P>
+double require_coordinates_in_range(const Mobius_mesh<P>& mesh, const char* function)
+{
+  return require_coordinates_in_range(mesh, function, [&](Vertex_index v) -> const P& { return mesh.point(v); });
 }
 
 // Refuses a length that coordinates up to `largest` in absolute value
