@@ -3,6 +3,7 @@
 #include "mesh_snapshot.h"
 #include "test_util.h"
 
+#include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/merge_borders.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
@@ -757,6 +758,45 @@ TEST(MergeFacing, StripHalvesGlueTheirFacingSides)
     for (auto v : m.vertices())
       on_the_seam += m.point(v).x() == x ? 1 : 0;
     EXPECT_EQ(on_the_seam, std::size_t(rows + 1));
+  }
+}
+
+// A square beside a Möbius strip: their borders face each other at one
+// vertex (or a run of one on either side), which has no edge. The facing
+// parts grow to one edge each, so that every manual strategy has edges to
+// work on: the bridge joins the two into one surface of chi = 1 + 0 - 1.
+TEST(MergeFacing, BordersFacingAtOneVertexGiveChainsOfOneEdgeAtLeast)
+{
+  using P = Kd::Point_3;
+  for (const double gap : {0.25, 0.75, 2.0}) {
+    for (const double y : {0.0, 0.3}) {
+      SCOPED_TRACE("square at x = 1.25 + " + std::to_string(gap) + ", y = " + std::to_string(y));
+      Mesh<P> strip;
+      CGAL_ext::make_mobius_strip(strip, 20, 4);
+      const double x = 1.25 + gap;
+      const Mesh<P> square = from_soup<P>({P(x, y - 0.5, 0), P(x + 1, y - 0.5, 0), P(x + 1, y + 0.5, 0), P(x, y + 0.5, 0)},
+                                          {{0, 1, 2, 3}});
+      const CGAL_ext::Border_pairing pairing = CGAL_ext::facing_borders(strip, square);
+      EXPECT_GE(pairing.first_edges, 1u);
+      EXPECT_GE(pairing.second_edges, 1u);
+      Mesh<P> bridged = strip;
+      CGAL_ext::merge_borders(bridged, square, pairing, CGAL_ext::Merge_strategy::bridge);
+      EXPECT_TRUE(bridged.is_valid(true));
+      EXPECT_EQ(CGAL_ext::connected_components(bridged).count, 1u);
+      EXPECT_EQ(CGAL_ext::euler_characteristic(bridged), 0);
+      EXPECT_FALSE(CGAL_ext::is_orientable(bridged));
+      for (const auto strategy : {CGAL_ext::Merge_strategy::keep_first, CGAL_ext::Merge_strategy::keep_second,
+                                  CGAL_ext::Merge_strategy::average}) {
+        Mesh<P> glued = strip;
+        try {
+          CGAL_ext::merge_borders(glued, square, pairing, strategy);
+          EXPECT_TRUE(glued.is_valid(true));
+        } catch (const CGAL_ext::Merge_error& e) {
+          // Chains of different lengths cannot be glued edge to edge: said so.
+          EXPECT_EQ(std::string(e.what()).find("chain has 0"), std::string::npos) << e.what();
+        }
+      }
+    }
   }
 }
 

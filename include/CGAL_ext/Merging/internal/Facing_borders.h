@@ -98,13 +98,29 @@ inline std::pair<std::size_t, std::size_t> run_around(const std::vector<bool>& i
   return {(s + n - before) % n, before + after + 1};
 }
 
+// A run of one vertex has no edge to glue or bridge (two loops may face
+// each other at one vertex only, as a square beside a Möbius strip's twisted
+// border): it grows by the neighbour nearer to `q`, the other loop's vertex.
+inline std::pair<std::size_t, std::size_t> at_least_one_edge(const Border_walk& w,
+                                                             std::pair<std::size_t, std::size_t> run,
+                                                             const Nearest_points::Point& q)
+{
+  if (run.second >= 2 || w.size() < 2)
+    return run;
+  const std::size_t n = w.size(), previous = (run.first + n - 1) % n, next = (run.first + 1) % n;
+  if (CGAL::squared_distance(w.points[previous], q) < CGAL::squared_distance(w.points[next], q))
+    return {previous, 2};
+  return {run.first, 2};
+}
+
 // The parts of two border loops that face each other, from a nearest pair
 // of their vertices (i0 of a, j0 of b): the runs of mutually nearest
-// vertices around them, or the whole loops if either run is a whole loop.
+// vertices around them (at least one edge each), or the whole loops if
+// either run is a whole loop.
 inline Border_pairing facing_parts(const Border_walk& a, std::size_t i0, const Border_walk& b, std::size_t j0)
 {
-  const auto [first_a, length_a] = run_around(mutually_nearest(a, b), i0);
-  const auto [first_b, length_b] = run_around(mutually_nearest(b, a), j0);
+  const auto [first_a, length_a] = at_least_one_edge(a, run_around(mutually_nearest(a, b), i0), b.points[j0]);
+  const auto [first_b, length_b] = at_least_one_edge(b, run_around(mutually_nearest(b, a), j0), a.points[i0]);
   if (length_a == a.size() || length_b == b.size())
     return whole_loops(a, i0, b, j0);
   const std::size_t last_a = (first_a + length_a - 1) % a.size(), last_b = (first_b + length_b - 1) % b.size();
