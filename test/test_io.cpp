@@ -1054,7 +1054,10 @@ TEST(IO_hostile, obj_corner_with_a_long_texture_index_is_read_as_its_triangle)
 {
   // A reader that skips only 256 characters of a corner read this as the quad 1 4 2 3.
   const fs::path dir = scratch_directory();
-  write_text(dir / "zeros.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1/" + std::string(260, '0') + "4 2 3\n");
+  // (The texture coordinate 4 exists: a corner naming one that does not is refused.)
+  write_text(dir / "zeros.obj",
+             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 0 0\nvt 0 0\nvt 0 0\nf 1/" + std::string(260, '0') +
+               "4 2 3\n");
   Mesh_d mesh;
   read_polygon_mesh((dir / "zeros.obj").string(), mesh);
   ASSERT_EQ(mesh.number_of_faces(), 1u);
@@ -1321,9 +1324,13 @@ TEST(IO_round_trip, output_without_sharpness_is_read_by_cgal)
   // then 26 + 48 + 24 = 98 vertices and 96 quads. An all-zero sharpness map
   // and no options carry nothing, so no tag line is written, and CGAL's
   // polygon soup readers (which refuse tag lines) read every format back.
+  // (The cube's texture coordinates and normals, which OFF and PLY cannot
+  // hold at its seams, are tested in test_corner_io.cpp.)
   const fs::path dir = scratch_directory();
   Mesh_d mesh;
   read_polygon_mesh(test::data("opensubdiv/catmark_cube.obj"), mesh);
+  EXPECT_TRUE(mesh.remove_corner_channel(CGAL_ext::corner_uv_name));
+  EXPECT_TRUE(mesh.remove_corner_channel(CGAL_ext::corner_normal_name));
   CGAL_ext::Subdivision::catmull_clark(mesh, CGAL_ext::parameters::number_of_iterations(2));
   CGAL_ext::edge_sharpness_map(mesh);
   CGAL_ext::vertex_sharpness_map(mesh);

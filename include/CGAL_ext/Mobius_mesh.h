@@ -670,6 +670,12 @@ public:
     channel = Corner_channel<T>();
     return removed;
   }
+  /// Removes the corner channel named `name`, whatever its value type; false
+  /// if there is none (a halfedge map of that name is left alone).
+  bool remove_corner_channel(const std::string& name)
+  {
+    return hprops_.remove(hprops_.template find_array<internal::Base_corner_channel>(name));
+  }
   /// The names of the corner channels, in order of creation.
   std::vector<std::string> corner_channels() const
   {
@@ -682,6 +688,16 @@ public:
   /// face that ends there along the face's orientation (`d`'s own halfedge
   /// unless `d` is flipped). `d` must not be a border dart.
   Halfedge_index corner(Dart d) const { return d.is_flipped() ? next(d).halfedge() : d.halfedge(); }
+  /// Gives the corner in slot `to` the value index of the corner in slot
+  /// `from`, in every channel: for edits that make a corner at a vertex that
+  /// the same face already had a corner at (`Euler::split_face()` does).
+  void copy_corner(Halfedge_index from, Halfedge_index to)
+  {
+    if (hprops_.arrays().empty())
+      return;
+    hprops_.template for_each_array<internal::Base_corner_channel>(
+      [&](internal::Base_corner_channel& c) { c.indices()[to.idx()] = c.indices()[from.idx()]; });
+  }
   /// @}
 
   // ---------------------------------------------------------------- construction

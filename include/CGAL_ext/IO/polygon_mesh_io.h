@@ -8,6 +8,8 @@
 #define CGAL_EXT_IO_POLYGON_MESH_IO_H
 
 #include <CGAL_ext/IO/internal/Atomic_output_file.h>
+#include <CGAL_ext/IO/internal/Corner_data.h>
+#include <CGAL_ext/IO/internal/Corner_writers.h>
 #include <CGAL_ext/IO/internal/OBJ_reader.h>
 #include <CGAL_ext/IO/internal/OFF_reader.h>
 #include <CGAL_ext/IO/internal/PLY_reader.h>
@@ -110,6 +112,46 @@ void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Shar
   }
 }
 
+// The points as the files hold them: doubles, each finite (written, a NaN
+// or an infinity makes a file that no reader takes back).
+template <class P>
+std::vector<Written_point> written_points(const Mobius_mesh<P>& mesh, const std::string& filename)
+{
+  std::vector<Written_point> points;
+  points.reserve(mesh.number_of_vertices());
+  for (Vertex_index v : mesh.vertices()) {
+    const P& p = mesh.point(v);
+    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const Written_point& q = points.back();
+    if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()))
+      throw IO_error(filename, 0,
+                     "vertex " + std::to_string(v.idx()) + " has a coordinate that is not a finite double; "
+                     "nothing was written");
+  }
+  return points;
+}
+
+// OpenSubdiv's tags (vertex indices in tags count from 0): sharpness where it
+// is not 0, and the options that are set.
+template <class P, class NP>
+void write_obj_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const NP& np, const Sharp_feature_options& options)
+{
+  write_crease_tags(out, mesh, CGAL_ext::internal::edge_sharpness_of(mesh, np));
+  write_corner_tags(out, mesh, CGAL_ext::internal::vertex_sharpness_of(mesh, np));
+  if (options.boundary_interpolation) {
+    const int k = *options.boundary_interpolation == Boundary_interpolation::none              ? 0
+                  : *options.boundary_interpolation == Boundary_interpolation::edge_and_corner ? 1
+                                                                                                : 2;
+    out << "t interpolateboundary 1/0/0 " << k << '\n';
+  }
+  if (options.crease_method)
+    out << "t creasemethod 0/0/1 " << (*options.crease_method == Crease_method::chaikin ? "chaikin" : "uniform")
+        << '\n';
+  if (options.triangle_subdivision)
+    out << "t smoothtriangles 0/0/1 "
+        << (*options.triangle_subdivision == Triangle_subdivision::smooth ? "smooth" : "catmark") << '\n';
+}
+
 // read_polygon_mesh() without its translation of foreign exceptions.
 template <class P, class NP>
 Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format format, Mobius_mesh<P>& mesh,
@@ -122,20 +164,30 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
   if (format == Mesh_format::obj)
     obj = read_obj_text(filename, text, points, polygons);
   else if (format == Mesh_format::off)
-    obj.lines = read_off(filename, text, points, polygons);
+    obj.lines = read_off(filename, text, points, polygons, obj.corner_data);
   else
-    obj.lines = read_ply(filename, text, points, polygons);
+    obj.lines = read_ply(filename, text, points, polygons, obj.corner_data);
   if (polygons.empty())
     throw IO_error(filename, 0, "the file has no faces");
 
+  // The corners' values and the tags' vertices are read off the mesh as
+  // built, face p on polygon p; orientation then moves the values with
+  // their vertices.
+  using Tolerance = std::decay_t<decltype(parameters::get_parameter(np, CGAL_ext::internal_np::tolerance))>;
+  constexpr bool merged = !std::is_same_v<Tolerance, CGAL::internal_np::Param_not_found>;
+  std::vector<std::vector<Vertex_index>> images;
   Mobius_mesh<P> result;
   try {
-    polygon_soup_to_mobius_mesh(points, polygons, result, np);
+    CGAL_ext::internal::soup_to_mobius_mesh(points, polygons, result, np, [&](Mobius_mesh<P>& built) {
+      add_read_channels(obj.corner_data, polygons, built);
+      if (!obj.creases.empty() || !obj.corners.empty())
+        images = soup_point_images(polygons, points.size(), merged, built);
+    });
   } catch (const Soup_error& e) {
     throw_soup_error_in_file(e, filename, obj.lines);
   }
-  if (format == Mesh_format::obj)
-    apply_obj_tags(obj, filename, polygons, points.size(), result, np);
+  if (!images.empty())
+    apply_obj_tags(obj, filename, images, result);
   mesh = std::move(result);
   return obj.options;
 }
@@ -282,28 +334,37 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using Double_point = CGAL::Simple_cartesian<double>::Point_3;
   CGAL_ext::internal::require_no_garbage(mesh, "write_polygon_mesh");
   const internal::Mesh_format format = internal::format_of(filename);
 
-  std::vector<Double_point> points;
-  points.reserve(mesh.number_of_vertices());
-  for (Vertex_index v : mesh.vertices()) {
-    const P& p = mesh.point(v);
-    points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-    // Written, a NaN or an infinity makes a file that no reader takes back.
-    const Double_point& q = points.back();
-    if (!std::isfinite(q.x()) || !std::isfinite(q.y()) || !std::isfinite(q.z()))
-      throw IO_error(filename, 0,
-                     "vertex " + std::to_string(v.idx()) + " has a coordinate that is not a finite double; "
-                     "nothing was written");
-  }
-  std::vector<std::vector<std::size_t>> polygons;
+  // Everything is checked before the file is created: points, faces, the
+  // corner channels and whether the format holds them.
+  const std::vector<internal::Written_point> points = internal::written_points(mesh, filename);
+  internal::Written_polygons polygons;
   polygons.reserve(mesh.number_of_faces());
   for (Face_index f : mesh.faces()) {
     polygons.emplace_back();
-    for (Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh))
-      polygons.back().push_back(v.idx());
+    for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
+      polygons.back().push_back(mesh.target(d).idx());
+  }
+  const char* format_name = format == internal::Mesh_format::obj   ? "OBJ"
+                            : format == internal::Mesh_format::off ? "OFF"
+                                                                    : "PLY";
+  internal::refuse_unwritten_channels(mesh, filename, format_name);
+  internal::Written_corner_data corners;
+  corners.uv = internal::written_channel<2>(mesh, corner_uv_name, filename);
+  corners.normal = internal::written_channel<3>(mesh, corner_normal_name, filename);
+  internal::Vertex_values vertex_values;
+  if (format != internal::Mesh_format::obj && !corners.empty()) {
+    // CGAL's OFF reader (5.5) reads past the line of a vertex with texture
+    // coordinates unless the header also announces colours: OFF files get
+    // no texture coordinates, so that every reader takes them.
+    if (format == internal::Mesh_format::off && corners.uv.is_present())
+      throw IO_error(filename, 0,
+                     "the mesh has texture coordinates (\"" + std::string(corner_uv_name) +
+                       "\"), which OFF files are not written with (readers differ on STOFF): write OBJ (a value "
+                       "per face corner) or PLY (a value per vertex); nothing was written");
+    vertex_values = internal::vertex_values(corners, mesh, filename, format_name);
   }
 
   const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
@@ -314,31 +375,25 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   internal::Atomic_output_file file(filename, binary ? std::ios::out | std::ios::binary : std::ios::out);
   std::ofstream& out = file.stream();
   const auto cgal_np = CGAL::parameters::stream_precision(precision);
-  bool written = false;
+  bool written = true;
   if (format == internal::Mesh_format::obj) {
-    written = CGAL::IO::write_OBJ(out, points, polygons, cgal_np);
-    // OpenSubdiv's tags; vertex indices in tags count from 0.
-    internal::write_crease_tags(out, mesh, CGAL_ext::internal::edge_sharpness_of(mesh, np));
-    internal::write_corner_tags(out, mesh, CGAL_ext::internal::vertex_sharpness_of(mesh, np));
-    if (options.boundary_interpolation) {
-      const int k = *options.boundary_interpolation == Boundary_interpolation::none              ? 0
-                    : *options.boundary_interpolation == Boundary_interpolation::edge_and_corner ? 1
-                                                                                                  : 2;
-      out << "t interpolateboundary 1/0/0 " << k << '\n';
-    }
-    if (options.crease_method)
-      out << "t creasemethod 0/0/1 " << (*options.crease_method == Crease_method::chaikin ? "chaikin" : "uniform")
-          << '\n';
-    if (options.triangle_subdivision)
-      out << "t smoothtriangles 0/0/1 "
-          << (*options.triangle_subdivision == Triangle_subdivision::smooth ? "smooth" : "catmark") << '\n';
+    if (corners.empty())
+      written = CGAL::IO::write_OBJ(out, points, polygons, cgal_np);
+    else
+      internal::write_obj_with_corners(out, points, polygons, corners, precision);
+    internal::write_obj_tags(out, mesh, np, options);
   } else if (format == internal::Mesh_format::off) {
-    written = CGAL::IO::write_OFF(out, points, polygons, cgal_np);
-  } else {
+    if (corners.empty())
+      written = CGAL::IO::write_OFF(out, points, polygons, cgal_np);
+    else
+      internal::write_off_with_values(out, points, polygons, vertex_values, precision);
+  } else if (corners.empty()) {
     CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
     written = CGAL::IO::write_PLY(out, points, polygons, cgal_np);
+  } else {
+    internal::write_ply_with_values(out, points, polygons, vertex_values, binary, precision);
   }
-  if (!written)
+  if (!written || !out)
     throw IO_error(filename, 0, "writing the file failed" + internal::system_reason() + "; the old file is unchanged");
   file.commit();
 }

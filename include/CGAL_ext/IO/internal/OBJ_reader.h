@@ -1,13 +1,15 @@
 // Copyright (c) 2026 CGAL_ext contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Reads an OBJ text in one pass into a polygon soup, with OpenSubdiv's tags
-// (creases, corners, the mesh-level subdivision options), and sets the
-// sharpness the tags give on the mesh the soup became.
+// Reads an OBJ text in one pass into a polygon soup, with its texture
+// coordinates and normals (`vt`, `vn` and the corners' indices into them)
+// and OpenSubdiv's tags (creases, corners, the mesh-level subdivision
+// options), and sets the sharpness the tags give on the mesh the soup became.
 
 #ifndef CGAL_EXT_IO_INTERNAL_OBJ_READER_H
 #define CGAL_EXT_IO_INTERNAL_OBJ_READER_H
 
+#include <CGAL_ext/IO/internal/Corner_data.h>
 #include <CGAL_ext/IO/internal/Text_scanning.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -20,6 +22,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cctype>
 #include <cerrno>
@@ -59,6 +62,7 @@ struct Obj_scan
   std::vector<Crease_tag> creases;
   std::vector<Corner_tag> corners;
   Sharp_feature_options options;
+  Read_corner_data corner_data; // vt and vn, and the corners' indices into them
 };
 
 template <class Name>
@@ -198,26 +202,155 @@ inline void check_obj_indices(const std::string& filename, long long largest_ind
                        std::to_string(n - 1));
 }
 
-// The vertex index of one face corner (v, v/vt, v//vn or v/vt/vn).
-inline bool parse_face_corner(Token t, long long& index)
+// One face corner: v, v/vt, v//vn or v/vt/vn (indices as written: from 1,
+// or negative counting back).
+struct Obj_corner
+{
+  long long v = 0, vt = 0, vn = 0;
+  bool has_vt = false, has_vn = false;
+};
+
+inline bool parse_face_corner(Token t, Obj_corner& c)
 {
   const char* slash = std::find(t.begin, t.end, '/');
-  if (!parse_integer(Token{t.begin, slash}, index))
+  if (!parse_integer(Token{t.begin, slash}, c.v))
     return false;
   if (slash == t.end)
     return true;
   const char* slash2 = std::find(slash + 1, t.end, '/');
   const Token texture{slash + 1, slash2};
-  long long other = 0;
+  c.has_vt = !texture.empty();
   if (slash2 == t.end) // v/vt
-    return parse_integer(texture, other);
-  return (texture.empty() || parse_integer(texture, other)) && parse_integer(Token{slash2 + 1, t.end}, other);
+    return c.has_vt && parse_integer(texture, c.vt);
+  c.has_vn = true;
+  return (!c.has_vt || parse_integer(texture, c.vt)) && parse_integer(Token{slash2 + 1, t.end}, c.vn);
+}
+
+// A `vt u [v [w]]` or `vn x y z` line, appended to the channel's values.
+// Texture coordinates in 3D (a w other than 0) are refused, not cut to 2D.
+template <std::size_t N, class Fail>
+void scan_obj_value(const std::vector<Token>& tok, bool texture, Read_channel<N>& channel, const Fail& fail)
+{
+  const std::size_t given = tok.size() - 1;
+  if (texture ? (given < 1 || given > 3) : given != 3)
+    fail(texture ? "a texture coordinate is 'vt u [v [w]]'" : "a normal has three coordinates: 'vn x y z'");
+  std::array<double, 3> xyz{0, 0, 0};
+  for (std::size_t i = 0; i < given; ++i)
+    if (!parse_real(tok[i + 1], xyz[i]))
+      fail(std::string(texture ? "texture coordinate" : "normal coordinate") + " '" + printable(tok[i + 1]) +
+           "' is not a finite number");
+  if (texture && xyz[2] != 0)
+    fail("3D texture coordinates are not read (w = " + printable(tok[3]) + " is not 0); only u and v are");
+  if (channel.values.size() >= no_corner_value)
+    fail("more values than the mesh's 32-bit indices hold");
+  std::array<double, N> v;
+  for (std::size_t i = 0; i < N; ++i)
+    v[i] = xyz[i];
+  channel.values.push_back(v);
+}
+
+// The value index of one corner: `index` as written (from 1, or negative
+// counting back from the last value read so far). An index beyond the last
+// value is checked once the whole file is read (it may be defined further down).
+template <class Fail>
+std::uint32_t obj_value_index(long long index, std::size_t n_values, const char* what, Token corner,
+                              long long& largest, const Fail& fail)
+{
+  if (index == 0)
+    fail("face corner '" + printable(corner) + "': OBJ " + what + " indices start at 1");
+  if (index < 0 && static_cast<long long>(n_values) + index < 0)
+    fail("face corner '" + printable(corner) + "' counts back past the first " + what + ": only " +
+         std::to_string(n_values) + " precede it");
+  if (index > static_cast<long long>(no_corner_value) - 1)
+    fail("face corner '" + printable(corner) + "' names " + what + " " + std::to_string(index) +
+         ", more than the mesh's 32-bit indices hold");
+  largest = (std::max)(largest, index);
+  return std::uint32_t(index < 0 ? static_cast<long long>(n_values) + index : index - 1);
+}
+
+// Appends the value indices of one face's corners (`no_corner_value` for a
+// corner without one) to a channel. Nothing is stored until a corner has a
+// value; the corners before it are then filled in without one.
+inline void add_face_values(std::vector<std::uint32_t>& index, const std::vector<std::uint32_t>& face,
+                            bool face_has_values, std::size_t corners_before)
+{
+  if (!face_has_values && index.empty())
+    return;
+  index.resize(corners_before, no_corner_value);
+  index.insert(index.end(), face.begin(), face.end());
+}
+
+// Faces that name values beyond the last one of the file.
+template <std::size_t N>
+void check_obj_value_indices(const std::string& filename, const Read_channel<N>& channel, long long largest,
+                             const std::vector<std::vector<std::size_t>>& polygons, const Soup_lines& lines,
+                             const char* what)
+{
+  if (largest <= static_cast<long long>(channel.values.size()))
+    return;
+  std::size_t first = 0;
+  for (std::size_t p = 0; p < polygons.size(); ++p) {
+    for (std::size_t c = first; c < first + polygons[p].size() && c < channel.corner_index.size(); ++c)
+      if (channel.corner_index[c] != no_corner_value && channel.corner_index[c] >= channel.values.size())
+        throw IO_error(filename, lines.polygon_lines[p],
+                       "face names " + std::string(what) + " " + std::to_string(channel.corner_index[c] + 1) +
+                         ", but the file has only " + std::to_string(channel.values.size()));
+    first += polygons[p].size();
+  }
+}
+
+// The largest indices that faces name (from 1), checked at the end: a face
+// may name vertices and values defined further down.
+struct Obj_largest_indices
+{
+  long long v = 0, vt = 0, vn = 0;
+};
+
+// One `f` line: its polygon, and its corners' value indices. A corner
+// without `vt` (or `vn`) has no value, in a face that has none or beside
+// corners that have one (as CGAL's reader, which reads every form, takes it).
+template <class Fail>
+void scan_obj_face(const std::vector<Token>& tok, std::size_t n_points, Obj_scan& scan,
+                   std::vector<std::vector<std::size_t>>& polygons, std::size_t& n_corners,
+                   Obj_largest_indices& largest, const Fail& fail)
+{
+  std::vector<std::size_t> polygon;
+  std::vector<std::uint32_t> vt, vn;
+  bool any_vt = false, any_vn = false;
+  polygon.reserve(tok.size() - 1);
+  for (std::size_t i = 1; i < tok.size(); ++i) {
+    Obj_corner c;
+    if (!parse_face_corner(tok[i], c))
+      fail("face corner '" + printable(tok[i]) + "' is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
+    const long long index = c.v, n = static_cast<long long>(n_points);
+    if (index == 0)
+      fail("face corner '" + printable(tok[i]) + "': OBJ vertex indices start at 1");
+    // The token, not -index, in the message: -index overflows for the least long long.
+    if (index < 0 && n + index < 0)
+      fail("face corner '" + printable(tok[i]) + "' counts back past the first vertex: only " +
+           std::to_string(n) + " vertices precede it");
+    largest.v = (std::max)(largest.v, index);
+    polygon.push_back(std::size_t(index < 0 ? n + index : index - 1));
+    const Read_corner_data& values = scan.corner_data;
+    vt.push_back(c.has_vt ? obj_value_index(c.vt, values.uv.values.size(), "texture coordinate", tok[i], largest.vt,
+                                            fail)
+                          : no_corner_value);
+    vn.push_back(c.has_vn ? obj_value_index(c.vn, values.normal.values.size(), "normal", tok[i], largest.vn, fail)
+                          : no_corner_value);
+    any_vt = any_vt || c.has_vt;
+    any_vn = any_vn || c.has_vn;
+  }
+  add_face_values(scan.corner_data.uv.corner_index, vt, any_vt, n_corners);
+  add_face_values(scan.corner_data.normal.corner_index, vn, any_vn, n_corners);
+  n_corners += polygon.size();
+  polygons.push_back(std::move(polygon));
 }
 
 // Reads an OBJ text in one pass: points, polygons (0-based; negative indices
-// count back from the last vertex read), the line of each, and OpenSubdiv's
-// tags. Checks the syntax of `v`, `f` and `t` lines and that every face and
-// tag names a vertex of the file.
+// count back from the last vertex read), the line of each, texture
+// coordinates and normals with the corners' indices into them, and
+// OpenSubdiv's tags. Checks the syntax of `v`, `vt`, `vn`, `f` and `t` lines
+// and that every face and tag names a vertex (and value) of the file.
 template <class P>
 Obj_scan read_obj_text(const std::string& filename, const std::string& text, std::vector<P>& points,
                        std::vector<std::vector<std::size_t>>& polygons)
@@ -225,7 +358,8 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
   Obj_scan scan;
   std::vector<Token> tok;
   std::vector<std::string> tag_tokens;
-  long long largest_index = 0; // checked at the end: faces may name vertices defined further down
+  Obj_largest_indices largest;
+  std::size_t n_corners = 0;
   Text_lines lines(text.data(), text.data() + text.size());
   while (lines.next()) {
     const std::size_t line = lines.number();
@@ -248,24 +382,13 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
           fail("unexpected '" + printable(tok[i]) + "' after the vertex coordinates");
       points.push_back(point_from_tokens<P>(&tok[1], xyz));
       scan.lines.point_lines.push_back(line);
+    } else if (s == "vt" || s == "vn") {
+      if (s == "vt")
+        scan_obj_value(tok, true, scan.corner_data.uv, fail);
+      else
+        scan_obj_value(tok, false, scan.corner_data.normal, fail);
     } else if (s == "f") {
-      const long long n_points = static_cast<long long>(points.size());
-      std::vector<std::size_t> polygon;
-      polygon.reserve(tok.size() - 1);
-      for (std::size_t i = 1; i < tok.size(); ++i) {
-        long long index = 0;
-        if (!parse_face_corner(tok[i], index))
-          fail("face corner '" + printable(tok[i]) + "' is not a vertex index (v, v/vt, v//vn or v/vt/vn)");
-        if (index == 0)
-          fail("face corner '" + printable(tok[i]) + "': OBJ vertex indices start at 1");
-        // The token, not -index, in the message: -index overflows for the least long long.
-        if (index < 0 && n_points + index < 0)
-          fail("face corner '" + printable(tok[i]) + "' counts back past the first vertex: only " +
-               std::to_string(n_points) + " vertices precede it");
-        largest_index = (std::max)(largest_index, index);
-        polygon.push_back(std::size_t(index < 0 ? n_points + index : index - 1));
-      }
-      polygons.push_back(std::move(polygon));
+      scan_obj_face(tok, points.size(), scan, polygons, n_corners, largest, fail);
       scan.lines.polygon_lines.push_back(line);
     } else if (s == "t") {
       tag_tokens.clear();
@@ -276,9 +399,16 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
       fail("unknown OBJ statement '" + printable(s) + "'");
     }
   }
-  check_obj_indices(filename, largest_index, points.size(), polygons, scan);
+  check_obj_indices(filename, largest.v, points.size(), polygons, scan);
+  // The faces after the last one with values have none.
+  for (std::vector<std::uint32_t>* index : {&scan.corner_data.uv.corner_index, &scan.corner_data.normal.corner_index})
+    if (!index->empty())
+      index->resize(n_corners, no_corner_value);
+  check_obj_value_indices(filename, scan.corner_data.uv, largest.vt, polygons, scan.lines, "texture coordinate");
+  check_obj_value_indices(filename, scan.corner_data.normal, largest.vn, polygons, scan.lines, "normal");
   return scan;
 }
+
 [[noreturn]] inline void throw_soup_error_in_file(const Soup_error& e, const std::string& filename,
                                                   const Soup_lines& lines)
 {
@@ -290,25 +420,19 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
   throw IO_error(filename, line, std::string(e.what()) + " (polygons and points numbered from 0)", e.kind());
 }
 
-// Sets the sharpness the tags give, on the vertices the soup points became.
-template <class P, class NP>
-void apply_obj_tags(const Obj_scan& scan, const std::string& filename,
-                    const std::vector<std::vector<std::size_t>>& polygons, std::size_t n_points,
-                    Mobius_mesh<P>& mesh, const NP& np)
+// The mesh vertices each soup point became, read on the mesh just built by
+// the soup import (before orientation reverses faces, so that face p walks
+// polygon p from its corner 1). Without merging the import keeps the point
+// indices and only appends the vertices that splitting creates; those (and
+// every vertex under merging) are found through the faces.
+template <class P>
+std::vector<std::vector<Vertex_index>> soup_point_images(const std::vector<std::vector<std::size_t>>& polygons,
+                                                         std::size_t n_points, bool merged, const Mobius_mesh<P>& mesh)
 {
-  if (scan.creases.empty() && scan.corners.empty())
-    return;
-  // Soup point -> mesh vertices. Without merging the import keeps the point
-  // indices and only appends the vertices that splitting creates; those (and
-  // every vertex under merging) are found through the faces, which keep the
-  // polygons' order and start: the halfedge of face p ends at corner 1 of p.
   std::vector<std::vector<Vertex_index>> images(n_points);
-  using Tolerance = std::decay_t<decltype(parameters::get_parameter(np, CGAL_ext::internal_np::tolerance))>;
-  constexpr bool merged = !std::is_same_v<Tolerance, CGAL::internal_np::Param_not_found>;
-  if constexpr (!merged) {
+  if (!merged)
     for (std::size_t s = 0; s < n_points && s < mesh.number_of_vertices(); ++s)
       images[s].push_back(Vertex_index(s));
-  }
   if (merged || mesh.number_of_vertices() != n_points) {
     for (std::size_t p = 0; p < polygons.size(); ++p) {
       const std::vector<std::size_t>& polygon = polygons[p];
@@ -322,6 +446,15 @@ void apply_obj_tags(const Obj_scan& scan, const std::string& filename,
       }
     }
   }
+  return images;
+}
+
+// Sets the sharpness the tags give, on the vertices the soup points became
+// (`images`, from soup_point_images()).
+template <class P>
+void apply_obj_tags(const Obj_scan& scan, const std::string& filename,
+                    const std::vector<std::vector<Vertex_index>>& images, Mobius_mesh<P>& mesh)
+{
   if (!scan.creases.empty()) {
     auto sharpness = edge_sharpness_map(mesh);
     for (const Crease_tag& c : scan.creases) {

@@ -4,12 +4,14 @@
 // Reads an OFF file, text or binary, in one pass into a polygon soup. The
 // header keyword is Geomview's [ST][C][N][4][n]OFF [BINARY]: what each vertex
 // carries besides its coordinates (texture, colour, normal), homogeneous
-// coordinates (4) and an explicit dimension (n), which must be 3. Counts are
-// believed only as far as the bytes after the header can hold them.
+// coordinates (4) and an explicit dimension (n), which must be 3. Texture
+// coordinates and normals are kept for corner channels (a value per point).
+// Counts are believed only as far as the bytes after the header can hold them.
 
 #ifndef CGAL_EXT_IO_INTERNAL_OFF_READER_H
 #define CGAL_EXT_IO_INTERNAL_OFF_READER_H
 
+#include <CGAL_ext/IO/internal/Corner_data.h>
 #include <CGAL_ext/IO/internal/Text_scanning.h>
 #include <CGAL_ext/exceptions.h>
 
@@ -80,11 +82,30 @@ bool homogeneous_point(const P& p, double w, P& result)
   return true;
 }
 
+// Appends a vertex's normal (3 numbers from `normal`) and texture
+// coordinates (2 from `texture`) to the channels, as the layout has them;
+// false if one is not finite.
+template <class T>
+bool add_off_values(const Off_layout& layout, const T* normal, const T* texture, Read_corner_data& corners)
+{
+  if (layout.normal)
+    corners.normal.values.push_back({double(normal[0]), double(normal[1]), double(normal[2])});
+  if (layout.texture)
+    corners.uv.values.push_back({double(texture[0]), double(texture[1])});
+  bool finite = true;
+  for (int i = 0; i < 3; ++i)
+    finite = finite && (!layout.normal || std::isfinite(double(normal[i])));
+  for (int i = 0; i < 2; ++i)
+    finite = finite && (!layout.texture || std::isfinite(double(texture[i])));
+  return finite;
+}
+
 // Binary OFF after its keyword line: big-endian 32-bit counts and indices and
 // 32-bit floats, each face followed by its colour (a count and that many floats).
 template <class P>
 void read_off_binary(const std::string& filename, Off_layout layout, const char* begin, const char* end,
-                     std::vector<P>& points, std::vector<std::vector<std::size_t>>& polygons)
+                     std::vector<P>& points, std::vector<std::vector<std::size_t>>& polygons,
+                     Read_corner_data& corners)
 {
   Byte_reader in(begin, end, true);
   auto fail = [&](const std::string& what) { throw IO_error(filename, 0, "binary OFF: " + what); };
@@ -119,6 +140,10 @@ void read_off_binary(const std::string& filename, Off_layout layout, const char*
         !homogeneous_point(p, layout.homogeneous ? double(values[3]) : 1.0, q))
       fail("vertex " + std::to_string(v) + " has a coordinate that is not a finite number");
     points.push_back(q);
+    // After the coordinates: the normal, the colour (RGBA), the texture (s t).
+    const std::size_t at = layout.coordinates();
+    if (!add_off_values(layout, &values[at], values.data() + values.size() - 2, corners))
+      fail("vertex " + std::to_string(v) + " has a normal or texture coordinate that is not a finite number");
   }
   polygons.reserve(std::size_t(n_faces));
   for (std::int32_t f = 0; f < n_faces; ++f) {
@@ -193,7 +218,8 @@ inline void check_trailing_numbers(const std::string& filename, std::size_t line
 template <class P>
 Soup_lines read_off_text(const std::string& filename, Text_lines& lines, std::vector<Token>& tok,
                          const Off_layout& layout, long long n_vertices, long long n_faces,
-                         std::vector<P>& points, std::vector<std::vector<std::size_t>>& polygons)
+                         std::vector<P>& points, std::vector<std::vector<std::size_t>>& polygons,
+                         Read_corner_data& corners)
 {
   auto fail = [&](const std::string& what) { throw IO_error(filename, lines.number(), what); };
   auto next_record = [&] {
@@ -218,6 +244,23 @@ Soup_lines read_off_text(const std::string& filename, Text_lines& lines, std::ve
       if (!parse_real(tok[c], xyzw[c]))
         fail("vertex coordinate '" + printable(tok[c]) + "' is not a finite number");
     check_trailing_numbers(filename, lines.number(), tok, dimension, "vertex coordinates");
+    // After the coordinates: the normal, a colour of 1 to 4 numbers, the
+    // texture (s t) last.
+    const std::size_t extra = (layout.normal ? 3 : 0) + (layout.texture ? 2 : 0);
+    if (tok.size() < dimension + extra)
+      fail(std::string("the vertex lacks its ") + (layout.normal ? "normal" : "") +
+           (layout.normal && layout.texture ? " and " : "") + (layout.texture ? "texture coordinates" : "") +
+           " (the header is " + (layout.texture ? "ST" : "") + (layout.colour ? "C" : "") +
+           (layout.normal ? "N" : "") + "OFF)");
+    if (extra > 0) {
+      double numbers[5] = {0, 0, 0, 0, 0};
+      const std::size_t texture_at = tok.size() - 2;
+      for (std::size_t i = 0; i < 3 && layout.normal; ++i)
+        parse_real(tok[dimension + i], numbers[i]);
+      for (std::size_t i = 0; i < 2 && layout.texture; ++i)
+        parse_real(tok[texture_at + i], numbers[3 + i]);
+      add_off_values(layout, numbers, numbers + 3, corners);
+    }
     P p;
     if (!homogeneous_point(point_from_tokens<P>(&tok[0], xyzw), xyzw[3], p))
       fail("the homogeneous vertex (" + printable(tok[0].begin, tok[dimension - 1].end) + ") has no finite position");
@@ -254,11 +297,12 @@ Soup_lines read_off_text(const std::string& filename, Text_lines& lines, std::ve
   return soup_lines;
 }
 
-// Reads an OFF file (its whole text) into a polygon soup; returns the line
-// of each point and polygon (none for binary OFF).
+// Reads an OFF file (its whole text) into a polygon soup, and the vertices'
+// texture coordinates and normals into `corners` (a value per point);
+// returns the line of each point and polygon (none for binary OFF).
 template <class P>
 Soup_lines read_off(const std::string& filename, const std::string& text, std::vector<P>& points,
-                    std::vector<std::vector<std::size_t>>& polygons)
+                    std::vector<std::vector<std::size_t>>& polygons, Read_corner_data& corners)
 {
   const char* const text_end = text.data() + text.size();
   Text_lines lines(text.data(), text_end);
@@ -275,7 +319,8 @@ Soup_lines read_off(const std::string& filename, const std::string& text, std::v
   if (tok.size() > 1 && tok[1] == "BINARY") {
     if (tok.size() > 2)
       throw IO_error(filename, lines.number(), "unexpected '" + printable(tok[2]) + "' after 'BINARY'");
-    read_off_binary(filename, layout, lines.rest(), text_end, points, polygons);
+    read_off_binary(filename, layout, lines.rest(), text_end, points, polygons, corners);
+    corners.uv.per_vertex = corners.normal.per_vertex = true;
     return Soup_lines();
   }
   const std::vector<long long> counts = read_off_counts(filename, lines, tok, 1, layout);
@@ -286,7 +331,9 @@ Soup_lines read_off(const std::string& filename, const std::string& text, std::v
   check_count_fits(filename, lines.number(), "vertices", std::uint64_t(n_vertices), vertex_bytes, remaining);
   check_count_fits(filename, lines.number(), "faces", std::uint64_t(n_faces), 2,
                    remaining - std::size_t(n_vertices) * vertex_bytes);
-  return read_off_text(filename, lines, tok, layout, n_vertices, n_faces, points, polygons);
+  Soup_lines soup_lines = read_off_text(filename, lines, tok, layout, n_vertices, n_faces, points, polygons, corners);
+  corners.uv.per_vertex = corners.normal.per_vertex = true;
+  return soup_lines;
 }
 
 } // namespace internal

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Reads a PLY file (ASCII, binary little or big endian) in one pass into a
-// polygon soup: the x, y, z of the `vertex` element and the index list
+// polygon soup: the x, y, z of the `vertex` element (and its texture
+// coordinates and normals, for corner channels) and the index list
 // `vertex_indices` (or `vertex_index`) of the `face` element, with any of
 // PLY's integer types for the lists; other elements and properties are read
 // over. Element counts are believed only as far as the bytes after the header
@@ -11,11 +12,13 @@
 #ifndef CGAL_EXT_IO_INTERNAL_PLY_READER_H
 #define CGAL_EXT_IO_INTERNAL_PLY_READER_H
 
+#include <CGAL_ext/IO/internal/Corner_data.h>
 #include <CGAL_ext/IO/internal/Text_scanning.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/Kernel_traits.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -304,11 +307,52 @@ inline std::size_t ply_property_at(const Ply_element& element, const char* name,
   return std::size_t(-1);
 }
 
-// Reads a PLY file (its whole content) into a polygon soup; returns the line
-// of each point and polygon in ASCII files (none in binary ones).
+// The properties of the `vertex` element beside x, y, z that become corner
+// channels: texture coordinates (the first pair found of s t, u v,
+// texture_u texture_v) and normals (nx ny nz); `none` where absent.
+struct Ply_vertex_values
+{
+  static constexpr std::size_t none = std::size_t(-1);
+  std::size_t uv[2] = {none, none};
+  std::size_t normal[3] = {none, none, none};
+
+  explicit Ply_vertex_values(const Ply_element& vertex)
+  {
+    static const char* const pairs[][2] = {{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}};
+    for (const auto& pair : pairs) {
+      const std::size_t a = ply_property_at(vertex, pair[0], false), b = ply_property_at(vertex, pair[1], false);
+      if (a != none && b != none) {
+        uv[0] = a, uv[1] = b;
+        break;
+      }
+    }
+    const std::size_t n[3] = {ply_property_at(vertex, "nx", false), ply_property_at(vertex, "ny", false),
+                              ply_property_at(vertex, "nz", false)};
+    if (n[0] != none && n[1] != none && n[2] != none)
+      std::copy(n, n + 3, normal);
+  }
+
+  // Appends the values of one vertex item; false if one is not finite.
+  bool add(const std::vector<double>& values, Read_corner_data& data) const
+  {
+    if (uv[0] != none)
+      data.uv.values.push_back({values[uv[0]], values[uv[1]]});
+    if (normal[0] != none)
+      data.normal.values.push_back({values[normal[0]], values[normal[1]], values[normal[2]]});
+    for (std::size_t k : {uv[0], uv[1], normal[0], normal[1], normal[2]})
+      if (k != none && !std::isfinite(values[k]))
+        return false;
+    return true;
+  }
+};
+
+// Reads a PLY file (its whole content) into a polygon soup, and the
+// vertices' texture coordinates and normals into `corners` (a value per
+// point); returns the line of each point and polygon in ASCII files (none in
+// binary ones).
 template <class P>
 Soup_lines read_ply(const std::string& filename, const std::string& text, std::vector<P>& points,
-                    std::vector<std::vector<std::size_t>>& polygons)
+                    std::vector<std::vector<std::size_t>>& polygons, Read_corner_data& corners)
 {
   using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
   const Ply_header header = read_ply_header(filename, text);
@@ -331,6 +375,7 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
       continue; // nothing to read, however many
     check_count_fits(filename, element.line, "'" + printable(element.name) + "' elements", element.count,
                      ply_min_bytes(element, in.is_ascii()), in.remaining());
+    const Ply_vertex_values vertex_values(element);
     std::vector<double> values(element.properties.size()), list;
     for (unsigned long long item = 0; item < element.count; ++item) {
       const std::size_t line = in.line();
@@ -338,6 +383,9 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
       if (is_vertex) {
         if (!std::isfinite(values[xyz[0]]) || !std::isfinite(values[xyz[1]]) || !std::isfinite(values[xyz[2]]))
           throw IO_error(filename, line, "vertex " + std::to_string(item) + " has a coordinate that is not a finite number");
+        if (!vertex_values.add(values, corners))
+          throw IO_error(filename, line, "vertex " + std::to_string(item) +
+                                           " has a texture coordinate or normal that is not a finite number");
         points.emplace_back(FT(values[xyz[0]]), FT(values[xyz[1]]), FT(values[xyz[2]]));
         if (line != 0)
           lines.point_lines.push_back(line);
@@ -361,6 +409,7 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
     throw IO_error(filename, in.line(),
                    std::to_string(extra) + " bytes of data after the last element: the header's counts do not "
                                            "cover the file");
+  corners.uv.per_vertex = corners.normal.per_vertex = true;
   return lines;
 }
 
