@@ -1,15 +1,28 @@
 // Corner channels (face-varying data): the API, the mesh operations that
-// keep them, and subdivision against OpenSubdiv 3.5's
+// keep them (copies, orientation, conversion to Surface_mesh and back,
+// triangulation and the Euler operations, merging) or refuse them
+// (decimation, remeshing, offsets), and subdivision against OpenSubdiv 3.5's
 // PrimvarRefinerReal<double>::InterpolateFaceVarying in each of its six
 // linear-interpolation modes, on its own shapes and on the orientation double
 // cover of a Möbius strip; the parallel path against the serial one, bit for bit.
 #include "opensubdiv_tags.h"
 #include "test_util.h"
 
+#include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh/Euler_operations.h>
+#include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
+#include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
+#include <CGAL_ext/Surface_mesh_conversion.h>
+#include <CGAL_ext/decimation.h>
+#include <CGAL_ext/isotropic_remeshing.h>
+#include <CGAL_ext/merge_borders.h>
+#include <CGAL_ext/offset_mesh.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 #include <CGAL_ext/subdivision.h>
+
+#include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 
@@ -140,12 +153,193 @@ TEST(CornerChannels, GarbageCollection)
     }
 }
 
+// Every corner of `m` holds the value (its vertex, something): the vertex
+// part tells that each corner kept a value of its own vertex. Corners
+// without a value are counted.
+std::size_t expect_vertex_values(const Mesh& m)
+{
+  const auto uv = m.corner_channel<UV>("c:uv");
+  EXPECT_TRUE(uv.has_value());
+  std::size_t without = 0;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      if (!uv->has_value(m.corner(d))) {
+        ++without;
+        continue;
+      }
+      EXPECT_EQ((*uv)[m.corner(d)][0], double(m.target(d).idx())) << "face " << f << " at " << m.target(d);
+    }
+  return without;
+}
+
+TEST(CornerChannels, SurfaceMeshConversionBothWays)
+{
+  using SM = CGAL::Surface_mesh<Point>;
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 10, 3);
+  fill_distinct(m);
+  // A channel of the kernel's 2D points, one of a type a Surface_mesh is not
+  // given, and a corner without a value.
+  auto st = m.add_corner_channel<test::Kd::Point_2>("c:st").first;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m))
+      st.set_index(m.corner(d), st.add_value(test::Kd::Point_2(m.target(d).idx(), -double(f.idx()))));
+  struct Tag { int x; };
+  m.add_corner_channel<Tag>("c:tag");
+  st.set_index(m.corner(m.halfedge(CGAL_ext::Face_index(4u))), st.no_value());
+  SM sm;
+  std::vector<std::pair<CGAL_ext::Vertex_index, SM::Vertex_index>> vertex_pairs;
+  const CGAL_ext::Conversion_result r =
+    CGAL_ext::to_surface_mesh(m, sm, CGAL_ext::parameters::vertex_to_vertex_output_iterator(std::back_inserter(vertex_pairs)));
+  ASSERT_GT(r.seam_edges, 0u); // cut, and faces reversed
+  EXPECT_EQ(r.corner_channels_not_carried, std::vector<std::string>{"c:tag"});
+  EXPECT_EQ(r.corners_without_value, 1u);
+  std::map<SM::Vertex_index, std::size_t> original;
+  for (const auto& [v, s] : vertex_pairs)
+    original[s] = v.idx();
+  const auto [uv_sm, found] = sm.property_map<SM::Halfedge_index, UV>("c:uv");
+  ASSERT_TRUE(found);
+  for (SM::Face_index f : sm.faces())
+    for (SM::Halfedge_index h : CGAL::halfedges_around_face(sm.halfedge(f), sm)) {
+      EXPECT_EQ(uv_sm[h][0], double(original.at(sm.target(h))));
+      EXPECT_EQ(uv_sm[h][1], double(std::size_t(f)));
+    }
+  Mesh back;
+  CGAL_ext::from_surface_mesh(sm, back);
+  expect_at_their_corners(back);
+  EXPECT_EQ(CGAL_ext::corner_channel_summaries(back)[0].seam_edges, CGAL_ext::corner_channel_summaries(m)[0].seam_edges);
+  const auto st_back = back.corner_channel<test::Kd::Point_2>("c:st");
+  ASSERT_TRUE(st_back.has_value());
+  for (CGAL_ext::Face_index f : back.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, back)) {
+      const bool missing = f.idx() == 4 && back.target(d) == m.target(m.halfedge(f));
+      EXPECT_EQ((*st_back)[back.corner(d)],
+                missing ? test::Kd::Point_2(CGAL::ORIGIN) : test::Kd::Point_2(back.target(d).idx(), -double(f.idx())));
+    }
+  EXPECT_FALSE(back.corner_channel<Tag>("c:tag").has_value());
+}
+
+// Texture coordinates continuous across an edge come back continuous: the
+// Surface_mesh holds a value per halfedge, and equal values at a vertex are
+// one value again.
+TEST(CornerChannels, SurfaceMeshConversionKeepsSeamsOnly)
+{
+  Mesh m;
+  CGAL_ext::IO::read_polygon_mesh(test::data("opensubdiv/catmark_chaikin1.obj"), m);
+  CGAL::Surface_mesh<Point> sm;
+  CGAL_ext::to_surface_mesh(m, sm);
+  Mesh back;
+  CGAL_ext::from_surface_mesh(sm, back);
+  const auto a = CGAL_ext::corner_channel_summaries(m), b = CGAL_ext::corner_channel_summaries(back);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_EQ(a[i].seam_edges, b[i].seam_edges) << a[i].name;
+}
+
+TEST(CornerChannels, TriangulationAndEulerOperationsKeepValuesAtTheirVertices)
+{
+  for (bool mobius : {false, true}) {
+    SCOPED_TRACE(mobius ? "Moebius strip" : "torus");
+    Mesh m;
+    if (mobius)
+      CGAL_ext::make_mobius_strip(m, 10, 3);
+    else
+      CGAL_ext::make_torus(m, 6, 4, 2.0, 0.5);
+    fill_distinct(m);
+    const std::size_t n_faces = m.number_of_faces();
+    EXPECT_EQ(CGAL_ext::triangulate_faces(m), n_faces);
+    EXPECT_EQ(expect_vertex_values(m), 0u);
+    // Flips: the diagonal's corners take values their faces had at the far corners.
+    std::size_t flips = 0;
+    for (CGAL_ext::Edge_index e : m.edges())
+      if (flips < 8 && CGAL_ext::Euler::can_flip_edge(Dart(Mesh::halfedge(e, 0), false), m)) {
+        CGAL_ext::Euler::flip_edge(Dart(Mesh::halfedge(e, 0), false), m);
+        ++flips;
+      }
+    EXPECT_EQ(flips, 8u);
+    EXPECT_EQ(expect_vertex_values(m), 0u);
+    // A centre vertex: its own corners have no value, the others keep theirs.
+    const Dart d = m.halfedge(CGAL_ext::Face_index(2u));
+    CGAL_ext::Euler::add_center_vertex(d, m);
+    EXPECT_EQ(expect_vertex_values(m), 3u);
+    // An edge split: the two faces' corners at the new vertex have none.
+    CGAL_ext::Edge_index inner;
+    for (CGAL_ext::Edge_index e : m.edges())
+      if (!inner.is_valid() && !m.is_border(e))
+        inner = e;
+    CGAL_ext::Euler::split_edge(Dart(Mesh::halfedge(inner, 0), false), m);
+    EXPECT_EQ(expect_vertex_values(m), 5u);
+    EXPECT_TRUE(m.is_valid());
+  }
+}
+
+TEST(CornerChannels, MergingKeepsEachCornersValue)
+{
+  // Two 2x2 grids side by side; the corners of the second hold x + 10.
+  auto grid = [](double x0) {
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t>> quads;
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i)
+        points.emplace_back(x0 + 0.5 * i, 0.5 * j, 0);
+    for (std::size_t j = 0; j < 2; ++j)
+      for (std::size_t i = 0; i < 2; ++i)
+        quads.push_back({3 * j + i, 3 * j + i + 1, 3 * j + i + 4, 3 * j + i + 3});
+    Mesh m;
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, quads, m);
+    auto uv = m.add_corner_channel<UV>("c:uv").first;
+    for (CGAL_ext::Vertex_index v : m.vertices()) // one value per vertex: no seam
+      uv.add_value({m.point(v).x() + (x0 > 0 ? 10 : 0), m.point(v).y()});
+    for (CGAL_ext::Face_index f : m.faces())
+      for (Dart d : CGAL_ext::halfedges_around_face(f, m))
+        uv.set_index(m.corner(d), m.target(d).idx());
+    return m;
+  };
+  Mesh a = grid(0), b = grid(1);
+  const CGAL_ext::Merge_result r = CGAL_ext::merge_borders(a, b);
+  EXPECT_EQ(r.merged_vertices, 3u);
+  const auto uv = *a.corner_channel<UV>("c:uv");
+  for (CGAL_ext::Face_index f : a.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, a)) {
+      const Point& p = a.point(a.target(d));
+      EXPECT_EQ(uv[a.corner(d)], (UV{p.x() + (f.idx() >= 4 ? 10 : 0), p.y()})) << "face " << f;
+    }
+  EXPECT_EQ(CGAL_ext::corner_channel_summaries(a)[0].seam_edges, 2u); // the glued edges
+}
+
+TEST(CornerChannels, DecimationRemeshingAndOffsetsRefuseThem)
+{
+  Mesh m;
+  CGAL_ext::make_torus(m, 8, 6, 2.0, 0.5);
+  fill_distinct(m);
+  const std::size_t faces = m.number_of_faces();
+  auto expect_refused = [&](auto&& operation, const char* name) {
+    try {
+      operation();
+      ADD_FAILURE() << name << " accepted the channel";
+    } catch (const CGAL_ext::Parameter_error& e) {
+      EXPECT_NE(std::string(e.what()).find("corner channel \"c:uv\""), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(m.number_of_faces(), faces);
+    expect_at_their_corners(m);
+  };
+  expect_refused([&] { CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.5)); }, "decimate");
+  expect_refused([&] { CGAL_ext::isotropic_remeshing(m, 0.3); }, "isotropic_remeshing");
+  Mesh out;
+  expect_refused([&] { CGAL_ext::offset_mesh(m, 0.1, out); }, "offset_mesh");
+  // Without the channel they run.
+  EXPECT_TRUE(m.remove_corner_channel("c:uv"));
+  CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.25));
+  EXPECT_LT(m.number_of_faces(), faces);
+}
+
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
 namespace Far = OpenSubdiv::Far;
 namespace Sdc = OpenSubdiv::Sdc;
 
-// An OpenSubdiv shape with its `vt` corner indices (a small parser: the
-// library's OBJ reader does not read them yet).
+// An OpenSubdiv shape with its `vt` corner indices, read by a small parser
+// of its own for OpenSubdiv's side (the library's reader makes our side).
 struct Shape : test::Osd_tags
 {
   std::vector<Point> points;
@@ -287,10 +481,20 @@ std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int
   return corners;
 }
 
+// The value of a corner: channels of std::array<double, 2> (built here) or
+// of the kernel's Point_2 (made by the reader).
+UV uv_at(const Mesh& m, Dart d)
+{
+  if (const auto uv = m.corner_channel<UV>("c:uv"))
+    return (*uv)[m.corner(d)];
+  const auto st = m.corner_channel<CGAL_ext::Corner_uv<Point>>("c:uv");
+  const auto& p = (*st)[m.corner(d)];
+  return {p.x(), p.y()};
+}
+
 std::vector<Corner> our_corners(const Mesh& m)
 {
   std::vector<Corner> corners;
-  const auto uv = *m.corner_channel<UV>("c:uv");
   for (CGAL_ext::Face_index f : m.faces()) {
     std::array<double, 3> c{0, 0, 0};
     const double n = double(CGAL_ext::halfedges_around_face(f, m).size());
@@ -301,7 +505,7 @@ std::vector<Corner> our_corners(const Mesh& m)
     }
     for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
       const Point& p = m.point(m.target(d));
-      corners.push_back({c, {p.x(), p.y(), p.z()}, uv[m.corner(d)]});
+      corners.push_back({c, {p.x(), p.y(), p.z()}, uv_at(m, d)});
     }
   }
   return corners;
@@ -360,14 +564,19 @@ void subdivide(Mesh& m, bool loop, int levels, Face_varying_interpolation mode, 
     S::catmull_clark<ConcurrencyTag>(m, np);
 }
 
-// Ours against OpenSubdiv, each mode, levels 1-3; returns the worst difference per mode.
-std::array<double, 6> compare_shape(const Shape& s, bool loop)
+// Ours against OpenSubdiv, each mode, levels 1-3; returns the worst
+// difference per mode. Our mesh, its sharpness and its channel come from
+// the library's reader, OpenSubdiv's from the tests' parse of the file.
+std::array<double, 6> compare_shape(const std::string& file, bool loop)
 {
+  const Shape s = read_shape(file);
+  Mesh base;
+  CGAL_ext::IO::read_polygon_mesh(file, base);
   std::array<double, 6> worst{};
   for (Face_varying_interpolation mode : all_modes)
     for (int levels = 1; levels <= 3; ++levels) {
       SCOPED_TRACE(std::string(mode_name(mode)) + ", levels " + std::to_string(levels));
-      Mesh m = build(s);
+      Mesh m = base;
       subdivide(m, loop, levels, mode, s);
       const double d = max_difference(
         our_corners(m), opensubdiv_corners(s, loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, levels, mode));
@@ -400,7 +609,7 @@ TEST(CornerChannelsOpenSubdiv, CatmullClarkShapes)
   for (const char* name : {"catmark_cube.obj", "catmark_cube_corner4.obj", "catmark_cube_creases1.obj",
                            "catmark_chaikin1.obj", "catmark_edgecorner.obj", "catmark_nonquads.obj"}) {
     SCOPED_TRACE(name);
-    report(name, compare_shape(read_shape(test::data(std::string("opensubdiv/") + name)), false));
+    report(name, compare_shape(test::data(std::string("opensubdiv/") + name), false));
   }
 #endif
 }
@@ -411,7 +620,7 @@ TEST(CornerChannelsOpenSubdiv, LoopShapes)
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
   for (const char* name : {"loop_tetrahedron.obj", "loop_icos_semisharp.obj", "loop_triangle_edgeonly.obj"}) {
     SCOPED_TRACE(name);
-    report(name, compare_shape(read_shape(test::data(std::string("opensubdiv/") + name)), true));
+    report(name, compare_shape(test::data(std::string("opensubdiv/") + name), true));
   }
 #endif
 }

@@ -698,6 +698,18 @@ public:
     hprops_.template for_each_array<internal::Base_corner_channel>(
       [&](internal::Base_corner_channel& c) { c.indices()[to.idx()] = c.indices()[from.idx()]; });
   }
+  /// As `copy_corner()`, and the corner in slot `from` is left without a
+  /// value: for edits that move a halfedge's end to a new vertex, where the
+  /// value is not known (`Euler::split_edge()` does).
+  void move_corner(Halfedge_index from, Halfedge_index to)
+  {
+    if (hprops_.arrays().empty())
+      return;
+    hprops_.template for_each_array<internal::Base_corner_channel>([&](internal::Base_corner_channel& c) {
+      c.indices()[to.idx()] = c.indices()[from.idx()];
+      c.indices()[from.idx()] = internal::Base_corner_channel::no_value;
+    });
+  }
   /// @}
 
   // ---------------------------------------------------------------- construction

@@ -66,6 +66,16 @@ namespace CGAL_ext {
 /// of types named at compile time); on a cut vertex every copy gets the
 /// value, on a cut edge both edges do.
 ///
+/// Corner channels (texture coordinates, corner normals) become halfedge
+/// maps of `sm` of the same name (`"c:uv"`, `"c:normal"`): each face halfedge
+/// holds the value of the corner at its target, also where a face was
+/// reversed or a vertex cut, for the value types above, 2 to 4 floats or
+/// doubles in an `std::array` and, with one point type, the kernel's `Point_2`
+/// and `Vector_2`. A channel of another type is not carried and is named in
+/// `Conversion_result::corner_channels_not_carried`; a corner without a value
+/// gets the type's default (the origin), counted in
+/// `Conversion_result::corners_without_value`.
+///
 /// \param mesh the mesh to convert
 /// \param sm the `Surface_mesh` it is appended to
 /// \param np optional named parameters:
@@ -112,6 +122,11 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
 /// its partner, twisted (a Möbius edge) or not. Gluing identifies the
 /// partners' end vertices, which must lie on each other; glued vertices take
 /// the point and vertex properties of the copy with the lowest index. Removed elements of `sm` are skipped; indices are then compacted.
+/// Halfedge maps whose name starts with `"c:"` become corner channels of
+/// that name (each face halfedge gives the value of its face's corner at its
+/// target; corners at one vertex with equal values share one value, so that
+/// the channel has seams where they differ), for the value types that
+/// `to_surface_mesh()` carries.
 ///
 /// \param sm the `Surface_mesh` to convert
 /// \param mesh the mesh it is appended to; unchanged if an exception is thrown

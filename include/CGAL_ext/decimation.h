@@ -12,6 +12,7 @@
 #include <CGAL_ext/Decimation/internal/Decimator.h>
 #include <CGAL_ext/Decimation/internal/Distance_relocation.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
@@ -92,7 +93,8 @@ namespace CGAL_ext {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if a parameter is out of range, no stop condition
-///   is given, an edge's sharpness is NaN or negative, `mesh` has removed
+///   is given, the mesh has a corner channel (a collapse has no rule for the
+///   corners it moves: remove the channels, or decimate a copy without them), an edge's sharpness is NaN or negative, `mesh` has removed
 ///   elements, a point has a coordinate
 ///   beyond +-1e60 (where quadrics in double overflow), or the mesh is less
 ///   than 1e-60 across (where its areas underflow).
@@ -102,6 +104,8 @@ template <class P, class NP = parameters::Default_named_parameters>
 Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh, "decimate");
+  CGAL_ext::internal::refuse_corner_channels(mesh, "decimate",
+                                             "a collapse moves the corners of one vertex's faces to another vertex");
   std::size_t triangles = 0;
   for (Face_index f : mesh.faces())
     triangles += mesh.degree(f) - 2;

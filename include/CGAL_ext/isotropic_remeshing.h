@@ -9,6 +9,7 @@
 #define CGAL_EXT_ISOTROPIC_REMESHING_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Remeshing/internal/Isotropic_remesher.h>
@@ -104,7 +105,8 @@ namespace CGAL_ext {
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if L is not positive and finite, the number of
 /// iterations is out of range, `maximum_memory` is not positive, `mesh` has
-/// removed elements, an edge's sharpness is NaN or negative (with
+/// removed elements or a corner channel (the remeshed faces have no rule for
+/// the corners: remove the channels, or remesh a copy without them), an edge's sharpness is NaN or negative (with
 /// `protect_sharp_edges(true)`), a point has a coordinate beyond +-1e60 (where
 /// squared lengths and normals in double overflow), the mesh is less than
 /// 1e-60 across (where they underflow), or L is under 1024 times the spacing
@@ -121,6 +123,8 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
 {
   const internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
+  internal::refuse_corner_channels(mesh, "isotropic_remeshing",
+                                   "splits, collapses, flips and relaxation move corners off the faces they belong to");
   const double largest_coordinate = internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
   internal::require_length_resolved(largest_coordinate, target_edge_length, "isotropic_remeshing");
   if (options.protect_sharp_edges)

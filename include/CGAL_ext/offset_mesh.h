@@ -9,6 +9,7 @@
 #define CGAL_EXT_OFFSET_MESH_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/internal/Coordinate_checks.h>
@@ -180,7 +181,8 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 ///   exact, e.g. with δ the area-weighted normals of `compute_vertex_normals()`).
 /// \throws Parameter_error if `distance` is not positive and finite (and,
 ///   without `vertex_displacement_map`, at most 1e60), the
-///   mesh has removed elements, a point is not finite, a displacement is zero
+///   mesh has removed elements or a corner channel (the offset has corners
+///   that the input has not: offset a copy without the channels), a point is not finite, a displacement is zero
 ///   or tangent to the surface, or (without `vertex_displacement_map`) a point
 ///   has a coordinate beyond +-1e60 or the mesh is less than 1e-60 across,
 ///   where unit normals in double overflow or underflow; `out` is then unchanged.
@@ -201,6 +203,9 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
     throw Parameter_error(what.str());
   }
   CGAL_ext::internal::require_no_garbage(mesh, "offset_mesh");
+  CGAL_ext::internal::refuse_corner_channels(mesh, "offset_mesh",
+                                             "the rims have no corners in the input, and a corner normal would "
+                                             "have to turn on the inner side");
   if constexpr (unit_normals)
     CGAL_ext::internal::require_coordinates_in_range(mesh, "offset_mesh");
   else

@@ -40,6 +40,16 @@
 /// - Elements are removed as `Mobius_mesh::remove_*()` does: marked, skipped
 ///   by the ranges, gone for good at `collect_garbage()`. New elements get
 ///   the default values of every property map (new vertices the origin).
+/// - Corner channels: a new corner at a vertex that its face already had a
+///   corner at takes the face's value there (`split_face()`,
+///   `add_center_vertex()`, the diagonal of `flip_edge()`); the new corners
+///   whose value is not known (at a new vertex, those of `split_edge()`,
+///   `split_vertex()`, `add_face_to_border()`, `fill_hole()`) have none. A corner that stays keeps its value: after
+///   `join_face()` each corner of the merged face has the value one of the
+///   two faces had there; after `join_vertex()` and `collapse_edge()` the
+///   faces that were around the removed vertex keep its values at the kept
+///   vertex (a seam there unless the values agree). Algorithms that cannot
+///   carry channels through such edits (decimation, remeshing) refuse them.
 
 namespace CGAL_ext {
 namespace Euler {
@@ -153,6 +163,10 @@ Dart split_edge(Dart d, Mobius_mesh<P>& mesh)
   else
     pl.set_next(o1, encoding::halfedge_of_dart(after.bits()));
   pl.set_vertex_halfedge(w, o_border ? o : h1);
+  // o now ends at w: the corner of its face at a is o1's, and the corners at
+  // w (h1's and o's) have no value.
+  if (!o_border)
+    mesh.move_corner(Halfedge_index(o), Halfedge_index(o1));
   // a's stored dart, if on the split edge, moves to the new edge on the same side.
   const std::uint32_t stored = encoding::halfedge_of_dart(pl.vertex_dart(a));
   if (stored == h)
@@ -315,6 +329,9 @@ Dart add_center_vertex(Dart d, Mobius_mesh<P>& mesh)
     mesh.set_next(back, sides[i]);
     for (const Dart& c : {sides[i], in[i], back})
       mesh.set_face(c.halfedge(), f);
+    // `back` ends at a corner of the face: it takes the face's value there
+    // (`in[i]`, at the new vertex, has none).
+    mesh.copy_corner(sides[(i + k - 1) % k].halfedge(), back.halfedge());
   }
   mesh.set_halfedge(mesh.face(d), d.halfedge());
   mesh.set_halfedge(center, in[0]);

@@ -34,7 +34,8 @@ namespace CGAL_ext {
 /// shorter diagonal is an edge of the mesh, or the diagonal another face
 /// takes), the next best diagonal or fan is taken. The new faces take the
 /// values of every face property map of the face they come from; vertices
-/// and edges keep theirs (new edges get the maps' defaults). Möbius edges and
+/// and edges keep theirs (new edges get the maps' defaults). Corner channels
+/// are kept: each triangle's corners hold the values the face had there. Möbius edges and
 /// the surface's topology are unchanged.
 /// \returns the number of faces added (a face of `n` sides adds `n - 3`).
 /// \throws Parameter_error if `mesh` has removed elements.

@@ -11,6 +11,7 @@
 
 #include <CGAL_ext/Conversion/Conversion_result.h>
 #include <CGAL_ext/Conversion/Seam_map.h>
+#include <CGAL_ext/Conversion/internal/Channel_transfer.h>
 #include <CGAL_ext/Conversion/internal/Property_transfer.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -288,6 +289,18 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, const Mobius_mesh<
   result.seam_edges = w.seam_edges;
   w.record_seam_and_reversals(reversed, result.reversed_faces);
   carry_to_surface_mesh(mesh, w, reversed, np);
+  if (!mesh.corner_channels().empty()) {
+    // Each face halfedge of sm ends at the corner of its face at the
+    // oriented target: the source of a reversed face's halfedge.
+    std::vector<std::pair<Halfedge_index, typename Cut_writer<O, Q>::SH>> corners;
+    corners.reserve(mesh.number_of_halfedges());
+    for (Halfedge_index h : mesh.halfedges())
+      if (!mesh.is_border(h))
+        corners.emplace_back(mesh.corner(Dart(h, reversed[mesh.face(h).idx()])), w.face_he[h.idx()]);
+    const Channel_transfer_report report = channels_to_surface_mesh(mesh, sm, corners);
+    result.corner_channels_not_carried = report.not_carried;
+    result.corners_without_value = report.corners_without_value;
+  }
   return result;
 }
 

@@ -36,6 +36,10 @@ bool is_surface_mesh_internal_property(const std::string& name)
          name == reversed_faces_map_name;
 }
 
+// The halfedge maps of a Surface_mesh that hold corner channels
+// (Channel_transfer.h), not copied as halfedge maps.
+inline bool is_corner_channel_name(const std::string& name) { return name.compare(0, 2, "c:") == 0; }
+
 // The value types whose property maps the conversions carry. Surface_mesh
 // makes a property array only through `add_property_map<I, T>()`, with `T`
 // named at compile time, so a list is needed here (copies between
@@ -126,7 +130,8 @@ void properties_from_surface_mesh(const CGAL::Surface_mesh<Q>& src, Mobius_mesh<
                                   const std::vector<std::pair<SI, I>>& pairs)
 {
   for (const std::string& name : src.template properties<SI>()) {
-    if (is_surface_mesh_internal_property<Q>(name))
+    if (is_surface_mesh_internal_property<Q>(name) ||
+        (std::is_same_v<SI, typename CGAL::Surface_mesh<Q>::Halfedge_index> && is_corner_channel_name(name)))
       continue;
     for_each_transferable_type<Q, P>([&](auto tag) {
       using T = typename decltype(tag)::type;

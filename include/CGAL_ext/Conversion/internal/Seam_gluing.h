@@ -10,6 +10,7 @@
 #define CGAL_EXT_CONVERSION_INTERNAL_SEAM_GLUING_H
 
 #include <CGAL_ext/Conversion/Seam_map.h>
+#include <CGAL_ext/Conversion/internal/Channel_transfer.h>
 #include <CGAL_ext/Conversion/internal/Property_transfer.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
@@ -255,6 +256,16 @@ struct Seam_gluing
       face_pairs[f] = {face_of[f], Face_index(f)};
     properties_from_surface_mesh(sm, part, rep_pairs);
     properties_from_surface_mesh(sm, part, halfedge_pairs);
+    if (want_halfedges) {
+      // The corners: the face halfedges, each ending at the corner of the
+      // part's face where it does (the part's faces are not reversed yet).
+      std::vector<std::pair<SH, Halfedge_index>> corners;
+      corners.reserve(halfedge_pairs.size());
+      for (const auto& [s, h] : halfedge_pairs)
+        if (!sm.is_border(s))
+          corners.emplace_back(s, h);
+      channels_from_surface_mesh(sm, part, corners);
+    }
     properties_from_surface_mesh(sm, part, edge_pairs);
     properties_from_surface_mesh(sm, part, face_pairs);
     return {std::move(halfedge_pairs), std::move(face_pairs)};

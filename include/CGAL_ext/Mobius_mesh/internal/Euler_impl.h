@@ -517,6 +517,11 @@ Dart flip_edge_unchecked(Dart d, Mobius_mesh<P>& mesh)
   pl.set_next(b0, b2);
   pl.set_next(b2, a1);
   pl.set_next(a1, b0);
+  // The diagonal's halfedges now end at the far corners c = target(a1) and
+  // d = target(b1): they take the values that fa had at c and fb at d (the
+  // other corners keep their slots and values).
+  mesh.copy_corner(Halfedge_index(a1), Halfedge_index(a0));
+  mesh.copy_corner(Halfedge_index(b1), Halfedge_index(b0));
   return Dart::from_bits(encoding::dart(a0, false));
 }
 
@@ -577,6 +582,10 @@ Dart split_face_unchecked(Dart h, Dart g, Mobius_mesh<P>& mesh)
     pl.set_face(c, fn);
   pl.set_face(gh, fn);
   pl.set_face_halfedge(f, hh);
+  // The new corners are at corners the face had: x ends at target(g) in f,
+  // y at target(h) in the new face; they take the face's values there.
+  mesh.copy_corner(Halfedge_index(gh), Halfedge_index(x));
+  mesh.copy_corner(Halfedge_index(hh), Halfedge_index(y));
   return Dart::from_bits(encoding::dart(x, false));
 }
 
