@@ -46,6 +46,9 @@ int convert(int argc, char** argv)
   Mesh mesh;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  // The round trip keeps the corner channels and their seams (as halfedge
+  // maps of the Surface_mesh): whether OUT holds them is known now.
+  CGAL_ext::IO::check_output_file(args.positional[1], mesh);
   CGAL::Surface_mesh<Kernel::Point_3> sm;
   CGAL_ext::to_surface_mesh(mesh, sm);
   if (args.has("--cut")) {

@@ -41,7 +41,7 @@ using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 const examples::Tool_usage usage{
   "decimate",
   "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders] [--no-relocation] "
-  "[--no-hausdorff]",
+  "[--no-hausdorff] [--drop-corner-data]",
   "Reads a polygon mesh (.obj, .off, .ply), orientable or not, triangulates it and collapses\n"
   "edges, cheapest first by Garland-Heckbert quadric error, until a stop condition holds (give\n"
   "one or more; the first reached stops):\n"
@@ -54,6 +54,8 @@ const examples::Tool_usage usage{
   "                     move to lower the largest distance to the input).\n"
   "  --no-hausdorff     leave out the Hausdorff distance (null in the JSON line): on large\n"
   "                     meshes its sampling can take longer than the decimation.\n"
+  "  --drop-corner-data  go on without the input's texture coordinates and normals, which\n"
+  "                     collapses do not carry (an input with them is refused otherwise).\n"
   "Edges with sharpness tags (OBJ 't crease') are kept. Writes OUT and prints its counts,\n"
   "topology, the time taken and the Hausdorff distance to the input as one line of JSON.\n"};
 
@@ -80,7 +82,7 @@ std::optional<double> hausdorff_distance(const Mesh& a, const Mesh& b)
 int decimate(int argc, char** argv)
 {
   const examples::Arguments args = examples::parse_arguments(
-    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"}, {"--protect-borders", "--no-relocation", "--no-hausdorff"});
+    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"}, {"--protect-borders", "--no-relocation", "--no-hausdorff", examples::drop_corner_data_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--faces") && !args.has("--ratio") && !args.has("--max-error"))
@@ -103,6 +105,8 @@ int decimate(int argc, char** argv)
   Mesh input;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], input);
+  const examples::Json_array dropped = examples::drop_corner_channels_if(
+    input, "decimation does not carry them", args.has(examples::drop_corner_data_flag));
   Mesh mesh = input;
   const auto start = std::chrono::steady_clock::now();
   CGAL_ext::decimate(mesh, CGAL_ext::parameters::number_of_faces(faces)
@@ -119,7 +123,10 @@ int decimate(int argc, char** argv)
     hausdorff = hausdorff_distance(mesh, input);
   }
 
-  examples::print_json_line(examples::mesh_summary(mesh).add("seconds", seconds).add("hausdorff", hausdorff));
+  examples::Json_object line = examples::mesh_summary(mesh).add("seconds", seconds).add("hausdorff", hausdorff);
+  if (args.has(examples::drop_corner_data_flag))
+    line.add("corner_channels_dropped", dropped);
+  examples::print_json_line(line);
   return 0;
 }
 

@@ -40,6 +40,13 @@ endforeach()
 add_test(NAME convert.cut.mobius_is_a_disc COMMAND convert ${_data}/mobius_20x4_quads.obj ${_out}/cut_disc.obj --cut)
 set_tests_properties(convert.cut.mobius_is_a_disc PROPERTIES PASS_REGULAR_EXPRESSION
   "\"faces\":80,\"border_loops\":1,\"mobius_edges\":0,\"orientable\":true,\"closed\":false,\"components\":1,\"euler_characteristic\":1,\"valid\":true}")
+# Texture coordinates and normals go through the Surface_mesh as halfedge
+# maps and come back with the same values and seams (the cube's uv net cuts
+# 7 of its 12 edges; each face has normals of its own), written to OBJ.
+add_test(NAME convert.corner_channels
+  COMMAND convert ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube.obj ${_out}/convert_cube.obj)
+set_tests_properties(convert.corner_channels PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0\\}\\]")
 add_test(NAME convert.fails.missing_file COMMAND convert ${_data}/no_such_file.obj ${_out}/x.obj)
 set_tests_properties(convert.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION "${_fails}")
 add_test(NAME convert.fails.usage COMMAND convert)

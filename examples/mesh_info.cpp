@@ -4,7 +4,9 @@
 // as one line of JSON (Möbius edges counted once oriented, as every tool does):
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"mobius_edges":M,
 //    "orientable":true|false,"closed":true|false,"components":C,
-//    "euler_characteristic":X,"valid":true|false}
+//    "euler_characteristic":X,"valid":true|false[,"corner_channels":[...]]}
+// with, for a file with texture coordinates or normals, each corner channel:
+//   {"name":"c:uv","values":N,"seam_edges":S,"corners_without_value":W}
 // On bad input or usage it prints one line "mesh_info: <what>" on stderr and
 // exits with status 2.
 
@@ -25,7 +27,10 @@ const examples::Tool_usage usage{
   "Reads a polygon mesh (.obj with OpenSubdiv's tags, .off, .ply) and prints its topology as one\n"
   "line of JSON: vertices, edges, faces, border_loops, mobius_edges, orientable, closed,\n"
   "components, euler_characteristic, valid. mobius_edges counts the Möbius edges left once a\n"
-  "copy is oriented with CGAL_ext::orient() (as few as it finds), as every tool counts them.\n"};
+  "copy is oriented with CGAL_ext::orient() (as few as it finds), as every tool counts them.\n"
+  "A file with texture coordinates or normals (OBJ vt/vn, PLY and OFF per vertex) adds\n"
+  "corner_channels: per channel (c:uv, c:normal) its name, values, seam_edges (edges along\n"
+  "which its values are cut) and corners_without_value.\n"};
 
 int mesh_info(int argc, char** argv)
 {

@@ -43,6 +43,12 @@ foreach(_file ${_mesh_info_good})
     "^{\"vertices\":${_v},\"edges\":${_e},\"faces\":${_f},\"border_loops\":${_b},\"mobius_edges\":${_mobius},\"orientable\":${_orientable},\"closed\":${_closed},\"components\":[1-9][0-9]*,\"euler_characteristic\":${_chi},\"valid\":true}\n$")
 endforeach()
 
+# Texture coordinates and normals: the cube's uv net cuts 7 of its 12 edges
+# (a net of a cube keeps 5 folds); each face has normals of its own.
+add_test(NAME mesh_info.corner_channels COMMAND mesh_info ${_mesh_info_data}/opensubdiv/catmark_cube.obj)
+set_tests_properties(mesh_info.corner_channels PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"valid\":true,\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0\\}\\]\\}\n$")
+
 set(_mesh_info_check ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
 add_test(NAME mesh_info.fails.no_argument
   COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:mesh_info> -DEXPECT=usage -P ${_mesh_info_check})

@@ -5,14 +5,74 @@
 #include "arguments.h"
 #include "json_line.h"
 
+#include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 
 #include <cstddef>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace examples {
+
+// The corner channels of a mesh (texture coordinates "c:uv", normals
+// "c:normal"): per channel its name, values, seam edges and the corners
+// without a value.
+template <class P>
+Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
+{
+  Json_array channels;
+  for (const CGAL_ext::Corner_channel_summary& s : CGAL_ext::corner_channel_summaries(mesh))
+    channels.add(Json_object()
+                   .add("name", s.name)
+                   .add("values", s.values)
+                   .add("seam_edges", s.seam_edges)
+                   .add("corners_without_value", s.corners_without_value));
+  return channels;
+}
+
+// --drop-corner-data: a tool whose operation or output format cannot carry
+// the input's corner channels refuses the input, before the work, unless
+// asked to go on without them; what is dropped is named in the JSON line.
+inline const char* const drop_corner_data_flag = "--drop-corner-data";
+
+// Why the format of `out` (a path checked already) cannot hold the corner
+// channels of `mesh` (CGAL_ext::IO::check_output_file()); empty if it can.
+template <class P>
+std::string why_output_cannot_hold_corner_data(const std::string& out, const CGAL_ext::Mobius_mesh<P>& mesh)
+{
+  try {
+    CGAL_ext::IO::check_output_file(out, mesh);
+    return std::string();
+  } catch (const CGAL_ext::IO_error& e) {
+    return e.what();
+  }
+}
+
+// Drops the corner channels of `mesh` if `why` says they cannot be carried
+// (empty: they can) and `drop` allows it, and returns their names; refuses
+// them (Parameter_error) if `drop` does not.
+template <class P>
+Json_array drop_corner_channels_if(CGAL_ext::Mobius_mesh<P>& mesh, const std::string& why, bool drop)
+{
+  Json_array dropped;
+  const std::vector<std::string> names = mesh.corner_channels();
+  if (why.empty() || names.empty())
+    return dropped;
+  std::string list;
+  for (const std::string& name : names)
+    list += (list.empty() ? "" : ", ") + name;
+  if (!drop)
+    throw CGAL_ext::Parameter_error("the input's corner channels (" + list + ") cannot be carried: " + why + "; " +
+                                    drop_corner_data_flag + " goes on without them");
+  for (const std::string& name : names) {
+    mesh.remove_corner_channel(name);
+    dropped.add(name);
+  }
+  return dropped;
+}
 
 // "mobius_edges" counts the Möbius edges left once a copy of the mesh is
 // oriented with CGAL_ext::orient() (as few as it finds). The count of the mesh
@@ -34,6 +94,9 @@ Json_object mesh_summary(const CGAL_ext::Mobius_mesh<P>& mesh)
     .add("components", CGAL_ext::connected_components(mesh).count)
     .add("euler_characteristic", CGAL_ext::euler_characteristic(mesh))
     .add("valid", mesh.is_valid());
+  // Only where there are some: the line of a mesh without them stays as it was.
+  if (!mesh.corner_channels().empty())
+    summary.add("corner_channels", corner_channels_json(mesh));
   return summary;
 }
 

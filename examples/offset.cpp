@@ -1,4 +1,4 @@
-// offset IN OUT --distance D [--solid] [--weighting uniform|area|angle]
+// offset IN OUT --distance D [--solid] [--weighting uniform|area|angle] [--drop-corner-data]
 //
 // Offsets a polygon mesh (.obj, .off, .ply) by D to both sides along its
 // vertex normals and writes the result. A one-sided surface gives one
@@ -12,6 +12,7 @@
 
 #include "arguments.h"
 #include "json_line.h"
+#include "mesh_summary.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
@@ -25,13 +26,15 @@
 namespace {
 
 const examples::Tool_usage usage{
-  "offset", "offset IN OUT --distance D [--solid] [--weighting uniform|area|angle]",
+  "offset", "offset IN OUT --distance D [--solid] [--weighting uniform|area|angle] [--drop-corner-data]",
   "Reads a polygon mesh (.obj, .off, .ply) and moves every vertex along its vertex normal by +D\n"
   "and by -D. On a one-sided surface the two offsets are one surface: the orientation double\n"
   "cover, displaced, closed along the border by a rim (a Möbius strip gives one closed surface of\n"
   "genus 1). On an orientable surface: the shell on the side its normals point to, or with\n"
   "  --solid      both shells, joined along the border by a rim.\n"
   "  --weighting  how face normals make a vertex normal: area (default), uniform or angle.\n"
+  "  --drop-corner-data  go on without the input's texture coordinates and normals, which the\n"
+  "               offset does not carry (an input with them is refused otherwise).\n"
   "Writes OUT and prints its counts and the time taken as one line of JSON.\n"};
 
 const examples::Choices<CGAL_ext::Vertex_normal_weighting> weightings = {
@@ -43,7 +46,8 @@ int offset(int argc, char** argv)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
-  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--distance", "--weighting"}, {"--solid"});
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--distance", "--weighting"},
+                                                             {"--solid", examples::drop_corner_data_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--distance"))
@@ -56,6 +60,8 @@ int offset(int argc, char** argv)
   Mesh mesh, out;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  const examples::Json_array dropped = examples::drop_corner_channels_if(
+    mesh, "the offset does not carry them", args.has(examples::drop_corner_data_flag));
   const auto start = std::chrono::steady_clock::now();
   const CGAL_ext::Offset_result r = CGAL_ext::offset_mesh(
     mesh, distance, out, CGAL_ext::parameters::solid(args.has("--solid")).vertex_normal_weighting(weighting));
@@ -71,6 +77,8 @@ int offset(int argc, char** argv)
     .add("components", r.components)
     .add("euler_characteristic", r.euler_characteristic)
     .add("seconds", seconds);
+  if (args.has(examples::drop_corner_data_flag))
+    line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);
   return 0;
 }

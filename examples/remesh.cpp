@@ -12,6 +12,7 @@
 
 #include "arguments.h"
 #include "json_line.h"
+#include "mesh_summary.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
@@ -28,7 +29,7 @@ namespace {
 const examples::Tool_usage usage{
   "remesh",
   "remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp] [--relax-constraints] "
-  "[--max-memory BYTES]",
+  "[--max-memory BYTES] [--drop-corner-data]",
   "Reads a polygon mesh (.obj, .off, .ply), splits its faces into triangles and remeshes it so\n"
   "that its edges come close to L (Botsch and Kobbelt's loop of splits, collapses, flips,\n"
   "tangential relaxation and projection onto the input), on any surface, one-sided ones included.\n"
@@ -39,6 +40,8 @@ const examples::Tool_usage usage{
   "                       to even out their edges; corners stay\n"
   "  --max-memory BYTES   refuse before starting if the remeshing would need more (estimated\n"
   "                       from the input and L; default: the memory available)\n"
+  "  --drop-corner-data   go on without the input's texture coordinates and normals, which\n"
+  "                       remeshing does not carry (an input with them is refused otherwise)\n"
   "Writes OUT and prints its counts, topology, the share of edges between 4/5 L and 4/3 L and\n"
   "the time taken as one line of JSON.\n"};
 
@@ -59,7 +62,8 @@ int remesh(int argc, char** argv)
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   const examples::Arguments args =
     examples::parse_arguments(argc, argv, {"--edge-length", "--iterations", "--max-memory"},
-                              {"--protect-borders", "--protect-sharp", "--relax-constraints"});
+                              {"--protect-borders", "--protect-sharp", "--relax-constraints",
+                               examples::drop_corner_data_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--edge-length"))
@@ -76,6 +80,8 @@ int remesh(int argc, char** argv)
   Mesh mesh;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  const examples::Json_array dropped = examples::drop_corner_channels_if(
+    mesh, "remeshing does not carry them", args.has(examples::drop_corner_data_flag));
   const auto start = std::chrono::steady_clock::now();
   const auto np = CGAL_ext::parameters::number_of_iterations(unsigned(iterations))
                     .protect_borders(args.has("--protect-borders"))
@@ -99,6 +105,8 @@ int remesh(int argc, char** argv)
     .add("valid", mesh.is_valid())
     .add("in_band", share_in_band(mesh, L))
     .add("seconds", seconds);
+  if (args.has(examples::drop_corner_data_flag))
+    line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);
   return 0;
 }

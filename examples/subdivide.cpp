@@ -1,7 +1,7 @@
 // subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N]
 //   [--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner]
 //   [--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck]
-//   [--max-memory BYTES]
+//   [--max-memory BYTES] [--drop-corner-data]
 //
 // Reads a mesh (OBJ with OpenSubdiv's tags, OFF, PLY), subdivides it and
 // writes the result (format by extension); see the usage text below. Bad
@@ -32,7 +32,7 @@ const examples::Tool_usage usage{
   "subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N] "
   "[--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner] "
   "[--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck] "
-  "[--max-memory BYTES]",
+  "[--max-memory BYTES] [--drop-corner-data]",
   "Reads a mesh (.obj with OpenSubdiv's tags, .off, .ply), subdivides it and writes the result to\n"
   "OUT (format by extension; an OBJ keeps the tags).\n"
   "  --scheme          catmull-clark (the default), loop, linear, doo-sabin or sqrt3\n"
@@ -46,6 +46,10 @@ const examples::Tool_usage usage{
   "  --kernel          double (the default), epick or epeck\n"
   "  --max-memory      refuse before starting if the subdivision would need more bytes (the\n"
   "                    library's estimate of its peak; default: the memory available)\n"
+  "  --drop-corner-data  go on without the input's texture coordinates and normals where the\n"
+  "                    scheme (doo-sabin, sqrt3) or OUT's format cannot carry them (refused otherwise)\n"
+  "Texture coordinates and normals (OBJ vt/vn) are subdivided with OpenSubdiv's face-varying rules\n"
+  "and written to OUT: OBJ holds them per corner, PLY per vertex where they have no seam.\n"
   "The OBJ tags give the defaults of --boundary (else edge-only), --crease-method (else uniform)\n"
   "and --triangles (else catmark); flags override them. The output carries the tags its input\n"
   "had or its flags set, and no others. Prints one JSON line with the result's counts and the\n"
@@ -83,6 +87,7 @@ struct Settings
   std::optional<CGAL_ext::Crease_method> crease_method;
   std::optional<CGAL_ext::Triangle_subdivision> triangles;
   double max_memory = S::Refinement_options().maximum_memory; // the library's default
+  bool drop_corner_data = false;
 };
 
 Settings parse(int argc, char** argv)
@@ -90,7 +95,8 @@ Settings parse(int argc, char** argv)
   const examples::Arguments args = examples::parse_arguments(
     argc, argv,
     {"--scheme", "--levels", "--vertex-rule", "--boundary", "--crease-method", "--triangles", "--kernel",
-     "--max-memory"});
+     "--max-memory"},
+    {examples::drop_corner_data_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   Settings s;
@@ -104,6 +110,7 @@ Settings parse(int argc, char** argv)
   s.boundary = examples::choice_option(args, "--boundary", boundaries);
   s.crease_method = examples::choice_option(args, "--crease-method", crease_methods);
   s.triangles = examples::choice_option(args, "--triangles", triangle_rules);
+  s.drop_corner_data = args.has(examples::drop_corner_data_flag);
   if (args.has("--max-memory")) {
     s.max_memory = examples::real_argument("--max-memory", args.value("--max-memory", ""));
     if (!(s.max_memory > 0))
@@ -161,6 +168,13 @@ void run(const Settings& s)
   CGAL_ext::Mobius_mesh<typename K::Point_3> mesh;
   CGAL_ext::IO::check_output_file(s.out); // before the work, not after it
   CGAL_ext::Sharp_feature_options tags = CGAL_ext::IO::read_polygon_mesh(s.in, mesh);
+  // Corner channels go through Catmull-Clark, Loop and (bi)linear with their
+  // seams where they are: whether OUT's format holds them is known now. The
+  // library refuses them for Doo-Sabin and sqrt3 before any work.
+  const bool carried = s.scheme != Scheme::doo_sabin && s.scheme != Scheme::sqrt3;
+  const examples::Json_array dropped = examples::drop_corner_channels_if(
+    mesh, carried ? examples::why_output_cannot_hold_corner_data(s.out, mesh) : "doo-sabin and sqrt3 do not carry them",
+    s.drop_corner_data);
   const auto boundary =
     s.boundary ? *s.boundary : tags.boundary_interpolation.value_or(CGAL_ext::Boundary_interpolation::edge_only);
   const auto crease = s.crease_method ? *s.crease_method : tags.crease_method.value_or(CGAL_ext::Crease_method::uniform);
@@ -210,7 +224,10 @@ void run(const Settings& s)
     .add("edges", mesh.number_of_edges())
     .add("faces", mesh.number_of_faces())
     .add("hole_faces_removed", hole_faces)
-    .add("seconds", seconds);
+    .add("seconds", seconds)
+    .add("corner_channels", examples::corner_channels_json(mesh));
+  if (s.drop_corner_data)
+    line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);
 }
 

@@ -19,9 +19,9 @@ if(CGAL_EXT_BUILD_TESTS)
     PASS_REGULAR_EXPRESSION "\"faces\":2560")
   add_test(NAME example.subdivide.cube_doo_sabin
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube_ds.ply
-                   --scheme doo-sabin --kernel epick)
+                   --scheme doo-sabin --kernel epick --drop-corner-data)
   set_tests_properties(example.subdivide.cube_doo_sabin PROPERTIES
-    PASS_REGULAR_EXPRESSION "\"vertices\":24,\"edges\":48,\"faces\":26,\"hole_faces_removed\":0,\"seconds\":")
+    PASS_REGULAR_EXPRESSION "\"vertices\":24,\"edges\":48,\"faces\":26,\"hole_faces_removed\":0,\"seconds\":.*\"corner_channels_dropped\":\\[\"c:uv\",\"c:normal\"\\]")
   add_test(NAME example.subdivide.mobius_sqrt3
            COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius_s3.obj
                    --scheme sqrt3)
@@ -45,7 +45,8 @@ if(CGAL_EXT_BUILD_TESTS)
   set_tests_properties(example.subdivide.boundary_none_drops_holes PROPERTIES
     PASS_REGULAR_EXPRESSION "\"faces\":640,\"hole_faces_removed\":640,")
   add_test(NAME example.subdivide.sqrt3_on_quads
-           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme sqrt3)
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --scheme sqrt3
+                   --drop-corner-data)
   add_test(NAME example.subdivide.bad_option
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --levels x)
   add_test(NAME example.subdivide.loop_on_quads
@@ -92,8 +93,38 @@ if(CGAL_EXT_BUILD_TESTS)
                    -DNAME=subdivide "-DEXPECT=subdividing 2 levels would need about" -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
   add_test(NAME example.subdivide.doo_sabin_over_a_given_limit
            COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
-                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--scheme;doo-sabin;--levels;10;--max-memory;2e8"
+                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--scheme;doo-sabin;--levels;10;--max-memory;2e8;--drop-corner-data"
                    -DNAME=subdivide "-DEXPECT=subdividing 10 levels would need about [0-9.]+ GB of memory, more than the limit of 0.2 GB"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+  # Texture coordinates and normals (OBJ vt/vn) go through: the cube's uv net
+  # is a disc of 14 values, 6 quads and 19 edges (its 7 seam edges cut open,
+  # the other 5 folds); two quad splits (V' = V + E + F, E' = 2E + 4F) give
+  # 125 values and 4 * 7 = 28 seam edges. Its normals are 6 quads apart: 150
+  # values, all 48 edges seams. mesh_info reads them back from the file.
+  set(_cube_channels "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":125,\"seam_edges\":28,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":150,\"seam_edges\":48,\"corners_without_value\":0\\}\\]")
+  add_test(NAME example.subdivide.corner_data_obj_to_obj
+           COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:subdivide> -DMESH_INFO=$<TARGET_FILE:mesh_info>
+                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/cube_uv.obj;--levels;2"
+                   -DOUT=${CMAKE_CURRENT_BINARY_DIR}/cube_uv.obj "-DEXPECT=${_cube_channels}"
+                   "-DEXPECT_INFO=\"faces\":96,.*${_cube_channels}" -DVT=125
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/corner_data_tool.cmake)
+  # PLY holds a value per vertex: the cube's seams are refused before the
+  # work, or left out with --drop-corner-data, which the line reports.
+  add_test(NAME example.subdivide.corner_data_seams_not_in_ply
+           COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
+                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/cube_uv.ply;--levels;2"
+                   -DNAME=subdivide
+                   "-DEXPECT=corner channels \\(c:uv, c:normal\\) cannot be carried: .*has a seam at vertex.*--drop-corner-data goes on without them"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
+  add_test(NAME example.subdivide.corner_data_dropped_for_ply
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube_dropped.ply
+                   --levels 2 --drop-corner-data)
+  set_tests_properties(example.subdivide.corner_data_dropped_for_ply PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"faces\":96,.*\"corner_channels\":\\[\\],\"corner_channels_dropped\":\\[\"c:uv\",\"c:normal\"\\]")
+  add_test(NAME example.subdivide.corner_data_not_through_doo_sabin
+           COMMAND ${CMAKE_COMMAND} -DMESH_INFO=$<TARGET_FILE:subdivide>
+                   "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--scheme;doo-sabin"
+                   -DNAME=subdivide "-DEXPECT=doo-sabin and sqrt3 do not carry them"
                    -P ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
   # A bad value of an enumerated option names the accepted ones.
   cgal_ext_tool_fails(example.subdivide.bad_scheme subdivide

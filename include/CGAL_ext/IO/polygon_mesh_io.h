@@ -131,6 +131,33 @@ std::vector<Written_point> written_points(const Mobius_mesh<P>& mesh, const std:
   return points;
 }
 
+// The corner channels as the file will hold them, checked before the file
+// is created: OBJ holds "c:uv" and "c:normal" per face corner; PLY holds
+// them per vertex and OFF the normals per vertex, where a channel has no
+// seam. Anything else is refused (IO_error), so that nothing is dropped.
+template <class P>
+Written_corner_data checked_corner_data(const Mobius_mesh<P>& mesh, const std::string& filename, Mesh_format format,
+                                        Vertex_values& vertex_values)
+{
+  const char* format_name = format == Mesh_format::obj ? "OBJ" : format == Mesh_format::off ? "OFF" : "PLY";
+  refuse_unwritten_channels(mesh, filename, format_name);
+  Written_corner_data corners;
+  corners.uv = written_channel<2>(mesh, corner_uv_name, filename);
+  corners.normal = written_channel<3>(mesh, corner_normal_name, filename);
+  if (format == Mesh_format::obj || corners.empty())
+    return corners;
+  // CGAL's OFF reader (5.5) reads past the line of a vertex with texture
+  // coordinates unless the header also announces colours: OFF files get no
+  // texture coordinates, so that every reader takes them.
+  if (format == Mesh_format::off && corners.uv.is_present())
+    throw IO_error(filename, 0,
+                   "the mesh has texture coordinates (\"" + std::string(corner_uv_name) +
+                     "\"), which OFF files are not written with (readers differ on STOFF): write OBJ (a value per "
+                     "face corner) or PLY (a value per vertex); nothing was written");
+  vertex_values = internal::vertex_values(corners, mesh, filename, format_name);
+  return corners;
+}
+
 // OpenSubdiv's tags (vertex indices in tags count from 0): sharpness where it
 // is not 0, and the options that are set.
 template <class P, class NP>
@@ -280,6 +307,25 @@ inline void check_output_file(const std::string& filename)
 }
 
 /// \ingroup PkgMobiusMeshIO
+/// \brief checks, as `check_output_file(filename)` does, and also that the
+/// file's format holds the corner channels of `mesh` as
+/// `write_polygon_mesh()` requires: OBJ holds `"c:uv"` and `"c:normal"` per
+/// face corner; PLY holds them, OFF the normals, per vertex, where the
+/// channel has no seam; no format holds other channels.
+///
+/// Catmull–Clark, Loop, bilinear and linear subdivision keep a channel's
+/// seams where they are and make none, so a program that subdivides may
+/// check its input's channels before the work.
+/// \throws IO_error naming `filename` and what is wrong.
+template <class P>
+void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
+{
+  check_output_file(filename);
+  internal::Vertex_values values;
+  internal::checked_corner_data(mesh, filename, internal::format_of(filename), values);
+}
+
+/// \ingroup PkgMobiusMeshIO
 ///
 /// Writes `mesh` to an OBJ, OFF or PLY file, chosen by the file name's
 /// extension (in any letter case), through CGAL's polygon soup writers.
@@ -347,25 +393,8 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
     for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
       polygons.back().push_back(mesh.target(d).idx());
   }
-  const char* format_name = format == internal::Mesh_format::obj   ? "OBJ"
-                            : format == internal::Mesh_format::off ? "OFF"
-                                                                    : "PLY";
-  internal::refuse_unwritten_channels(mesh, filename, format_name);
-  internal::Written_corner_data corners;
-  corners.uv = internal::written_channel<2>(mesh, corner_uv_name, filename);
-  corners.normal = internal::written_channel<3>(mesh, corner_normal_name, filename);
   internal::Vertex_values vertex_values;
-  if (format != internal::Mesh_format::obj && !corners.empty()) {
-    // CGAL's OFF reader (5.5) reads past the line of a vertex with texture
-    // coordinates unless the header also announces colours: OFF files get
-    // no texture coordinates, so that every reader takes them.
-    if (format == internal::Mesh_format::off && corners.uv.is_present())
-      throw IO_error(filename, 0,
-                     "the mesh has texture coordinates (\"" + std::string(corner_uv_name) +
-                       "\"), which OFF files are not written with (readers differ on STOFF): write OBJ (a value "
-                       "per face corner) or PLY (a value per vertex); nothing was written");
-    vertex_values = internal::vertex_values(corners, mesh, filename, format_name);
-  }
+  const internal::Written_corner_data corners = internal::checked_corner_data(mesh, filename, format, vertex_values);
 
   const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
   const bool binary =
