@@ -269,6 +269,20 @@ TEST(CornerChannels, TriangulationAndEulerOperationsKeepValuesAtTheirVertices)
         inner = e;
     CGAL_ext::Euler::split_edge(Dart(Mesh::halfedge(inner, 0), false), m);
     EXPECT_EQ(expect_vertex_values(m), 5u);
+    // A hole made and filled again: the border held no corner, the new face has no values.
+    CGAL_ext::Face_index last; // the last face off the border, so that the hole is its own
+    for (CGAL_ext::Face_index f : m.faces()) {
+      bool inner = true;
+      for (Dart c : CGAL_ext::halfedges_around_face(f, m))
+        inner = inner && !m.is_border(m.opposite(c));
+      if (inner)
+        last = f;
+    }
+    std::size_t valued = 0;
+    for (Dart c : CGAL_ext::halfedges_around_face(last, m))
+      valued += m.corner_channel<UV>("c:uv")->has_value(m.corner(c)) ? 1 : 0;
+    CGAL_ext::Euler::fill_hole(CGAL_ext::Euler::make_hole(m.halfedge(last), m), m);
+    EXPECT_EQ(expect_vertex_values(m), 5u + valued);
     EXPECT_TRUE(m.is_valid());
   }
 }

@@ -698,17 +698,16 @@ public:
     hprops_.template for_each_array<internal::Base_corner_channel>(
       [&](internal::Base_corner_channel& c) { c.indices()[to.idx()] = c.indices()[from.idx()]; });
   }
-  /// As `copy_corner()`, and the corner in slot `from` is left without a
-  /// value: for edits that move a halfedge's end to a new vertex, where the
-  /// value is not known (`Euler::split_edge()` does).
-  void move_corner(Halfedge_index from, Halfedge_index to)
+  /// Leaves the corner in slot `h` without a value in every channel: for
+  /// edits after which the value there is not known (`Euler::split_edge()`
+  /// moves a halfedge's end to a new vertex), or that leave no corner there
+  /// (a face removed: its halfedges become border halfedges).
+  void clear_corner(Halfedge_index h)
   {
     if (hprops_.arrays().empty())
       return;
-    hprops_.template for_each_array<internal::Base_corner_channel>([&](internal::Base_corner_channel& c) {
-      c.indices()[to.idx()] = c.indices()[from.idx()];
-      c.indices()[from.idx()] = internal::Base_corner_channel::no_value;
-    });
+    hprops_.template for_each_array<internal::Base_corner_channel>(
+      [&](internal::Base_corner_channel& c) { c.indices()[h.idx()] = internal::Base_corner_channel::no_value; });
   }
   /// @}
 

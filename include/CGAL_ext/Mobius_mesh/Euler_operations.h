@@ -165,8 +165,10 @@ Dart split_edge(Dart d, Mobius_mesh<P>& mesh)
   pl.set_vertex_halfedge(w, o_border ? o : h1);
   // o now ends at w: the corner of its face at a is o1's, and the corners at
   // w (h1's and o's) have no value.
-  if (!o_border)
-    mesh.move_corner(Halfedge_index(o), Halfedge_index(o1));
+  if (!o_border) {
+    mesh.copy_corner(Halfedge_index(o), Halfedge_index(o1));
+    mesh.clear_corner(Halfedge_index(o));
+  }
   // a's stored dart, if on the split edge, moves to the new edge on the same side.
   const std::uint32_t stored = encoding::halfedge_of_dart(pl.vertex_dart(a));
   if (stored == h)

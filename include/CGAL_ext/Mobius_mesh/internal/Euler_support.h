@@ -236,6 +236,7 @@ void detach_face(Face_index f, Mobius_mesh<P>& m, bool remove_isolated)
   for (const Side& s : sides) {
     const Halfedge_index h = s.d.halfedge();
     m.set_face(h, Face_index());
+    m.clear_corner(h); // a border halfedge holds no corner
     if (s.other_border) {
       m.remove_edge(m.edge(h));
     } else if (m.is_mobius(m.edge(h))) {
