@@ -234,7 +234,18 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
 /// comment anywhere on a line. Counts in a header are believed only as far as
 /// the rest of the file can hold them. The polygons then go through
 /// `polygon_soup_to_mobius_mesh()`, so non-orientable surfaces are read with
-/// their Möbius connections; faces keep the file's orientation.
+/// their Möbius connections; orientable components are oriented (unless
+/// `keep_orientation(true)`), one-sided ones keep the file's orientations.
+///
+/// Texture coordinates and normals become the corner channels
+/// `corner_uv_name` ("c:uv", values `Corner_uv<P>`, the kernel's `Point_2`)
+/// and `corner_normal_name` ("c:normal", `Corner_normal<P>`, its `Vector_3`):
+/// OBJ's `vt u [v [w]]` and `vn` with each face corner's indices, PLY's
+/// per-vertex `s t` (or `u v`, `texture_u texture_v`) and `nx ny nz`, OFF's
+/// `ST` and `N` (a corner takes its vertex's value). Each corner keeps the
+/// value the file gives it at its vertex, also where faces are reversed or
+/// points merged. A face without `vt` (or `vn`) has corners without a value.
+/// A channel is made only if the file has such values.
 ///
 /// From OBJ files, OpenSubdiv's tag lines are read as well (vertex indices in
 /// tags count from 0):
@@ -266,7 +277,9 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
 /// \returns the mesh-level options the file's tags set (unset where it has none).
 /// \throws IO_error, naming the file and (where there is one) the line, if the
 ///   file cannot be read, has an unknown extension, has a malformed line or tag
-///   (a coordinate that is not a finite number, a count its file cannot hold),
+///   (a coordinate, texture coordinate or normal that is not a finite number,
+///   a `vt` with a w other than 0, a `vt` or `vn` index out of range, a count
+///   its file cannot hold),
 ///   a tag names a vertex that does not exist or a crease names two vertices
 ///   that share no edge, or if its polygons do not form a 2-manifold (then
 ///   `IO_error::soup_kind()` tells which `Soup_error` it was, and the line is
@@ -328,13 +341,25 @@ void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
 /// \ingroup PkgMobiusMeshIO
 ///
 /// Writes `mesh` to an OBJ, OFF or PLY file, chosen by the file name's
-/// extension (in any letter case), through CGAL's polygon soup writers.
+/// extension (in any letter case), through CGAL's polygon soup writers (the
+/// library's own where corner channels are written).
 /// Each face is written in its own orientation, so reading the file back
 /// gives the same Möbius edges. Coordinates are written as doubles with 17
 /// significant digits, which read back exactly; exact kernels write
 /// `CGAL::to_double()` of each coordinate (which may be one unit in the last
 /// place away from the nearest double). PLY is written in binary unless
 /// `use_binary_mode(false)`.
+///
+/// The corner channels "c:uv" and "c:normal" (see `read_polygon_mesh()`; their
+/// values may also be `std::array`s of 2 or 3 floats or doubles, or the
+/// kernel's `Vector_2` / `Point_3`) are written with 17 significant digits:
+/// to OBJ per face corner (`vt`, `vn`, and `v/vt/vn` corners; each value a
+/// corner uses once, unused ones left out), to PLY per vertex (`nx ny nz`,
+/// `s t`) and to OFF as normals per vertex (`NOFF`), where the channel has no
+/// seam. Whatever the format cannot hold is refused before the file is
+/// created rather than dropped: a seam or a corner without a value beside
+/// valued ones in PLY or OFF, texture coordinates in OFF, any other channel,
+/// values of another type (see `check_output_file(filename, mesh)`).
 ///
 /// To OBJ files, OpenSubdiv's tags are written too: `t crease 2/1/0 v0 v1 s`
 /// for each edge and `t corner 1/1/0 v s` for each vertex whose sharpness is
@@ -369,8 +394,9 @@ void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
 /// \cgalNamedParamsEnd
 /// \param options mesh-level subdivision options, written as OBJ tags
 ///
-/// \throws IO_error if the extension is unknown, a coordinate is not a finite
-///   double (NaN, infinite, or beyond the doubles' range in an exact kernel),
+/// \throws IO_error if the extension is unknown, a coordinate (or a corner
+///   value) is not a finite double (NaN, infinite, or beyond the doubles'
+///   range in an exact kernel), a corner channel cannot be held by the format,
 ///   or the file cannot be written. The data goes to a temporary file beside
 ///   `filename`, flushed to the disk and renamed over `filename` once
 ///   complete: whatever fails, an existing `filename` is left as it was.
