@@ -164,6 +164,13 @@ int geodesics(int argc, char** argv)
   std::size_t triangulated = 0;
   Mesh mesh = read_mesh(args.positional[0], args.has("--triangulate"), "the geodesic distance", triangulated);
   const std::vector<Vertex_index> sources = source_vertices(args.value("--source", ""), mesh);
+  // CGAL's heat method factors a matrix that a vertex on no face makes
+  // singular, and stops with an assertion: say why instead.
+  for (Vertex_index v : mesh.vertices())
+    if (method == Geodesic_method::heat && !mesh.halfedge(v).is_valid())
+      throw std::runtime_error(args.positional[0] + ": vertex " + std::to_string(v.idx()) +
+                               " is on no face, and the heat method needs every vertex on one (--method exact "
+                               "takes it)");
   auto distance = output_map<double>(mesh, "distance");
   const Clock::time_point start = Clock::now();
   if (method == Geodesic_method::heat)
@@ -325,6 +332,8 @@ const Tool_usage curvature_usage{
 // own darts are unflipped, so +1 is the side the orientation points to.
 std::pair<Dart, double> vertex_side(const Mesh& mesh, Vertex_index v)
 {
+  if (!mesh.halfedge(v).is_valid())
+    return {Dart(), 0.0}; // a vertex on no face
   for (Dart d : CGAL_ext::halfedges_around_target(mesh.halfedge(v), mesh))
     if (!mesh.is_border(d))
       return {d, d.is_flipped() ? -1.0 : 1.0};
@@ -335,6 +344,8 @@ std::pair<Dart, double> vertex_side(const Mesh& mesh, Vertex_index v)
 double vertex_area(const Mesh& mesh, Vertex_index v)
 {
   double area = 0;
+  if (!mesh.halfedge(v).is_valid())
+    return area; // a vertex on no face
   for (Dart d : CGAL_ext::halfedges_around_target(mesh.halfedge(v), mesh))
     if (!mesh.is_border(d))
       area += std::sqrt(CGAL::to_double(CGAL::squared_area(mesh.point(mesh.source(d)), mesh.point(v),

@@ -90,6 +90,9 @@ cgal_ext_tool_fails(geodesics.fails.source_out_of_range geodesics
 cgal_ext_tool_fails(geodesics.fails.not_triangles geodesics
   "${_data}/klein_fig8_24x12_quads.obj;${_out}/x.ply;--source;0"
   "^geodesics: [^\n]*klein_fig8_24x12_quads.obj: 288 of its 288 faces are not triangles, and the geodesic distance needs a triangle mesh \\(give --triangulate\\)\n$")
+cgal_ext_tool_fails(geodesics.fails.heat_vertex_on_no_face geodesics
+  "${_tools}/triangle_two_stray_vertices.obj;${_out}/x.ply;--source;0"
+  "^geodesics: [^\n]*triangle_two_stray_vertices.obj: vertex 3 is on no face, and the heat method needs every vertex on one \\(--method exact takes it\\)\n$")
 cgal_ext_tool_fails(geodesics.fails.method geodesics
   "${_data}/mobius_20x4_tris.obj;${_out}/x.ply;--source;0;--method;dijkstra"
   "^geodesics: --method 'dijkstra' is not heat or exact; usage: [^\n]+\n$")
