@@ -11,6 +11,7 @@
 #include <CGAL_ext/IO/internal/OBJ_reader.h>
 #include <CGAL_ext/IO/internal/OFF_reader.h>
 #include <CGAL_ext/IO/internal/PLY_reader.h>
+#include <CGAL_ext/IO/internal/PLY_writer.h>
 #include <CGAL_ext/IO/internal/Text_scanning.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -20,7 +21,6 @@
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
-#include <CGAL/IO/PLY.h>
 #include <CGAL/exceptions.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Simple_cartesian.h>
@@ -110,6 +110,47 @@ void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Shar
   }
 }
 
+template <class T, class P>
+void add_vertex_column(Mobius_mesh<P>& mesh, const Ply_vertex_column& column)
+{
+  auto [map, created] = mesh.template add_property_map<Vertex_index, T>("v:" + column.name);
+  if (!created)
+    return; // a map of the mesh's own (the points) or of the same name
+  for (Vertex_index v : mesh.vertices())
+    map[v] = T(column.values[v.idx()]);
+}
+
+// The PLY file's other vertex properties as vertex property maps "v:NAME" of
+// the file's types, as CGAL's Surface_mesh reader makes them. Only where
+// vertex i of the mesh is point i of the file: nothing was merged or split.
+template <class P>
+void add_vertex_columns(Mobius_mesh<P>& mesh, const std::vector<Ply_vertex_column>& columns)
+{
+  for (const Ply_vertex_column& c : columns) {
+    if (c.values.size() != mesh.number_of_vertices())
+      continue;
+    switch (c.type) {
+    case Ply_type::int8: add_vertex_column<std::int8_t>(mesh, c); break;
+    case Ply_type::uint8: add_vertex_column<std::uint8_t>(mesh, c); break;
+    case Ply_type::int16: add_vertex_column<std::int16_t>(mesh, c); break;
+    case Ply_type::uint16: add_vertex_column<std::uint16_t>(mesh, c); break;
+    case Ply_type::int32: add_vertex_column<std::int32_t>(mesh, c); break;
+    case Ply_type::uint32: add_vertex_column<std::uint32_t>(mesh, c); break;
+    case Ply_type::float32: {
+      // An ASCII value beyond a float's range (1e300 for a float property)
+      // becomes an infinity, as a conversion from text to float makes it.
+      Ply_vertex_column clamped = c;
+      for (double& x : clamped.values)
+        if (std::isfinite(x) && std::abs(x) > double(std::numeric_limits<float>::max()))
+          x = x > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+      add_vertex_column<float>(mesh, clamped);
+      break;
+    }
+    case Ply_type::float64: add_vertex_column<double>(mesh, c); break;
+    }
+  }
+}
+
 // read_polygon_mesh() without its translation of foreign exceptions.
 template <class P, class NP>
 Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format format, Mobius_mesh<P>& mesh,
@@ -118,22 +159,27 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
   const std::string text = read_whole_file(filename);
   std::vector<P> points;
   std::vector<std::vector<std::size_t>> polygons;
+  std::vector<Ply_vertex_column> columns;
   Obj_scan obj;
   if (format == Mesh_format::obj)
     obj = read_obj_text(filename, text, points, polygons);
   else if (format == Mesh_format::off)
     obj.lines = read_off(filename, text, points, polygons);
   else
-    obj.lines = read_ply(filename, text, points, polygons);
+    obj.lines = read_ply(filename, text, points, polygons, &columns);
   if (polygons.empty())
     throw IO_error(filename, 0, "the file has no faces");
 
   Mobius_mesh<P> result;
+  std::size_t split = 0;
   try {
-    polygon_soup_to_mobius_mesh(points, polygons, result, np);
+    split = polygon_soup_to_mobius_mesh(points, polygons, result, np);
   } catch (const Soup_error& e) {
     throw_soup_error_in_file(e, filename, obj.lines);
   }
+  constexpr bool merged = !parameters::is_default_parameter<NP, CGAL_ext::internal_np::tolerance_t>::value;
+  if (!merged && split == 0 && result.number_of_vertices() == points.size())
+    add_vertex_columns(result, columns);
   if (format == Mesh_format::obj)
     apply_obj_tags(obj, filename, polygons, points.size(), result, np);
   mesh = std::move(result);
@@ -167,6 +213,17 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
 /// 1 edge and corner, 2 edge only), `t creasemethod 0/0/1 chaikin|uniform` and
 /// `t smoothtriangles 0/0/1 smooth|catmark` are returned. Other tags are
 /// ignored.
+///
+/// From PLY files, every scalar property of the `vertex` element other than
+/// `x`, `y` and `z` becomes a vertex property map named `"v:NAME"` whose value
+/// type is the property's (`float`, `double`, `std::int8_t` ... `std::uint32_t`),
+/// as CGAL's `Surface_mesh` PLY reader makes them (which turns `nx`, `ny`, `nz`
+/// and colours into `"v:normal"` and `"v:color"`; here they are three maps
+/// each). `write_polygon_mesh()` writes such maps back. A property whose map
+/// cannot be made (`point`, or a name the mesh already holds with another
+/// type) is left out, and so are all of them where vertex i of the mesh is not
+/// point i of the file: when a `tolerance` merges points, or non-manifold
+/// vertices are split.
 ///
 /// \param filename the file to read
 /// \param mesh the mesh that receives the file's content; unchanged if reading fails
@@ -237,6 +294,17 @@ inline void check_output_file(const std::string& filename)
 /// `CGAL::to_double()` of each coordinate (which may be one unit in the last
 /// place away from the nearest double). PLY is written in binary unless
 /// `use_binary_mode(false)`.
+///
+/// To PLY files, vertex data is written too, as CGAL's `Surface_mesh` PLY
+/// writer writes it: each vertex property map named `"v:NAME"` (the point
+/// map aside) whose value type is an integer of 8 to 64 bits, `float` or
+/// `double` becomes the PLY vertex property `NAME` of the matching type
+/// (64-bit integers as 32-bit ones, as CGAL does), in the order the maps were
+/// added. A viewer can colour the mesh by it, and `read_polygon_mesh()` reads
+/// it back into a map of the same name and type. Maps of other types, and
+/// names that are not one word or are `x`, `y` or `z`, are not written.
+/// Without such maps the file is the one CGAL's `write_PLY()` of the polygon
+/// soup writes, byte for byte.
 ///
 /// To OBJ files, OpenSubdiv's tags are written too: `t crease 2/1/0 v0 v1 s`
 /// for each edge and `t corner 1/1/0 v s` for each vertex whose sharpness is
@@ -335,8 +403,8 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   } else if (format == internal::Mesh_format::off) {
     written = CGAL::IO::write_OFF(out, points, polygons, cgal_np);
   } else {
-    CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
-    written = CGAL::IO::write_PLY(out, points, polygons, cgal_np);
+    out.precision(precision);
+    written = internal::write_ply(out, binary, points, polygons, internal::ply_vertex_columns(mesh));
   }
   if (!written)
     throw IO_error(filename, 0, "writing the file failed" + internal::system_reason() + "; the old file is unchanged");
