@@ -76,7 +76,7 @@ private:
     std::unordered_map<std::size_t, Vector> boundary_normals; // in f's orientation
   };
 
-  // (u, v) of a point of sub-face k (local (su, sv)) of an n-gon, or of a quad (k = -1).
+  // (u, v) of a point of sub-face k (local (su, sv)) of an n-gon, or of a quad (k unused).
   std::array<FT, 2> param(int sides, int k, const FT& su, const FT& sv) const
   {
     if (sides == 4)
