@@ -13,6 +13,12 @@
 //   tubes (CGAL has no two-mesh stitch), in both cases; and for two meshes
 //   CGAL_copy_face_graph_and_stitch_borders: copy_face_graph of the second
 //   tube into the first, then stitch_borders, both timed.
+// merge/fan_of_separate_triangles/N/...: N = 20 x grid triangles around one
+//   centre, each a component of its own (N coincident copies of the centre,
+//   two of each rim point), merged with itself into a disc by ours and by
+//   PMP::stitch_borders. merge/copies_of_a_triangle/N/...: N copies of one
+//   triangle, which merge_borders refuses (an edge would take N faces); the
+//   time to refuse. Both stay near-linear in N however many points coincide.
 // convert/to_surface_mesh/..., convert/from_surface_mesh/...: a torus of
 //   N x N quads (orientable) and a Möbius strip of 2N x N/2 quads, converted
 //   into an empty target; peers: CGAL::copy_face_graph Surface_mesh ->
@@ -171,6 +177,41 @@ const Halves& halves()
   return *h;
 }
 
+// Many border vertices at one point, as in a soup of duplicated faces from a
+// bad exporter: n = 20 x grid separate triangles, around one centre (`fan`:
+// they glue into a disc of n + 1 vertices, 2n edges) or all copies of one.
+struct Coincident
+{
+  Mesh mesh;
+  SM sm;
+  Counts disc;
+};
+
+const Coincident& coincident(bool fan)
+{
+  static std::unique_ptr<Coincident> cached[2];
+  std::unique_ptr<Coincident>& c = cached[fan ? 1 : 0];
+  if (!c) {
+    c = std::make_unique<Coincident>();
+    const std::size_t n = 20 * grid;
+    const double pi = std::acos(-1.0);
+    auto rim = [&](std::size_t i) {
+      const double a = 2 * pi * double(i % n) / double(n);
+      return fan ? Point(std::cos(a), std::sin(a), 0) : Point(double(i % 2), double(1 - i % 2), 0);
+    };
+    std::vector<Point> points;
+    std::vector<Polygon> polygons;
+    for (std::size_t i = 0; i < n; ++i) {
+      points.insert(points.end(), {Point(0, 0, 0), rim(fan ? i : 0), rim(fan ? i + 1 : 1)});
+      polygons.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+    }
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, c->mesh);
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, c->sm);
+    c->disc = {n + 1, 2 * n, n};
+  }
+  return *c;
+}
+
 // A source mesh in both representations; for the Möbius strip, the
 // Surface_mesh is to_surface_mesh's cut, and the soup is kept for CGAL's
 // orient_polygon_soup route.
@@ -286,6 +327,57 @@ void add(const std::string& name, benchmark::IterationCount n, std::function<voi
 
 // ---------------------------------------------------------------------------
 
+// The soups of separate triangles with coincident points, merged as one mesh.
+void register_coincident_merge()
+{
+  const std::size_t n = 20 * grid;
+  const std::string fan = "merge/fan_of_separate_triangles/" + std::to_string(n) + "/one_mesh";
+  add(fan + "/CGAL_ext_merge_borders", iterations(10), [n](benchmark::State& st) {
+    const Coincident& c = coincident(true);
+    Mesh m;
+    CGAL_ext::Merge_result r;
+    timed(
+      st, [&] { m = c.mesh; }, [&] { r = CGAL_ext::merge_borders(m); },
+      [&] {
+        require_counts(m, c.disc, "merge_borders (fan)");
+        require(r.glued_edges == n, "merge_borders (fan) glued " + std::to_string(r.glued_edges) + " edges");
+      });
+  });
+  add(fan + "/CGAL_stitch_borders", iterations(10), [n](benchmark::State& st) {
+    const Coincident& c = coincident(true);
+    SM sm;
+    std::size_t stitched = 0;
+    timed(
+      st, [&] { sm = c.sm; }, [&] { stitched = PMP::stitch_borders(sm); },
+      [&] {
+        require_counts(sm, c.disc, "stitch_borders (fan)");
+        require(stitched == n, "stitch_borders (fan) stitched " + std::to_string(stitched) + " edge pairs");
+      });
+  });
+  // Refused: each edge could be glued to n - 1 others. No peer: CGAL's
+  // stitch glues what it can of a non-manifold soup, another task.
+  add("merge/copies_of_a_triangle/" + std::to_string(n) + "/one_mesh/CGAL_ext_merge_borders", iterations(10),
+      [](benchmark::State& st) {
+        const Coincident& c = coincident(false);
+        Mesh m;
+        bool refused = false;
+        timed(
+          st, [&] { m = c.mesh; },
+          [&] {
+            try {
+              CGAL_ext::merge_borders(m);
+              refused = false;
+            } catch (const CGAL_ext::Merge_error&) {
+              refused = true;
+            }
+          },
+          [&] {
+            require(refused, "merge_borders (copies of a triangle) was not refused");
+            require_counts(m, counts(c.mesh), "merge_borders (copies of a triangle), refused");
+          });
+      });
+}
+
 void register_merge()
 {
   const std::string n = std::to_string(grid);
@@ -349,6 +441,7 @@ void register_merge()
       [&] { check_merge(m, r, "merge_borders (one mesh)"); });
   });
   add(base + "/one_mesh/CGAL_stitch_borders", iterations(10), stitch);
+  register_coincident_merge();
 }
 
 void register_conversion()

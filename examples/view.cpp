@@ -1,12 +1,16 @@
-// view FILE [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z] [--up X,Y,Z] [--gap G] [--features-only]
+// view FILE [--scalar NAME] [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z] [--up X,Y,Z] [--gap G]
+//      [--features-only]
 //
 // Shows a polygon mesh (.obj, .off, .ply) in CGAL's Basic_viewer_qt with one
 // colour per side: blue where each face's orientation points, orange on the
 // other side; the colours swap across Möbius edges (green), so a one-sided
 // surface shows both colours on one side. Borders are red, sharp edges purple.
-// With --screenshot it draws the mesh once, writes the PNG and prints one
-// line of JSON:
-//   {"screenshot":"OUT.png","width":W,"height":H,"faces":F,"mobius_edges":M,"border_edges":B}
+// With --scalar NAME the faces are coloured by the PLY vertex property NAME
+// instead (a colour ramp from its smallest value to its largest), both sides
+// alike. With --screenshot it draws the mesh once, writes the PNG and prints
+// one line of JSON:
+//   {"screenshot":"OUT.png","width":W,"height":H,"faces":F,"mobius_edges":M,"border_edges":B
+//    [,"scalar":NAME,"min":LOW,"max":HIGH]}
 // A bad file or option, or no display: one line on stderr, exit status 2.
 
 #include "arguments.h"
@@ -17,18 +21,31 @@
 #include <CGAL_ext/draw_mobius_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/Color.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace {
 
 const examples::Tool_usage usage{
-  "view", "view FILE [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z] [--up X,Y,Z] [--gap G] [--features-only]",
+  "view",
+  "view FILE [--scalar NAME] [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z] [--up X,Y,Z] [--gap G] "
+  "[--features-only]",
   "Shows a polygon mesh (.obj, .off, .ply) with one colour per side: blue on the side each face's\n"
   "orientation points to, orange on the other. The colours swap across Möbius edges (green), so a\n"
   "one-sided surface shows both on one side. Borders are red, sharp edges purple by sharpness.\n"
+  "  --scalar NAME         colour the faces by the vertex property NAME of a PLY file instead (as\n"
+  "                        the geodesics and curvature tools write them): each face by the mean of\n"
+  "                        its corners, on a ramp from dark violet (the smallest value) through\n"
+  "                        blue and green to yellow (the largest), both sides alike\n"
   "  --screenshot OUT.png  draw once, write the picture and exit (needs a display: xvfb-run)\n"
   "  --size WxH            the picture's size in pixels (default 800x600)\n"
   "  --direction X,Y,Z     the direction the camera looks in (default -1,-0.6,-1.2)\n"
@@ -51,6 +68,74 @@ std::array<double, 3> direction_argument(const std::string& option, const std::s
   return d;
 }
 
+// The value of each vertex in its vertex property map "v:NAME", of any
+// arithmetic type the PLY reader makes.
+template <class Mesh>
+std::vector<double> vertex_scalars(const Mesh& mesh, const std::string& file, const std::string& name)
+{
+  std::vector<double> values;
+  const auto take = [&](auto zero) {
+    const auto map = mesh.template property_map<CGAL_ext::Vertex_index, decltype(zero)>("v:" + name);
+    if (map && values.empty())
+      for (CGAL_ext::Vertex_index v : mesh.vertices())
+        values.push_back(double((*map)[v]));
+  };
+  take(double()), take(float()), take(std::int8_t()), take(std::uint8_t()), take(std::int16_t());
+  take(std::uint16_t()), take(std::int32_t()), take(std::uint32_t());
+  if (values.empty() && mesh.number_of_vertices() != 0) {
+    std::string names;
+    for (const std::string& p : mesh.template properties<CGAL_ext::Vertex_index>())
+      if (p.rfind("v:", 0) == 0 && p != "v:point")
+        names += (names.empty() ? "" : ", ") + p.substr(2);
+    throw std::runtime_error(file + " has no vertex property '" + name + "' of numbers (" +
+                             (names.empty() ? std::string("it has none") : "it has: " + names) + ")");
+  }
+  return values;
+}
+
+// A colour ramp of increasing lightness, from dark violet through blue and
+// green to yellow (close to matplotlib's viridis), at t in [0, 1].
+CGAL::IO::Color ramp(double t)
+{
+  static const double stops[5][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  t = std::clamp(t, 0.0, 1.0) * 4;
+  const int i = std::min(int(t), 3);
+  const double u = t - i;
+  unsigned char rgb[3];
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = static_cast<unsigned char>(std::lround(stops[i][c] + u * (stops[i + 1][c] - stops[i][c])));
+  return CGAL::IO::Color(rgb[0], rgb[1], rgb[2]);
+}
+
+// Each face's colour, in the face property map "f:ramp": the mean of its
+// corners' values on the ramp from the smallest finite value to the largest
+// (grey where a value is not finite).
+template <class Mesh>
+typename Mesh::template Property_map<CGAL_ext::Face_index, CGAL::IO::Color>
+face_colours(Mesh& mesh, const std::vector<double>& values, double& low, double& high)
+{
+  low = std::numeric_limits<double>::infinity();
+  high = -low;
+  for (double x : values)
+    if (std::isfinite(x)) {
+      low = std::min(low, x);
+      high = std::max(high, x);
+    }
+  auto colours = mesh.template add_property_map<CGAL_ext::Face_index, CGAL::IO::Color>(
+                       "f:ramp", CGAL::IO::Color(128, 128, 128)).first;
+  for (CGAL_ext::Face_index f : mesh.faces()) {
+    double sum = 0, n = 0;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh)) {
+      sum += values[v.idx()];
+      ++n;
+    }
+    const double mean = sum / n;
+    if (std::isfinite(mean))
+      colours[f] = ramp(high > low ? (mean - low) / (high - low) : 0.0);
+  }
+  return colours;
+}
+
 void size_argument(const std::string& text, CGAL_ext::Screenshot_settings& settings)
 {
   const auto x = text.find('x');
@@ -65,7 +150,7 @@ int view(int argc, char** argv)
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   const examples::Arguments args =
-    examples::parse_arguments(argc, argv, {"--screenshot", "--size", "--direction", "--up", "--gap"},
+    examples::parse_arguments(argc, argv, {"--scalar", "--screenshot", "--size", "--direction", "--up", "--gap"},
                               {"--features-only"});
   if (args.positional.size() != 1)
     throw examples::Usage_error("expected one file name, got " + std::to_string(args.positional.size()));
@@ -85,13 +170,23 @@ int view(int argc, char** argv)
 
   Mesh mesh;
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  const auto show = [&](const auto& np) {
+    if (!args.has("--screenshot"))
+      CGAL_ext::draw(mesh, np, args.positional[0].c_str());
+    else
+      CGAL_ext::save_screenshot(mesh, args.value("--screenshot", ""), settings, np);
+  };
+  // Without --scalar every face keeps the style's two side colours.
   const auto np = CGAL_ext::parameters::two_sided_style(style);
-  if (!args.has("--screenshot")) {
-    CGAL_ext::draw(mesh, np, args.positional[0].c_str());
+  double low = 0, high = 0;
+  if (args.has("--scalar"))
+    show(np.face_color_map(
+      face_colours(mesh, vertex_scalars(mesh, args.positional[0], args.value("--scalar", "")), low, high)));
+  else
+    show(np);
+  if (!args.has("--screenshot"))
     return 0;
-  }
   const std::string out = args.value("--screenshot", "");
-  CGAL_ext::save_screenshot(mesh, out, settings, np);
   std::size_t mobius = 0, border = 0;
   for (auto e : mesh.edges()) {
     mobius += mesh.is_mobius(e);
@@ -104,6 +199,8 @@ int view(int argc, char** argv)
     .add("faces", mesh.number_of_faces())
     .add("mobius_edges", mobius)
     .add("border_edges", border);
+  if (args.has("--scalar"))
+    line.add("scalar", args.value("--scalar", "")).add("min", low).add("max", high);
   examples::print_json_line(line);
   return 0;
 }

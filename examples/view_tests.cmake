@@ -49,7 +49,7 @@ foreach(_name far_direction cube_1e50 collinear_face)
   add_test(NAME view.${_name}
     COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${CGAL_EXT_XVFB_RUN} -DVIEW=$<TARGET_FILE:view>
             -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${_${_name}_input} -DPICTURE=${_out}/view_${_name}.png
-            -DSIDES=front "-DVIEW_ARGS=${_${_name}_args}" -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+            -DSIDES=front "-DOPTIONS=${_${_name}_args}" -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
   set_tests_properties(view.${_name} PROPERTIES ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
 endforeach()
 # Past the range of the library's algorithms in double: one line, exit 2.
@@ -57,6 +57,24 @@ cgal_ext_tool_fails(view.fails.coordinates_beyond_range view
   "${_tools}/cube_1e155.obj;--screenshot;${_out}/x.png"
   "^view: make_two_sided_scene: vertex 1 at \\(1e\\+155, 0, 0\\) has a coordinate beyond \\+-1e\\+60[^\n]*\n$")
 set_tests_properties(view.fails.coordinates_beyond_range PROPERTIES ENVIRONMENT "${_environment}")
+
+# A scalar field on a one-sided surface: the geodesic distance on the Klein
+# bottle from vertex 0, coloured from the ramp's violet (near) to its yellow
+# (far), both sides alike.
+add_test(NAME view.scalar.setup
+  COMMAND geodesics ${_data}/klein_fig8_24x12_quads.obj ${_out}/view_klein_distance.ply --source 0 --triangulate)
+set_tests_properties(view.scalar.setup PROPERTIES FIXTURES_SETUP view_scalar ENVIRONMENT "${_environment}")
+add_test(NAME view.scalar.klein_distance
+  COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${CGAL_EXT_XVFB_RUN} -DVIEW=$<TARGET_FILE:view>
+          -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${_out}/view_klein_distance.ply
+          "-DOPTIONS=--scalar;distance;--features-only" -DPICTURE=${_out}/view_klein_distance.png -DSIDES=ramp
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+set_tests_properties(view.scalar.klein_distance PROPERTIES FIXTURES_REQUIRED view_scalar
+  ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
+cgal_ext_tool_fails(view.fails.scalar view
+  "${_data}/mobius_20x4_quads.obj;--scalar;distance;--screenshot;${_out}/x.png"
+  "^view: [^\n]*mobius_20x4_quads.obj has no vertex property 'distance' of numbers \\(it has none\\)\n$")
+set_tests_properties(view.fails.scalar PROPERTIES ENVIRONMENT "${_environment}")
 
 # No display: one line naming what is missing, exit 2, no picture.
 add_test(NAME view.fails.no_display

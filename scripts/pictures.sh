@@ -14,7 +14,7 @@ launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_EXT_BUILD_TESTS=OFF -DCGAL_EXT_BUILD_EXAMPLES=ON \
       "${launcher[@]}" >/dev/null
-cmake --build "$build" --target subdivide merge offset decimate remesh -j "${CGAL_EXT_JOBS:-$(nproc)}"
+cmake --build "$build" --target subdivide merge offset decimate remesh geodesics -j "${CGAL_EXT_JOBS:-$(nproc)}"
 cmake --build "$build" --target view -j "${CGAL_EXT_JOBS:-$(nproc)}" ||
   { echo "pictures: the view tool was not built (apt-get install libcgal-qt5-dev)" >&2; exit 2; }
 tools=$build/examples
@@ -26,11 +26,14 @@ mkdir -p "$work" "$out"
 
 # render MESH PNG [WIDTH HEIGHT]: the mesh seen from above at an angle (40°
 # up, 25° round), z up, on white; with all its edges if $edges is set (cages
-# and coarse levels), else only its borders, Möbius edges and sharp edges.
+# and coarse levels), else only its borders, Möbius edges and sharp edges;
+# coloured by the PLY vertex property $scalar if it is set.
 edges=
+scalar=
 render() {
   local width=${3:-480} height=${4:-360} options=()
   [ -n "$edges" ] || options+=(--features-only)
+  [ -z "$scalar" ] || options+=(--scalar "$scalar")
   xvfb-run -a -s "-screen 0 1280x1024x24" "$tools/view" "$1" --screenshot "$2" --size "${width}x$height" \
     --direction -0.32,0.69,-0.64 "${options[@]}" >/dev/null 2>"$work/view.log" || { cat "$work/view.log" >&2; exit 2; }
   echo "pictures: $2 ($(stat -c %s "$2") bytes)"
@@ -105,3 +108,8 @@ subdivide "$data/klein_fig8_24x12_quads.obj" "$work/klein_cc2_for_decimation.obj
 edges=1 render "$work/klein_decimated.obj" "$out/klein_decimated.png"
 "$tools/remesh" "$data/boys_surface_quads.obj" "$work/boys_remeshed.obj" --edge-length 0.12 --iterations 5 >/dev/null
 edges=1 render "$work/boys_remeshed.obj" "$out/boys_remeshed.png"
+
+# The geodesic distance on the Klein bottle (two Catmull–Clark steps,
+# triangulated) from vertex 0, by the heat method: violet near, yellow far.
+"$tools/geodesics" "$work/klein_cc2.obj" "$work/klein_distance.ply" --source 0 --triangulate >/dev/null
+scalar=distance render "$work/klein_distance.ply" "$out/klein_geodesic_distance.png"

@@ -1,4 +1,4 @@
-// side_colours PICTURE.png (both|front)
+// side_colours PICTURE.png (both|front|ramp)
 //
 // Counts the pixels of a picture of the view tool that show the front side's
 // colour (blue: blue well above red) and the back side's (orange: red above
@@ -6,20 +6,25 @@
 // checks what a surface must show: "both" sides' colours (each on at least 2 %
 // of the picture: a one-sided surface, or a two-sided one seen from both sides),
 // or the "front" only (on at least 5 %, the back's on under 0.1 %: a closed
-// surface whose faces point outwards).
-// Prints {"pixels":N,"front":F,"back":B} and exits 0 if the check holds, 1 if not,
-// 2 if the picture cannot be read.
+// surface whose faces point outwards). With "ramp", a picture coloured by a
+// scalar (`view --scalar`) must show both ends of the colour ramp, each on at
+// least 0.2 %: its dark violet (red and blue above green) and its yellow (red
+// and green alike, well above blue), which neither side colour nor any edge
+// colour passes for.
+// Prints {"pixels":N,"front":F,"back":B,"low":L,"high":H} and exits 0 if the
+// check holds, 1 if not, 2 if the picture cannot be read.
 #include <QImage>
 
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
 int main(int argc, char* argv[])
 {
   const std::string expect = argc == 3 ? argv[2] : "";
-  if (expect != "both" && expect != "front") {
-    std::cerr << "usage: side_colours PICTURE.png (both|front)\n";
+  if (expect != "both" && expect != "front" && expect != "ramp") {
+    std::cerr << "usage: side_colours PICTURE.png (both|front|ramp)\n";
     return 2;
   }
   const QImage image(QString::fromLocal8Bit(argv[1]));
@@ -27,17 +32,23 @@ int main(int argc, char* argv[])
     std::cerr << "side_colours: cannot read " << argv[1] << "\n";
     return 2;
   }
-  long front = 0, back = 0;
+  long front = 0, back = 0, low = 0, high = 0;
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x) {
       const QColor c = image.pixelColor(x, y);
       const int r = c.red(), g = c.green(), b = c.blue();
       front += b > r + 40 && b > g + 20;
       back += r > g + 20 && g > b + 30;
+      low += r > g + 20 && b > g + 20 && b > 25;
+      high += r > b + 80 && g > b + 80 && std::abs(r - g) < 40;
     }
   const long pixels = long(image.width()) * image.height();
-  std::cout << "{\"pixels\":" << pixels << ",\"front\":" << front << ",\"back\":" << back << "}" << std::endl;
+  std::cout << "{\"pixels\":" << pixels << ",\"front\":" << front << ",\"back\":" << back << ",\"low\":" << low
+            << ",\"high\":" << high << "}" << std::endl;
   const double f = double(front) / double(pixels), b = double(back) / double(pixels);
-  const bool ok = expect == "both" ? std::min(f, b) >= 0.02 : f >= 0.05 && b < 0.001;
+  const double l = double(low) / double(pixels), h = double(high) / double(pixels);
+  const bool ok = expect == "both"    ? std::min(f, b) >= 0.02
+                  : expect == "front" ? f >= 0.05 && b < 0.001
+                                      : std::min(l, h) >= 0.002;
   return ok ? 0 : 1;
 }

@@ -442,7 +442,7 @@ TEST(Conversion, PropertiesWithoutOutputIterators)
     for (auto h : back.halfedges()) {
       if (back.is_border(h))
         continue;
-      const CGAL_ext::Halfedge_index g(std::size_t((*bhl)[h]));
+      const CGAL_ext::Halfedge_index g(static_cast<std::size_t>((*bhl)[h]));
       EXPECT_EQ(key(mesh.source(g).idx(), mesh.target(g).idx()), key(back.source(h).idx(), back.target(h).idx()));
     }
   }

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <random>
 #include <sstream>
@@ -544,6 +545,68 @@ TEST(CornerIO, PlyAndOffVertexValuesAreRead)
   expect_read_error(dir / "nan.ply", 0, "vertex 1 has a texture coordinate or normal that is not a finite number");
   write_text(dir / "short.off", "STOFF\n3 1 0\n0 0 0 0 0\n1 0 0 1\n0 1 0 0 1\n3 0 1 2\n");
   expect_read_error(dir / "short.off", 4, "the vertex lacks its texture coordinates");
+  fs::remove_all(dir);
+}
+
+// PLY files with both: the properties that become corner channels make no
+// vertex map, the others do; written back, x y z come first, then the
+// channels' nx ny nz and s t, then the maps.
+TEST(CornerIO, PlyCornerChannelsBesideVertexMaps)
+{
+  const fs::path dir = scratch_directory();
+  write_text(dir / "both.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                               "property float z\nproperty float quality\nproperty float nx\nproperty float ny\n"
+                               "property float nz\nproperty float s\nproperty float t\nproperty uchar label\n"
+                               "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                               "0 0 0 1.5 0 0 1 0 0 7\n1 0 0 2.5 0 0 1 0.5 0 8\n1 1 0 3.5 0 0 1 0.5 0.5 9\n"
+                               "0 1 0 4.5 0 0 1 0 0.5 10\n3 0 1 2\n3 0 2 3\n");
+  Mesh m;
+  read_polygon_mesh((dir / "both.ply").string(), m);
+  ASSERT_TRUE(m.corner_channel<UV>(CGAL_ext::corner_uv_name));
+  ASSERT_TRUE(m.corner_channel<Normal>(CGAL_ext::corner_normal_name));
+  EXPECT_EQ(m.properties<Vertex_index>(), (std::vector<std::string>{"v:point", "v:quality", "v:label"}));
+  const auto quality = m.property_map<Vertex_index, float>("v:quality");
+  const auto label = m.property_map<Vertex_index, std::uint8_t>("v:label");
+  ASSERT_TRUE(quality && label);
+  EXPECT_EQ((*quality)[Vertex_index(2)], 3.5f);
+  EXPECT_EQ((*label)[Vertex_index(3)], 10);
+
+  for (bool binary : {false, true}) {
+    SCOPED_TRACE(binary);
+    const fs::path out = dir / "both_out.ply";
+    write_polygon_mesh(out.string(), m, CGAL_ext::parameters::use_binary_mode(binary));
+    std::ifstream in(out, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("property double x\nproperty double y\nproperty double z\nproperty double nx\n"
+                        "property double ny\nproperty double nz\nproperty double s\nproperty double t\n"
+                        "property float quality\nproperty uchar label\nelement face"),
+              std::string::npos)
+      << text.substr(0, 400);
+    Mesh back;
+    read_polygon_mesh(out.string(), back);
+    const auto uv = back.corner_channel<UV>(CGAL_ext::corner_uv_name);
+    const auto normal = back.corner_channel<Normal>(CGAL_ext::corner_normal_name);
+    ASSERT_TRUE(uv && normal);
+    for (Face_index f : back.faces())
+      for (Dart d : CGAL_ext::halfedges_around_face(back.halfedge(f), back)) {
+        const Point& p = back.point(back.target(d));
+        EXPECT_EQ((*uv)[back.corner(d)], UV(p.x() / 2, p.y() / 2));
+        EXPECT_EQ((*normal)[back.corner(d)], Normal(0, 0, 1));
+      }
+    const auto q = back.property_map<Vertex_index, float>("v:quality");
+    const auto l = back.property_map<Vertex_index, std::uint8_t>("v:label");
+    ASSERT_TRUE(q && l);
+    for (Vertex_index v : back.vertices()) {
+      EXPECT_EQ((*q)[v], (*quality)[v]);
+      EXPECT_EQ((*l)[v], (*label)[v]);
+    }
+    EXPECT_EQ(back.properties<Vertex_index>(), (std::vector<std::string>{"v:point", "v:quality", "v:label"}));
+  }
+
+  // A map under the name of a written channel property is refused.
+  m.add_property_map<Vertex_index, double>("v:nx", 0.0);
+  expect_write_error(m, dir / "clash.ply", "the vertex map \"v:nx\"");
+  EXPECT_THROW(CGAL_ext::IO::check_output_file((dir / "clash.ply").string(), m), IO_error);
   fs::remove_all(dir);
 }
 

@@ -14,9 +14,11 @@
 
 #include "test_util.h"
 
+#include <CGAL/IO/PLY.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh/IO/PLY.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
@@ -1372,6 +1374,253 @@ TEST(IO_errors, non_finite_coordinates_are_not_written)
       EXPECT_FALSE(fs::exists(file));
     }
   }
+  fs::remove_all(dir);
+}
+
+
+// ------------------------------------------------------ PLY vertex properties
+
+namespace {
+
+using Surface_mesh_d = CGAL::Surface_mesh<test::Kd::Point_3>;
+
+// A value for vertex i and map k that differs from vertex to vertex and map
+// to map, and fits every type below (0 .. 120).
+double ply_test_value(std::size_t i, int k) { return double((i * 7 + std::size_t(k) * 13) % 121); }
+
+// The mesh of `file` with one vertex map of each type CGAL's Surface_mesh
+// writer writes, and maps it does not write (no "v:" prefix, a vector, a
+// bool, a name that is not a word, a coordinate's name).
+Mesh_d mesh_with_vertex_maps(const std::string& file)
+{
+  Mesh_d mesh;
+  read_polygon_mesh(test::data(file), mesh);
+  auto fill = [&](auto map, int k) {
+    for (Vertex_index v : mesh.vertices())
+      map[v] = static_cast<typename decltype(map)::value_type>(ply_test_value(v.idx(), k));
+  };
+  fill(mesh.add_property_map<Vertex_index, double>("v:distance").first, 0);
+  fill(mesh.add_property_map<Vertex_index, float>("v:curvature").first, 1);
+  fill(mesh.add_property_map<Vertex_index, std::int8_t>("v:i8").first, 2);
+  fill(mesh.add_property_map<Vertex_index, std::uint8_t>("v:u8").first, 3);
+  fill(mesh.add_property_map<Vertex_index, std::int16_t>("v:i16").first, 4);
+  fill(mesh.add_property_map<Vertex_index, std::uint16_t>("v:u16").first, 5);
+  fill(mesh.add_property_map<Vertex_index, std::int32_t>("v:i32").first, 6);
+  fill(mesh.add_property_map<Vertex_index, std::uint32_t>("v:u32").first, 7);
+  fill(mesh.add_property_map<Vertex_index, std::int64_t>("v:i64").first, 8);
+  // The distance is not a small integer everywhere: 17 digits must come back.
+  mesh.property_map<Vertex_index, double>("v:distance")->operator[](Vertex_index(3u)) = 0.1 + 1e-17 * 3;
+  mesh.property_map<Vertex_index, float>("v:curvature")->operator[](Vertex_index(4u)) = 1.0f / 3.0f;
+  mesh.add_property_map<Vertex_index, double>("distance", 1.0);
+  mesh.add_property_map<Vertex_index, std::array<double, 3>>("v:vector");
+  mesh.add_property_map<Vertex_index, bool>("v:selected", true);
+  mesh.add_property_map<Vertex_index, double>("v:two words", 1.0);
+  mesh.add_property_map<Vertex_index, double>("v:x", 1.0);
+  return mesh;
+}
+
+const std::vector<std::string> written_vertex_maps = {"distance", "curvature", "i8",  "u8", "i16",
+                                                      "u16",      "i32",       "u32", "i64"};
+
+// The header's vertex property lines of a PLY file.
+std::vector<std::string> ply_vertex_properties(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::vector<std::string> properties;
+  bool in_vertex = false;
+  for (std::string line; std::getline(in, line) && line != "end_header";) {
+    if (line.rfind("element ", 0) == 0)
+      in_vertex = line.rfind("element vertex ", 0) == 0;
+    else if (in_vertex && line.rfind("property ", 0) == 0)
+      properties.push_back(line.substr(9));
+  }
+  return properties;
+}
+
+template <class T, class Mesh, class Key>
+void expect_map_values(const Mesh& mesh, const std::string& name, int k, Key)
+{
+  SCOPED_TRACE(name);
+  const auto map = mesh.template property_map<Key, T>(name);
+  ASSERT_TRUE(map);
+  for (auto v : mesh.vertices()) {
+    const double expected = v.idx() == 3 && name == "v:distance"   ? 0.1 + 1e-17 * 3
+                            : v.idx() == 4 && name == "v:curvature" ? double(1.0f / 3.0f)
+                                                                    : ply_test_value(v.idx(), k);
+    EXPECT_EQ(double(get(*map, v)), expected) << v;
+  }
+}
+
+// CGAL's Surface_mesh property maps are optionals of another shape.
+template <class T>
+struct Surface_mesh_map
+{
+  Surface_mesh_d::Property_map<Surface_mesh_d::Vertex_index, T> map;
+  bool found;
+  explicit operator bool() const { return found; }
+  const Surface_mesh_d::Property_map<Surface_mesh_d::Vertex_index, T>& operator*() const { return map; }
+};
+
+struct Surface_mesh_view
+{
+  const Surface_mesh_d& mesh;
+  template <class Key, class T>
+  Surface_mesh_map<T> property_map(const std::string& name) const
+  {
+    const auto [map, found] = mesh.property_map<Surface_mesh_d::Vertex_index, T>(name);
+    return {map, found};
+  }
+  auto vertices() const { return mesh.vertices(); }
+};
+
+template <class MeshView, class Key>
+void expect_written_maps(const MeshView& mesh, Key key)
+{
+  expect_map_values<double>(mesh, "v:distance", 0, key);
+  expect_map_values<float>(mesh, "v:curvature", 1, key);
+  expect_map_values<std::int8_t>(mesh, "v:i8", 2, key);
+  expect_map_values<std::uint8_t>(mesh, "v:u8", 3, key);
+  expect_map_values<std::int16_t>(mesh, "v:i16", 4, key);
+  expect_map_values<std::uint16_t>(mesh, "v:u16", 5, key);
+  expect_map_values<std::int32_t>(mesh, "v:i32", 6, key);
+  expect_map_values<std::uint32_t>(mesh, "v:u32", 7, key);
+  expect_map_values<std::int32_t>(mesh, "v:i64", 8, key); // written as a 32-bit integer, as CGAL does
+}
+
+} // namespace
+
+TEST(IO_ply_vertex_properties, written_as_cgal_writes_them_read_back_by_cgal_and_by_the_library)
+{
+  // CGAL's Surface_mesh reads orientable surfaces only: the torus for both
+  // readers, the Möbius strip for the library's.
+  const fs::path dir = scratch_directory();
+  for (const auto& [input, binary] : {std::pair("nonorientable/torus_24x12_quads.obj", true),
+                                      std::pair("nonorientable/torus_24x12_quads.obj", false),
+                                      std::pair("nonorientable/mobius_20x4_tris.obj", true)}) {
+    SCOPED_TRACE(std::string(input) + (binary ? " binary" : " ascii"));
+    const Mesh_d mesh = mesh_with_vertex_maps(input);
+    const bool orientable = CGAL_ext::is_orientable(mesh);
+    const std::string file = (dir / (binary ? "binary.ply" : "ascii.ply")).string();
+    write_polygon_mesh(file, mesh, CGAL_ext::parameters::use_binary_mode(binary));
+    EXPECT_EQ(ply_vertex_properties(file),
+              (std::vector<std::string>{"double x", "double y", "double z", "double distance", "float curvature",
+                                        "char i8", "uchar u8", "short i16", "ushort u16", "int i32", "uint u32",
+                                        "int i64"}));
+    // CGAL's Surface_mesh reader: maps of the same names, types and values.
+    if (orientable) {
+      Surface_mesh_d cgal_mesh;
+      std::ifstream in(file, std::ios::binary);
+      ASSERT_TRUE(CGAL::IO::read_PLY(in, cgal_mesh));
+      ASSERT_EQ(cgal_mesh.number_of_vertices(), mesh.number_of_vertices());
+      expect_written_maps(Surface_mesh_view{cgal_mesh}, Surface_mesh_d::Vertex_index());
+    }
+    // The library's reader: the same.
+    Mesh_d back;
+    read_polygon_mesh(file, back);
+    expect_same_mesh(mesh, back);
+    expect_written_maps(back, Vertex_index());
+    for (const char* absent : {"v:vector", "v:selected", "v:two words", "v:x", "v:i64"})
+      EXPECT_FALSE((back.property_map<Vertex_index, std::int64_t>(absent))) << absent;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(IO_ply_vertex_properties, cgal_surface_mesh_files_are_read_with_their_vertex_maps)
+{
+  const fs::path dir = scratch_directory();
+  Surface_mesh_d cgal_mesh;
+  std::vector<test::Kd::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  ASSERT_TRUE(CGAL::IO::read_polygon_soup(test::data("nonorientable/torus_24x12_quads.obj"), points, polygons));
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, cgal_mesh);
+  auto heat = cgal_mesh.add_property_map<Surface_mesh_d::Vertex_index, float>("v:heat").first;
+  auto label = cgal_mesh.add_property_map<Surface_mesh_d::Vertex_index, std::uint16_t>("v:label").first;
+  for (auto v : cgal_mesh.vertices()) {
+    heat[v] = float(v.idx()) / 7.0f;
+    label[v] = std::uint16_t(v.idx() * 3);
+  }
+  for (const bool binary : {true, false}) {
+    const std::string file = (dir / (binary ? "cgal_binary.ply" : "cgal_ascii.ply")).string();
+    {
+      std::ofstream out(file, std::ios::binary);
+      out.precision(17);
+      CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+      ASSERT_TRUE(CGAL::IO::write_PLY(out, cgal_mesh));
+    }
+    Mesh_d mesh;
+    read_polygon_mesh(file, mesh);
+    ASSERT_EQ(mesh.number_of_vertices(), cgal_mesh.number_of_vertices());
+    const auto read_heat = mesh.property_map<Vertex_index, float>("v:heat");
+    const auto read_label = mesh.property_map<Vertex_index, std::uint16_t>("v:label");
+    ASSERT_TRUE(read_heat && read_label);
+    for (Vertex_index v : mesh.vertices()) {
+      EXPECT_EQ((*read_heat)[v], float(v.idx()) / 7.0f);
+      EXPECT_EQ((*read_label)[v], std::uint16_t(v.idx() * 3));
+    }
+  }
+  fs::remove_all(dir);
+}
+
+TEST(IO_ply_vertex_properties, without_maps_the_file_is_cgals_soup_file_byte_for_byte)
+{
+  const fs::path dir = scratch_directory();
+  Mesh_d mesh;
+  read_polygon_mesh(test::data("nonorientable/klein_fig8_24x12_quads.obj"), mesh);
+  std::vector<test::Kd::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  for (Vertex_index v : mesh.vertices())
+    points.push_back(mesh.point(v));
+  for (CGAL_ext::Face_index f : mesh.faces()) {
+    polygons.emplace_back();
+    for (Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh))
+      polygons.back().push_back(v.idx());
+  }
+  for (const bool binary : {true, false}) {
+    const std::string file = (dir / "mine.ply").string();
+    write_polygon_mesh(file, mesh, CGAL_ext::parameters::use_binary_mode(binary));
+    std::ostringstream cgal(std::ios::binary);
+    CGAL::IO::set_mode(cgal, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+    ASSERT_TRUE(CGAL::IO::write_PLY(cgal, points, polygons, CGAL::parameters::stream_precision(17)));
+    std::ifstream in(file, std::ios::binary);
+    const std::string mine((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_TRUE(mine == cgal.str()) << (binary ? "binary" : "ascii");
+  }
+  fs::remove_all(dir);
+}
+
+TEST(IO_ply_vertex_properties, sharpness_travels_and_merged_points_carry_none)
+{
+  const fs::path dir = scratch_directory();
+  // The vertex sharpness map is "v:sharpness": PLY carries corners too.
+  Mesh_d mesh;
+  read_polygon_mesh(test::data("opensubdiv/catmark_cube_corner4.obj"), mesh);
+  ASSERT_TRUE(has_vertex_sharpness(mesh));
+  // (Its texture coordinates have seams, which PLY cannot hold.)
+  mesh.remove_corner_channel(CGAL_ext::corner_uv_name);
+  mesh.remove_corner_channel(CGAL_ext::corner_normal_name);
+  const std::string file = (dir / "corners.ply").string();
+  write_polygon_mesh(file, mesh);
+  Mesh_d back;
+  read_polygon_mesh(file, back);
+  const auto sharpness = mesh.property_map<Vertex_index, float>(CGAL_ext::vertex_sharpness_name);
+  const auto back_sharpness = back.property_map<Vertex_index, float>(CGAL_ext::vertex_sharpness_name);
+  ASSERT_TRUE(sharpness && back_sharpness);
+  for (Vertex_index v : mesh.vertices())
+    EXPECT_EQ((*back_sharpness)[v], (*sharpness)[v]);
+  // Points merged on reading: vertex i is no longer point i, no map is made.
+  // A property named like the point map is not taken for it.
+  write_text(dir / "merged.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                 "property float z\nproperty float point\nelement face 2\n"
+                                 "property list uchar int vertex_indices\nend_header\n"
+                                 "0 0 0 5\n1 0 0 6\n0 1 0 7\n1 0 0 8\n3 0 1 2\n3 0 2 3\n");
+  Mesh_d merged;
+  read_polygon_mesh((dir / "merged.ply").string(), merged, CGAL_ext::parameters::tolerance(0.0));
+  EXPECT_EQ(merged.number_of_vertices(), 3u);
+  EXPECT_EQ(merged.properties<Vertex_index>(), (std::vector<std::string>{"v:point"}));
+  Mesh_d unmerged;
+  read_polygon_mesh((dir / "merged.ply").string(), unmerged);
+  EXPECT_EQ(unmerged.number_of_vertices(), 4u);
+  EXPECT_FALSE((unmerged.property_map<Vertex_index, float>("v:point")));
   fs::remove_all(dir);
 }
 

@@ -9,6 +9,7 @@
 
 #include <CGAL_ext/Limit_surface.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
+#include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Subdivision/limit.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
@@ -19,12 +20,14 @@
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/bfr/tessellation.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #endif
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -256,6 +259,84 @@ TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
   RecordProperty("position", std::to_string(d.position / scale));
   RecordProperty("first_derivatives", std::to_string(d.first / scale));
 }
+
+class Tessellation_against_bfr : public ::testing::TestWithParam<const char*>
+{};
+
+// The tessellation against Bfr::Tessellation (uniform rate, quads
+// preserved) face by face: the same number of samples and facets, each of
+// Bfr's coordinates evaluated to a sample of ours (the nearest one, within
+// 1e-10 of the size, and no two on one), and the same facets on those samples.
+TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
+{
+  const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
+  const Mesh m = build(s);
+  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
+  const double scale = largest_coordinate(m);
+  for (int rate = 1; rate <= 8; ++rate) {
+    const Mesh out = surface.tessellate(rate);
+    std::size_t facet = 0, coords = 0;
+    double worst = 0;
+    for (CGAL_ext::Face_index f : m.faces()) {
+      Bfr::Tessellation::Options options;
+      options.SetFacetSize(4).PreserveQuads(true);
+      const Bfr::Tessellation t(Bfr::Parameterization(Sdc::SCHEME_CATMARK, int(m.degree(f))), rate, options);
+      ASSERT_TRUE(t.IsValid());
+      std::vector<double> uv(2 * std::size_t(t.GetNumCoords()));
+      t.GetCoords(uv.data());
+      std::vector<int> facets(4 * std::size_t(t.GetNumFacets()));
+      t.GetFacets(facets.data());
+      ASSERT_LE(facet + std::size_t(t.GetNumFacets()), out.number_of_faces()) << GetParam() << " rate " << rate;
+      // Our facets of f and their samples.
+      std::set<std::vector<std::size_t>> ours;
+      std::set<std::size_t> samples;
+      for (std::size_t k = 0; k < std::size_t(t.GetNumFacets()); ++k) {
+        std::vector<std::size_t> c;
+        for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(out.halfedge(CGAL_ext::Face_index(facet + k)), out))
+          c.push_back(v.idx());
+        std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+        ours.insert(c);
+        samples.insert(c.begin(), c.end());
+      }
+      facet += std::size_t(t.GetNumFacets());
+      EXPECT_EQ(samples.size(), std::size_t(t.GetNumCoords())) << GetParam() << " rate " << rate << " f" << f.idx();
+      std::vector<std::size_t> match;
+      for (std::size_t c = 0; c < std::size_t(t.GetNumCoords()); ++c) {
+        const Point p = surface.evaluate(f, uv[2 * c], uv[2 * c + 1]).point;
+        std::size_t best = 0;
+        double d = 1e300;
+        for (std::size_t id : samples)
+          if (const double x = std::sqrt(CGAL::squared_distance(p, out.point(CGAL_ext::Vertex_index(id)))); x < d) {
+            d = x;
+            best = id;
+          }
+        worst = std::max(worst, d);
+        match.push_back(best);
+      }
+      coords += match.size();
+      EXPECT_EQ(std::set<std::size_t>(match.begin(), match.end()).size(), match.size()) << GetParam() << " rate " << rate;
+      std::set<std::vector<std::size_t>> theirs;
+      for (std::size_t k = 0; k < std::size_t(t.GetNumFacets()); ++k) {
+        std::vector<std::size_t> c;
+        for (int i = 0; i < 4; ++i)
+          if (facets[4 * k + std::size_t(i)] >= 0)
+            c.push_back(match[std::size_t(facets[4 * k + std::size_t(i)])]);
+        std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+        theirs.insert(c);
+      }
+      EXPECT_EQ(ours, theirs) << GetParam() << " rate " << rate << " f" << f.idx();
+    }
+    EXPECT_EQ(facet, out.number_of_faces()) << GetParam() << " rate " << rate;
+    EXPECT_LE(worst, 1e-10 * scale) << GetParam() << " rate " << rate;
+    RecordProperty(std::string("rate") + std::to_string(rate) + "_position", std::to_string(worst / scale));
+    (void)coords;
+  }
+}
+
+// Quads, borders and corners, n-gons, triangles.
+INSTANTIATE_TEST_SUITE_P(Shapes, Tessellation_against_bfr,
+                         ::testing::Values("catmark_cube", "catmark_edgecorner", "catmark_nonquads",
+                                           "catmark_smoothtris1"));
 #endif // CGAL_EXT_HAVE_OPENSUBDIV
 
 // The uniform cubic B-spline basis, written out here from its definition.
@@ -383,6 +464,88 @@ TEST(Limit_surface, RefusesWhatItCannotEvaluate)
   EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), 1.5, 0.5), CGAL_ext::Parameter_error);
   EXPECT_THROW(Surface(m, CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none)),
                CGAL_ext::Parameter_error);
+}
+
+// Samples inside a base face of n sides at rate N, as Bfr counts them.
+std::size_t interior_samples(std::size_t n, std::size_t N)
+{
+  if (n == 4)
+    return (N - 1) * (N - 1);
+  const std::size_t M = N / 2;
+  if (N % 2 == 0)
+    return n * (M - 1) * M + 1;
+  return n * M * M + (n == 3 ? 0 : 1);
+}
+
+// Watertight: a valid mesh of the same Euler characteristic, borders and
+// orientability, whose base vertices and edge samples are shared (the
+// count of vertices leaves no room for duplicates).
+TEST(Limit_surface, TessellationIsWatertight)
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  meshes.emplace_back("mobius_strip", strip);
+  for (const char* name : {"catmark_cube", "catmark_edgecorner", "catmark_nonquads", "catmark_smoothtris1"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  for (const auto& [name, m] : meshes) {
+    const Surface surface(m);
+    for (std::size_t N = 1; N <= 5; ++N) {
+      const Mesh out = surface.tessellate(int(N));
+      EXPECT_TRUE(out.is_valid()) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::euler_characteristic(out), CGAL_ext::euler_characteristic(m)) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::number_of_border_cycles(out), CGAL_ext::number_of_border_cycles(m)) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::is_orientable(out), CGAL_ext::is_orientable(m)) << name << " rate " << N;
+      std::size_t expected = m.number_of_vertices() + m.number_of_edges() * (N - 1);
+      for (CGAL_ext::Face_index f : m.faces())
+        expected += interior_samples(m.degree(f), N);
+      EXPECT_EQ(out.number_of_vertices(), expected) << name << " rate " << N;
+      const auto normals = out.property_map<CGAL_ext::Vertex_index, K::Vector_3>("v:normal");
+      ASSERT_TRUE(normals.has_value()) << name;
+      // Unit normals, but where du × dv vanishes: only at base vertices (a
+      // border vertex of one face under edge_only, some n-gon corners).
+      for (CGAL_ext::Vertex_index v : out.vertices()) {
+        const double length = std::sqrt((*normals)[v].squared_length());
+        if (length == 0)
+          EXPECT_LT(v.idx(), m.number_of_vertices()) << name << " rate " << N;
+        else
+          EXPECT_NEAR(length, 1.0, 1e-12) << name << " rate " << N;
+      }
+      // Per-corner normals on the strip agree with each facet's own normal.
+      const bool mobius = name == "mobius_strip";
+      const auto corners = out.property_map<CGAL_ext::Halfedge_index, K::Vector_3>("h:normal");
+      EXPECT_EQ(corners.has_value(), mobius) << name;
+      if (mobius && N >= 2)
+        for (CGAL_ext::Face_index f : out.faces()) {
+          const K::Vector_3 fn = CGAL_ext::face_normal(f, out);
+          for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out))
+            EXPECT_GT((*corners)[d.halfedge()] * fn, 0) << "facet " << f.idx() << " rate " << N;
+        }
+    }
+  }
+  EXPECT_FALSE(CGAL_ext::is_orientable(Surface(strip).tessellate(3)));
+  EXPECT_THROW(Surface(strip).tessellate(0), CGAL_ext::Parameter_error);
+}
+
+// At rate 1 a quad mesh tessellates to its limit points, exactly those of limit_point().
+TEST(Limit_surface, TessellationAtRateOneIsTheLimitPoints)
+{
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  std::vector<std::pair<std::string, Mesh>> meshes{{"mobius_strip", strip}};
+  for (const char* name : {"catmark_cube", "catmark_cube_corner4", "catmark_edgecorner"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  for (const auto& [name, m] : meshes) {
+    const auto np = CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::edge_only);
+    const Mesh out = Surface(m, np).tessellate(1);
+    ASSERT_EQ(out.number_of_vertices(), m.number_of_vertices()) << name;
+    EXPECT_EQ(out.number_of_faces(), m.number_of_faces()) << name;
+    for (CGAL_ext::Vertex_index v : m.vertices())
+      EXPECT_EQ(out.point(v), S::limit_point<S::Catmull_clark_mask>(v, m, np)) << name << " v" << v.idx();
+  }
+  // The free function is the member.
+  const Mesh a = S::tessellate<S::Catmull_clark_mask>(strip, 2), b = Surface(strip).tessellate(2);
+  EXPECT_EQ(a.points().data(), b.points().data());
 }
 
 } // namespace

@@ -22,6 +22,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -1336,6 +1337,398 @@ TEST(MergeInPlace, RandomSplitsOfClosedSurfacesGlueBack)
                                                  : b.point(CGAL_ext::Vertex_index(v - a.number_of_vertices())));
     }
   EXPECT_GT(split, 0u); // the splits were exercised
+}
+
+// ---------------------------------------------------------------------------- coincident border vertices
+
+// Soups of separate faces, as a bad exporter writes them: many border
+// vertices at one point. The merge groups coincident vertices once, so its
+// time and memory stay near-linear in the border however many coincide
+// (it used to list every pair of them: 4 000 copies of one triangle took
+// 5.7 s and 200 MB). The large cases below would take minutes and
+// gigabytes if it were quadratic (no time is asserted); the results are
+// checked against an independent brute-force pairing.
+namespace coincident {
+
+using P = Kd::Point_3;
+using in_place::Soup;
+
+// `n` copies of one triangle, each with its own points; every other copy
+// reversed if `alternate`.
+Soup copies_of_a_triangle(std::size_t n, bool alternate = false)
+{
+  Soup s;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.points.insert(s.points.end(), {P(0, 0, 0), P(1, 0, 0), P(0, 1, 0)});
+    if (alternate && i % 2)
+      s.polygons.push_back({3 * i, 3 * i + 2, 3 * i + 1});
+    else
+      s.polygons.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  return s;
+}
+
+// A full fan of `n` separate triangles around the origin (each its own
+// component), every other one reversed if `alternate`. Neighbours' copies
+// of a rim point come from the same expression: they coincide exactly.
+Soup fan(std::size_t n, bool alternate = false)
+{
+  Soup s;
+  const double pi = std::acos(-1.0);
+  auto rim = [&](std::size_t i) { return P(std::cos(2 * pi * (i % n) / n), std::sin(2 * pi * (i % n) / n), 0); };
+  for (std::size_t i = 0; i < n; ++i) {
+    s.points.insert(s.points.end(), {P(0, 0, 0), rim(i), rim(i + 1)});
+    if (alternate && i % 2)
+      s.polygons.push_back({3 * i, 3 * i + 2, 3 * i + 1});
+    else
+      s.polygons.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  return s;
+}
+
+// What the automatic merge pairs, by brute force over every pair of border
+// vertices and every pair of border halfedges, from the rule as documented:
+// two border vertices match if they are within the tolerance (exactly; of
+// different meshes for a two-mesh merge); border halfedge b (s -> t), in
+// increasing order, is glued to the one other border edge whose ends match
+// or are s and t (not another edge from s to t), unless it has several
+// (refused) or that edge is taken (refused).
+struct Pairing
+{
+  bool refused = false;
+  std::vector<std::pair<std::size_t, std::size_t>> vertex_pairs, halfedge_pairs;
+  std::size_t mobius_edges = 0, ignored_vertex_pairs = 0;
+};
+
+Pairing brute_force_pairing(const Mesh<P>& m, std::size_t split, bool self, double tolerance)
+{
+  using Q = CGAL::Exact_rational;
+  auto within = [&](const P& p, const P& q) {
+    // Far apart along an axis (beyond any rounding): not within; else exactly.
+    if (std::abs(p.x() - q.x()) > tolerance + 1e-6 || std::abs(p.y() - q.y()) > tolerance + 1e-6 ||
+        std::abs(p.z() - q.z()) > tolerance + 1e-6)
+      return false;
+    const Q dx = Q(p.x()) - Q(q.x()), dy = Q(p.y()) - Q(q.y()), dz = Q(p.z()) - Q(q.z());
+    return dx * dx + dy * dy + dz * dz <= Q(tolerance) * Q(tolerance);
+  };
+  std::vector<CGAL_ext::Vertex_index> border_vertices;
+  for (auto v : m.vertices())
+    if (!m.is_isolated(v) && m.is_border(v))
+      border_vertices.push_back(v);
+  std::set<std::pair<CGAL_ext::Vertex_index, CGAL_ext::Vertex_index>> matching;
+  for (auto u : border_vertices)
+    for (auto w : border_vertices)
+      if (u < w && (self || (u.idx() < split) != (w.idx() < split)) && within(m.point(u), m.point(w)))
+        matching.emplace(u, w);
+  auto near = [&](CGAL_ext::Vertex_index u, CGAL_ext::Vertex_index w) {
+    return u == w || matching.count({(std::min)(u, w), (std::max)(u, w)}) > 0;
+  };
+  std::vector<CGAL_ext::Halfedge_index> border;
+  for (auto h : m.halfedges())
+    if (m.is_border(h))
+      border.push_back(h);
+  Pairing r;
+  std::set<std::size_t> paired;
+  for (auto b : border) {
+    if (paired.count(b.idx()))
+      continue;
+    const auto s = m.source(b), t = m.target(b);
+    std::vector<std::pair<CGAL_ext::Halfedge_index, bool>> found; // with "runs the same way"
+    for (auto c : border) {
+      const auto cs = m.source(c), ct = m.target(c);
+      const bool same = near(s, cs) && near(t, ct) && !(cs == s && ct == t);
+      const bool reverse = near(s, ct) && near(t, cs) && !(ct == s && cs == t);
+      EXPECT_FALSE(same && reverse) << "the inputs keep the tolerance below half the edges";
+      if (c != b && (same || reverse))
+        found.emplace_back(c, same);
+    }
+    if (found.size() > 1 || (found.size() == 1 && paired.count(found[0].first.idx()))) {
+      r.refused = true;
+      return r;
+    }
+    if (found.empty())
+      continue;
+    const auto [g, same] = found[0];
+    paired.insert({b.idx(), g.idx()});
+    const auto s2 = same ? m.source(g) : m.target(g), t2 = same ? m.target(g) : m.source(g);
+    for (auto [x, y] : {std::make_pair(s, s2), std::make_pair(t, t2)})
+      if (x != y)
+        r.vertex_pairs.emplace_back((std::min)(x.idx(), y.idx()), (std::max)(x.idx(), y.idx()));
+    r.halfedge_pairs.emplace_back(b.idx(), g.idx());
+    r.mobius_edges += same ? 1 : 0;
+  }
+  std::sort(r.vertex_pairs.begin(), r.vertex_pairs.end());
+  r.vertex_pairs.erase(std::unique(r.vertex_pairs.begin(), r.vertex_pairs.end()), r.vertex_pairs.end());
+  r.ignored_vertex_pairs = matching.size() - r.vertex_pairs.size();
+  return r;
+}
+
+// The faces of `m` with the vertices of each class of the pairs identified
+// (at the lowest member's point), imported as a soup: the mesh the glue
+// must make, or a Soup_error where it must refuse.
+Mesh<P> soup_with_pairs_identified(const Mesh<P>& m, const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+                                   std::vector<std::size_t>& lowest)
+{
+  lowest.resize(m.number_of_vertices());
+  for (std::size_t v = 0; v < lowest.size(); ++v)
+    lowest[v] = v;
+  auto find = [&](std::size_t v) {
+    while (lowest[v] != v)
+      v = lowest[v];
+    return v;
+  };
+  for (auto [u, w] : pairs) {
+    const std::size_t a = find(u), b = find(w);
+    lowest[(std::max)(a, b)] = (std::min)(a, b);
+  }
+  for (std::size_t v = 0; v < lowest.size(); ++v)
+    lowest[v] = find(v);
+  // One point per class, numbered in order of the lowest members.
+  Soup soup;
+  std::vector<std::size_t> point_of(lowest.size());
+  for (std::size_t v = 0; v < lowest.size(); ++v)
+    if (lowest[v] == v) {
+      point_of[v] = soup.points.size();
+      soup.points.push_back(m.point(CGAL_ext::Vertex_index(std::uint32_t(v))));
+    }
+  for (auto f : m.faces()) {
+    std::vector<std::size_t> polygon;
+    for (auto d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      polygon.push_back(point_of[lowest[m.source(d).idx()]]);
+    soup.polygons.push_back(polygon);
+  }
+  return from_soup(soup.points, soup.polygons);
+}
+
+// Merges `a` with `b` (or `a` with itself if `b` is null) and checks the
+// result against the brute-force pairing and the soup with its pairs
+// identified. Returns whether the merge glued (rather than refused).
+bool expect_as_brute_force(Mesh<P> a, const Mesh<P>* b, double tolerance)
+{
+  Mesh<P> joined = a;
+  if (b)
+    joined.join(*b);
+  const Pairing expected = brute_force_pairing(joined, a.number_of_vertices(), !b, tolerance);
+  std::vector<std::size_t> lowest;
+  std::optional<Mesh<P>> glued;
+  if (!expected.refused) {
+    try {
+      glued = soup_with_pairs_identified(joined, expected.vertex_pairs, lowest);
+    } catch (const CGAL_ext::Soup_error&) {
+    }
+  }
+  const std::string before = test::snapshot(a);
+  CGAL_ext::Merge_result r;
+  try {
+    r = b ? CGAL_ext::merge_borders(a, *b, CGAL_ext::parameters::tolerance(tolerance))
+          : CGAL_ext::merge_borders(a, CGAL_ext::parameters::tolerance(tolerance));
+  } catch (const CGAL_ext::Merge_error& e) {
+    EXPECT_FALSE(glued) << "refused: " << e.what();
+    EXPECT_EQ(test::snapshot(a), before);
+    return false;
+  }
+  if (!glued) {
+    ADD_FAILURE() << (expected.refused ? "the pairing is ambiguous" : "the glue is not a 2-manifold");
+    return true;
+  }
+  EXPECT_TRUE(a.is_valid(true));
+  EXPECT_EQ(r.vertex_pairs, expected.vertex_pairs);
+  EXPECT_EQ(r.ignored_vertex_pairs, expected.ignored_vertex_pairs);
+  // The pairs found come first; the glue adds border edges that end up between the same two vertices.
+  EXPECT_GE(r.halfedge_pairs.size(), expected.halfedge_pairs.size());
+  EXPECT_TRUE(r.halfedge_pairs.size() >= expected.halfedge_pairs.size() &&
+              std::equal(expected.halfedge_pairs.begin(), expected.halfedge_pairs.end(), r.halfedge_pairs.begin()));
+  EXPECT_EQ(r.glued_edges, r.halfedge_pairs.size());
+  if (r.glued_edges == expected.halfedge_pairs.size()) {
+    EXPECT_EQ(r.mobius_edges, expected.mobius_edges);
+  }
+  EXPECT_EQ(r.merged_vertices, joined.number_of_vertices() - a.number_of_vertices());
+  EXPECT_EQ(r.vertex_map.size(), joined.number_of_vertices());
+  for (std::size_t v = 0; v < lowest.size() && v < r.vertex_map.size(); ++v) {
+    EXPECT_EQ(r.vertex_map[v], r.vertex_map[lowest[v]]);
+    EXPECT_EQ(a.point(r.vertex_map[v]), joined.point(CGAL_ext::Vertex_index(std::uint32_t(lowest[v]))));
+  }
+  EXPECT_EQ(in_place::topology(a), in_place::topology(*glued));
+  EXPECT_EQ(CGAL_ext::number_of_mobius_edges(a), CGAL_ext::number_of_mobius_edges(*glued));
+  EXPECT_EQ(CGAL_ext::is_orientable(a), CGAL_ext::is_orientable(*glued));
+  return true;
+}
+
+// The triangles of an n x n grid of unit squares (each cut along a random
+// diagonal), as separate components: a square at random as one component
+// of its two triangles, or each triangle left out, reversed, copied 2 to 4
+// times (every other copy reversed) or as it is. Each component has its
+// own copies of its points, each moved by +-`jitter` along a random axis.
+std::vector<Soup> random_triangles(std::uint32_t seed, int n, double jitter)
+{
+  std::uint32_t state = seed * 2654435761u + 1;
+  auto random = [&state](std::uint32_t k) {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) % k;
+  };
+  auto point = [&](int i, int j) {
+    double c[3] = {double(i), double(j), 0.25 * ((i * 3 + j) % 2)};
+    if (jitter > 0)
+      c[random(3)] += random(2) ? jitter : -jitter;
+    return P(c[0], c[1], c[2]);
+  };
+  std::vector<Soup> parts;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      // The square's corners counter-clockwise, and its two triangles.
+      const int corner[4][2] = {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}};
+      const std::size_t d = random(2);
+      const std::vector<std::size_t> triangles[2] = {{d, d + 1, (d + 2) % 4}, {(d + 2) % 4, (d + 3) % 4, d}};
+      if (random(5) == 0) {
+        Soup square;
+        for (const auto& c : corner)
+          square.points.push_back(point(c[0], c[1]));
+        square.polygons = {triangles[0], triangles[1]};
+        parts.push_back(square);
+        continue;
+      }
+      for (const auto& triangle : triangles) {
+        const std::uint32_t what = random(8); // 0: left out, 1: reversed, 2: copied
+        const std::size_t copies = what == 0 ? 0 : what == 2 ? 2 + random(3) : 1;
+        for (std::size_t c = 0; c < copies; ++c) {
+          Soup s;
+          for (std::size_t k : triangle)
+            s.points.push_back(point(corner[k][0], corner[k][1]));
+          const bool reversed = (what == 1) != (c % 2 == 1);
+          s.polygons.push_back(reversed ? std::vector<std::size_t>{0, 2, 1} : std::vector<std::size_t>{0, 1, 2});
+          parts.push_back(s);
+        }
+      }
+    }
+  return parts;
+}
+
+} // namespace coincident
+
+TEST(MergeCoincident, CopiesOfATriangleAreRefusedAndLeftUnchanged)
+{
+  // Three or more copies of a triangle give each edge three faces or more:
+  // refused, as one mesh or two, the meshes as they were.
+  using namespace coincident;
+  for (std::size_t n : {3u, 4u})
+    for (double tolerance : {0.0, 1e-9}) {
+      SCOPED_TRACE(std::to_string(n) + " copies, tolerance " + std::to_string(tolerance));
+      const Soup copies = copies_of_a_triangle(n, true);
+      Mesh<P> m = from_soup(copies.points, copies.polygons);
+      const std::string before = test::snapshot(m);
+      try {
+        CGAL_ext::merge_borders(m, CGAL_ext::parameters::tolerance(tolerance));
+        ADD_FAILURE() << "expected a Merge_error";
+      } catch (const CGAL_ext::Merge_error& e) {
+        EXPECT_EQ(e.kind(), CGAL_ext::Merge_error::Kind::non_manifold_edge);
+        // The message counts every edge the first edge could be glued to.
+        EXPECT_NE(std::string(e.what()).find("to " + std::to_string(n - 1) + " border edges"), std::string::npos)
+          << e.what();
+        EXPECT_EQ(e.vertices().size(), 2 * n); // the edge's ends and theirs
+      }
+      EXPECT_EQ(test::snapshot(m), before);
+      Mesh<P> a = m;
+      const Mesh<P> b = m;
+      EXPECT_THROW(CGAL_ext::merge_borders(a, b, CGAL_ext::parameters::tolerance(tolerance)), CGAL_ext::Merge_error);
+      EXPECT_EQ(test::snapshot(a), before);
+      EXPECT_EQ(test::snapshot(b), before);
+    }
+}
+
+TEST(MergeCoincident, TwentyThousandCopiesOfATriangleAreRefusedInNearLinearTime)
+{
+  // 60 000 border vertices at three points: listing their pairs, as the
+  // merge once did, would take 6 * 10^8 of them (gigabytes, minutes); grouped,
+  // they are refused at once.
+  using namespace coincident;
+  const std::size_t n = 20000;
+  const Soup copies = copies_of_a_triangle(n);
+  Mesh<P> m = from_soup(copies.points, copies.polygons);
+  const std::string before = test::snapshot(m);
+  try {
+    CGAL_ext::merge_borders(m);
+    ADD_FAILURE() << "expected a Merge_error";
+  } catch (const CGAL_ext::Merge_error& e) {
+    EXPECT_EQ(e.kind(), CGAL_ext::Merge_error::Kind::non_manifold_edge);
+    EXPECT_NE(std::string(e.what()).find("could be glued to 19999 border edges"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("an edge takes at most two faces"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(test::snapshot(m), before);
+}
+
+TEST(MergeCoincident, TwoCopiesOfATriangleCloseIntoAPillow)
+{
+  using namespace coincident;
+  for (bool alternate : {false, true}) {
+    const Soup copies = copies_of_a_triangle(2, alternate);
+    Mesh<P> m = from_soup(copies.points, copies.polygons);
+    const auto r = CGAL_ext::merge_borders(m);
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(in_place::topology(m), (in_place::Topology{3, 3, 2, 0, 2}));
+    EXPECT_EQ(r.glued_edges, 3u);
+    EXPECT_EQ(r.merged_vertices, 3u);
+    EXPECT_EQ(r.ignored_vertex_pairs, 0u);
+    // The same copies face the same way: the pillow has Möbius edges.
+    EXPECT_EQ(r.mobius_edges, alternate ? 0u : 3u);
+  }
+}
+
+TEST(MergeCoincident, FanOfSeparateTrianglesGluesIntoADisc)
+{
+  // 2 000 triangles around one centre, each a component of its own: the
+  // 2 000 copies of the centre coincide, and each spoke glues to the one
+  // neighbour that shares it. A disc with the centre inside: V = n + 1,
+  // E = 2n, F = n, one border loop, chi = 1. With every other triangle
+  // reversed (and a tolerance), the spokes are Möbius edges and the disc is
+  // still orientable.
+  using namespace coincident;
+  const std::size_t n = 2000;
+  for (const auto& [alternate, tolerance] : {std::make_pair(false, 0.0), std::make_pair(true, 1e-9)}) {
+    SCOPED_TRACE(std::string(alternate ? "alternate" : "same") + " orientations");
+    const Soup soup = fan(n, alternate);
+    Mesh<P> m = from_soup(soup.points, soup.polygons);
+    const auto r = CGAL_ext::merge_borders(m, CGAL_ext::parameters::tolerance(tolerance));
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(in_place::topology(m), (in_place::Topology{n + 1, 2 * n, n, 1, 1}));
+    EXPECT_TRUE(CGAL_ext::is_orientable(m));
+    EXPECT_EQ(r.glued_edges, n);
+    EXPECT_EQ(r.mobius_edges, alternate ? n : 0u);
+    EXPECT_EQ(r.merged_vertices, 2 * n - 1);
+    // n(n - 1)/2 pairs of centre copies match, and n pairs of rim copies;
+    // each spoke identifies one pair of each.
+    EXPECT_EQ(r.vertex_pairs.size(), 2 * n);
+    EXPECT_EQ(r.ignored_vertex_pairs, n * (n - 1) / 2 + n - 2 * n);
+    ASSERT_EQ(r.vertex_map.size(), 3 * n);
+    for (std::size_t v = 0; v < 3 * n; ++v)
+      ASSERT_EQ(m.point(r.vertex_map[v]), soup.points[v]);
+  }
+}
+
+TEST(MergeCoincident, RandomTriangleSoupsAsByBruteForce)
+{
+  // Separate triangles of a grid, some reversed, some copied (refused), some
+  // left out, merged as one mesh and as two, with coincident copies of the
+  // points (tolerance 0) and with copies moved apart by up to 0.1 (tolerance
+  // 0.1, at the boundary: two copies moved 0.05 apart each way may be just
+  // within or just beyond it).
+  using namespace coincident;
+  std::size_t merged = 0, refused = 0;
+  for (double jitter : {0.0, 0.05})
+    for (std::uint32_t seed = 1; seed <= 40; ++seed) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", jitter " + std::to_string(jitter));
+      const std::vector<Soup> parts = random_triangles(seed, 3, jitter);
+      Mesh<P> one, a, b;
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        const Mesh<P> part = from_soup(parts[k].points, parts[k].polygons);
+        one.join(part);
+        (k % 3 == seed % 3 ? b : a).join(part);
+      }
+      for (const Mesh<P>* second : {static_cast<const Mesh<P>*>(nullptr), static_cast<const Mesh<P>*>(&b)})
+        ++(expect_as_brute_force(second ? a : one, second, 2 * jitter) ? merged : refused);
+    }
+  // Both outcomes were exercised.
+  EXPECT_GT(merged, 20u);
+  EXPECT_GT(refused, 20u);
 }
 
 } // namespace merge_tests

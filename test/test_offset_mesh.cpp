@@ -5,6 +5,7 @@
 // an exact kernel the lifts p ± D·n exactly.
 
 #include "test_util.h"
+#include "topology_checks.h"
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
@@ -39,42 +40,10 @@ using CGAL_ext::Face_index;
 using CGAL_ext::Vertex_index;
 using Point = test::Kd::Point_3;
 using Mesh = CGAL_ext::Mobius_mesh<Point>;
-using Key = std::tuple<double, double, double>;
-
-template <class P>
-Key key_of(const P& p)
-{
-  return Key(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-}
-
-// A face as the cycle of its corners' points, up to rotation and direction.
-std::vector<Key> canonical_cycle(std::vector<Key> c)
-{
-  std::vector<Key> best;
-  for (int pass = 0; pass < 2; ++pass) {
-    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-    if (best.empty() || c < best)
-      best = c;
-    std::reverse(c.begin(), c.end());
-  }
-  return best;
-}
-
-// The mesh as a sorted list of faces by points: equal for two meshes that
-// are the same surface up to face orientation and element numbering.
-template <class P>
-std::vector<std::vector<Key>> face_signature(const CGAL_ext::Mobius_mesh<P>& m)
-{
-  std::vector<std::vector<Key>> faces;
-  for (Face_index f : m.faces()) {
-    std::vector<Key> c;
-    for (Vertex_index v : CGAL_ext::vertices_around_face(f, m))
-      c.push_back(key_of(m.point(v)));
-    faces.push_back(canonical_cycle(c));
-  }
-  std::sort(faces.begin(), faces.end());
-  return faces;
-}
+using topology_checks::canonical_cycle;
+using topology_checks::face_signature;
+using topology_checks::Key;
+using topology_checks::key_of;
 
 // A hexagon fanned from its centre: seven vertices, six triangles.
 Mesh hexagon_fan()

@@ -14,6 +14,8 @@
 #include <array>
 #include <cstdint>
 #include <cmath>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -231,6 +233,150 @@ TEST(PolygonSoupErrors, NonManifoldVertexAndItsSplitting)
       CGAL_ext::polygon_soup_to_mobius_mesh(square, cone_and_fin, n);
     },
     Soup_error);
+}
+
+// Three triangles at point 1: polygons 0 and 1 run the same way along their
+// shared edge (1, 2), a Möbius edge, and form one fan; polygon 2 touches
+// them at point 1 only, a second fan. Splitting gives each fan its own vertex.
+TEST(PolygonSoupErrors, SplittingAFanWithAMobiusEdge)
+{
+  const std::vector<Point> points = {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 2, 0}, {2, 1, 0}, {2, 2, 0}};
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {2, 3, 1}, {1, 4, 5}};
+  for (const bool keep : {false, true}) {
+    SCOPED_TRACE(keep ? "keep_orientation" : "oriented");
+    Mesh m;
+    const std::size_t added = CGAL_ext::polygon_soup_to_mobius_mesh(
+      points, polygons, m, CGAL_ext::parameters::split_non_manifold_vertices(true).keep_orientation(keep));
+    EXPECT_EQ(added, 1u);
+    ASSERT_TRUE(m.is_valid(true));
+    EXPECT_EQ(m.number_of_vertices(), 7u);
+    EXPECT_EQ(m.number_of_faces(), 3u);
+    // The two strip triangles agree once oriented; kept as given, they meet
+    // along the Möbius edge.
+    EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), keep ? 1u : 0u);
+    std::vector<std::vector<std::size_t>> fans;
+    for (const CGAL_ext::Vertex_index v : m.vertices()) {
+      if (m.point(v) != points[1])
+        continue;
+      std::vector<std::size_t> faces;
+      for (const CGAL_ext::Face_index f : CGAL_ext::faces_around_target(v, m))
+        if (f != Mesh::null_face())
+          faces.push_back(f.idx());
+      std::sort(faces.begin(), faces.end());
+      fans.push_back(faces);
+    }
+    std::sort(fans.begin(), fans.end());
+    EXPECT_EQ(fans, (std::vector<std::vector<std::size_t>>{{0, 1}, {2}}));
+  }
+}
+
+// The vertices a soup of triangles gives once its non-manifold points are
+// split, counted from the soup alone: the fans of each point (its triangles,
+// joined where two share an edge at it), and one for each unused point.
+std::size_t number_of_fans(std::size_t n_points, const std::vector<std::array<int, 3>>& triangles)
+{
+  auto has = [](const std::array<int, 3>& t, int v) { return std::find(t.begin(), t.end(), v) != t.end(); };
+  std::size_t count = 0;
+  for (int v = 0; v < int(n_points); ++v) {
+    std::vector<std::size_t> around;
+    for (std::size_t i = 0; i < triangles.size(); ++i)
+      if (has(triangles[i], v))
+        around.push_back(i);
+    if (around.empty()) {
+      ++count;
+      continue;
+    }
+    std::vector<std::size_t> parent(around.size());
+    for (std::size_t i = 0; i < parent.size(); ++i)
+      parent[i] = i;
+    auto root = [&](std::size_t i) {
+      while (parent[i] != i)
+        i = parent[i];
+      return i;
+    };
+    // Any two corners of a triangle are an edge of it.
+    for (std::size_t a = 0; a < around.size(); ++a)
+      for (std::size_t b = a + 1; b < around.size(); ++b)
+        for (const int w : triangles[around[a]])
+          if (w != v && has(triangles[around[b]], w))
+            parent[root(a)] = root(b);
+    for (std::size_t i = 0; i < parent.size(); ++i)
+      count += root(i) == i;
+  }
+  return count;
+}
+
+// Edges along which two triangles of the soup run the same way.
+std::size_t number_of_mobius_edges(const std::vector<std::array<int, 3>>& triangles)
+{
+  std::size_t count = 0;
+  for (std::size_t a = 0; a < triangles.size(); ++a)
+    for (std::size_t b = a + 1; b < triangles.size(); ++b)
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          count += triangles[a][i] == triangles[b][j] && triangles[a][(i + 1) % 3] == triangles[b][(j + 1) % 3];
+  return count;
+}
+
+// Small soups of triangles on a few points, each triangle in a random
+// orientation, so that Möbius edges and vertices of several fans (with
+// Möbius edges in them, and fans on the border) are common; a triangle that
+// would give an edge a third face, or repeat another's corners, is dropped.
+TEST(PolygonSoupErrors, SplittingRandomSoupsGivesAVertexPerFan)
+{
+  std::mt19937 random(20260311);
+  std::size_t with_copies = 0, with_mobius_copies = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int n_points = std::uniform_int_distribution<int>(4, 8)(random);
+    const int n_tries = std::uniform_int_distribution<int>(2, 9)(random);
+    std::vector<Point> points;
+    for (int i = 0; i < n_points; ++i)
+      points.emplace_back(i, (i * i) % 5, i % 3);
+    std::vector<std::array<int, 3>> triangles;
+    auto faces_on_edge = [&](int a, int b) {
+      std::size_t n = 0;
+      for (const auto& t : triangles)
+        n += std::find(t.begin(), t.end(), a) != t.end() && std::find(t.begin(), t.end(), b) != t.end();
+      return n;
+    };
+    for (int k = 0; k < n_tries; ++k) {
+      std::vector<int> all(std::size_t(n_points), 0);
+      std::iota(all.begin(), all.end(), 0);
+      std::shuffle(all.begin(), all.end(), random);
+      const std::array<int, 3> t = {all[0], all[1], all[2]};
+      std::array<int, 3> sorted = t;
+      std::sort(sorted.begin(), sorted.end());
+      bool ok = faces_on_edge(t[0], t[1]) < 2 && faces_on_edge(t[1], t[2]) < 2 && faces_on_edge(t[2], t[0]) < 2;
+      for (std::array<int, 3> u : triangles) {
+        std::sort(u.begin(), u.end());
+        ok = ok && u != sorted;
+      }
+      if (ok)
+        triangles.push_back(t);
+    }
+    const std::size_t fans = number_of_fans(points.size(), triangles);
+    const std::size_t mobius = number_of_mobius_edges(triangles);
+    with_copies += fans > points.size();
+    with_mobius_copies += fans > points.size() && mobius > 0;
+    for (const bool keep : {false, true}) {
+      SCOPED_TRACE("trial " + std::to_string(trial) + (keep ? ", keep_orientation" : ", oriented"));
+      Mesh m;
+      const std::size_t added = CGAL_ext::polygon_soup_to_mobius_mesh(
+        points, triangles, m, CGAL_ext::parameters::split_non_manifold_vertices(true).keep_orientation(keep));
+      ASSERT_TRUE(m.is_valid(true));
+      EXPECT_EQ(m.number_of_vertices(), fans);
+      EXPECT_EQ(added, fans - points.size());
+      EXPECT_EQ(m.number_of_faces(), triangles.size());
+      if (keep)
+        EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), mobius);
+      for (std::size_t v = points.size(); v < m.number_of_vertices(); ++v)
+        EXPECT_NE(std::find(points.begin(), points.end(), m.point(CGAL_ext::Vertex_index(std::uint32_t(v)))),
+                  points.end());
+    }
+  }
+  // The soups are of the kinds the test is about.
+  EXPECT_GT(with_copies, 300u);
+  EXPECT_GT(with_mobius_copies, 100u);
 }
 
 TEST(PolygonSoupErrors, NonFinitePoint)

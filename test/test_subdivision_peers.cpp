@@ -17,7 +17,17 @@
 
 #include <gtest/gtest.h>
 
+// AddressSanitizer's allocator, not malloc's, holds the heap under ASan: GCC
+// says so with __SANITIZE_ADDRESS__, clang with __has_feature.
 #if defined(__SANITIZE_ADDRESS__)
+#define CGAL_EXT_TEST_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CGAL_EXT_TEST_UNDER_ASAN 1
+#endif
+#endif
+
+#ifdef CGAL_EXT_TEST_UNDER_ASAN
 // From the AddressSanitizer runtime (GCC ships no header for it).
 extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
 #else
@@ -313,7 +323,7 @@ TEST(SubdivisionExact, LinearTetrahedronTwoLevelsByHand)
 
 std::size_t heap_in_use()
 {
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef CGAL_EXT_TEST_UNDER_ASAN
   return __sanitizer_get_current_allocated_bytes();
 #else
   return mallinfo2().uordblks;

@@ -188,6 +188,31 @@ TEST(TwoSidedScene, SharpEdgesAreColouredBySharpness)
   EXPECT_EQ(colour_of(given, X::Edge_index(2u)), style.sharp);
 }
 
+// A colour per face (a scalar field's ramp) paints both sides of each face
+// alike, across Möbius edges too; the sheets and edges are those of the
+// two-sided scene.
+TEST(TwoSidedScene, FaceColourMapPaintsBothSides)
+{
+  X::Mobius_mesh<Kd::Point_3> strip;
+  X::make_mobius_strip(strip, 12, 3);
+  auto colour = strip.template add_property_map<X::Face_index, CGAL::IO::Color>("f:colour").first;
+  for (X::Face_index f : strip.faces())
+    colour[f] = CGAL::IO::Color(static_cast<unsigned char>(f.idx() * 7), 100, static_cast<unsigned char>(255 - f.idx()));
+  const X::Two_sided_scene plain = X::make_two_sided_scene(strip);
+  const X::Two_sided_scene painted = X::make_two_sided_scene(strip, X::parameters::face_color_map(colour));
+  ASSERT_EQ(painted.faces.size(), 2 * strip.number_of_faces());
+  std::size_t back = 0;
+  for (const auto& face : painted.faces) {
+    EXPECT_EQ(face.color, colour[face.face]) << face.face;
+    back += face.back ? 1 : 0;
+  }
+  EXPECT_EQ(back, strip.number_of_faces());
+  EXPECT_EQ(painted.corners, plain.corners);
+  ASSERT_EQ(painted.segments.size(), plain.segments.size());
+  for (std::size_t i = 0; i < plain.segments.size(); ++i)
+    EXPECT_EQ(painted.segments[i].color, plain.segments[i].color);
+}
+
 TEST(TwoSidedScene, BadInputIsRefused)
 {
   X::Mobius_mesh<Kd::Point_3> strip;

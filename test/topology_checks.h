@@ -1,5 +1,6 @@
 // What the generator and topology tests check a mesh against: the counts
-// and invariants it should have, its faces' vertex cycles, and the test meshes
+// and invariants it should have, its faces' vertex cycles, its faces by their
+// points (equal up to orientation and numbering), and the test meshes
 // in test/data/nonorientable with the figures their first line states.
 #ifndef CGAL_EXT_TEST_TOPOLOGY_CHECKS_H
 #define CGAL_EXT_TEST_TOPOLOGY_CHECKS_H
@@ -17,12 +18,51 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 namespace topology_checks {
 
 namespace X = CGAL_ext;
+
+// A point as a key that compares exactly.
+using Key = std::tuple<double, double, double>;
+
+template <class P>
+Key key_of(const P& p)
+{
+  return Key(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+// A face as the cycle of its corners' points, up to rotation and direction.
+std::vector<Key> canonical_cycle(std::vector<Key> c)
+{
+  std::vector<Key> best;
+  for (int pass = 0; pass < 2; ++pass) {
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    if (best.empty() || c < best)
+      best = c;
+    std::reverse(c.begin(), c.end());
+  }
+  return best;
+}
+
+// The mesh as a sorted list of faces by points: equal for two meshes that
+// are the same surface up to face orientation and element numbering.
+template <class P>
+std::vector<std::vector<Key>> face_signature(const CGAL_ext::Mobius_mesh<P>& m)
+{
+  std::vector<std::vector<Key>> faces;
+  for (X::Face_index f : m.faces()) {
+    std::vector<Key> c;
+    for (X::Vertex_index v : X::vertices_around_face(f, m))
+      c.push_back(key_of(m.point(v)));
+    faces.push_back(canonical_cycle(c));
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
 
 struct Expected
 {

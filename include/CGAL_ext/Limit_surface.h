@@ -10,10 +10,12 @@
 
 #include <CGAL_ext/Limit_surface/internal/Patch_builder.h>
 #include <CGAL_ext/Limit_surface/internal/Patches.h>
+#include <CGAL_ext/Limit_surface/internal/Tessellation.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/limit.h>
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/subdivision.h>
 
@@ -199,6 +201,55 @@ public:
     return n;
   }
 
+  /// \brief a mesh of the limit surface sampled uniformly at `rate`
+  /// samples per base edge, laid out in each base face as OpenSubdiv's
+  /// `Bfr::Tessellation` lays it out at that uniform rate with quads
+  /// preserved, and watertight by construction.
+  ///
+  /// A quad becomes `rate` × `rate` quads, sample (i, j) at parameter
+  /// (i / rate, j / rate). A face of n ≠ 4 sides holds in each sub-face k a
+  /// grid of (M + 1)² samples, M = `rate` div 2, at sub-face parameters
+  /// (2i / rate, 2j / rate); at an even rate these are M × M quads per
+  /// sub-face meeting at the centre; at an odd rate a strip of M quads joins
+  /// neighbouring sub-faces, and the centre is a triangle (n = 3) or a fan of
+  /// n triangles round the face's centre point (so `rate` 1 fans an n-gon).
+  ///
+  /// Shared samples are computed once: the limit point of each base vertex
+  /// (`limit_point()` where all faces around it are quads, else the
+  /// evaluation at the corner of the first face that reaches it), the
+  /// `rate` − 1 samples inside each base edge (evaluated from the first face
+  /// that reaches it, reused in reverse order by the face across, in the
+  /// same order across a Möbius edge), then each face's interior. Vertex i
+  /// of the result, for i below the number of base vertices, is base vertex
+  /// i (an isolated vertex keeps its point). Each facet keeps the
+  /// orientation of its base face, so a Möbius edge stays a run of Möbius
+  /// edges, borders stay borders and a one-sided surface stays one-sided.
+  ///
+  /// Normals (`du × dv` of unit length, the null vector where it vanishes):
+  /// a vertex property `"v:normal"`, each seen from the orientation of the
+  /// face that evaluated it, so consistent on a mesh without Möbius edges;
+  /// where the base has Möbius edges also a halfedge property `"h:normal"`,
+  /// for each halfedge of a face the normal at its target seen from that
+  /// face's orientation (as `compute_corner_normals()` writes them), which
+  /// is what a renderer wants on a one-sided surface.
+  /// \throws Parameter_error if `rate` is not positive.
+  Mobius_mesh<P> tessellate(int rate) const
+  {
+    if (rate < 1)
+      throw Parameter_error("Limit_surface::tessellate: the rate " + std::to_string(rate) + " is not positive");
+    const auto& m = base_.mesh;
+    const auto np = CGAL_ext::parameters::boundary_interpolation(options_.boundary);
+    // limit_point() reads quad rings only; elsewhere the corner evaluation
+    // is Bfr's limit point of the vertex.
+    const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+      for (Face_index g : CGAL_ext::faces_around_target(m.halfedge(v), m))
+        if (g != Face_index() && m.degree(g) != 4)
+          return evaluated;
+      return P(limit_point<Catmull_clark_mask>(v, m, np));
+    };
+    return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point).run();
+  }
+
 private:
   struct Face_patches
   {
@@ -267,6 +318,20 @@ private:
   mutable std::vector<std::unique_ptr<Face_patches>> faces_;
   std::unique_ptr<std::once_flag[]> once_;
 };
+
+/// \ingroup PkgSubdivision
+/// \brief the limit surface of `mesh` under `Mask` (`Catmull_clark_mask`)
+/// tessellated uniformly at `rate` samples per base edge:
+/// `Limit_surface<Mask, P>(mesh, np, options).tessellate(rate)` (see there
+/// for the layout, the watertightness and the normals).
+/// \throws Parameter_error as the constructor of `Limit_surface` and
+/// `Limit_surface::tessellate()`.
+template <class Mask, class P, class NP = parameters::Default_named_parameters>
+Mobius_mesh<P> tessellate(const Mobius_mesh<P>& mesh, int rate, const NP& np = parameters::default_values(),
+                          const Limit_surface_options& options = Limit_surface_options())
+{
+  return Limit_surface<Mask, P>(mesh, np, options).tessellate(rate);
+}
 
 } // namespace Subdivision
 } // namespace CGAL_ext

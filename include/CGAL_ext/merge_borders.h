@@ -37,8 +37,10 @@ namespace CGAL_ext {
 ///
 /// Merges the borders of `mesh_b` into `mesh_a` where they meet: border
 /// vertices of `mesh_a` and `mesh_b` within the tolerance of each other are
-/// candidates (found with `CGAL::box_intersection_d()` on padded boxes, then
-/// decided exactly, see below), and each border edge whose two ends are
+/// candidates (coincident vertices grouped first, then the groups paired with
+/// `CGAL::box_intersection_d()` on padded boxes and decided exactly, see
+/// below: time near-linear in the number of border vertices, however many
+/// coincide), and each border edge whose two ends are
 /// candidates of the two ends of a border edge of the other mesh is glued to
 /// it. Gluing follows the borders from matched vertex to matched vertex as
 /// far as both run together; vertex pairs that glue no edge are left apart
@@ -77,7 +79,8 @@ namespace CGAL_ext {
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{the kernel whose `Compare_squared_distance_3` decides}
+///     \cgalParamDescription{the kernel whose `Compare_squared_distance_3` decides (and whose
+///       `Compare_xyz_3` groups coincident vertices)}
 ///     \cgalParamDefault{the kernel of the point type}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd

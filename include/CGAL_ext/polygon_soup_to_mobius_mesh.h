@@ -127,7 +127,8 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
 ///     \cgalParamDefault{`CGAL::Identity_property_map`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{geom_traits}
-///     \cgalParamDescription{the kernel whose `Compare_squared_distance_3` decides merges}
+///     \cgalParamDescription{the kernel whose `Compare_squared_distance_3` decides merges (and
+///                           whose `Compare_xyz_3` groups coincident points)}
 ///     \cgalParamDefault{the kernel of the point type}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{tolerance}

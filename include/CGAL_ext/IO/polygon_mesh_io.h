@@ -13,6 +13,7 @@
 #include <CGAL_ext/IO/internal/OBJ_reader.h>
 #include <CGAL_ext/IO/internal/OFF_reader.h>
 #include <CGAL_ext/IO/internal/PLY_reader.h>
+#include <CGAL_ext/IO/internal/PLY_writer.h>
 #include <CGAL_ext/IO/internal/Text_scanning.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -22,7 +23,6 @@
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
-#include <CGAL/IO/PLY.h>
 #include <CGAL/exceptions.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Simple_cartesian.h>
@@ -158,6 +158,39 @@ Written_corner_data checked_corner_data(const Mobius_mesh<P>& mesh, const std::s
   return corners;
 }
 
+// The PLY vertex properties after x, y and z: the corner channels' values
+// per vertex (nx ny nz, s t) where the mesh has them, then the vertex maps
+// "v:NAME" (see ply_vertex_columns()). A map of the name of a written corner
+// property is refused (IO_error) rather than written twice or dropped.
+template <class P>
+std::vector<Ply_vertex_column> ply_columns(const Mobius_mesh<P>& mesh, const Vertex_values& values,
+                                           const std::string& filename)
+{
+  std::vector<Ply_vertex_column> columns;
+  const std::vector<std::string> maps = mesh.template properties<Vertex_index>();
+  const auto add = [&](const char* name, const std::string& channel, const auto& per_vertex, std::size_t k) {
+    if (std::find(maps.begin(), maps.end(), "v:" + std::string(name)) != maps.end())
+      throw IO_error(filename, 0,
+                     "the mesh has both the corner channel \"" + channel + "\" and the vertex map \"v:" + name +
+                       "\", which PLY files would both hold as the vertex property '" + name +
+                       "': remove or rename one; nothing was written");
+    Ply_vertex_column column{name, Ply_type::float64, {}};
+    column.values.reserve(per_vertex.size());
+    for (const auto& v : per_vertex)
+      column.values.push_back(v[k]);
+    columns.push_back(std::move(column));
+  };
+  if (!values.normal.empty())
+    for (std::size_t k = 0; k < 3; ++k)
+      add(k == 0 ? "nx" : k == 1 ? "ny" : "nz", corner_normal_name, values.normal, k);
+  if (!values.uv.empty())
+    for (std::size_t k = 0; k < 2; ++k)
+      add(k == 0 ? "s" : "t", corner_uv_name, values.uv, k);
+  std::vector<Ply_vertex_column> vertex_maps = ply_vertex_columns(mesh);
+  columns.insert(columns.end(), std::make_move_iterator(vertex_maps.begin()), std::make_move_iterator(vertex_maps.end()));
+  return columns;
+}
+
 // OpenSubdiv's tags (vertex indices in tags count from 0): sharpness where it
 // is not 0, and the options that are set.
 template <class P, class NP>
@@ -179,6 +212,47 @@ void write_obj_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const NP& np,
         << (*options.triangle_subdivision == Triangle_subdivision::smooth ? "smooth" : "catmark") << '\n';
 }
 
+template <class T, class P>
+void add_vertex_column(Mobius_mesh<P>& mesh, const Ply_vertex_column& column)
+{
+  auto [map, created] = mesh.template add_property_map<Vertex_index, T>("v:" + column.name);
+  if (!created)
+    return; // a map of the mesh's own (the points) or of the same name
+  for (Vertex_index v : mesh.vertices())
+    map[v] = T(column.values[v.idx()]);
+}
+
+// The PLY file's other vertex properties as vertex property maps "v:NAME" of
+// the file's types, as CGAL's Surface_mesh reader makes them. Only where
+// vertex i of the mesh is point i of the file: nothing was merged or split.
+template <class P>
+void add_vertex_columns(Mobius_mesh<P>& mesh, const std::vector<Ply_vertex_column>& columns)
+{
+  for (const Ply_vertex_column& c : columns) {
+    if (c.values.size() != mesh.number_of_vertices())
+      continue;
+    switch (c.type) {
+    case Ply_type::int8: add_vertex_column<std::int8_t>(mesh, c); break;
+    case Ply_type::uint8: add_vertex_column<std::uint8_t>(mesh, c); break;
+    case Ply_type::int16: add_vertex_column<std::int16_t>(mesh, c); break;
+    case Ply_type::uint16: add_vertex_column<std::uint16_t>(mesh, c); break;
+    case Ply_type::int32: add_vertex_column<std::int32_t>(mesh, c); break;
+    case Ply_type::uint32: add_vertex_column<std::uint32_t>(mesh, c); break;
+    case Ply_type::float32: {
+      // An ASCII value beyond a float's range (1e300 for a float property)
+      // becomes an infinity, as a conversion from text to float makes it.
+      Ply_vertex_column clamped = c;
+      for (double& x : clamped.values)
+        if (std::isfinite(x) && std::abs(x) > double(std::numeric_limits<float>::max()))
+          x = x > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+      add_vertex_column<float>(mesh, clamped);
+      break;
+    }
+    case Ply_type::float64: add_vertex_column<double>(mesh, c); break;
+    }
+  }
+}
+
 // read_polygon_mesh() without its translation of foreign exceptions.
 template <class P, class NP>
 Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format format, Mobius_mesh<P>& mesh,
@@ -187,13 +261,14 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
   const std::string text = read_whole_file(filename);
   std::vector<P> points;
   std::vector<std::vector<std::size_t>> polygons;
+  std::vector<Ply_vertex_column> columns;
   Obj_scan obj;
   if (format == Mesh_format::obj)
     obj = read_obj_text(filename, text, points, polygons);
   else if (format == Mesh_format::off)
     obj.lines = read_off(filename, text, points, polygons, obj.corner_data);
   else
-    obj.lines = read_ply(filename, text, points, polygons, obj.corner_data);
+    obj.lines = read_ply(filename, text, points, polygons, obj.corner_data, &columns);
   if (polygons.empty())
     throw IO_error(filename, 0, "the file has no faces");
 
@@ -204,8 +279,9 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
   constexpr bool merged = !std::is_same_v<Tolerance, CGAL::internal_np::Param_not_found>;
   std::vector<std::vector<Vertex_index>> images;
   Mobius_mesh<P> result;
+  std::size_t split = 0;
   try {
-    CGAL_ext::internal::soup_to_mobius_mesh(points, polygons, result, np, [&](Mobius_mesh<P>& built) {
+    split = CGAL_ext::internal::soup_to_mobius_mesh(points, polygons, result, np, [&](Mobius_mesh<P>& built) {
       add_read_channels(obj.corner_data, polygons, built);
       if (!obj.creases.empty() || !obj.corners.empty())
         images = soup_point_images(polygons, points.size(), merged, built);
@@ -213,6 +289,8 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
   } catch (const Soup_error& e) {
     throw_soup_error_in_file(e, filename, obj.lines);
   }
+  if (!merged && split == 0 && result.number_of_vertices() == points.size())
+    add_vertex_columns(result, columns);
   if (!images.empty())
     apply_obj_tags(obj, filename, images, result);
   mesh = std::move(result);
@@ -257,6 +335,17 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
 /// 1 edge and corner, 2 edge only), `t creasemethod 0/0/1 chaikin|uniform` and
 /// `t smoothtriangles 0/0/1 smooth|catmark` are returned. Other tags are
 /// ignored.
+///
+/// From PLY files, every scalar property of the `vertex` element other than
+/// `x`, `y` and `z` becomes a vertex property map named `"v:NAME"` whose value
+/// type is the property's (`float`, `double`, `std::int8_t` ... `std::uint32_t`),
+/// as CGAL's `Surface_mesh` PLY reader makes them (which turns `nx`, `ny`, `nz`
+/// and colours into `"v:normal"` and `"v:color"`; here they are three maps
+/// each). `write_polygon_mesh()` writes such maps back. A property whose map
+/// cannot be made (`point`, or a name the mesh already holds with another
+/// type) is left out, and so are all of them where vertex i of the mesh is not
+/// point i of the file: when a `tolerance` merges points, or non-manifold
+/// vertices are split.
 ///
 /// \param filename the file to read
 /// \param mesh the mesh that receives the file's content; unchanged if reading fails
@@ -335,7 +424,10 @@ void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
 {
   check_output_file(filename);
   internal::Vertex_values values;
-  internal::checked_corner_data(mesh, filename, internal::format_of(filename), values);
+  const internal::Mesh_format format = internal::format_of(filename);
+  internal::checked_corner_data(mesh, filename, format, values);
+  if (format == internal::Mesh_format::ply)
+    internal::ply_columns(mesh, values, filename);
 }
 
 /// \ingroup PkgMobiusMeshIO
@@ -360,6 +452,19 @@ void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
 /// created rather than dropped: a seam or a corner without a value beside
 /// valued ones in PLY or OFF, texture coordinates in OFF, any other channel,
 /// values of another type (see `check_output_file(filename, mesh)`).
+///
+/// To PLY files, vertex data is written too, as CGAL's `Surface_mesh` PLY
+/// writer writes it: each vertex property map named `"v:NAME"` (the point
+/// map aside) whose value type is an integer of 8 to 64 bits, `float` or
+/// `double` becomes the PLY vertex property `NAME` of the matching type
+/// (64-bit integers as 32-bit ones, as CGAL does), in the order the maps were
+/// added. A viewer can colour the mesh by it, and `read_polygon_mesh()` reads
+/// it back into a map of the same name and type. Maps of other types, and
+/// names that are not one word or are `x`, `y` or `z`, are not written. They
+/// come after x, y, z and the corner channels' `nx ny nz` and `s t`; a map
+/// `"v:nx"` (and so on) beside the channel written under its name is refused.
+/// Without such maps and without corner channels the file is the one CGAL's
+/// `write_PLY()` of the polygon soup writes, byte for byte.
 ///
 /// To OBJ files, OpenSubdiv's tags are written too: `t crease 2/1/0 v0 v1 s`
 /// for each edge and `t corner 1/1/0 v s` for each vertex whose sharpness is
@@ -421,6 +526,9 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   }
   internal::Vertex_values vertex_values;
   const internal::Written_corner_data corners = internal::checked_corner_data(mesh, filename, format, vertex_values);
+  std::vector<internal::Ply_vertex_column> ply_columns;
+  if (format == internal::Mesh_format::ply)
+    ply_columns = internal::ply_columns(mesh, vertex_values, filename);
 
   const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
   const bool binary =
@@ -442,11 +550,9 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
       written = CGAL::IO::write_OFF(out, points, polygons, cgal_np);
     else
       internal::write_off_with_values(out, points, polygons, vertex_values, precision);
-  } else if (corners.empty()) {
-    CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
-    written = CGAL::IO::write_PLY(out, points, polygons, cgal_np);
   } else {
-    internal::write_ply_with_values(out, points, polygons, vertex_values, binary, precision);
+    out.precision(precision);
+    written = internal::write_ply(out, binary, points, polygons, ply_columns);
   }
   if (!written || !out)
     throw IO_error(filename, 0, "writing the file failed" + internal::system_reason() + "; the old file is unchanged");

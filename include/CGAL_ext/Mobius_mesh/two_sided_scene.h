@@ -57,6 +57,12 @@ namespace CGAL_ext {
 ///     \cgalParamDescription{a `Two_sided_style`: colours and gap}
 ///     \cgalParamDefault{`Two_sided_style()`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{face_color_map}
+///     \cgalParamDescription{a readable property map from `Face_index` to `CGAL::IO::Color`: both
+///       sides of each face in its colour instead of the style's front and back (a scalar
+///       field shown by a colour ramp, which needs no side); edges keep their colours}
+///     \cgalParamDefault{none: the style's side colours}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_sharpness_map}
 ///     \cgalParamDescription{a readable property map from `Edge_index` to sharpness}
 ///     \cgalParamDefault{the mesh's `e:sharpness` map where it has one, else no sharp edges}
@@ -92,7 +98,7 @@ Two_sided_scene make_two_sided_scene(const Mobius_mesh<P>& mesh, const NP& np = 
   const double diagonal = std::sqrt(CGAL::square(scene.bbox.x_span()) + CGAL::square(scene.bbox.y_span()) +
                                     CGAL::square(scene.bbox.z_span()));
   const double half_gap = mesh.number_of_vertices() ? style.gap * diagonal / 2 : 0;
-  internal::add_two_sided_faces(mesh, geometry, style, half_gap, scene);
+  internal::add_two_sided_faces(mesh, geometry, style, half_gap, internal::face_color_values(mesh, np), scene);
   internal::add_two_sided_segments(mesh, geometry, internal::edge_sharpness_values(mesh, np), style, half_gap,
                                    scene);
   return scene;

@@ -24,8 +24,10 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -94,9 +96,24 @@ private:
   FT tolerance_, squared_;
 };
 
+/// Points grouped by exact coincidence: `group[i]` is the group of the i-th
+/// point, groups numbered in order of their first member; `first[g]` is the
+/// position of group g's first member.
+struct Coincident_groups
+{
+  std::vector<std::uint32_t> group, first;
+  std::uint32_t size() const { return std::uint32_t(first.size()); }
+};
+
 /// Candidate pairs by box intersection (closed double boxes padded by the
 /// tolerance and one unit in the last place, so that no close pair is
 /// missed), each decided by `Within_tolerance`.
+///
+/// Coincident points are close to each other under any tolerance and close
+/// to the same other points, while k of them make k(k - 1)/2 pairs: a soup
+/// of duplicated faces has thousands at one point. So callers group them
+/// first (`coincident()`, with the traits' `Compare_xyz_3`) and search pairs
+/// among one point per group, in time near-linear in the number of points.
 template <class Traits>
 class Close_points
 {
@@ -106,7 +123,7 @@ public:
   using u32 = std::uint32_t;
 
   Close_points(const Traits& traits, const FT& tolerance)
-    : within_(traits, tolerance), pad_(CGAL::to_interval(tolerance).second)
+    : traits_(traits), within_(traits, tolerance), pad_(CGAL::to_interval(tolerance).second)
   {}
 
   const Within_tolerance<Traits>& within() const { return within_; }
@@ -129,16 +146,50 @@ public:
                              decide(point_of, report));
   }
 
+  /// The points `ids` grouped by exact coincidence (`point_of(id)` gives a
+  /// point), in O(n log n) comparisons.
+  template <class PointOf>
+  Coincident_groups coincident(const std::vector<u32>& ids, PointOf point_of) const
+  {
+    const u32 n = u32(ids.size());
+    const auto compare = traits_.compare_xyz_3_object();
+    auto coincide = [&](u32 i, u32 j) { return compare(point_of(ids[i]), point_of(ids[j])) == CGAL::EQUAL; };
+    // Sorted by point, coincident points by position: each run starts with its first member.
+    std::vector<u32> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](u32 i, u32 j) {
+      const CGAL::Comparison_result c = compare(point_of(ids[i]), point_of(ids[j]));
+      return c != CGAL::EQUAL ? c == CGAL::SMALLER : i < j;
+    });
+    std::vector<u32> run_start(n);
+    for (u32 k = 0; k < n; ++k)
+      run_start[order[k]] = k > 0 && coincide(order[k - 1], order[k]) ? run_start[order[k - 1]] : order[k];
+    Coincident_groups groups;
+    groups.group.resize(n);
+    for (u32 i = 0; i < n; ++i) {
+      if (run_start[i] == i) {
+        groups.group[i] = groups.size();
+        groups.first.push_back(i);
+      } else {
+        groups.group[i] = groups.group[run_start[i]];
+      }
+    }
+    return groups;
+  }
+
   /// Classes of the points [0, n) under "close", closed transitively,
   /// numbered by their lowest member; `n_classes` receives their number.
   template <class PointOf>
   std::vector<u32> classes(u32 n, PointOf point_of, u32& n_classes) const
   {
     std::vector<u32> ids(n);
-    for (u32 i = 0; i < n; ++i)
-      ids[i] = i;
+    std::iota(ids.begin(), ids.end(), 0u);
+    const Coincident_groups groups = coincident(ids, point_of);
     Union_find sets(n);
-    self_pairs(ids, point_of, [&](u32 i, u32 j) { sets.unite(i, j); });
+    for (u32 i = 0; i < n; ++i)
+      sets.unite(i, groups.first[groups.group[i]]);
+    // One point per group: its first member (the ids are the positions).
+    self_pairs(groups.first, point_of, [&](u32 i, u32 j) { sets.unite(i, j); });
     return sets.classes(n_classes);
   }
 
@@ -170,6 +221,7 @@ private:
     };
   }
 
+  Traits traits_;
   Within_tolerance<Traits> within_;
   double pad_;
 };

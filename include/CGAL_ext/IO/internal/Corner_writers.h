@@ -3,8 +3,9 @@
 //
 // The writers of meshes with texture coordinates or normals: OBJ with
 // `vt`/`vn` and `f v/vt/vn` corners (a value per face corner), OFF and PLY
-// with a value per vertex. Meshes without them go through CGAL's soup
-// writers; these write the same points and faces, and the values beside.
+// with a value per vertex (PLY through PLY_writer.h). Meshes without them go
+// through CGAL's soup writers; these write the same points and faces, and the
+// values beside.
 
 #ifndef CGAL_EXT_IO_INTERNAL_CORNER_WRITERS_H
 #define CGAL_EXT_IO_INTERNAL_CORNER_WRITERS_H
@@ -120,72 +121,6 @@ inline void write_off_with_values(std::ostream& out, const std::vector<Written_p
     for (std::size_t v : polygon)
       out << ' ' << v;
     out << '\n';
-  }
-}
-
-// Little-endian bytes, whatever the machine's order.
-template <class T, class Bits>
-void put_little_endian(std::ostream& out, T value)
-{
-  Bits bits;
-  static_assert(sizeof(Bits) == sizeof(T), "a value and its bits");
-  std::memcpy(&bits, &value, sizeof bits);
-  char bytes[sizeof(T)];
-  for (std::size_t i = 0; i < sizeof(T); ++i)
-    bytes[i] = char((bits >> (8 * i)) & 0xFF);
-  out.write(bytes, sizeof bytes);
-}
-
-// PLY: the vertices' x y z, nx ny nz and s t as doubles, the faces' index lists.
-inline void write_ply_with_values(std::ostream& out, const std::vector<Written_point>& points,
-                                  const Written_polygons& polygons, const Vertex_values& values, bool binary,
-                                  int precision)
-{
-  std::size_t largest_face = 0;
-  for (const std::vector<std::size_t>& polygon : polygons)
-    largest_face = (std::max)(largest_face, polygon.size());
-  const bool byte_counts = largest_face <= 255;
-  std::vector<const char*> names = {"x", "y", "z"};
-  if (!values.normal.empty())
-    names.insert(names.end(), {"nx", "ny", "nz"});
-  if (!values.uv.empty())
-    names.insert(names.end(), {"s", "t"});
-  out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\ncomment written by CGAL_ext\n"
-      << "element vertex " << points.size() << '\n';
-  for (const char* name : names)
-    out << "property double " << name << '\n';
-  out << "element face " << polygons.size() << "\nproperty list " << (byte_counts ? "uchar" : "int")
-      << " int vertex_indices\nend_header\n";
-  out.precision(precision);
-  for (std::size_t v = 0; v < points.size(); ++v) {
-    std::vector<double> row = {points[v].x(), points[v].y(), points[v].z()};
-    if (!values.normal.empty())
-      row.insert(row.end(), values.normal[v].begin(), values.normal[v].end());
-    if (!values.uv.empty())
-      row.insert(row.end(), values.uv[v].begin(), values.uv[v].end());
-    for (std::size_t k = 0; k < row.size(); ++k) {
-      if (binary)
-        put_little_endian<double, std::uint64_t>(out, row[k]);
-      else
-        out << (k ? " " : "") << row[k];
-    }
-    if (!binary)
-      out << '\n';
-  }
-  for (const std::vector<std::size_t>& polygon : polygons) {
-    if (!binary) {
-      out << polygon.size();
-      for (std::size_t v : polygon)
-        out << ' ' << v;
-      out << '\n';
-      continue;
-    }
-    if (byte_counts)
-      out.put(char(polygon.size()));
-    else
-      put_little_endian<std::int32_t, std::uint32_t>(out, std::int32_t(polygon.size()));
-    for (std::size_t v : polygon)
-      put_little_endian<std::int32_t, std::uint32_t>(out, std::int32_t(v));
   }
 }
 

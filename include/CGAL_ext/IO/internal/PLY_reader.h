@@ -5,9 +5,10 @@
 // polygon soup: the x, y, z of the `vertex` element (and its texture
 // coordinates and normals, for corner channels) and the index list
 // `vertex_indices` (or `vertex_index`) of the `face` element, with any of
-// PLY's integer types for the lists; other elements and properties are read
-// over. Element counts are believed only as far as the bytes after the header
-// can hold them.
+// PLY's integer types for the lists, and the other scalar properties of the
+// `vertex` element as columns of values; other elements and properties are
+// read over. Element counts are believed only as far as the bytes after the
+// header can hold them.
 
 #ifndef CGAL_EXT_IO_INTERNAL_PLY_READER_H
 #define CGAL_EXT_IO_INTERNAL_PLY_READER_H
@@ -65,6 +66,16 @@ struct Ply_property
   bool is_list = false;
   Ply_type count_type = Ply_type::uint8; // lists only
   Ply_type type = Ply_type::float32;     // the value, or a list's items
+};
+
+// The values of one scalar property of the `vertex` element other than x,
+// y and z, in the order of the vertices, with the PLY type the file gives it
+// (every PLY type's values are doubles exactly).
+struct Ply_vertex_column
+{
+  std::string name;
+  Ply_type type = Ply_type::float32;
+  std::vector<double> values;
 };
 
 struct Ply_element
@@ -332,6 +343,12 @@ struct Ply_vertex_values
       std::copy(n, n + 3, normal);
   }
 
+  // Whether property k becomes a corner channel.
+  bool uses(std::size_t k) const
+  {
+    return k != none && (k == uv[0] || k == uv[1] || k == normal[0] || k == normal[1] || k == normal[2]);
+  }
+
   // Appends the values of one vertex item; false if one is not finite.
   bool add(const std::vector<double>& values, Read_corner_data& data) const
   {
@@ -346,13 +363,37 @@ struct Ply_vertex_values
   }
 };
 
+// The scalar properties of the `vertex` element other than x, y and z and
+// those that become corner channels (any property of their names), as empty
+// columns (the first of two properties of one name only).
+inline std::vector<Ply_vertex_column> ply_vertex_columns(const Ply_element& element, const Ply_vertex_values& corners,
+                                                         std::vector<std::size_t>& at)
+{
+  std::vector<Ply_vertex_column> columns;
+  for (std::size_t k = 0; k < element.properties.size(); ++k) {
+    const Ply_property& p = element.properties[k];
+    const bool taken = std::any_of(columns.begin(), columns.end(),
+                                   [&](const Ply_vertex_column& c) { return c.name == p.name; });
+    const bool corner = std::any_of(element.properties.begin(), element.properties.end(), [&](const Ply_property& q) {
+      return corners.uses(std::size_t(&q - element.properties.data())) && q.name == p.name;
+    });
+    if (p.is_list || p.name == "x" || p.name == "y" || p.name == "z" || taken || corner)
+      continue;
+    columns.push_back({p.name, p.type, {}});
+    at.push_back(k);
+  }
+  return columns;
+}
+
 // Reads a PLY file (its whole content) into a polygon soup, and the
 // vertices' texture coordinates and normals into `corners` (a value per
 // point); returns the line of each point and polygon in ASCII files (none in
-// binary ones).
+// binary ones). With `columns`, the other scalar properties of the vertices
+// go there (not those that became corner channels).
 template <class P>
 Soup_lines read_ply(const std::string& filename, const std::string& text, std::vector<P>& points,
-                    std::vector<std::vector<std::size_t>>& polygons, Read_corner_data& corners)
+                    std::vector<std::vector<std::size_t>>& polygons, Read_corner_data& corners,
+                    std::vector<Ply_vertex_column>* columns = nullptr)
 {
   using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
   const Ply_header header = read_ply_header(filename, text);
@@ -377,6 +418,9 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
                      ply_min_bytes(element, in.is_ascii()), in.remaining());
     const Ply_vertex_values vertex_values(element);
     std::vector<double> values(element.properties.size()), list;
+    std::vector<std::size_t> column_at;
+    if (is_vertex && columns != nullptr)
+      *columns = ply_vertex_columns(element, vertex_values, column_at);
     for (unsigned long long item = 0; item < element.count; ++item) {
       const std::size_t line = in.line();
       read_ply_item(filename, element, item, in, values, is_face ? list_at : std::size_t(-1), list);
@@ -387,6 +431,8 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
           throw IO_error(filename, line, "vertex " + std::to_string(item) +
                                            " has a texture coordinate or normal that is not a finite number");
         points.emplace_back(FT(values[xyz[0]]), FT(values[xyz[1]]), FT(values[xyz[2]]));
+        for (std::size_t c = 0; c < column_at.size(); ++c)
+          (*columns)[c].values.push_back(values[column_at[c]]);
         if (line != 0)
           lines.point_lines.push_back(line);
       } else if (is_face) {

@@ -431,7 +431,12 @@ private:
   // Walks the fan of incoming darts from `start` through its faces, stamping
   // them with `stamp` (unless null); on the border, links the fan's two border darts to
   // each other. Returns the fan's first dart (the border dart, if any) and
-  // how many faces it has; `touched` receives its halfedges if given.
+  // how many faces it has. `touched`, if given, receives both halfedges of
+  // every edge of the fan at its vertex (each face's two edges there, of
+  // its incoming dart and of the next one), so that every halfedge that
+  // stores the vertex as its target is among them, whichever way the darts
+  // run: at the border end of a walk whose last dart is flipped, the one
+  // storing it is that face's halfedge on the border edge.
   std::pair<u32, u32> walk_fan(u32 start, u32 stamp, std::vector<u32>* touched)
   {
     u32 visited = 0;
@@ -440,8 +445,11 @@ private:
         face_stamp_[face(d)] = stamp;
       ++visited;
       if (touched) {
-        touched->push_back(dart_encoding::halfedge_of_dart(d));
-        touched->push_back(dart_encoding::opposite_halfedge(dart_encoding::halfedge_of_dart(d)));
+        for (const u32 side : {d, next(d)}) {
+          const u32 h = dart_encoding::halfedge_of_dart(side);
+          touched->push_back(h);
+          touched->push_back(dart_encoding::opposite_halfedge(h));
+        }
       }
     };
     visit(start);
@@ -460,10 +468,6 @@ private:
       const u32 d = prev(out);
       visit(d);
       out = opposite(d);
-    }
-    if (touched) {
-      touched->push_back(dart_encoding::halfedge_of_dart(in));
-      touched->push_back(dart_encoding::halfedge_of_dart(out));
     }
     set_next(in, out);
     return {in, visited};

@@ -87,7 +87,7 @@ inline CGAL::IO::Color blend(const CGAL::IO::Color& a, const CGAL::IO::Color& b,
 
 template <class P, class Geometry>
 void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, const Two_sided_style& style,
-                         double half_gap, Two_sided_scene& scene)
+                         double half_gap, const std::vector<CGAL::IO::Color>& face_colors, Two_sided_scene& scene)
 {
   std::vector<Dart> darts;
   std::vector<Two_sided_scene::Point> points;
@@ -101,7 +101,8 @@ void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, c
       normals.push_back(geometry.normal(d));
     }
     for (const bool back : {false, true}) {
-      scene.faces.push_back({scene.corners.size(), darts.size(), back, f, back ? style.back : style.front});
+      const CGAL::IO::Color color = !face_colors.empty() ? face_colors[f.idx()] : back ? style.back : style.front;
+      scene.faces.push_back({scene.corners.size(), darts.size(), back, f, color});
       // The back side runs the other way round, so that its corners' order
       // agrees with its normals for a renderer that culls.
       for (std::size_t i = 0; i < darts.size(); ++i) {
@@ -112,6 +113,22 @@ void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, c
       }
     }
   }
+}
+
+// The colour of each face from the `face_color_map` parameter, by face
+// index; none without it.
+template <class P, class NP>
+std::vector<CGAL::IO::Color> face_color_values(const Mobius_mesh<P>& mesh, const NP& np)
+{
+  namespace pm = CGAL_ext::parameters;
+  std::vector<CGAL::IO::Color> values;
+  if constexpr (!pm::is_default_parameter<NP, CGAL::internal_np::face_color_map_t>::value) {
+    const auto given = pm::get_parameter(np, CGAL::internal_np::face_color_map);
+    values.resize(mesh.num_faces());
+    for (Face_index f : mesh.faces())
+      values[f.idx()] = get(given, f);
+  }
+  return values;
 }
 
 template <class P, class NP>

@@ -6,6 +6,7 @@
 // same sequence of operations.
 
 #include "test_util.h"
+#include "topology_checks.h"
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
@@ -45,42 +46,10 @@ using CGAL_ext::Vertex_index;
 namespace Euler = CGAL_ext::Euler;
 using Point = test::Kd::Point_3;
 using Mesh = CGAL_ext::Mobius_mesh<Point>;
-using Key = std::tuple<double, double, double>;
-
-template <class P>
-Key key_of(const P& p)
-{
-  return Key(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-}
-
-// A face as the cycle of its corners' points, up to rotation and direction.
-std::vector<Key> canonical_cycle(std::vector<Key> c)
-{
-  std::vector<Key> best;
-  for (int pass = 0; pass < 2; ++pass) {
-    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
-    if (best.empty() || c < best)
-      best = c;
-    std::reverse(c.begin(), c.end());
-  }
-  return best;
-}
-
-// The mesh as a sorted list of faces by points: equal for two meshes that
-// are the same surface up to face orientation and element numbering.
-template <class P>
-std::vector<std::vector<Key>> face_signature(const CGAL_ext::Mobius_mesh<P>& m)
-{
-  std::vector<std::vector<Key>> faces;
-  for (Face_index f : m.faces()) {
-    std::vector<Key> c;
-    for (Vertex_index v : CGAL_ext::vertices_around_face(f, m))
-      c.push_back(key_of(m.point(v)));
-    faces.push_back(canonical_cycle(c));
-  }
-  std::sort(faces.begin(), faces.end());
-  return faces;
-}
+using topology_checks::canonical_cycle;
+using topology_checks::face_signature;
+using topology_checks::Key;
+using topology_checks::key_of;
 
 std::vector<std::vector<Key>> face_signature(const CGAL::Surface_mesh<Point>& sm)
 {
@@ -449,7 +418,8 @@ TEST_P(EulerOnEveryDart, SplitAndJoinEdgesAndFaces)
       const Dart g = e.next(e.next(d));
       if (!Euler::can_split_face(d, g, e)) // the corners are joined elsewhere already
         return std::make_pair(Dart(), Vertex_index());
-      return std::make_pair(Euler::split_face(d, g, e), e.target(g));
+      const Vertex_index corner = e.target(g); // before the split (argument order is unspecified)
+      return std::make_pair(Euler::split_face(d, g, e), corner);
     },
     [&](const Mesh& b, const Mesh& e, Dart, std::pair<Dart, Vertex_index> r) {
       if (!r.first.is_valid())

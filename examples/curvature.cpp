@@ -1,0 +1,8 @@
+// curvature IN OUT.ply [--triangulate]
+//
+// One of the geometry tools; its code is in geometry_tools.cpp, which the
+// four of them share (see geometry_tools.h).
+
+#include "geometry_tools.h"
+
+int main(int argc, char* argv[]) { return examples::curvature_tool(argc, argv); }

@@ -1,0 +1,8 @@
+// smooth IN OUT [--iterations K] [--time T] [--triangulate]
+//
+// One of the geometry tools; its code is in geometry_tools.cpp, which the
+// four of them share (see geometry_tools.h).
+
+#include "geometry_tools.h"
+
+int main(int argc, char* argv[]) { return examples::smooth_tool(argc, argv); }

@@ -1,0 +1,40 @@
+# CTest tests of the tessellate tool (included from examples/CMakeLists.txt).
+# The tessellation of a limit surface is watertight: its border loops,
+# orientability and Euler characteristic are those each file states on its
+# first line, and it is a valid mesh; rate 3 puts two samples inside every
+# base edge, so any sample a face failed to share would break the counts.
+if(NOT CGAL_EXT_BUILD_TESTS)
+  return()
+endif()
+
+set(_data ${PROJECT_SOURCE_DIR}/test/data/nonorientable)
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/tool_output)
+file(MAKE_DIRECTORY ${_out})
+
+file(GLOB _files ${_data}/*.obj)
+foreach(_file ${_files})
+  get_filename_component(_name ${_file} NAME_WE)
+  cgal_ext_stated_topology(${_file})
+  add_test(NAME tessellate.${_name} COMMAND tessellate ${_file} ${_out}/tessellate_${_name}.obj --rate 3)
+  set_tests_properties(tessellate.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"border_loops\":${_border_loops},.*\"orientable\":${_orientable},.*\"euler_characteristic\":${_chi},\"valid\":true,\"seconds\":")
+endforeach()
+
+# The Möbius strip of 100 vertices, 180 edges and 80 quads at rate 3:
+# 100 + 180 x 2 + 80 x 4 vertices, 80 x 9 quads.
+add_test(NAME tessellate.mobius_counts COMMAND tessellate ${_data}/mobius_20x4_quads.obj
+         ${_out}/tessellate_mobius_counts.obj --rate 3)
+set_tests_properties(tessellate.mobius_counts PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":780,\"edges\":1500,\"faces\":720,\"border_loops\":1,")
+
+# A file that is not there, a rate out of range, a border rule that is none of the
+# accepted ones: one line, exit 2.
+cgal_ext_tool_fails(tessellate.fails.missing_file tessellate
+  "${_out}/no_such.obj;${_out}/x.obj;--rate;2"
+  "^tessellate: [^\n]+\n$")
+cgal_ext_tool_fails(tessellate.fails.rate tessellate
+  "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--rate;65"
+  "^tessellate: --rate '65' is not an integer from 1 to 64; usage: [^\n]+\n$")
+cgal_ext_tool_fails(tessellate.fails.boundary tessellate
+  "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--rate;2;--boundary;none"
+  "^tessellate: --boundary 'none' is not edge-only or edge-and-corner; usage: [^\n]+\n$")
