@@ -268,16 +268,19 @@ std::uint32_t obj_value_index(long long index, std::size_t n_values, const char*
   return std::uint32_t(index < 0 ? static_cast<long long>(n_values) + index : index - 1);
 }
 
-// Appends the value indices of one face's corners (`no_corner_value` for a
-// corner without one) to a channel. Nothing is stored until a corner has a
-// value; the corners before it are then filled in without one.
+// Appends the value indices of one face's `n` corners to a channel: `face`,
+// or none (`no_corner_value`) where `face` is empty. Nothing is stored until
+// a corner has a value; the corners before it are then filled in without one.
 inline void add_face_values(std::vector<std::uint32_t>& index, const std::vector<std::uint32_t>& face,
-                            bool face_has_values, std::size_t corners_before)
+                            std::size_t corners_before, std::size_t n)
 {
-  if (!face_has_values && index.empty())
+  if (face.empty() && index.empty())
     return;
   index.resize(corners_before, no_corner_value);
-  index.insert(index.end(), face.begin(), face.end());
+  if (face.empty())
+    index.resize(corners_before + n, no_corner_value);
+  else
+    index.insert(index.end(), face.begin(), face.end());
 }
 
 // Faces that name values beyond the last one of the file.
@@ -309,14 +312,16 @@ struct Obj_largest_indices
 // One `f` line: its polygon, and its corners' value indices. A corner
 // without `vt` (or `vn`) has no value, in a face that has none or beside
 // corners that have one (as CGAL's reader, which reads every form, takes it).
+// `vt` and `vn` are the caller's buffers, kept across faces.
 template <class Fail>
 void scan_obj_face(const std::vector<Token>& tok, std::size_t n_points, Obj_scan& scan,
                    std::vector<std::vector<std::size_t>>& polygons, std::size_t& n_corners,
-                   Obj_largest_indices& largest, const Fail& fail)
+                   Obj_largest_indices& largest, std::vector<std::uint32_t>& vt, std::vector<std::uint32_t>& vn,
+                   const Fail& fail)
 {
   std::vector<std::size_t> polygon;
-  std::vector<std::uint32_t> vt, vn;
-  bool any_vt = false, any_vn = false;
+  vt.clear();
+  vn.clear();
   polygon.reserve(tok.size() - 1);
   for (std::size_t i = 1; i < tok.size(); ++i) {
     Obj_corner c;
@@ -331,17 +336,23 @@ void scan_obj_face(const std::vector<Token>& tok, std::size_t n_points, Obj_scan
            std::to_string(n) + " vertices precede it");
     largest.v = (std::max)(largest.v, index);
     polygon.push_back(std::size_t(index < 0 ? n + index : index - 1));
+    // Value indices are kept from the first corner that has one on (the
+    // corners before it have none); a face without values keeps none.
     const Read_corner_data& values = scan.corner_data;
-    vt.push_back(c.has_vt ? obj_value_index(c.vt, values.uv.values.size(), "texture coordinate", tok[i], largest.vt,
-                                            fail)
-                          : no_corner_value);
-    vn.push_back(c.has_vn ? obj_value_index(c.vn, values.normal.values.size(), "normal", tok[i], largest.vn, fail)
-                          : no_corner_value);
-    any_vt = any_vt || c.has_vt;
-    any_vn = any_vn || c.has_vn;
+    if (c.has_vt) {
+      vt.resize(polygon.size() - 1, no_corner_value);
+      vt.push_back(obj_value_index(c.vt, values.uv.values.size(), "texture coordinate", tok[i], largest.vt, fail));
+    }
+    if (c.has_vn) {
+      vn.resize(polygon.size() - 1, no_corner_value);
+      vn.push_back(obj_value_index(c.vn, values.normal.values.size(), "normal", tok[i], largest.vn, fail));
+    }
   }
-  add_face_values(scan.corner_data.uv.corner_index, vt, any_vt, n_corners);
-  add_face_values(scan.corner_data.normal.corner_index, vn, any_vn, n_corners);
+  for (std::vector<std::uint32_t>* face : {&vt, &vn})
+    if (!face->empty())
+      face->resize(polygon.size(), no_corner_value);
+  add_face_values(scan.corner_data.uv.corner_index, vt, n_corners, polygon.size());
+  add_face_values(scan.corner_data.normal.corner_index, vn, n_corners, polygon.size());
   n_corners += polygon.size();
   polygons.push_back(std::move(polygon));
 }
@@ -360,6 +371,7 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
   std::vector<std::string> tag_tokens;
   Obj_largest_indices largest;
   std::size_t n_corners = 0;
+  std::vector<std::uint32_t> vt, vn; // a face's value indices
   Text_lines lines(text.data(), text.data() + text.size());
   while (lines.next()) {
     const std::size_t line = lines.number();
@@ -388,7 +400,7 @@ Obj_scan read_obj_text(const std::string& filename, const std::string& text, std
       else
         scan_obj_value(tok, false, scan.corner_data.normal, fail);
     } else if (s == "f") {
-      scan_obj_face(tok, points.size(), scan, polygons, n_corners, largest, fail);
+      scan_obj_face(tok, points.size(), scan, polygons, n_corners, largest, vt, vn, fail);
       scan.lines.polygon_lines.push_back(line);
     } else if (s == "t") {
       tag_tokens.clear();
