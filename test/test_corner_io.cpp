@@ -532,6 +532,23 @@ TEST(CornerIO, PlyAndOffVertexValuesAreRead)
         EXPECT_EQ((*normal)[m.corner(d)], Normal(0, 0, p == Point(0, 1, 0) ? -1 : 1));
       }
   }
+  // Per-face texcoord lists (u v per corner): a value per corner, seams included.
+  write_text(dir / "texcoord.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                   "property float z\nproperty float s\nproperty float t\nelement face 2\n"
+                                   "property list uchar int vertex_indices\nproperty list uchar float texcoord\n"
+                                   "end_header\n0 0 0 9 9\n1 0 0 9 9\n1 1 0 9 9\n0 1 0 9 9\n"
+                                   "3 0 1 2 6 0 0 0.5 0 0.5 0.5\n3 0 2 3 6 0.25 0.25 0.5 0.5 0 0.5\n");
+  Mesh m;
+  read_polygon_mesh((dir / "texcoord.ply").string(), m);
+  const Corner_values texcoords = {{{0, 0}, {0, 0}},   {{0, 1}, {0.5, 0}},  {{0, 2}, {0.5, 0.5}},
+                                   {{1, 0}, {0.25, 0.25}}, {{1, 2}, {0.5, 0.5}}, {{1, 3}, {0, 0.5}}};
+  EXPECT_EQ(mesh_corners<UV>(m, CGAL_ext::corner_uv_name, 2), texcoords);
+  EXPECT_EQ(CGAL_ext::corner_channel_summaries(m).front().seam_edges, 1u); // at vertex 0 across the diagonal
+  write_text(dir / "texcoord_short.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                         "property float y\nproperty float z\nelement face 1\n"
+                                         "property list uchar int vertex_indices\nproperty list uchar float texcoord\n"
+                                         "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 4 0 0 1 0\n");
+  expect_read_error(dir / "texcoord_short.ply", 14, "face 0 has 3 corners but 4 texcoord values");
   // A texture coordinate that is not finite, in a binary file.
   std::string nan_ply = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
                         "property float y\nproperty float z\nproperty float s\nproperty float t\n"

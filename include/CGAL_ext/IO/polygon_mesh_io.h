@@ -320,7 +320,8 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
 /// and `corner_normal_name` ("c:normal", `Corner_normal<P>`, its `Vector_3`):
 /// OBJ's `vt u [v [w]]` and `vn` with each face corner's indices, PLY's
 /// per-vertex `s t` (or `u v`, `texture_u texture_v`) and `nx ny nz`, OFF's
-/// `ST` and `N` (a corner takes its vertex's value). Each corner keeps the
+/// `ST` and `N` (a corner takes its vertex's value), and PLY's per-face
+/// `texcoord` lists (u v per corner). Each corner keeps the
 /// value the file gives it at its vertex, also where faces are reversed or
 /// points merged. A face without `vt` (or `vn`) has corners without a value.
 /// A channel is made only if the file has such values.

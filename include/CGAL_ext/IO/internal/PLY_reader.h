@@ -4,11 +4,11 @@
 // Reads a PLY file (ASCII, binary little or big endian) in one pass into a
 // polygon soup: the x, y, z of the `vertex` element (and its texture
 // coordinates and normals, for corner channels) and the index list
-// `vertex_indices` (or `vertex_index`) of the `face` element, with any of
-// PLY's integer types for the lists, and the other scalar properties of the
-// `vertex` element as columns of values; other elements and properties are
-// read over. Element counts are believed only as far as the bytes after the
-// header can hold them.
+// `vertex_indices` (or `vertex_index`) of the `face` element (and its
+// per-corner `texcoord` list), with any of PLY's integer types for the lists,
+// and the other scalar properties of the `vertex` element as columns of
+// values; other elements and properties are read over. Element counts are
+// believed only as far as the bytes after the header can hold them.
 
 #ifndef CGAL_EXT_IO_INTERNAL_PLY_READER_H
 #define CGAL_EXT_IO_INTERNAL_PLY_READER_H
@@ -273,10 +273,11 @@ inline std::size_t ply_min_bytes(const Ply_element& element, bool ascii)
 }
 
 // Reads one item of `element`; `values` receives its scalar values (by
-// property) and `list` the items of the list property numbered `list_at`.
+// property), `list` the items of the list property numbered `list_at` and
+// `second` those of the one numbered `second_at` (none: std::size_t(-1)).
 inline void read_ply_item(const std::string& filename, const Ply_element& element, unsigned long long item,
                           Ply_values& in, std::vector<double>& values, std::size_t list_at,
-                          std::vector<double>& list)
+                          std::vector<double>& list, std::size_t second_at, std::vector<double>& second)
 {
   const std::string where = "'" + printable(element.name) + "' " + std::to_string(item);
   auto fail = [&](const std::string& what) { throw IO_error(filename, in.line(), what); };
@@ -297,15 +298,16 @@ inline void read_ply_item(const std::string& filename, const Ply_element& elemen
       fail("the list '" + printable(p.name) + "' of " + where + " has a negative length");
     check_count_fits(filename, line, "items in the list '" + printable(p.name) + "' of " + where,
                      (unsigned long long)value, in.is_ascii() ? 2 : ply_size(p.type), in.remaining());
-    if (k == list_at)
-      list.resize(std::size_t(value));
+    std::vector<double>* kept = k == list_at ? &list : k == second_at ? &second : nullptr;
+    if (kept)
+      kept->resize(std::size_t(value));
     for (std::size_t i = 0; i < std::size_t(value); ++i) {
       double x = 0;
       if (!in.read(p.type, x))
         throw IO_error(filename, in.line(), "item " + std::to_string(i) + " of the list '" + printable(p.name) +
                                               "' of " + where + " is not a value of its type");
-      if (k == list_at)
-        list[i] = x;
+      if (kept)
+        (*kept)[i] = x;
     }
   }
 }
@@ -352,7 +354,7 @@ struct Ply_vertex_values
   // Appends the values of one vertex item; false if one is not finite.
   bool add(const std::vector<double>& values, Read_corner_data& data) const
   {
-    if (uv[0] != none)
+    if (uv[0] != none && data.uv.corner_index.empty()) // not where faces gave theirs already
       data.uv.values.push_back({values[uv[0]], values[uv[1]]});
     if (normal[0] != none)
       data.normal.values.push_back({values[normal[0]], values[normal[1]], values[normal[2]]});
@@ -383,6 +385,30 @@ inline std::vector<Ply_vertex_column> ply_vertex_columns(const Ply_element& elem
     at.push_back(k);
   }
   return columns;
+}
+
+// Appends a face's `texcoord` list (u v for each of its `n` corners; an
+// empty list: corners without a value) to the texture coordinates, a value
+// per corner; the first face drops the per-vertex values read before (a
+// face's own are the finer).
+inline void add_face_texcoords(const std::string& filename, std::size_t line, unsigned long long item,
+                               const std::vector<double>& texcoord, std::size_t n, Read_channel<2>& uv)
+{
+  if (!texcoord.empty() && texcoord.size() != 2 * n)
+    throw IO_error(filename, line, "face " + std::to_string(item) + " has " + std::to_string(n) + " corners but " +
+                                     std::to_string(texcoord.size()) + " texcoord values (u v per corner)");
+  if (uv.corner_index.empty())
+    uv.values.clear();
+  if (texcoord.empty())
+    uv.corner_index.resize(uv.corner_index.size() + n, no_corner_value);
+  for (std::size_t c = 0; c < n && !texcoord.empty(); ++c) {
+    if (!std::isfinite(texcoord[2 * c]) || !std::isfinite(texcoord[2 * c + 1]))
+      throw IO_error(filename, line, "face " + std::to_string(item) + " has a texcoord that is not a finite number");
+    if (uv.values.size() >= no_corner_value)
+      throw IO_error(filename, line, "more texture coordinates than the mesh's 32-bit indices hold");
+    uv.corner_index.push_back(std::uint32_t(uv.values.size()));
+    uv.values.push_back({texcoord[2 * c], texcoord[2 * c + 1]});
+  }
 }
 
 // Reads a PLY file (its whole content) into a polygon soup, and the
@@ -417,13 +443,16 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
     check_count_fits(filename, element.line, "'" + printable(element.name) + "' elements", element.count,
                      ply_min_bytes(element, in.is_ascii()), in.remaining());
     const Ply_vertex_values vertex_values(element);
-    std::vector<double> values(element.properties.size()), list;
+    std::vector<double> values(element.properties.size()), list, texcoord;
     std::vector<std::size_t> column_at;
     if (is_vertex && columns != nullptr)
       *columns = ply_vertex_columns(element, vertex_values, column_at);
+    // Per-face texture coordinates (`texcoord`, u v per corner), a convention of several writers.
+    const std::size_t texcoord_at = is_face ? ply_property_at(element, "texcoord", true) : std::size_t(-1);
     for (unsigned long long item = 0; item < element.count; ++item) {
       const std::size_t line = in.line();
-      read_ply_item(filename, element, item, in, values, is_face ? list_at : std::size_t(-1), list);
+      read_ply_item(filename, element, item, in, values, is_face ? list_at : std::size_t(-1), list, texcoord_at,
+                    texcoord);
       if (is_vertex) {
         if (!std::isfinite(values[xyz[0]]) || !std::isfinite(values[xyz[1]]) || !std::isfinite(values[xyz[2]]))
           throw IO_error(filename, line, "vertex " + std::to_string(item) + " has a coordinate that is not a finite number");
@@ -443,6 +472,8 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
                                              std::to_string((long long)list[c]) + "; indices start at 0");
           polygon[c] = std::size_t(list[c]);
         }
+        if (texcoord_at != std::size_t(-1))
+          add_face_texcoords(filename, line, item, texcoord, polygon.size(), corners.uv);
         polygons.push_back(std::move(polygon));
         if (line != 0)
           lines.polygon_lines.push_back(line);
@@ -455,7 +486,9 @@ Soup_lines read_ply(const std::string& filename, const std::string& text, std::v
     throw IO_error(filename, in.line(),
                    std::to_string(extra) + " bytes of data after the last element: the header's counts do not "
                                            "cover the file");
-  corners.uv.per_vertex = corners.normal.per_vertex = true;
+  corners.normal.per_vertex = true;
+  // Texture coordinates per face corner where the faces have them, else per vertex.
+  corners.uv.per_vertex = corners.uv.corner_index.empty();
   return lines;
 }
 
