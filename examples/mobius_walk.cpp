@@ -57,10 +57,12 @@ void walk_around(const Mesh& m, Vertex_index v)
   std::cout << "\n  back at the start: " << faces << " faces, " << m.degree(v) << " edges.\n";
 }
 
+constexpr std::size_t max_quads = 1000000;
+
 const examples::Tool_usage usage{
   "mobius_walk", "mobius_walk [N_AROUND N_ACROSS]",
   "Builds a Möbius strip of N_AROUND x N_ACROSS quads (default 12 x 2; N_AROUND at least 3,\n"
-  "N_ACROSS at least 1) and walks around vertices on its seam, printing each step in the words\n"
+  "N_ACROSS at least 1, a million quads at most) and walks around vertices on its seam, printing each step in the words\n"
   "of the source design (Y. Wang, 2015): sibling and Möbius sibling links, successor and\n"
   "predecessor links, boundary and Möbius boundary links; then the one border loop.\n"};
 
@@ -71,6 +73,11 @@ int walk(int argc, char** argv)
   if (args.positional.size() == 2) {
     n_around = std::size_t(examples::integer_argument("N_AROUND", args.positional[0], 3, std::numeric_limits<int>::max()));
     n_across = std::size_t(examples::integer_argument("N_ACROSS", args.positional[1], 1, std::numeric_limits<int>::max()));
+    // The walks print two vertices' neighbourhoods: a larger strip shows
+    // nothing more and only costs memory (8000 x 8000 quads: 6 GB).
+    if (double(n_around) * double(n_across) > max_quads)
+      throw examples::Usage_error(std::to_string(n_around) + " x " + std::to_string(n_across) +
+                                  " quads is more than the " + std::to_string(max_quads) + " this example builds");
   } else if (!args.positional.empty()) {
     throw examples::Usage_error("expected no number or two, got " + std::to_string(args.positional.size()));
   }

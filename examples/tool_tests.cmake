@@ -50,3 +50,11 @@ if(CGAL_EXT_BUILD_TESTS)
       "\"corner_channels_dropped\":\\[\"c:uv\",\"c:normal\"\\]}\n$")
   endforeach()
 endif()
+
+# Examples whose size options once ended in bad_alloc: refused with one line.
+if(CGAL_EXT_BUILD_TESTS)
+  cgal_ext_tool_fails(example.mobius_walk.too_large mobius_walk "8000;8000"
+    "^mobius_walk: 8000 x 8000 quads is more than the 1000000 this example builds; usage: [^\n]+\n$")
+  cgal_ext_tool_fails(example.custom_mask.too_many_levels custom_mask "--levels;10"
+    "^custom_mask: --levels '10' is not an integer from 0 to 7; usage: [^\n]+\n$")
+endif()

@@ -38,8 +38,15 @@ if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCH
 # sanitizers about 2.4 times faster than GCC (examples/convert.cpp: 26 s of
 # CPU against 63 s), most of this script's time; else the default, GCC.
 # CGAL_EXT_TEST_CXX chooses another; the demo builds with the default.
+# clang++ is taken only if it links a program with the sanitizers (its
+# runtime is a package of its own).
 compiler=()
 test_cxx=${CGAL_EXT_TEST_CXX:-$(command -v clang++ || true)}
+if [ -z "${CGAL_EXT_TEST_CXX:-}" ] && [ -n "$test_cxx" ] &&
+   ! echo 'int main() { return 0; }' |
+     "$test_cxx" -x c++ -fsanitize=address,undefined - -o build/sanitizer_probe >/dev/null 2>&1; then
+  test_cxx=
+fi
 if [ -n "$test_cxx" ]; then compiler=(-DCMAKE_CXX_COMPILER="$test_cxx"); fi
 # -g1: line tables only, enough for the sanitizers' stack traces; full debug
 # information of CGAL's templates costs much of the build's time. -O0: GCC

@@ -854,6 +854,188 @@ TEST(IsotropicRemeshing, TheSizeEstimateBoundsTheResult)
     }
 }
 
+Mesh soup_mesh(const std::vector<Point>& points, const std::vector<std::vector<std::size_t>>& faces)
+{
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
+  return m;
+}
+
+// A needle: one triangle 1000 long and 1e-6 wide, remeshed to L = 0.01. No
+// triangle with sides in [4/5 L, 4/3 L] fits in it (its narrowest is 0.44 L
+// wide), and split at midpoints it became 3^k stacked needles (k = 17
+// halvings: 10^8 triangles) or, with the joining edges left for the next
+// iteration, 262 111 triangles that the second iteration split into 10^9.
+// Now it ends as a strip across it: at most two triangles per piece of its
+// longest side cut in 2^17 (closed form: 2 * 2^ceil(log2(1000 / (4/3 L))) =
+// 262 144, 1.3 times 2 * 1000 / L), within a memory limit of 100 MB that
+// the estimate checks, in fewer iterations than asked, with the needle
+// reported. With allow_narrow_regions(false) it is refused, untouched,
+// naming the face and its width.
+TEST(IsotropicRemeshing, NeedleEndsAsABoundedStripOrIsRefused)
+{
+  const double L = 0.01;
+  const Mesh needle = soup_mesh({Point(0, 0, 0), Point(1000, 0, 0), Point(500, 1e-6, 0)}, {{0, 1, 2}});
+  Mesh m = needle;
+  const CGAL_ext::Isotropic_remeshing_result result =
+    CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(5).maximum_memory(1e8));
+  const double pieces = std::exp2(std::ceil(std::log2(1000 / (4.0 / 3.0 * L))));
+  EXPECT_LE(double(m.number_of_faces()), 2 * pieces);
+  EXPECT_GE(double(m.number_of_faces()), 1000 / (4.0 / 3.0 * L)); // the border is cut to the band at least
+  EXPECT_TRUE(m.is_valid());
+  EXPECT_EQ(shape_of(m), shape_of(needle));
+  EXPECT_EQ(result.narrow_faces, 1u);
+  EXPECT_NEAR(result.narrowest_width, 1e-6, 1e-12);
+  EXPECT_LT(result.iterations, 5u);
+  EXPECT_TRUE(result.stopped_early);
+  EXPECT_NEAR(result.share_in_band, share_in_band(m, L), 1e-12);
+  for (Vertex_index v : m.vertices()) // on the needle
+    ASSERT_TRUE(m.point(v).z() == 0 && m.point(v).y() >= -1e-12 && m.point(v).y() <= 1e-6 + 1e-12) << m.point(v);
+  RecordProperty("needle_faces", std::to_string(m.number_of_faces()));
+  RecordProperty("needle_in_band", std::to_string(result.share_in_band));
+
+  Mesh refused = needle;
+  const std::string before = test::snapshot(refused);
+  try {
+    CGAL_ext::isotropic_remeshing(refused, L, np::allow_narrow_regions(false));
+    ADD_FAILURE() << "a needle narrower than L was remeshed";
+  } catch (const CGAL_ext::Parameter_error& e) {
+    EXPECT_NE(std::string(e.what()).find("face f0 is 1e-06 wide and 1000 long"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("0.00442217 for L = 0.01"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(test::snapshot(refused), before);
+}
+
+// Narrow parts are those where the surface itself is narrow, not every
+// sliver: a strip 100 x 0.001 of 200 triangles is one at L = 0.1 (and ends
+// as a strip of at most two triangles per 4/3 L of its length); a sliver
+// 1.4 x 7e-7 between two wide triangles of a unit square, and the fan of
+// slivers of a 200-gon (a disk of radius 1) triangulated, are none at
+// L = 0.02 and 0.1, and remesh into the band.
+TEST(IsotropicRemeshing, OnlyPartsOfTheSurfaceNarrowerThanTheBandAreNarrow)
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> faces;
+  for (std::size_t i = 0; i <= 100; ++i) {
+    points.emplace_back(double(i), 0, 0);
+    points.emplace_back(double(i), 0.001, 0);
+  }
+  for (std::size_t i = 0; i < 100; ++i) {
+    faces.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    faces.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  Mesh strip = soup_mesh(points, faces);
+  const auto strip_result = CGAL_ext::isotropic_remeshing(strip, 0.1, np::number_of_iterations(5));
+  EXPECT_EQ(strip_result.narrow_faces, 200u);
+  EXPECT_NEAR(strip_result.narrowest_width, 0.001, 1e-9);
+  EXPECT_LE(double(strip.number_of_faces()), 2 * 100 / (4.0 / 3.0 * 0.1) * 2);
+  EXPECT_TRUE(strip.is_valid());
+
+  Mesh sliver = soup_mesh({Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(0.5, 0.5 + 1e-6, 0)},
+                          {{0, 1, 2}, {0, 2, 4}, {0, 4, 3}, {4, 2, 3}});
+  const auto sliver_result =
+    CGAL_ext::isotropic_remeshing(sliver, 0.02, np::number_of_iterations(10).allow_narrow_regions(false));
+  EXPECT_EQ(sliver_result.narrow_faces, 0u);
+  EXPECT_TRUE(std::isinf(sliver_result.narrowest_width));
+  EXPECT_GT(sliver_result.share_in_band, 0.97);
+  EXPECT_TRUE(sliver.is_valid());
+
+  std::vector<Point> corners;
+  std::vector<std::size_t> polygon;
+  for (std::size_t i = 0; i < 200; ++i) {
+    corners.emplace_back(std::cos(2 * CGAL_PI * double(i) / 200), std::sin(2 * CGAL_PI * double(i) / 200), 0);
+    polygon.push_back(i);
+  }
+  Mesh disk = soup_mesh(corners, {polygon});
+  const auto disk_result =
+    CGAL_ext::isotropic_remeshing(disk, 0.1, np::number_of_iterations(20).allow_narrow_regions(false));
+  EXPECT_EQ(disk_result.narrow_faces, 0u);
+  EXPECT_GT(disk_result.share_in_band, 0.97);
+  EXPECT_LT(double(disk.number_of_faces()), 1.3 * CGAL_PI / (std::sqrt(3.0) / 4 * 0.1 * 0.1));
+  EXPECT_TRUE(disk.is_valid());
+}
+
+// A coarse input remeshed far finer: a unit square of two triangles at
+// L = 0.02. Its first pass splits the edges its splits make too (as CGAL
+// does), so it leaves no edge much longer than 4/3 L (relaxation stretches a
+// few a little); when those were left for the next iteration, each iteration
+// split the last one's joining edges and left their own long (at L = 0.01 the
+// square held 2 million triangles in its fourth iteration and ended its
+// eighth with 66 % of its edges in the band). Now: at least 99 %, and about
+// its area in equilateral triangles of side L.
+TEST(IsotropicRemeshing, ACoarseInputReachesTheBandWithoutGrowingFirst)
+{
+  Mesh square = soup_mesh({Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)}, {{0, 1, 2}, {0, 2, 3}});
+  const double L = 0.02, equilateral = std::sqrt(3.0) / 4 * L * L;
+  Mesh once = square;
+  CGAL_ext::isotropic_remeshing(once, L);
+  double longest = 0;
+  for (Edge_index e : once.edges())
+    longest = (std::max)(longest, CGAL::squared_distance(once.point(once.vertex(e, 0)), once.point(once.vertex(e, 1))));
+  EXPECT_LT(std::sqrt(longest), 2 * L);
+  const auto result = CGAL_ext::isotropic_remeshing(square, L, np::number_of_iterations(20));
+  EXPECT_GT(result.share_in_band, 0.99);
+  EXPECT_GT(double(square.number_of_faces()), 0.8 / equilateral);
+  EXPECT_LT(double(square.number_of_faces()), 1.25 / equilateral);
+  EXPECT_TRUE(square.is_valid());
+}
+
+// A plate 1000 x 1 of two triangles at L = 0.01: its area in triangles of
+// side L is some 2.3e7, legitimately huge. A memory limit of 100 MB refuses
+// it before anything changes (the whole mesh compared before and after).
+TEST(IsotropicRemeshing, APlateTooLargeForTheMemoryLimitIsRefusedUntouched)
+{
+  Mesh plate =
+    soup_mesh({Point(0, 0, 0), Point(1000, 0, 0), Point(1000, 1, 0), Point(0, 1, 0)}, {{0, 1, 2}, {0, 2, 3}});
+  const std::string before = test::snapshot(plate);
+  try {
+    CGAL_ext::isotropic_remeshing(plate, 0.01, np::maximum_memory(1e8));
+    ADD_FAILURE() << "the plate was remeshed within 100 MB";
+  } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.element(), "bytes");
+    EXPECT_NE(std::string(e.what()).find("would need about"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(test::snapshot(plate), before);
+}
+
+// A mesh already remeshed to L settles at once: remeshed again with 10
+// iterations it stops after fewer and says so; with
+// stop_when_converged(false) it runs all 10, as CGAL does.
+TEST(IsotropicRemeshing, AMeshAlreadyAtTheLengthStopsEarly)
+{
+  Mesh m = read_mesh<Point>("torus_24x12_quads.obj");
+  const double L = 0.3;
+  const auto first = CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(10));
+  EXPECT_GT(first.share_in_band, 0.99);
+  const auto again = CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(10));
+  EXPECT_TRUE(again.stopped_early);
+  EXPECT_LE(again.iterations, 2u);
+  EXPECT_GT(again.share_in_band, 0.99);
+  const auto all = CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(10).stop_when_converged(false));
+  EXPECT_FALSE(all.stopped_early);
+  EXPECT_EQ(all.iterations, 10u);
+  EXPECT_TRUE(m.is_valid());
+  RecordProperty("first_iterations", std::to_string(first.iterations));
+}
+
+// The loop holds no more faces than the budget that isotropic_remeshing()
+// sets from the size estimate: past it, Size_error (and the public function
+// puts the mesh back, as for any failure part way).
+TEST(IsotropicRemeshing, TheLoopStopsAtItsFaceBudget)
+{
+  Mesh square = soup_mesh({Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0)}, {{0, 1, 2}, {0, 2, 3}});
+  CGAL_ext::internal::Remeshing_options options;
+  options.target_edge_length = 0.05;
+  options.face_budget = 100;
+  try {
+    CGAL_ext::internal::Isotropic_remesher<Point>(square, options).run();
+    ADD_FAILURE() << "the loop went past its face budget";
+  } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.element(), "faces");
+    EXPECT_EQ(e.limit(), 100u);
+  }
+}
+
 } // namespace
 
 } // namespace remeshing_tests

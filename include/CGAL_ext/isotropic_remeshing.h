@@ -13,12 +13,15 @@
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Remeshing/internal/Isotropic_remesher.h>
+#include <CGAL_ext/Remeshing/internal/Narrow_regions.h>
 #include <CGAL_ext/Remeshing/internal/Remeshing_setup.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -26,11 +29,39 @@
 namespace CGAL_ext {
 
 /// \ingroup PkgMobiusMeshEditing
+/// What `isotropic_remeshing()` did, for the caller to judge the result by.
+struct Isotropic_remeshing_result
+{
+  /// The iterations run: `number_of_iterations`, or fewer where the loop
+  /// settled first (`stopped_early`).
+  unsigned iterations = 0;
+  /// True if the loop stopped before `number_of_iterations` because two
+  /// iterations in a row each raised the share of edges in [4/5 L, 4/3 L] by
+  /// less than 0.1 point and changed the number of faces by less than 1 %
+  /// (`stop_when_converged`).
+  bool stopped_early = false;
+  /// The share of the result's edges whose length is in [4/5 L, 4/3 L]
+  /// (Botsch and Kobbelt's band, which the loop aims at).
+  double share_in_band = 0;
+  /// The faces of the input in parts of the surface narrower than any
+  /// triangle with sides in the band (see `allow_narrow_regions`): there the
+  /// result is a strip of slivers as wide as the input, whose edges across
+  /// are out of the band whatever the loop does.
+  std::size_t narrow_faces = 0;
+  /// The width of the narrowest of them (twice its area over its longest
+  /// side); infinity if there is none.
+  double narrowest_width = std::numeric_limits<double>::infinity();
+};
+
+/// \ingroup PkgMobiusMeshEditing
 /// \brief remeshes `mesh` into triangles whose edges are close to
 /// `target_edge_length` (L), by Botsch and Kobbelt's loop, as
 /// `CGAL::Polygon_mesh_processing::isotropic_remeshing()` does: each
 /// iteration splits the edges longer than 4/3 L at their midpoints (longest
-/// first), collapses the edges shorter than 4/5 L (shortest first) into
+/// first, and the edges those splits make, until none is longer; an edge
+/// made between two needles, triangles narrower than 0.44 L, is flipped
+/// across them once their sides are split rather than split itself, so a
+/// needle becomes a strip and not 3^k stacked needles), collapses the edges shorter than 4/5 L (shortest first) into
 /// their midpoints where no edge would become longer than 4/3 L (an edge
 /// from a border or a fixed vertex goes into that vertex, which keeps its
 /// point), flips edges to bring valences
@@ -58,7 +89,8 @@ namespace CGAL_ext {
 /// \param np optional named parameters:
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{how many times the loop runs, from 0 to 1000}
+///     \cgalParamDescription{how many times the loop runs, from 0 to 1000
+///       (fewer where it settles first: see `stop_when_converged`)}
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{protect_borders}
@@ -102,7 +134,40 @@ namespace CGAL_ext {
 ///     \cgalParamType{`double`, > 0}
 ///     \cgalParamDefault{the memory available (Linux's `MemAvailable`, else the physical memory)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{stop_when_converged}
+///     \cgalParamDescription{`true`: the loop stops before
+///       `number_of_iterations` after two iterations in a row that each
+///       raised the share of edges in [4/5 L, 4/3 L] by less than 0.1 point
+///       and changed the number of faces by less than 1 %: the next ones
+///       would not change more (a mesh already remeshed to L stops after
+///       two). One such iteration is not enough: it may move vertices
+///       without a split or collapse, lowering the band, and the next one
+///       make up for it. `false`: it runs them all, as CGAL does.}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{allow_narrow_regions}
+///     \cgalParamDescription{what to do with a surface that is narrower than
+///       L in places. A part of it is narrow where faces narrower than any
+///       triangle with sides in [4/5 L, 4/3 L] (0.44 L, the altitude of the
+///       triangle 4/5 L, 4/5 L, 4/3 L) and longer than 4/3 L lie side by
+///       side, with the surface's border on at least 3/4 of their outline
+///       and a mean width under 0.44 L: a needle alone, a strip narrower
+///       than L, a thin tail. Such a part can only be cut along its length.
+///       `true`: it is, into a strip across it of two triangles per 4/3 L of
+///       length or fewer (the split pass flips the edges between needles
+///       rather than splitting them), and the result counts its faces
+///       (`narrow_faces`). `false`: `Parameter_error`, naming its narrowest
+///       face, that face's width and length, and 0.44 L. Slivers beside
+///       wider faces (a fan of a triangulated polygon, a sliver along a
+///       border) are no narrow part: they are always remeshed.}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
+/// \returns what the loop did (`Isotropic_remeshing_result`): the
+/// iterations run, whether it settled early, the share of edges in the band,
+/// and the faces of the input's narrow parts.
 /// \throws Parameter_error if L is not positive and finite, the number of
 /// iterations is out of range, `maximum_memory` is not positive, `mesh` has
 /// removed elements or a corner channel (the remeshed faces have no rule for
@@ -110,18 +175,24 @@ namespace CGAL_ext {
 /// `protect_sharp_edges(true)`), a point has a coordinate beyond +-1e60 (where
 /// squared lengths and normals in double overflow), the mesh is less than
 /// 1e-60 across (where they underflow), or L is under 1024 times the spacing
-/// of doubles at the largest coordinate (too fine for the coordinates).
+/// of doubles at the largest coordinate (too fine for the coordinates), or
+/// `allow_narrow_regions(false)` is given and the surface has a part
+/// narrower than L allows (the message names its narrowest face, that face's
+/// width and length, and the width a triangle of the band needs).
 /// \throws Size_error if the estimated result has more elements than the
-/// mesh's indices hold or needs more than `maximum_memory`.
+/// mesh's indices hold or needs more than `maximum_memory`, or if the loop
+/// makes more than twice the estimated faces (a surface the estimate does not
+/// foresee, such as a closed tube thinner than L).
 /// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()),
 /// or if an edit is refused part way (two faces on the same corners, say).
 /// In all these cases `mesh` is as it was before the call: the checks run
 /// before it is touched, and a failure part way puts it back from a copy
 /// (property maps taken before such a failure must then be taken again).
 template <class P, class NP = parameters::Default_named_parameters>
-void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const NP& np = parameters::default_values())
+Isotropic_remeshing_result isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length,
+                                               const NP& np = parameters::default_values())
 {
-  const internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
+  internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
   internal::refuse_corner_channels(mesh, "isotropic_remeshing",
                                    "splits, collapses, flips and relaxation move corners off the faces they belong to");
@@ -129,15 +200,26 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
   internal::require_length_resolved(largest_coordinate, target_edge_length, "isotropic_remeshing");
   if (options.protect_sharp_edges)
     internal::require_valid_edge_sharpness(mesh, parameters::default_values(), "isotropic_remeshing");
-  internal::check_remeshing_size(mesh, options,
-                                 parameters::choose_parameter(
-                                   parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
-                                   internal::available_memory()));
+  // Narrow parts are found (and refused with allow_narrow_regions(false))
+  // before the size check, whose message would not say why.
+  const internal::Narrow_regions narrow =
+    internal::find_narrow_regions(mesh, options, internal::remeshing_protection(mesh, options));
+  internal::require_no_narrow_regions(narrow, options);
+  const double estimated_faces = internal::check_remeshing_size(
+    mesh, options,
+    parameters::choose_parameter(parameters::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
+                                 internal::available_memory()));
+  // The loop may not hold more than twice the estimate the memory check
+  // accepted (nor more than the indices hold).
+  options.face_budget = (std::min)(2 * estimated_faces, double(internal::max_faces));
+  Isotropic_remeshing_result result;
+  result.narrow_faces = narrow.faces;
+  result.narrowest_width = narrow.narrowest_width;
   // An operation that fails part way (an Euler operation refused on input
-  // the checks above cannot see, such as two faces on the same corners)
-  // must leave the caller's mesh as it was: the mesh is edited in place, so
-  // that the caller's property maps stay valid, and put back from a copy if
-  // anything throws.
+  // the checks above cannot see, such as two faces on the same corners, or
+  // the face budget) must leave the caller's mesh as it was: the mesh is
+  // edited in place, so that the caller's property maps stay valid, and put
+  // back from a copy if anything throws.
   const Mobius_mesh<P> before = mesh;
   try {
     triangulate_faces(mesh);
@@ -151,13 +233,17 @@ void isotropic_remeshing(Mobius_mesh<P>& mesh, double target_edge_length, const 
         explicit Appending(Mobius_mesh<P>& m) : mesh(m) { mesh.set_recycle_garbage(false); }
         ~Appending() { mesh.set_recycle_garbage(recycled); }
       } appending(mesh);
-      internal::Isotropic_remesher<P>(mesh, options).run();
+      const internal::Remeshing_run run = internal::Isotropic_remesher<P>(mesh, options).run();
+      result.iterations = run.iterations;
+      result.stopped_early = run.stopped_early;
+      result.share_in_band = run.share_in_band;
     }
     mesh.collect_garbage();
   } catch (...) {
     mesh = before;
     throw;
   }
+  return result;
 }
 
 } // namespace CGAL_ext

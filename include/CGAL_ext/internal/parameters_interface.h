@@ -34,5 +34,7 @@ CGAL_EXT_add_named_parameter(relocate_vertices_t, relocate_vertices, relocate_ve
 CGAL_EXT_add_named_parameter(protect_borders_t, protect_borders, protect_borders)
 // isotropic remeshing
 CGAL_EXT_add_named_parameter(protect_sharp_edges_t, protect_sharp_edges, protect_sharp_edges)
+CGAL_EXT_add_named_parameter(stop_when_converged_t, stop_when_converged, stop_when_converged)
+CGAL_EXT_add_named_parameter(allow_narrow_regions_t, allow_narrow_regions, allow_narrow_regions)
 // drawing
 CGAL_EXT_add_named_parameter(two_sided_style_t, two_sided_style, two_sided_style)

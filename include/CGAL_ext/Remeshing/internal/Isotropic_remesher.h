@@ -14,6 +14,7 @@
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Sharp_feature_options.h>
+#include <CGAL_ext/exceptions.h>
 
 #include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -28,9 +29,11 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <queue>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -169,6 +172,11 @@ private:
   mutable std::vector<std::unique_ptr<Segment_tree>> loop_trees_; // built where the first answer was wrong
 };
 
+// The smallest altitude, in units of L, of a triangle whose three sides are
+// all in [4/5 L, 4/3 L]: that of the triangle of sides 4/5, 4/5 and 4/3 on
+// its long side (0.442). Narrower than this, no triangle of the band fits.
+inline double narrowest_band_triangle() { return std::sqrt(0.8 * 0.8 - (2.0 / 3.0) * (2.0 / 3.0)); }
+
 // The options of one run, read from the named parameters by isotropic_remeshing().
 struct Remeshing_options
 {
@@ -177,7 +185,35 @@ struct Remeshing_options
   bool protect_borders = false;
   bool protect_sharp_edges = false;
   bool relax_constraints = false;
+  bool stop_when_converged = true;
+  bool allow_narrow_regions = true;
+  // The most faces the loop may hold at any time; isotropic_remeshing() sets
+  // it from the size estimate that the memory check accepted.
+  double face_budget = std::numeric_limits<double>::infinity();
 };
+
+// What the loop did: the iterations it ran, whether it stopped before the
+// number asked because an iteration changed nothing that matters, and the
+// share of edges in [4/5 L, 4/3 L] at the end.
+struct Remeshing_run
+{
+  unsigned iterations = 0;
+  bool stopped_early = false;
+  double share_in_band = 0;
+};
+
+// An iteration that raises the share of edges in the band by less than
+// `settled_band_gain` (0.1 point) and changes the number of faces by less
+// than `settled_face_change` (1 %) has changed nothing that matters; two in a
+// row have settled the loop: a fixed point of Botsch and Kobbelt's operations
+// (a regular lattice, a mesh already at L) stays one. One alone has not: an
+// iteration may move vertices without a split or collapse, and the band with
+// them, and the next one split and collapse more (a torus of 576 triangles
+// at 0.6 times its mean edge: 96.3 % of edges in the band after two
+// iterations, 91.2 % after three at the same count, 98.4 % after five).
+inline constexpr double settled_band_gain = 1e-3;
+inline constexpr double settled_face_change = 1e-2;
+inline constexpr unsigned settled_iterations = 2;
 
 template <class P>
 class Isotropic_remesher
@@ -190,6 +226,7 @@ public:
     : mesh_(mesh), options_(options), input_(mesh, border_loop_),
       // Botsch and Kobbelt's band, as in CGAL: 4/5 L and 4/3 L.
       low2_(square(0.8 * options.target_edge_length)), high2_(square(4.0 / 3.0 * options.target_edge_length)),
+      needle2_(square(narrowest_band_triangle() * options.target_edge_length)),
       sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name))
   {
     collapse_options_.is_protected = [this](Edge_index e) { return is_protected(e); };
@@ -200,19 +237,80 @@ public:
   Isotropic_remesher(const Isotropic_remesher&) = delete;
   Isotropic_remesher& operator=(const Isotropic_remesher&) = delete;
 
-  void run()
+  // Runs the iterations asked for, or fewer with stop_when_converged: after
+  // settled_iterations in a row that each raised the share of edges in the
+  // band by less than settled_band_gain and changed the face count by less
+  // than settled_face_change, the next ones would not do more (CGAL runs a
+  // fixed number; a mesh already at L would be relaxed again for nothing).
+  Remeshing_run run()
   {
+    Remeshing_run done;
+    Band_count before = band_count();
+    done.share_in_band = before.share();
+    unsigned settled = 0;
     for (unsigned i = 0; i < options_.iterations; ++i) {
       split_long_edges();
       collapse_short_edges();
       equalize_valences();
       slide_along_constraints();
       relax_and_project();
+      ++done.iterations;
+      const Band_count after = band_count();
+      done.share_in_band = after.share();
+      settled = has_settled(before, after) ? settled + 1 : 0;
+      if (options_.stop_when_converged && settled == settled_iterations && done.iterations < options_.iterations) {
+        done.stopped_early = true;
+        break;
+      }
+      before = after;
     }
+    return done;
   }
 
 private:
   static double square(double x) { return x * x; }
+
+  struct Band_count
+  {
+    std::size_t in_band = 0, edges = 0, faces = 0;
+    double share() const { return edges == 0 ? 0.0 : double(in_band) / double(edges); }
+  };
+
+  Band_count band_count() const
+  {
+    Band_count count;
+    for (Edge_index e : mesh_.edges()) {
+      const double l2 = squared_length(e);
+      count.in_band += l2 >= low2_ && l2 <= high2_;
+      ++count.edges;
+    }
+    count.faces = mesh_.number_of_faces();
+    return count;
+  }
+
+  static bool has_settled(const Band_count& before, const Band_count& after)
+  {
+    const double change = std::abs(double(after.faces) - double(before.faces));
+    return after.share() < before.share() + settled_band_gain &&
+           change <= settled_face_change * double((std::max)(before.faces, std::size_t(1)));
+  }
+
+  // The size check before the loop bounds its result from the input; where
+  // that estimate is wrong (a surface it does not foresee), the loop stops
+  // here rather than take more memory than the check allowed. The caller
+  // then puts the mesh back.
+  void check_face_budget() const
+  {
+    if (double(mesh_.number_of_faces()) <= options_.face_budget)
+      return;
+    std::ostringstream what;
+    what << "isotropic_remeshing to edge length " << options_.target_edge_length << " made more than "
+         << static_cast<unsigned long long>(options_.face_budget)
+         << " faces, twice the size estimated before it started (see named parameter maximum_memory); the mesh is "
+            "as it was";
+    throw Size_error(what.str(), "faces", mesh_.number_of_faces(),
+                     static_cast<unsigned long long>(options_.face_budget));
+  }
 
   double squared_length(Edge_index e) const
   {
@@ -265,28 +363,136 @@ private:
   }
 
   // Longest first, as CGAL: an edge's entry is stale once its length changed.
+  // The halves and the edges that join the new vertex to the far corners go
+  // back to the queue, as CGAL puts them back, so that one pass leaves no
+  // edge longer than 4/3 L: left for the next iteration, a joining edge is
+  // split with its own joining edges left long, and so on, and a coarse input
+  // grows to many times its final size before collapses catch up (a unit
+  // square of two triangles at L = 0.01 held 2 million triangles in its
+  // fourth iteration, for 23 000 at the end). A joining edge goes back only
+  // if it is shorter than sqrt(3)/2 of the edge split, the longest a median
+  // of a triangle's longest side can be: so each chain of splits shortens
+  // geometrically and the pass ends even where the far corner lies beyond a
+  // protected edge that cannot be split (CGAL splits, with protected
+  // constraints, only the longest edge of its faces).
+  //
+  // Needles are the exception. Split at midpoints, a triangle much narrower
+  // than its length becomes three needles of half its length, two of them
+  // side by side across a joining edge as long as they are; splitting that
+  // edge too makes 3^k triangles for k halvings where a strip of 2^(k+1)
+  // would do (a triangle 1000 x 1e-6 at L = 0.01: 10^8), and collapses then
+  // remove most of them. So a joining edge between two needles is not split
+  // (is_needle_join()): the sides of the needles are, and as they are, the
+  // joining edge is flipped to the shorter diagonal that their new vertices
+  // offer (straighten_needles()), which zips the needle into a strip of
+  // triangles across it. One that no flip shortens is split in the next
+  // iteration, as any edge that was there when the pass began.
   void split_long_edges()
   {
+    made_by_split_.assign(mesh_.num_edges(), 0);
     std::priority_queue<std::pair<double, Edge_index>> queue;
     for (Edge_index e : mesh_.edges())
       push_if_outside_band(e, queue, true);
     while (!queue.empty()) {
       const auto [l2, e] = queue.top();
       queue.pop();
-      if (squared_length(e) != l2)
+      if (squared_length(e) != l2 || is_needle_join(e))
         continue;
-      // Only the halves go back to the queue, as in CGAL: the edges that join
-      // the new vertex to the far corners may be long too (next to a
-      // protected edge they stay so), and pushing them would not end.
-      const Edge_index half = split_at_midpoint(e);
+      const auto [half, middle] = split_at_midpoint(e);
+      made_by_split_.resize(mesh_.num_edges(), 0);
+      made_by_split_[half.idx()] = made_by_split_[e.idx()];
       push_if_outside_band(e, queue, true);
       push_if_outside_band(half, queue, true);
+      for (Edge_index join : CGAL_ext::edges_around_target(middle, mesh_)) {
+        if (join == e || join == half)
+          continue;
+        made_by_split_[join.idx()] = 1;
+        if (squared_length(join) <= 0.75 * l2)
+          push_if_outside_band(join, queue, true);
+      }
+      straighten_needles(middle, queue);
+      check_face_budget();
     }
   }
 
+  // Is the face of c narrower than any triangle of the band (its width, twice
+  // its area over its longest side, under narrowest_band_triangle() L)?
+  bool is_needle(Dart c) const
+  {
+    const Remeshing_point p = approximate(mesh_.source(c)), q = approximate(mesh_.target(c)),
+                          r = approximate(mesh_.target(mesh_.next(c)));
+    const double longest2 = (std::max)({(q - p).squared_length(), (r - q).squared_length(), (p - r).squared_length()});
+    return triangle_normal(p, q, r).squared_length() < needle2_ * longest2;
+  }
+
+  bool is_needle_join(Edge_index e) const
+  {
+    const Dart d = Mesh::halfedge(e);
+    return made_by_split_[e.idx()] && !mesh_.is_border(e) && is_needle(d) && is_needle(mesh_.opposite(d));
+  }
+
+  // After a split inside needles: each side of the faces around the new
+  // vertex, and in turn each side of a quad whose diagonal turned, is flipped
+  // if it is a long edge between two needles and the other diagonal of its
+  // quad is shorter. Each flip shortens an edge, so this ends.
+  template <class Queue>
+  void straighten_needles(Vertex_index w, Queue& queue)
+  {
+    boost::container::small_vector<Edge_index, 16> work;
+    for (Dart c : CGAL_ext::halfedges_around_target(w, mesh_))
+      if (!mesh_.is_border(c))
+        work.push_back(mesh_.edge(mesh_.prev(c))); // the side across the face from w
+    while (!work.empty()) {
+      const Edge_index e = work.back();
+      work.pop_back();
+      if (!flip_needle_edge(e))
+        continue;
+      push_if_outside_band(e, queue, true);
+      const Dart d = Mesh::halfedge(e);
+      for (Dart side : {d, mesh_.opposite(d)})
+        for (Dart q : {mesh_.next(side), mesh_.prev(side)})
+          work.push_back(mesh_.edge(q));
+    }
+  }
+
+  // Flips e if it is longer than 4/3 L, between two needles that lie nearly
+  // in one plane (normals within 25 degrees: a needle's pieces, not two
+  // sides of a crease or of a thin tube, which the flip would cut across),
+  // and the other diagonal of its quad is shorter, where equalize_valences()
+  // would allow the flip (valences of three or more, no triangle turned over).
+  bool flip_needle_edge(Edge_index e)
+  {
+    if (is_protected(e) || mesh_.is_border(e))
+      return false;
+    const double l2 = squared_length(e);
+    const Dart d = Mesh::halfedge(e), o = mesh_.opposite(d);
+    if (!(l2 > high2_) || !is_needle(d) || !is_needle(o))
+      return false;
+    const Vertex_index a = mesh_.source(d), b = mesh_.target(d);
+    const Vertex_index c = mesh_.target(mesh_.next(d)), x = mesh_.target(mesh_.next(o));
+    if (!(CGAL::to_double(CGAL::squared_distance(mesh_.point(c), mesh_.point(x))) < l2))
+      return false;
+    const Remeshing_point pa = approximate(a), pb = approximate(b);
+    const Remeshing_vector n_d = triangle_normal(pa, pb, approximate(c)), n_o = triangle_normal(pb, pa, approximate(x));
+    const double cos_turn = n_d * n_o, flat = std::cos(25.0 * CGAL_PI / 180);
+    if (!(cos_turn > 0 && square(cos_turn) >= square(flat) * n_d.squared_length() * n_o.squared_length()))
+      return false;
+    for (Vertex_index v : {a, b})
+      if (mesh_.degree(v) <= (mesh_.is_border(v) ? 2u : 3u))
+        return false;
+    if (!Euler::can_flip_edge(d, mesh_) || !flip_keeps_side(a, b, c, x))
+      return false;
+    Euler::flip_edge(d, mesh_, Euler::unchecked); // can_flip_edge() said yes above
+    made_by_split_[e.idx()] = 1;
+    check_star(a);
+    check_star(b);
+    return true;
+  }
+
   // Splits e at its midpoint (computed in the kernel's FT) and joins the new
-  // vertex to the far corner of each triangle of e; returns the new half of e.
-  Edge_index split_at_midpoint(Edge_index e)
+  // vertex to the far corner of each triangle of e; returns the new half of e
+  // and the new vertex.
+  std::pair<Edge_index, Vertex_index> split_at_midpoint(Edge_index e)
   {
     const Dart d = Mesh::halfedge(e);
     const Face_index sides[2] = {mesh_.face(d), mesh_.face(mesh_.opposite(d))};
@@ -308,7 +514,7 @@ private:
       Euler::split_face(into, mesh_.next(mesh_.next(into)), mesh_);
     }
     check_star(w);
-    return mesh_.edge(n);
+    return {mesh_.edge(n), w};
   }
 
   // Shortest first; a collapse changes the lengths around the kept vertex.
@@ -576,6 +782,8 @@ private:
   std::vector<std::uint32_t> valence_; // during equalize_valences(), by vertex index
   const Remeshing_input_surface input_;
   const double low2_, high2_;
+  const double needle2_; // the square of the width under which a triangle is a needle (is_needle())
+  std::vector<char> made_by_split_; // during split_long_edges(), by edge index: made by a split, not there before
   std::optional<Sharpness_map> sharpness_;
   Collapse_options collapse_options_;
   std::optional<Constraint_polylines> polylines_; // with relax_constraints only

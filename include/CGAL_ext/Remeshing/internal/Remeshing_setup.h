@@ -10,6 +10,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Remeshing/internal/Isotropic_remesher.h>
+#include <CGAL_ext/Remeshing/internal/Narrow_regions.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/exceptions.h>
 
@@ -48,6 +49,10 @@ Remeshing_options remeshing_options(double target_edge_length, const NP& np)
   options.protect_sharp_edges =
     choose_parameter(get_parameter(np, CGAL_ext::internal_np::protect_sharp_edges), false);
   options.relax_constraints = choose_parameter(get_parameter(np, CGAL::internal_np::relax_constraints), false);
+  options.stop_when_converged =
+    choose_parameter(get_parameter(np, CGAL_ext::internal_np::stop_when_converged), true);
+  options.allow_narrow_regions =
+    choose_parameter(get_parameter(np, CGAL_ext::internal_np::allow_narrow_regions), true);
   return options;
 }
 
@@ -58,11 +63,26 @@ struct Remeshing_estimate
   double faces = 0;
 };
 
+// Whether the loop will leave edge e alone (Isotropic_remesher::is_protected(),
+// read before the remesher exists).
+template <class P>
+auto remeshing_protection(const Mobius_mesh<P>& mesh, const Remeshing_options& options)
+{
+  const auto sharpness = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
+  return [&mesh, options, sharpness](Edge_index e) {
+    return (options.protect_borders && mesh.is_border(e)) ||
+           (options.protect_sharp_edges && sharpness && (*sharpness)[e] > 0);
+  };
+}
+
 // Estimated from the input before anything is touched, the most triangles
 // are the larger of what the first split pass makes (it cuts each
 // unprotected edge longer than 4/3 L into 2^k pieces of at most 4/3 L, each
 // cut adding a triangle on each side of the edge: exact, but for the
-// diagonals that triangulate polygons, bounded by half the perimeter) and what the later
+// diagonals that triangulate polygons, bounded by half the perimeter, and
+// for the edges that join the cuts to the far corners, which the same pass
+// splits where the faces are wide, as the area term below counts, and flips
+// across needles, which adds none) and what the later
 // iterations tend to: the input's area in equilateral triangles of side
 // L / 2, and two triangles per 4/5 L of border. The first pass leaves edges
 // shorter than L that no collapse may remove without making one longer
@@ -73,7 +93,7 @@ template <class P>
 Remeshing_estimate remeshing_face_estimate(const Mobius_mesh<P>& mesh, const Remeshing_options& options)
 {
   const double L = options.target_edge_length, high = 4.0 / 3.0 * L, low = 0.8 * L;
-  const auto sharpness = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
+  const auto is_protected = remeshing_protection(mesh, options);
   // How many triangles the first pass adds on each side of an edge of this length.
   const auto added_per_side = [high](double length) {
     return length > high ? std::exp2(std::ceil(std::log2(length / high))) - 1 : 0.0;
@@ -98,13 +118,11 @@ Remeshing_estimate remeshing_face_estimate(const Mobius_mesh<P>& mesh, const Rem
   }
   split += input;
   for (Edge_index e : mesh.edges()) {
-    const bool is_protected = (options.protect_borders && mesh.is_border(e)) ||
-                              (options.protect_sharp_edges && sharpness && (*sharpness)[e] > 0);
     const Point_d d = minus_d(to_point_d(mesh.point(mesh.vertex(e, 0))), to_point_d(mesh.point(mesh.vertex(e, 1))));
     const double length = std::sqrt(dot_d(d, d));
     if (mesh.is_border(e))
       border += length;
-    if (!is_protected)
+    if (!is_protected(e))
       split += added_per_side(length) * (mesh.is_border(e) ? 1 : 2);
   }
   const double later = area / (std::sqrt(3.0) / 4 * (L / 2) * (L / 2)) + 2 * border / low;
@@ -112,14 +130,15 @@ Remeshing_estimate remeshing_face_estimate(const Mobius_mesh<P>& mesh, const Rem
 }
 
 // Refuses, with Size_error, a remeshing whose estimated result the mesh's
-// indices cannot hold or whose estimated peak is above `maximum_memory`:
+// indices cannot hold or whose estimated peak is above `maximum_memory`,
+// and returns the estimated faces otherwise:
 // 1.5 times the mesh's arrays at the estimated size (the mesh, its grown
 // arrays and the queues) and ~200 bytes per input triangle (their copy and
 // AABB tree). For the remeshing benchmark (125 000 triangles of a torus to
 // their mean edge length: a peak of 45 MB, 100 000 triangles left) that is
 // about 70 MB, from an estimate of about 450 000 triangles.
 template <class P>
-void check_remeshing_size(const Mobius_mesh<P>& mesh, const Remeshing_options& options, double maximum_memory)
+double check_remeshing_size(const Mobius_mesh<P>& mesh, const Remeshing_options& options, double maximum_memory)
 {
   if (!(maximum_memory > 0))
     throw Parameter_error("isotropic_remeshing: maximum_memory " + std::to_string(maximum_memory) +
@@ -131,6 +150,7 @@ void check_remeshing_size(const Mobius_mesh<P>& mesh, const Remeshing_options& o
   what << "isotropic_remeshing to edge length " << options.target_edge_length;
   check_mesh_size(what.str(), size);
   check_memory(what.str(), 1.5 * mesh_bytes<P>(size) + 200 * input_triangles, maximum_memory);
+  return faces;
 }
 
 } // namespace internal
