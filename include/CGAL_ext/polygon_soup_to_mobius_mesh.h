@@ -10,6 +10,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Soup_import.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -32,6 +33,34 @@ namespace CGAL_ext {
 
 namespace internal {
 
+// The join map of a soup split into sheets: each copy made by splitting
+// holds the vertex it was split off.
+template <class P>
+void record_joins(Mobius_mesh<P>& mesh, std::uint32_t n_vertices, const std::vector<Split_vertex>& copies)
+{
+  auto join = mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, 0).first;
+  for (std::uint32_t v = 0; v < n_vertices; ++v)
+    join[Vertex_index(v)] = v;
+  for (std::size_t k = 0; k < copies.size(); ++k)
+    join[Vertex_index(n_vertices + std::uint32_t(k))] = copies[k].original;
+}
+
+// Before `part` (with joins) is joined to `mesh`: `mesh` gets a join map if
+// it has none (each vertex its own), and part's joins name the vertices
+// they will be once appended (join() copies a map of the same name).
+template <class P>
+void prepare_join_append(Mobius_mesh<P>& mesh, Mobius_mesh<P>& part)
+{
+  const std::uint32_t offset = std::uint32_t(mesh.number_of_vertices());
+  auto [own, created] = mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, 0);
+  if (created)
+    for (Vertex_index v : mesh.vertices())
+      own[v] = v.idx();
+  auto join = *non_manifold_join_map(part);
+  for (Vertex_index v : part.vertices())
+    join[v] += offset;
+}
+
 // polygon_soup_to_mobius_mesh(), with `before_orient(result)` called on the
 // mesh just built, before its components are oriented and it is appended:
 // face p is then polygon p, and `result.halfedge(Face_index(p))` ends at
@@ -50,7 +79,11 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
   using Default_traits = typename CGAL::Kernel_traits<Input_point>::Kernel;
   const auto traits = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Default_traits());
   using FT = typename std::decay_t<decltype(traits)>::FT;
-  const bool split = choose_parameter(get_parameter(np, CGAL_ext::internal_np::split_non_manifold_vertices), false);
+  const bool split_edges =
+    choose_parameter(get_parameter(np, CGAL_ext::internal_np::non_manifold_policy), Non_manifold_policy::refuse) ==
+    Non_manifold_policy::split;
+  const bool split =
+    split_edges || choose_parameter(get_parameter(np, CGAL_ext::internal_np::split_non_manifold_vertices), false);
 
   // 1. Validate.
   const std::size_t n_points = std::size(points);
@@ -86,17 +119,22 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
 
   // 3. Build.
   Mobius_mesh<P> result;
-  const std::size_t added_vertices = internal::build_mesh_from_faces(
+  const std::vector<internal::Split_vertex> copies = internal::build_mesh_from_faces(
     flat.view(n_vertices), [&](std::uint32_t v) { return P(point_of(representative.empty() ? v : representative[v])); },
-    split, result);
+    split, result, split_edges);
+  if (split_edges && !copies.empty())
+    internal::record_joins(result, n_vertices, copies);
   // Face p is polygon p, its halfedge ending at the polygon's corner 1: what
   // the caller hangs on the corners is set now, before orientation moves them.
   before_orient(result);
   if (!choose_parameter(get_parameter(np, CGAL_ext::internal_np::keep_orientation), false))
     orient_orientable_components(result);
 
+  if (!copies.empty() && split_edges && !internal::is_pristine(mesh))
+    internal::prepare_join_append(mesh, result);
   internal::append_mesh(mesh, std::move(result));
-  return added_vertices;}
+  return copies.size();
+}
 
 } // namespace internal
 
@@ -145,6 +183,15 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
 ///                           with Möbius edges}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{non_manifold_policy}
+///     \cgalParamDescription{`Non_manifold_policy::split` takes a soup that is not a
+///                           2-manifold (an edge of three or more polygons, fans that meet
+///                           at a vertex) as manifold sheets joined by the vertex map
+///                           `non_manifold_join_name` (made only where something was split);
+///                           `refuse` throws}
+///     \cgalParamType{`Non_manifold_policy`}
+///     \cgalParamDefault{`Non_manifold_policy::refuse`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{split_non_manifold_vertices}
 ///     \cgalParamDescription{if `true`, a vertex whose polygons form several fans is
 ///                           split into one vertex per fan (as CGAL's
@@ -153,10 +200,12 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \returns the number of vertices added by splitting non-manifold vertices.
+/// \returns the number of vertices added by splitting non-manifold vertices
+///   (and edges).
 /// \throws Soup_error for an index out of range, a polygon with fewer than
 ///   three vertices or a repeated vertex, an edge shared by three or more
-///   polygons, a non-manifold vertex (unless split), a non-finite coordinate.
+///   polygons (unless split), a non-manifold vertex (unless split), a
+///   non-finite coordinate.
 /// \throws Parameter_error for a negative or NaN tolerance.
 /// \throws Size_error (a `Parameter_error`) for more points, polygons or
 ///   edges than the mesh's 32-bit indices hold, before the mesh is allocated.

@@ -8,7 +8,7 @@
 #ifndef CGAL_EXT_SUBDIVISION_H
 #define CGAL_EXT_SUBDIVISION_H
 
-#include <CGAL_ext/Subdivision/internal/Subdivision_driver.h>
+#include <CGAL_ext/Subdivision/internal/Joined_subdivision.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>

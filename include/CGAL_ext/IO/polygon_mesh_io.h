@@ -16,6 +16,8 @@
 #include <CGAL_ext/IO/internal/PLY_writer.h>
 #include <CGAL_ext/IO/internal/Text_scanning.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Join_classes.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/exceptions.h>
@@ -91,25 +93,51 @@ inline std::string float_text(float s)
   return buffer;
 }
 
+// Tags name the vertices as written (`joins`: the copies of a joined
+// vertex are one, and an edge or vertex of several copies is tagged once).
 template <class P, class Sharpness>
-void write_crease_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Sharpness& sharpness)
+void write_crease_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Sharpness& sharpness,
+                       const CGAL_ext::internal::Join_classes& joins, const std::vector<std::uint32_t>& index)
 {
   for (Edge_index e : mesh.edges()) {
     const float s = sharpness(e);
-    if (s != 0)
-      out << "t crease 2/1/0 " << mesh.vertex(e, 0).idx() << ' ' << mesh.vertex(e, 1).idx() << ' ' << float_text(s)
-          << '\n';
+    if (s != 0 && joins.edge_representative(e.idx()) == e.idx())
+      out << "t crease 2/1/0 " << index[mesh.vertex(e, 0).idx()] << ' ' << index[mesh.vertex(e, 1).idx()] << ' '
+          << float_text(s) << '\n';
   }
 }
 
 template <class P, class Sharpness>
-void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Sharpness& sharpness)
+void write_corner_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const Sharpness& sharpness,
+                       const CGAL_ext::internal::Join_classes& joins, const std::vector<std::uint32_t>& index)
 {
   for (Vertex_index v : mesh.vertices()) {
     const float s = sharpness(v);
-    if (s != 0)
-      out << "t corner 1/1/0 " << v.idx() << ' ' << float_text(s) << '\n';
+    if (s != 0 && joins.representative(v.idx()) == v.idx())
+      out << "t corner 1/1/0 " << index[v.idx()] << ' ' << float_text(s) << '\n';
   }
+}
+
+// The rows of the vertices that hold their own index in the join map: a
+// joined vertex is written once. Its copies must agree (`what` names the
+// data where they do not: a value no file of one vertex holds).
+template <class T>
+void keep_joined_rows(std::vector<T>& rows, const CGAL_ext::internal::Join_classes& joins, const std::string& filename,
+                      const std::string& what)
+{
+  if (rows.empty())
+    return;
+  std::vector<T> kept;
+  for (std::uint32_t v = 0; v < std::uint32_t(rows.size()); ++v) {
+    const std::uint32_t r = joins.representative(v);
+    if (!(rows[v] == rows[r]))
+      throw IO_error(filename, 0, "vertices " + std::to_string(r) + " and " + std::to_string(v) +
+                                    " are one vertex of the input (non-manifold joins) but have different " + what +
+                                    "; nothing was written");
+    if (r == v)
+      kept.push_back(rows[v]);
+  }
+  rows = std::move(kept);
 }
 
 // The points as the files hold them: doubles, each finite (written, a NaN
@@ -194,10 +222,11 @@ std::vector<Ply_vertex_column> ply_columns(const Mobius_mesh<P>& mesh, const Ver
 // OpenSubdiv's tags (vertex indices in tags count from 0): sharpness where it
 // is not 0, and the options that are set.
 template <class P, class NP>
-void write_obj_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const NP& np, const Sharp_feature_options& options)
+void write_obj_tags(std::ostream& out, const Mobius_mesh<P>& mesh, const NP& np, const Sharp_feature_options& options,
+                    const CGAL_ext::internal::Join_classes& joins, const std::vector<std::uint32_t>& index)
 {
-  write_crease_tags(out, mesh, CGAL_ext::internal::edge_sharpness_of(mesh, np));
-  write_corner_tags(out, mesh, CGAL_ext::internal::vertex_sharpness_of(mesh, np));
+  write_crease_tags(out, mesh, CGAL_ext::internal::edge_sharpness_of(mesh, np), joins, index);
+  write_corner_tags(out, mesh, CGAL_ext::internal::vertex_sharpness_of(mesh, np), joins, index);
   if (options.boundary_interpolation) {
     const int k = *options.boundary_interpolation == Boundary_interpolation::none              ? 0
                   : *options.boundary_interpolation == Boundary_interpolation::edge_and_corner ? 1
@@ -517,19 +546,35 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
 
   // Everything is checked before the file is created: points, faces, the
   // corner channels and whether the format holds them.
-  const std::vector<internal::Written_point> points = internal::written_points(mesh, filename);
+  // Sheets of non-manifold input are written joined again (one vertex for
+  // the copies of each input vertex).
+  const CGAL_ext::internal::Join_classes joins(mesh);
+  const std::vector<std::uint32_t> index = joins.joined_indices();
+  std::vector<internal::Written_point> points = internal::written_points(mesh, filename);
   internal::Written_polygons polygons;
   polygons.reserve(mesh.number_of_faces());
   for (Face_index f : mesh.faces()) {
     polygons.emplace_back();
     for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
-      polygons.back().push_back(mesh.target(d).idx());
+      polygons.back().push_back(index[mesh.target(d).idx()]);
   }
   internal::Vertex_values vertex_values;
   const internal::Written_corner_data corners = internal::checked_corner_data(mesh, filename, format, vertex_values);
   std::vector<internal::Ply_vertex_column> ply_columns;
   if (format == internal::Mesh_format::ply)
     ply_columns = internal::ply_columns(mesh, vertex_values, filename);
+  if (joins.has_joins()) {
+    internal::keep_joined_rows(points, joins, filename, "points");
+    internal::keep_joined_rows(vertex_values.uv, joins, filename, "texture coordinates");
+    internal::keep_joined_rows(vertex_values.normal, joins, filename, "normals");
+    // The join map itself is not data of the input: the joined file has none.
+    const auto is_join_map = [](const internal::Ply_vertex_column& c) {
+      return "v:" + c.name == CGAL_ext::non_manifold_join_name;
+    };
+    ply_columns.erase(std::remove_if(ply_columns.begin(), ply_columns.end(), is_join_map), ply_columns.end());
+    for (internal::Ply_vertex_column& c : ply_columns)
+      internal::keep_joined_rows(c.values, joins, filename, "values of \"" + c.name + "\"");
+  }
 
   const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
   const bool binary =
@@ -545,7 +590,7 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
       written = CGAL::IO::write_OBJ(out, points, polygons, cgal_np);
     else
       internal::write_obj_with_corners(out, points, polygons, corners, precision);
-    internal::write_obj_tags(out, mesh, np, options);
+    internal::write_obj_tags(out, mesh, np, options, joins, index);
   } else if (format == internal::Mesh_format::off) {
     if (corners.empty())
       written = CGAL::IO::write_OFF(out, points, polygons, cgal_np);

@@ -9,6 +9,7 @@
 CGAL_EXT_add_named_parameter(tolerance_t, tolerance, tolerance)
 CGAL_EXT_add_named_parameter(split_non_manifold_vertices_t, split_non_manifold_vertices, split_non_manifold_vertices)
 CGAL_EXT_add_named_parameter(keep_orientation_t, keep_orientation, keep_orientation)
+CGAL_EXT_add_named_parameter(non_manifold_policy_t, non_manifold_policy, non_manifold_policy)
 // sharp features, read and written by the OBJ tag reader and used by subdivision
 CGAL_EXT_add_named_parameter(edge_sharpness_t, edge_sharpness, edge_sharpness_map)
 CGAL_EXT_add_named_parameter(vertex_sharpness_t, vertex_sharpness, vertex_sharpness_map)

@@ -89,9 +89,13 @@ public:
 
   /// With `CGAL::Parallel_tag` (and TBB), every phase runs in parallel and
   /// gives the same arrays, bit for bit, as the serial build.
+  /// With `split_non_manifold_edges`, the sides of an edge of three or more
+  /// faces are not refused but left unpaired: each face gets a border edge
+  /// of its own there (`number_of_non_manifold_edges()` counts such edges).
   template <class ConcurrencyTag = CGAL::Sequential_tag>
-  explicit Connectivity_builder(const Face_lists& faces, ConcurrencyTag = ConcurrencyTag())
-      : faces_(faces), parallel_(is_parallel_tag<ConcurrencyTag>)
+  explicit Connectivity_builder(const Face_lists& faces, ConcurrencyTag = ConcurrencyTag(),
+                                bool split_non_manifold_edges = false)
+      : faces_(faces), parallel_(is_parallel_tag<ConcurrencyTag>), split_edges_(split_non_manifold_edges)
   {
     with_concurrency<ConcurrencyTag>(true, [&](auto tag) {
       using Tag = decltype(tag);
@@ -106,6 +110,8 @@ public:
   u32 number_of_vertices() const { return faces_.n_vertices; }
   u32 number_of_edges() const { return n_edges_; }
   u32 number_of_faces() const { return faces_.n_faces; }
+  /// The edges of three or more faces left as borders (see the constructor).
+  u32 number_of_non_manifold_edges() const { return n_non_manifold_edges_; }
 
   /// Writes the links into `out`: arrays in the mesh's layout (see
   /// `Connectivity_arrays`), sized by the caller for the counts above. A
@@ -243,9 +249,17 @@ private:
         if (stamp[hi] != lo) {
           stamp[hi] = lo;
           first[hi] = t;
+        } else if (first[hi] == null) {
+          // A further side of an edge already split: a border side of its own.
         } else if (partner_[first[hi]] == null) {
           partner_[first[hi]] = t;
           partner_[t] = first[hi];
+        } else if (split_edges_) {
+          // The third side: none of them pairs (null marks the split edge).
+          partner_[partner_[first[hi]]] = null;
+          partner_[first[hi]] = null;
+          first[hi] = null;
+          ++n_non_manifold_edges_;
         } else {
           throw_non_manifold_edge(lo, hi, bucket.data() + bucket_start[lo], bucket.data() + bucket_start[lo + 1]);
         }
@@ -564,6 +578,8 @@ private:
   u32 n_edges_ = 0;
   Huge_page_vector<std::uint64_t> face_start_;
   bool parallel_ = false;
+  bool split_edges_ = false;
+  u32 n_non_manifold_edges_ = 0;
   Array partner_, corner_halfedge_, corners_at_, last_corner_, face_stamp_;
   Array incoming_start_, incoming_corner_;
 };
@@ -576,9 +592,9 @@ private:
 /// On a `Soup_error` `out` is emptied: its arrays were half written.
 template <class ConcurrencyTag = CGAL::Sequential_tag, class P>
 std::vector<Split_vertex> build_connectivity_from_faces(const Face_lists& faces, bool split_non_manifold_vertices,
-                                                        Mobius_mesh<P>& out)
+                                                        Mobius_mesh<P>& out, bool split_non_manifold_edges = false)
 {
-  Connectivity_builder builder(faces, ConcurrencyTag());
+  Connectivity_builder builder(faces, ConcurrencyTag(), split_non_manifold_edges);
   const Connectivity_arrays arrays = Connectivity_access::overwrite(
     out, builder.number_of_vertices(), builder.number_of_edges(), builder.number_of_faces());
   std::vector<Split_vertex> copies;
@@ -595,12 +611,14 @@ std::vector<Split_vertex> build_connectivity_from_faces(const Face_lists& faces,
 /// Builds `out` (empty) from face lists: the connectivity through the
 /// builder, written straight into the mesh's arrays, and the point of each
 /// vertex from `point_of(v)` (a copy made by splitting a non-manifold vertex
-/// takes its original's point). Returns the number of such copies.
+/// takes its original's point). Returns the copies.
 template <class P, class PointOf>
-std::size_t build_mesh_from_faces(const Face_lists& faces, PointOf point_of, bool split_non_manifold_vertices,
-                                  Mobius_mesh<P>& out)
+std::vector<Split_vertex> build_mesh_from_faces(const Face_lists& faces, PointOf point_of,
+                                                bool split_non_manifold_vertices, Mobius_mesh<P>& out,
+                                                bool split_non_manifold_edges = false)
 {
-  const std::vector<Split_vertex> copies = build_connectivity_from_faces(faces, split_non_manifold_vertices, out);
+  const std::vector<Split_vertex> copies =
+    build_connectivity_from_faces(faces, split_non_manifold_vertices, out, split_non_manifold_edges);
   auto points = out.points();
   for (std::uint32_t v = 0; v < faces.n_vertices; ++v)
     points[Vertex_index(v)] = point_of(v);
@@ -608,7 +626,7 @@ std::size_t build_mesh_from_faces(const Face_lists& faces, PointOf point_of, boo
     const Vertex_index v = out.add_vertex(points[Vertex_index(copy.original)]);
     out.set_halfedge(v, Dart::from_bits(copy.dart));
   }
-  return copies.size();
+  return copies;
 }
 
 } // namespace internal

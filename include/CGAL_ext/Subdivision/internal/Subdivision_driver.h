@@ -424,8 +424,10 @@ void write_points(const Values& values, const Refinement_options& options, Mobiu
   for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { out.point(Vertex_index(v)) = Point_values<P>::to(values[v]); });
 }
 
+// Subdivides a 2-manifold (see Joined_subdivision.h for sheets of
+// non-manifold input).
 template <class ConcurrencyTag, class Mask, class P, class NamedParameters>
-void subdivide(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
+void subdivide_sheets(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParameters& np)
 {
   namespace pm = CGAL_ext::parameters;
   using Traits = Point_values<P>;

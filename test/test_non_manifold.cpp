@@ -1,0 +1,345 @@
+// Non-manifold input: the soup import's policy on each kind of
+// non-manifoldness, and the subdivision of the sheets against OpenSubdiv on
+// the joined input (OpenSubdiv's Vtr holds non-manifold topology).
+#include "subdivision_shapes.h"
+
+#include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace {
+
+using namespace subdivision_shapes;
+namespace PM = CGAL_ext::parameters;
+using CGAL_ext::Non_manifold_policy;
+
+const auto split_policy = PM::non_manifold_policy(Non_manifold_policy::split);
+
+// n quads around the edge (0, 1) of the z axis, as pages of a book.
+Shape book(int pages)
+{
+  Shape s;
+  s.points = {Point(0, 0, 0), Point(0, 0, 1)};
+  for (int k = 0; k < pages; ++k) {
+    const double a = 2 * M_PI * k / pages;
+    s.points.emplace_back(std::cos(a), std::sin(a), 0);
+    s.points.emplace_back(std::cos(a), std::sin(a), 1);
+    s.faces.push_back({0, 2 + 2 * k, 3 + 2 * k, 1});
+  }
+  return s;
+}
+
+TEST(NonManifold, an_edge_of_three_or_more_polygons_is_refused_by_default)
+{
+  const Shape s = book(3);
+  Mesh m;
+  try {
+    CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
+    FAIL() << "no Soup_error";
+  } catch (const CGAL_ext::Soup_error& e) {
+    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::non_manifold_edge);
+    EXPECT_EQ(e.polygons(), (std::vector<std::size_t>{0, 1, 2}));
+  }
+  EXPECT_EQ(m.number_of_vertices(), 0u);
+}
+
+TEST(NonManifold, an_edge_of_3_4_or_100_polygons_becomes_a_border_per_polygon)
+{
+  for (int pages : {3, 4, 100}) {
+    const Shape s = book(pages);
+    Mesh m;
+    // Each page keeps the spine's two points: one vertex per page and end.
+    EXPECT_EQ(CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m, split_policy), std::size_t(2 * (pages - 1)));
+    EXPECT_TRUE(m.is_valid(true));
+    EXPECT_EQ(m.number_of_faces(), std::size_t(pages));
+    EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), std::size_t(pages));
+    const CGAL_ext::Non_manifold_counts counts = CGAL_ext::non_manifold_counts(m);
+    EXPECT_EQ(counts.edges, 1u);
+    EXPECT_EQ(counts.vertices, 2u);
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    CGAL_ext::joined_polygon_soup(m, points, polygons);
+    EXPECT_EQ(points, s.points);
+    std::multiset<std::set<std::size_t>> ours, theirs;
+    for (const auto& p : polygons)
+      ours.insert({p.begin(), p.end()});
+    for (const auto& f : s.faces)
+      theirs.insert({f.begin(), f.end()});
+    EXPECT_EQ(ours, theirs);
+  }
+}
+
+TEST(NonManifold, a_pinched_vertex_splits_and_a_bare_vertex_stays)
+{
+  // Two triangles that meet at point 0 only, and point 5 in no polygon.
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0),
+                                     Point(-1, 0, 0), Point(0, -1, 0), Point(3, 3, 3)};
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2}, {0, 3, 4}};
+  Mesh refused;
+  EXPECT_THROW(CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, refused), CGAL_ext::Soup_error);
+  Mesh m;
+  EXPECT_EQ(CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, split_policy), 1u);
+  EXPECT_EQ(m.number_of_vertices(), 7u);
+  EXPECT_EQ(CGAL_ext::non_manifold_counts(m).vertices, 1u);
+  EXPECT_EQ(CGAL_ext::non_manifold_counts(m).edges, 0u);
+  EXPECT_EQ((*CGAL_ext::non_manifold_join_map(m))[CGAL_ext::Vertex_index(6)], 0u);
+  // Subdivided as OpenSubdiv does: the pinched vertex is a corner, the bare one stays.
+  CGAL_ext::Subdivision::loop(m, PM::number_of_iterations(2));
+  std::vector<Point> out;
+  std::vector<std::vector<std::size_t>> faces;
+  CGAL_ext::joined_polygon_soup(m, out, faces);
+  EXPECT_EQ(out[0], Point(0, 0, 0));
+  EXPECT_EQ(out[5], Point(3, 3, 3));
+  EXPECT_EQ(faces.size(), 32u);
+}
+
+TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_is_refused_under_either_policy)
+{
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2, 2}};
+  Mesh m;
+  EXPECT_THROW(CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, split_policy), CGAL_ext::Soup_error);
+}
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+
+// Where the position of each point lies among OpenSubdiv's: the lowest index
+// of its points within `tolerance` (a bare vertex may lie on another).
+struct Position_index
+{
+  std::vector<std::pair<double, int>> by_x;
+  const std::vector<Osd_vertex>* points;
+  double tolerance;
+
+  Position_index(const std::vector<Osd_vertex>& p, double t) : points(&p), tolerance(t)
+  {
+    for (int i = 0; i < int(p.size()); ++i)
+      by_x.push_back({p[i].p[0], i});
+    std::sort(by_x.begin(), by_x.end());
+  }
+  int find(double x, double y, double z) const
+  {
+    int best = -1;
+    for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::make_pair(x - tolerance, -1));
+         it != by_x.end() && it->first <= x + tolerance; ++it) {
+      const double* q = (*points)[it->second].p;
+      if (std::abs(q[1] - y) <= tolerance && std::abs(q[2] - z) <= tolerance && (best < 0 || it->second < best))
+        best = it->second;
+    }
+    return best;
+  }
+};
+
+// OpenSubdiv takes two faces that run the same way along an edge as a
+// non-manifold edge; the soup import connects them (reversing one, or as a
+// Möbius edge). OpenSubdiv is given the faces as the import oriented them.
+Shape as_oriented(const Shape& s, const Mesh& m)
+{
+  Shape r = s;
+  const auto join = CGAL_ext::non_manifold_join_map(m);
+  for (std::size_t f = 0; f < r.faces.size(); ++f) {
+    std::vector<int> vs;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(CGAL_ext::Face_index(f)), m))
+      vs.push_back(int(join ? (*join)[v] : v.idx()));
+    std::rotate(vs.begin(), std::find(vs.begin(), vs.end(), r.faces[f][0]), vs.end());
+    if (vs != r.faces[f])
+      std::reverse(r.faces[f].begin() + 1, r.faces[f].end());
+  }
+  return r;
+}
+
+// The crease tags of `s` on the edges of `m` whose ends are the tag's points.
+template <class M>
+void set_crease_tags(const Shape& s, M& m)
+{
+  if (s.crease_pairs.empty())
+    return;
+  const auto join = CGAL_ext::non_manifold_join_map(m);
+  auto sharpness = CGAL_ext::edge_sharpness_map(m);
+  for (std::size_t i = 0; i < s.crease_pairs.size(); ++i)
+    for (CGAL_ext::Edge_index e : m.edges()) {
+      const auto a = m.vertex(e, 0), b = m.vertex(e, 1);
+      const std::set<int> ends = {int(join ? (*join)[a] : a.idx()), int(join ? (*join)[b] : b.idx())};
+      if (ends == std::set<int>{s.crease_pairs[i][0], s.crease_pairs[i][1]})
+        sharpness[e] = s.crease_values[i];
+    }
+}
+
+// Subdivides `s` n times through the sheets and compares the joined result
+// with OpenSubdiv's level n: every point within 1e-12 of one of its, each
+// of its points met, the same faces (as sets of points).
+template <class K = test::Kd>
+void expect_opensubdiv_result(Shape s, Sdc::SchemeType type, int n)
+{
+  using KPoint = typename K::Point_3;
+  CGAL_ext::Mobius_mesh<KPoint> m;
+  std::vector<KPoint> input;
+  for (const Point& p : s.points)
+    input.emplace_back(p.x(), p.y(), p.z());
+  CGAL_ext::polygon_soup_to_mobius_mesh(input, s.faces, m, split_policy);
+  set_crease_tags(s, m);
+  Mesh oriented;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, oriented, split_policy);
+  const Shape reference = as_oriented(s, oriented);
+  const Osd_run osd = run_opensubdiv(reference, s, type, n);
+  const auto boundary = test::opensubdiv_options(s).GetVtxBoundaryInterpolation() ==
+                            Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
+                          ? Boundary_interpolation::edge_and_corner
+                          : Boundary_interpolation::edge_only;
+  const auto np = PM::number_of_iterations(unsigned(n)).boundary_interpolation(boundary);
+  if (type == Sdc::SCHEME_CATMARK)
+    CGAL_ext::Subdivision::catmull_clark(m, np);
+  else
+    CGAL_ext::Subdivision::loop(m, np);
+  // The copies of a joined vertex are at one point.
+  const auto join = *CGAL_ext::non_manifold_join_map(m);
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    ASSERT_LE(CGAL::to_double(CGAL::squared_distance(m.point(v), m.point(CGAL_ext::Vertex_index(join[v])))), 1e-24)
+      << "vertex " << v.idx() << " and its join " << join[v];
+  std::vector<KPoint> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  CGAL_ext::joined_polygon_soup(m, points, polygons);
+  const auto& level = osd.refiner->GetLevel(n);
+  ASSERT_EQ(points.size(), std::size_t(level.GetNumVertices()));
+  ASSERT_EQ(polygons.size(), std::size_t(level.GetNumFaces()));
+  const Position_index index(osd.levels[n], 1e-12);
+  std::vector<int> ours(points.size());
+  std::set<int> met;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    ours[v] = index.find(CGAL::to_double(points[v].x()), CGAL::to_double(points[v].y()),
+                         CGAL::to_double(points[v].z()));
+    ASSERT_GE(ours[v], 0) << "vertex " << v << " at " << points[v] << " is not a point of OpenSubdiv's";
+    met.insert(ours[v]);
+  }
+  std::set<int> theirs_met;
+  for (const Osd_vertex& p : osd.levels[n])
+    theirs_met.insert(index.find(p.p[0], p.p[1], p.p[2]));
+  EXPECT_EQ(met, theirs_met);
+  std::multiset<std::set<int>> our_faces, their_faces;
+  for (const auto& f : polygons) {
+    std::set<int> face;
+    for (std::size_t v : f)
+      face.insert(ours[v]);
+    our_faces.insert(face);
+  }
+  for (int f = 0; f < level.GetNumFaces(); ++f) {
+    std::set<int> face;
+    const auto fv = level.GetFaceVertices(f);
+    for (int i = 0; i < fv.size(); ++i)
+      face.insert(index.find(osd.levels[n][fv[i]].p[0], osd.levels[n][fv[i]].p[1], osd.levels[n][fv[i]].p[2]));
+    their_faces.insert(face);
+  }
+  EXPECT_EQ(our_faces, their_faces);
+}
+
+// OpenSubdiv's shape, without a polygon that visits a vertex twice (a
+// degenerate edge, which OpenSubdiv takes and the import refuses).
+Shape nonmanifold_shape(const std::string& name)
+{
+  Shape s = read_shape(test::data("opensubdiv/" + name));
+  s.faces.erase(std::remove_if(s.faces.begin(), s.faces.end(),
+                               [](const std::vector<int>& f) { return std::set<int>(f.begin(), f.end()).size() != f.size(); }),
+                s.faces.end());
+  return s;
+}
+
+TEST(NonManifold, catmull_clark_equals_opensubdiv_on_its_non_manifold_shapes)
+{
+  REQUIRE_OPENSUBDIV();
+  for (const char* name : {"catmark_nonman_edges.obj", "catmark_val2_nonman.obj"})
+    for (int n = 1; n <= 3; ++n) {
+      SCOPED_TRACE(std::string(name) + " level " + std::to_string(n));
+      expect_opensubdiv_result(nonmanifold_shape(name), Sdc::SCHEME_CATMARK, n);
+    }
+}
+
+TEST(NonManifold, loop_equals_opensubdiv_on_its_non_manifold_shape)
+{
+  REQUIRE_OPENSUBDIV();
+  for (int n = 1; n <= 3; ++n) {
+    SCOPED_TRACE("level " + std::to_string(n));
+    expect_opensubdiv_result(nonmanifold_shape("loop_nonman_edges.obj"), Sdc::SCHEME_LOOP, n);
+  }
+}
+
+TEST(NonManifold, with_an_exact_kernel_too)
+{
+  REQUIRE_OPENSUBDIV();
+  expect_opensubdiv_result<CGAL::Exact_predicates_exact_constructions_kernel>(
+    nonmanifold_shape("catmark_val2_nonman.obj"), Sdc::SCHEME_CATMARK, 2);
+}
+
+TEST(NonManifold, a_book_of_pages_and_its_spine_as_opensubdiv)
+{
+  REQUIRE_OPENSUBDIV();
+  for (int pages : {3, 4, 7})
+    expect_opensubdiv_result(book(pages), Sdc::SCHEME_CATMARK, 2);
+}
+
+// Pages of two quads each on a spine of two edges (0, 1) and (1, 2): vertex
+// 1 lies on an interior non-manifold crease, whose rule no copy of it sees
+// from its own page once a page edge at it is semi-sharp, or once a page is
+// a single triangle on both spine edges (a corner of its sheet).
+Shape spine_book(int pages, bool triangle_page)
+{
+  Shape s;
+  s.points = {Point(0, 0, 0), Point(0.3, -0.2, 1), Point(0, 0, 2)}; // a bent spine: its crease rule moves vertex 1
+  for (int k = 0; k < pages; ++k) {
+    const double a = 2 * M_PI * k / pages, r = 1 + 0.25 * k;
+    const int first = int(s.points.size());
+    for (int z = 0; z < 3; ++z)
+      s.points.emplace_back(r * std::cos(a), r * std::sin(a), z + 0.1 * k * (z == 1));
+    s.faces.push_back({0, first, first + 1, 1});
+    s.faces.push_back({1, first + 1, first + 2, 2});
+  }
+  if (triangle_page)
+    s.faces.push_back({0, 1, 2});
+  return s;
+}
+
+TEST(NonManifold, an_interior_non_manifold_crease_as_opensubdiv)
+{
+  REQUIRE_OPENSUBDIV();
+  Shape semi_sharp = spine_book(3, false);
+  semi_sharp.crease_pairs = {{1, 4}};
+  semi_sharp.crease_values = {1.5f};
+  Shape triangle = spine_book(3, true);
+  triangle.boundary = Boundary_interpolation::edge_and_corner;
+  for (int n = 1; n <= 3; ++n) {
+    expect_opensubdiv_result(semi_sharp, Sdc::SCHEME_CATMARK, n);
+    expect_opensubdiv_result(triangle, Sdc::SCHEME_CATMARK, n);
+  }
+}
+#endif
+
+TEST(NonManifold, files_are_read_as_sheets_and_written_joined)
+{
+  Mesh m;
+  const std::string in = test::data("opensubdiv/catmark_val2_nonman.obj");
+  EXPECT_THROW(CGAL_ext::IO::read_polygon_mesh(in, m), CGAL_ext::IO_error);
+  CGAL_ext::IO::read_polygon_mesh(in, m, split_policy);
+  EXPECT_EQ(CGAL_ext::non_manifold_counts(m).edges, 2u);
+  CGAL_ext::Subdivision::catmull_clark(m);
+  const std::string out = (std::filesystem::temp_directory_path() / "cgal_ext_non_manifold.obj").string();
+  CGAL_ext::IO::write_polygon_mesh(out, m);
+  // CGAL's own reader, which knows nothing of joins, reads the joined soup.
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  ASSERT_TRUE(CGAL::IO::read_polygon_soup(out, points, polygons));
+  std::vector<Point> joined;
+  std::vector<std::vector<std::size_t>> joined_polygons;
+  CGAL_ext::joined_polygon_soup(m, joined, joined_polygons);
+  EXPECT_EQ(points.size(), joined.size());
+  EXPECT_LT(points.size(), m.number_of_vertices());
+  EXPECT_EQ(polygons, joined_polygons);
+  std::filesystem::remove(out);
+}
+
+} // namespace
