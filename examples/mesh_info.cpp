@@ -39,7 +39,9 @@ int mesh_info(int argc, char** argv)
   if (args.positional.size() != 1)
     throw examples::Usage_error("expected one file name, got " + std::to_string(args.positional.size()));
   CGAL_ext::Mobius_mesh<Kernel::Point_3> mesh;
-  CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  // Non-manifold input is described, not refused: read as sheets.
+  CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh,
+                                  CGAL_ext::parameters::non_manifold_policy(CGAL_ext::Non_manifold_policy::split));
   examples::print_mesh_summary(mesh);
   return 0;
 }

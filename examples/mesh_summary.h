@@ -8,6 +8,7 @@
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 
 #include <cstddef>
@@ -97,6 +98,15 @@ Json_object mesh_summary(const CGAL_ext::Mobius_mesh<P>& mesh)
   // Only where there are some: the line of a mesh without them stays as it was.
   if (!mesh.corner_channels().empty())
     summary.add("corner_channels", corner_channels_json(mesh));
+  // Non-manifold input, held as manifold sheets: the counts above are the
+  // sheets', these the input's.
+  if (CGAL_ext::non_manifold_join_map(mesh)) {
+    const CGAL_ext::Non_manifold_counts c = CGAL_ext::non_manifold_counts(mesh);
+    summary.add("non_manifold_vertices", c.vertices)
+      .add("non_manifold_edges", c.edges)
+      .add("input_vertices", c.input_vertices)
+      .add("input_edges", c.input_edges);
+  }
   return summary;
 }
 

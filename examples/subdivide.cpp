@@ -167,7 +167,11 @@ void run(const Settings& s)
 {
   CGAL_ext::Mobius_mesh<typename K::Point_3> mesh;
   CGAL_ext::IO::check_output_file(s.out); // before the work, not after it
-  CGAL_ext::Sharp_feature_options tags = CGAL_ext::IO::read_polygon_mesh(s.in, mesh);
+  // Non-manifold input is subdivided as OpenSubdiv does, through manifold
+  // sheets, and written joined again.
+  CGAL_ext::Sharp_feature_options tags = CGAL_ext::IO::read_polygon_mesh(
+    s.in, mesh, CGAL_ext::parameters::non_manifold_policy(CGAL_ext::Non_manifold_policy::split));
+  const CGAL_ext::Non_manifold_counts non_manifold = CGAL_ext::non_manifold_counts(mesh);
   // Corner channels go through Catmull-Clark, Loop and (bi)linear with their
   // seams where they are: whether OUT's format holds them is known now. The
   // library refuses them for Doo-Sabin and sqrt3 before any work.
@@ -216,18 +220,20 @@ void run(const Settings& s)
   if (s.triangles)
     out_tags.triangle_subdivision = s.triangles;
   CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
+  const CGAL_ext::Non_manifold_counts written = CGAL_ext::non_manifold_counts(mesh);
   examples::Json_object line;
   line.add("scheme", examples::choice_name(schemes, s.scheme))
     .add("kernel", examples::choice_name(kernels, s.kernel))
     .add("levels", s.levels)
-    .add("vertices", mesh.number_of_vertices())
-    .add("edges", mesh.number_of_edges())
+    .add("vertices", written.input_vertices) // as written: non-manifold input joined again
+    .add("edges", written.input_edges)
     .add("faces", mesh.number_of_faces())
     .add("hole_faces_removed", hole_faces)
     .add("seconds", seconds)
     .add("corner_channels", examples::corner_channels_json(mesh));
   if (s.drop_corner_data)
     line.add("corner_channels_dropped", dropped);
+  line.add("non_manifold_vertices", non_manifold.vertices).add("non_manifold_edges", non_manifold.edges);
   examples::print_json_line(line);
 }
 

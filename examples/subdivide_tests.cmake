@@ -12,6 +12,13 @@ if(CGAL_EXT_BUILD_TESTS)
            COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/cube2.obj --levels 2)
   set_tests_properties(example.subdivide.cube PROPERTIES
     PASS_REGULAR_EXPRESSION "\"vertices\":98,\"edges\":192,\"faces\":96,\"hole_faces_removed\":0,\"seconds\":")
+  # Non-manifold input, as OpenSubdiv subdivides it (78 vertices and 55
+  # faces after one Catmull-Clark step: OpenSubdiv's level 1 of the shape;
+  # 7 non-manifold vertices and 2 edges, as its Vtr tags them), written joined.
+  add_test(NAME example.subdivide.non_manifold
+           COMMAND subdivide ${_data}/opensubdiv/catmark_val2_nonman.obj ${CMAKE_CURRENT_BINARY_DIR}/val2_nonman.obj)
+  set_tests_properties(example.subdivide.non_manifold PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"vertices\":78,\"edges\":[0-9]+,\"faces\":55,.*\"non_manifold_vertices\":7,\"non_manifold_edges\":2}\n$")
   add_test(NAME example.subdivide.mobius_loop_epeck
            COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius2.off
                    --scheme loop --levels 2 --kernel epeck)

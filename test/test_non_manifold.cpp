@@ -89,7 +89,8 @@ TEST(NonManifold, a_pinched_vertex_splits_and_a_bare_vertex_stays)
   EXPECT_EQ(m.number_of_vertices(), 7u);
   EXPECT_EQ(CGAL_ext::non_manifold_counts(m).vertices, 1u);
   EXPECT_EQ(CGAL_ext::non_manifold_counts(m).edges, 0u);
-  EXPECT_EQ((*CGAL_ext::non_manifold_join_map(m))[CGAL_ext::Vertex_index(6)], 0u);
+  EXPECT_EQ(CGAL_ext::non_manifold_representative(m, CGAL_ext::Vertex_index(6)), CGAL_ext::Vertex_index(0));
+  EXPECT_EQ((*CGAL_ext::non_manifold_join_map(m))[CGAL_ext::Vertex_index(0)], CGAL_ext::no_non_manifold_join);
   // Subdivided as OpenSubdiv does: the pinched vertex is a corner, the bare one stays.
   CGAL_ext::Subdivision::loop(m, PM::number_of_iterations(2));
   std::vector<Point> out;
@@ -143,11 +144,10 @@ struct Position_index
 Shape as_oriented(const Shape& s, const Mesh& m)
 {
   Shape r = s;
-  const auto join = CGAL_ext::non_manifold_join_map(m);
   for (std::size_t f = 0; f < r.faces.size(); ++f) {
     std::vector<int> vs;
     for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(CGAL_ext::Face_index(f)), m))
-      vs.push_back(int(join ? (*join)[v] : v.idx()));
+      vs.push_back(int(CGAL_ext::non_manifold_representative(m, v).idx()));
     std::rotate(vs.begin(), std::find(vs.begin(), vs.end(), r.faces[f][0]), vs.end());
     if (vs != r.faces[f])
       std::reverse(r.faces[f].begin() + 1, r.faces[f].end());
@@ -161,12 +161,12 @@ void set_crease_tags(const Shape& s, M& m)
 {
   if (s.crease_pairs.empty())
     return;
-  const auto join = CGAL_ext::non_manifold_join_map(m);
   auto sharpness = CGAL_ext::edge_sharpness_map(m);
   for (std::size_t i = 0; i < s.crease_pairs.size(); ++i)
     for (CGAL_ext::Edge_index e : m.edges()) {
       const auto a = m.vertex(e, 0), b = m.vertex(e, 1);
-      const std::set<int> ends = {int(join ? (*join)[a] : a.idx()), int(join ? (*join)[b] : b.idx())};
+      const std::set<int> ends = {int(CGAL_ext::non_manifold_representative(m, a).idx()),
+                                  int(CGAL_ext::non_manifold_representative(m, b).idx())};
       if (ends == std::set<int>{s.crease_pairs[i][0], s.crease_pairs[i][1]})
         sharpness[e] = s.crease_values[i];
     }
@@ -199,13 +199,23 @@ void expect_opensubdiv_result(Shape s, Sdc::SchemeType type, int n)
   else
     CGAL_ext::Subdivision::loop(m, np);
   // The copies of a joined vertex are at one point.
-  const auto join = *CGAL_ext::non_manifold_join_map(m);
-  for (CGAL_ext::Vertex_index v : m.vertices())
-    ASSERT_LE(CGAL::to_double(CGAL::squared_distance(m.point(v), m.point(CGAL_ext::Vertex_index(join[v])))), 1e-24)
-      << "vertex " << v.idx() << " and its join " << join[v];
+  for (CGAL_ext::Vertex_index v : m.vertices()) {
+    const CGAL_ext::Vertex_index r = CGAL_ext::non_manifold_representative(m, v);
+    ASSERT_LE(CGAL::to_double(CGAL::squared_distance(m.point(v), m.point(r))), 1e-24)
+      << "vertex " << v.idx() << " and its join " << r.idx();
+  }
   std::vector<KPoint> points;
   std::vector<std::vector<std::size_t>> polygons;
   CGAL_ext::joined_polygon_soup(m, points, polygons);
+  // The non-manifold vertices and edges are OpenSubdiv's.
+  const auto& base = osd.refiner->GetLevel(0);
+  std::size_t vertices = 0, edges = 0;
+  for (int v = 0; v < base.GetNumVertices(); ++v)
+    vertices += base.IsVertexNonManifold(v) && base.GetVertexFaces(v).size() > 0 ? 1 : 0;
+  for (int e = 0; e < base.GetNumEdges(); ++e)
+    edges += base.IsEdgeNonManifold(e) ? 1 : 0;
+  EXPECT_EQ(CGAL_ext::non_manifold_counts(oriented).vertices, vertices);
+  EXPECT_EQ(CGAL_ext::non_manifold_counts(oriented).edges, edges);
   const auto& level = osd.refiner->GetLevel(n);
   ASSERT_EQ(points.size(), std::size_t(level.GetNumVertices()));
   ASSERT_EQ(polygons.size(), std::size_t(level.GetNumFaces()));

@@ -11,6 +11,7 @@
 #include <CGAL_ext/Decimation/internal/Decimation_settings.h>
 #include <CGAL_ext/Decimation/internal/Decimator.h>
 #include <CGAL_ext/Decimation/internal/Distance_relocation.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
@@ -104,6 +105,7 @@ template <class P, class NP = parameters::Default_named_parameters>
 Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh, "decimate");
+  CGAL_ext::internal::refuse_non_manifold_joins(mesh, "decimate");
   CGAL_ext::internal::refuse_corner_channels(mesh, "decimate",
                                              "a collapse moves the corners of one vertex's faces to another vertex");
   std::size_t triangles = 0;

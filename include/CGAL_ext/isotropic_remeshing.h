@@ -8,6 +8,7 @@
 #ifndef CGAL_EXT_ISOTROPIC_REMESHING_H
 #define CGAL_EXT_ISOTROPIC_REMESHING_H
 
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
@@ -194,6 +195,7 @@ Isotropic_remeshing_result isotropic_remeshing(Mobius_mesh<P>& mesh, double targ
 {
   internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
+  internal::refuse_non_manifold_joins(mesh, "isotropic_remeshing");
   internal::refuse_corner_channels(mesh, "isotropic_remeshing",
                                    "splits, collapses, flips and relaxation move corners off the faces they belong to");
   const double largest_coordinate = internal::require_coordinates_in_range(mesh, "isotropic_remeshing");

@@ -8,6 +8,7 @@
 #ifndef CGAL_EXT_OFFSET_MESH_H
 #define CGAL_EXT_OFFSET_MESH_H
 
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
@@ -203,6 +204,7 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
     throw Parameter_error(what.str());
   }
   CGAL_ext::internal::require_no_garbage(mesh, "offset_mesh");
+  CGAL_ext::internal::refuse_non_manifold_joins(mesh, "offset_mesh");
   CGAL_ext::internal::refuse_corner_channels(mesh, "offset_mesh",
                                              "the rims have no corners in the input, and a corner normal would "
                                              "have to turn on the inner side");

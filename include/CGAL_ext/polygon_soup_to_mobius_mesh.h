@@ -38,27 +38,24 @@ namespace internal {
 template <class P>
 void record_joins(Mobius_mesh<P>& mesh, std::uint32_t n_vertices, const std::vector<Split_vertex>& copies)
 {
-  auto join = mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, 0).first;
-  for (std::uint32_t v = 0; v < n_vertices; ++v)
-    join[Vertex_index(v)] = v;
+  auto join =
+    mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, no_non_manifold_join).first;
   for (std::size_t k = 0; k < copies.size(); ++k)
     join[Vertex_index(n_vertices + std::uint32_t(k))] = copies[k].original;
 }
 
 // Before `part` (with joins) is joined to `mesh`: `mesh` gets a join map if
-// it has none (each vertex its own), and part's joins name the vertices
-// they will be once appended (join() copies a map of the same name).
+// it has none (joined to none), and part's joins name the vertices they
+// will be once appended (join() copies a map of the same name).
 template <class P>
 void prepare_join_append(Mobius_mesh<P>& mesh, Mobius_mesh<P>& part)
 {
   const std::uint32_t offset = std::uint32_t(mesh.number_of_vertices());
-  auto [own, created] = mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, 0);
-  if (created)
-    for (Vertex_index v : mesh.vertices())
-      own[v] = v.idx();
+  mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, no_non_manifold_join);
   auto join = *non_manifold_join_map(part);
   for (Vertex_index v : part.vertices())
-    join[v] += offset;
+    if (join[v] != no_non_manifold_join)
+      join[v] += offset;
 }
 
 // polygon_soup_to_mobius_mesh(), with `before_orient(result)` called on the

@@ -11,10 +11,12 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Join_classes.h>
+#include <CGAL_ext/exceptions.h>
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace CGAL_ext {
@@ -36,12 +38,16 @@ enum class Non_manifold_policy {
 
 /// \ingroup PkgMobiusMeshSoup
 /// The name of the vertex property map (values `std::uint32_t`) in which a
-/// mesh of manifold sheets records its joins: each vertex holds the index of
-/// the vertex it was one with in the input, the lowest index of them (which
-/// holds its own). Made by `polygon_soup_to_mobius_mesh()` with
-/// `non_manifold_policy(Non_manifold_policy::split)` where it split
+/// mesh of manifold sheets records its joins: a vertex split off another
+/// holds that vertex's index (the lowest of the input vertex's copies),
+/// every other vertex `no_non_manifold_join` (the map's default: a vertex
+/// added later is joined to none). Made by `polygon_soup_to_mobius_mesh()`
+/// with `non_manifold_policy(Non_manifold_policy::split)` where it split
 /// anything, and carried by subdivision.
 inline constexpr const char* non_manifold_join_name = internal::non_manifold_join_map_name;
+/// \ingroup PkgMobiusMeshSoup
+/// The value of a vertex in the join map that was split off no other.
+inline constexpr std::uint32_t no_non_manifold_join = internal::no_join;
 
 /// \ingroup PkgMobiusMeshSoup
 /// The join map of `mesh` (see `non_manifold_join_name`), if it has one.
@@ -50,6 +56,17 @@ std::optional<typename Mobius_mesh<P>::template Property_map<Vertex_index, std::
 non_manifold_join_map(const Mobius_mesh<P>& mesh)
 {
   return mesh.template property_map<Vertex_index, std::uint32_t>(non_manifold_join_name);
+}
+
+/// \ingroup PkgMobiusMeshSoup
+/// The vertex that stands for `v`'s input vertex: the one `v` was split off,
+/// or `v` itself. (Looks the map up by name: for many vertices, read
+/// `non_manifold_join_map()` once.)
+template <class P>
+Vertex_index non_manifold_representative(const Mobius_mesh<P>& mesh, Vertex_index v)
+{
+  const auto map = non_manifold_join_map(mesh);
+  return map && (*map)[v] != no_non_manifold_join ? Vertex_index((*map)[v]) : v;
 }
 
 /// \ingroup PkgMobiusMeshSoup
@@ -62,6 +79,10 @@ struct Non_manifold_counts
   /// The edges of the input shared by three or more polygons: several
   /// border edges of the mesh each.
   std::size_t edges = 0;
+  /// The vertices of the joined input: the mesh's, each input vertex once.
+  std::size_t input_vertices = 0;
+  /// The edges of the joined input: the mesh's, each input edge once.
+  std::size_t input_edges = 0;
 };
 
 /// \ingroup PkgMobiusMeshSoup
@@ -71,7 +92,14 @@ template <class P>
 Non_manifold_counts non_manifold_counts(const Mobius_mesh<P>& mesh)
 {
   const internal::Join_classes classes(mesh);
-  return {classes.joined_vertices(), classes.joined_edges()};
+  Non_manifold_counts counts;
+  counts.vertices = classes.joined_vertices();
+  counts.edges = classes.joined_edges();
+  for (std::uint32_t v = 0; v < std::uint32_t(mesh.number_of_vertices()); ++v)
+    counts.input_vertices += classes.representative(v) == v ? 1 : 0;
+  for (std::uint32_t e = 0; e < std::uint32_t(mesh.number_of_edges()); ++e)
+    counts.input_edges += classes.edge_representative(e) == e ? 1 : 0;
+  return counts;
 }
 
 /// \ingroup PkgMobiusMeshSoup
@@ -95,6 +123,20 @@ void joined_polygon_soup(const Mobius_mesh<P>& mesh, std::vector<Point>& points,
   }
 }
 
+namespace internal {
+
+// The refusal of the operations that remove or renumber vertices: a join
+// map holds vertex indices, which they would leave pointing elsewhere.
+template <class P>
+void refuse_non_manifold_joins(const Mobius_mesh<P>& mesh, const std::string& function)
+{
+  if (non_manifold_join_map(mesh))
+    throw Parameter_error(function + ": the mesh holds non-manifold input as sheets (the vertex map \"" +
+                          non_manifold_join_name + "\"), whose joins " + function +
+                          " would not keep; remove the map to work on the sheets apart");
+}
+
+} // namespace internal
 } // namespace CGAL_ext
 
 #endif // CGAL_EXT_MOBIUS_MESH_NON_MANIFOLD_JOINS_H

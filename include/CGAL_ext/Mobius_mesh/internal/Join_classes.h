@@ -24,6 +24,9 @@ namespace CGAL_ext {
 namespace internal {
 
 inline constexpr const char* non_manifold_join_map_name = "v:non_manifold_join";
+// The value of a vertex that was not split off another (the map's default,
+// so that a vertex added later is joined to none).
+inline constexpr std::uint32_t no_join = 0xffffffffu;
 
 // Two vertices are one in the input if the join map gives them the same
 // representative; two edges are one if their ends are (an edge of the input
@@ -48,9 +51,9 @@ public:
     members_.assign(nv, 0);
     for (u32 v = 0; v < nv; ++v) {
       if (rep_[v] >= nv || rep_[rep_[v]] != rep_[v])
-        throw Parameter_error(std::string("the vertex map \"") + non_manifold_join_map_name + "\" gives vertex " +
-                              std::to_string(v) + " the vertex " + std::to_string(rep_[v]) +
-                              ", which is not a vertex that holds its own index");
+        throw Parameter_error(std::string("the vertex map \"") + non_manifold_join_map_name + "\" joins vertex " +
+                              std::to_string(v) + " to " + std::to_string(rep_[v]) +
+                              ", which is not a vertex joined to none");
       ++members_[rep_[v]];
     }
     classify_edges(mesh);
@@ -62,13 +65,22 @@ public:
     std::vector<u32> rep(mesh.number_of_vertices());
     const auto map = mesh.template property_map<Vertex_index, std::uint32_t>(non_manifold_join_map_name);
     for (u32 v = 0; v < u32(rep.size()); ++v)
-      rep[v] = map ? (*map)[Vertex_index(v)] : v;
+      rep[v] = map && (*map)[Vertex_index(v)] != no_join ? (*map)[Vertex_index(v)] : v;
     return rep;
   }
 
   bool has_joins() const { return joined_vertices_ != 0; }
   u32 representative(u32 v) const { return rep_[v]; }
   const std::vector<u32>& representatives() const { return rep_; }
+
+  // The classes as the values of a join map: no_join for a representative.
+  template <class P>
+  void write_map(Mobius_mesh<P>& mesh) const
+  {
+    auto map = mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_map_name, no_join).first;
+    for (u32 v = 0; v < u32(rep_.size()); ++v)
+      map[Vertex_index(v)] = rep_[v] == v ? no_join : rep_[v];
+  }
   // Whether vertex v is one of several vertices of one input vertex.
   bool is_joined(u32 v) const { return members_[rep_[v]] > 1; }
   u32 edge_representative(u32 e) const { return edge_rep_[e]; }

@@ -244,8 +244,7 @@ void subdivide_joined(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
         s = Crease::subdivide_vertex_sharpness(s);
     }
     unsharpen_joined_vertices(mesh, np, given_vs, work);
-    work.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, 0).first.data() =
-      classes.representatives();
+    classes.write_map(work);
     mesh = std::move(work);
   }
 }
