@@ -391,6 +391,12 @@ Sharp_feature_options read_polygon_mesh(const std::string& filename, Mesh_format
 ///     \cgalParamType{Boolean}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{non_manifold_policy}
+///     \cgalParamDescription{`Non_manifold_policy::split` reads polygons that do not form a
+///       2-manifold as manifold sheets with a join map (see `polygon_soup_to_mobius_mesh()`)}
+///     \cgalParamType{`Non_manifold_policy`}
+///     \cgalParamDefault{`Non_manifold_policy::refuse`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the mesh-level options the file's tags set (unset where it has none).
@@ -470,7 +476,9 @@ void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
 /// significant digits, which read back exactly; exact kernels write
 /// `CGAL::to_double()` of each coordinate (which may be one unit in the last
 /// place away from the nearest double). PLY is written in binary unless
-/// `use_binary_mode(false)`.
+/// `use_binary_mode(false)`. Sheets of non-manifold input (a mesh with the
+/// join map `non_manifold_join_name`) are written joined: one point per
+/// input vertex, the polygons and tags on them.
 ///
 /// The corner channels "c:uv" and "c:normal" (see `read_polygon_mesh()`; their
 /// values may also be `std::array`s of 2 or 3 floats or doubles, or the
