@@ -327,6 +327,88 @@ TEST(NonManifold, an_interior_non_manifold_crease_as_opensubdiv)
     expect_opensubdiv_result(triangle, Sdc::SCHEME_CATMARK, n);
   }
 }
+
+// A Möbius strip of 8 x 2 quads with a fin: a quad on the edge between
+// columns 3 and 4 of its middle row, which then has three faces.
+Shape mobius_with_fin()
+{
+  Shape s;
+  const int n = 8;
+  for (int i = 0; i < n; ++i)
+    for (int r = 0; r < 3; ++r) {
+      const double t = 2 * M_PI * i / n, w = 0.5 * (r - 1), c = 2 + w * std::cos(t / 2);
+      s.points.emplace_back(c * std::cos(t), c * std::sin(t), w * std::sin(t / 2));
+    }
+  auto at = [](int i, int r) { return 3 * i + r; };
+  for (int i = 0; i < n; ++i)
+    for (int r = 0; r < 2; ++r) {
+      if (i + 1 < n)
+        s.faces.push_back({at(i, r), at(i + 1, r), at(i + 1, r + 1), at(i, r + 1)});
+      else // the half twist: row r meets row 2 - r
+        s.faces.push_back({at(i, r), at(0, 2 - r), at(0, 1 - r), at(i, r + 1)});
+    }
+  const int f = int(s.points.size());
+  s.points.emplace_back(0.2, 2.6, 1.0);
+  s.points.emplace_back(-0.6, 2.3, 1.1);
+  s.faces.push_back({at(3, 1), at(4, 1), f + 1, f});
+  return s;
+}
+
+// OpenSubdiv's reference for a one-sided sheet with a fin: the orientation
+// double cover of the strip (two twins per vertex), and a copy of the fin on
+// each of the two twins of the edge it stands on.
+Shape mobius_with_fin_cover(const Shape& s)
+{
+  Built strip;
+  const std::vector<std::vector<int>> strip_faces(s.faces.begin(), s.faces.end() - 1);
+  const std::vector<Point> strip_points(s.points.begin(), s.points.end() - 2);
+  CGAL_ext::polygon_soup_to_mobius_mesh(strip_points, strip_faces, strip.mesh);
+  Shape cover = double_cover(strip.mesh, strip);
+  const std::vector<int>& fin = s.faces.back();
+  for (const auto& f : std::vector<std::vector<int>>(cover.faces))
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const int a = f[i], b = f[(i + 1) % f.size()];
+      if (a / 2 == fin[0] && b / 2 == fin[1]) { // a twin of the fin's edge, once per twin
+        const int first = int(cover.points.size());
+        cover.points.push_back(s.points[fin[2]]);
+        cover.points.push_back(s.points[fin[3]]);
+        cover.faces.push_back({a, b, first, first + 1});
+      }
+    }
+  EXPECT_EQ(cover.points.size(), 2 * strip_points.size() + 4);
+  return cover;
+}
+
+TEST(NonManifold, a_one_sided_sheet_with_a_fin_as_opensubdiv_on_its_double_cover)
+{
+  REQUIRE_OPENSUBDIV();
+  const Shape s = mobius_with_fin();
+  const Shape cover = mobius_with_fin_cover(s);
+  for (int n = 1; n <= 3; ++n) {
+    SCOPED_TRACE("level " + std::to_string(n));
+    Mesh m;
+    CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m, split_policy);
+    EXPECT_FALSE(CGAL_ext::is_orientable(m));
+    EXPECT_EQ(CGAL_ext::non_manifold_counts(m).edges, 1u);
+    CGAL_ext::Subdivision::catmull_clark(m, PM::number_of_iterations(unsigned(n)));
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    CGAL_ext::joined_polygon_soup(m, points, polygons);
+    const Osd_run osd = run_opensubdiv(cover, cover, Sdc::SCHEME_CATMARK, n);
+    // Each point of ours is a point of the cover's, and each of the cover's one of ours.
+    const Position_index theirs(osd.levels[n], 1e-12);
+    std::vector<Osd_vertex> our_points;
+    for (const Point& p : points) {
+      EXPECT_GE(theirs.find(p.x(), p.y(), p.z()), 0) << p;
+      our_points.push_back({{p.x(), p.y(), p.z()}});
+    }
+    const Position_index ours(our_points, 1e-12);
+    for (const Osd_vertex& p : osd.levels[n])
+      EXPECT_GE(ours.find(p.p[0], p.p[1], p.p[2]), 0) << p.p[0] << ' ' << p.p[1] << ' ' << p.p[2];
+    // Every face twice in the cover (the fin once per twin of its edge).
+    EXPECT_EQ(polygons.size() * 2, std::size_t(osd.refiner->GetLevel(n).GetNumFaces()));
+  }
+}
 #endif
 
 TEST(NonManifold, files_are_read_as_sheets_and_written_joined)
