@@ -5,6 +5,9 @@
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
+#include <CGAL_ext/Subdivision/limit.h>
+#include <CGAL_ext/isotropic_remeshing.h>
+#include <CGAL_ext/offset_mesh.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -107,6 +110,26 @@ TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_is_refused_under_either_p
   const std::vector<std::vector<int>> polygons = {{0, 1, 2, 2}};
   Mesh m;
   EXPECT_THROW(CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, split_policy), CGAL_ext::Soup_error);
+}
+
+// What cannot follow the joins refuses them, before it touches the mesh.
+TEST(NonManifold, operations_that_renumber_vertices_refuse_sheets)
+{
+  const Shape s = book(3);
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m, split_policy);
+  const std::size_t vertices = m.number_of_vertices();
+  EXPECT_THROW(CGAL_ext::Subdivision::doo_sabin(m), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::Subdivision::sqrt3(m), CGAL_ext::Parameter_error);
+  EXPECT_THROW(CGAL_ext::isotropic_remeshing(m, 0.5), CGAL_ext::Parameter_error);
+  Mesh offset;
+  EXPECT_THROW(CGAL_ext::offset_mesh(m, 0.1, offset), CGAL_ext::Parameter_error);
+  Mesh copy = m;
+  auto limits = copy.add_property_map<CGAL_ext::Vertex_index, Point>("v:limit").first;
+  EXPECT_THROW(CGAL_ext::Subdivision::limit_points<CGAL_ext::Subdivision::Catmull_clark_mask>(copy, limits),
+               CGAL_ext::Parameter_error);
+  EXPECT_EQ(m.number_of_vertices(), vertices);
+  EXPECT_TRUE(CGAL_ext::non_manifold_join_map(m).has_value());
 }
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
@@ -263,7 +286,7 @@ Shape nonmanifold_shape(const std::string& name)
 TEST(NonManifold, catmull_clark_equals_opensubdiv_on_its_non_manifold_shapes)
 {
   REQUIRE_OPENSUBDIV();
-  for (const char* name : {"catmark_nonman_edges.obj", "catmark_val2_nonman.obj"})
+  for (const char* name : {"catmark_nonman_edges.obj", "catmark_val2_nonman.obj", "catmark_fan.obj"})
     for (int n = 1; n <= 3; ++n) {
       SCOPED_TRACE(std::string(name) + " level " + std::to_string(n));
       expect_opensubdiv_result(nonmanifold_shape(name), Sdc::SCHEME_CATMARK, n);

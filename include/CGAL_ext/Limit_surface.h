@@ -8,6 +8,7 @@
 #ifndef CGAL_EXT_LIMIT_SURFACE_H
 #define CGAL_EXT_LIMIT_SURFACE_H
 
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Limit_surface/internal/Patch_builder.h>
 #include <CGAL_ext/Limit_surface/internal/Patches.h>
 #include <CGAL_ext/Limit_surface/internal/Tessellation.h>
@@ -139,6 +140,7 @@ public:
   {
     namespace pm = CGAL_ext::parameters;
     CGAL_ext::internal::require_no_garbage(mesh, "Limit_surface");
+    CGAL_ext::internal::refuse_non_manifold_joins(mesh, "Limit_surface");
     options_.boundary = CGAL_ext::internal::boundary_interpolation_of(np);
     options_.crease = CGAL_ext::internal::crease_method_of(np);
     options_.level_smooth = options.approx_level_smooth;

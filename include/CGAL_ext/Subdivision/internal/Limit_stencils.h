@@ -6,6 +6,7 @@
 #ifndef CGAL_EXT_SUBDIVISION_INTERNAL_LIMIT_STENCILS_H
 #define CGAL_EXT_SUBDIVISION_INTERNAL_LIMIT_STENCILS_H
 
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -298,6 +299,9 @@ struct Limit_settings : Normal_settings<P, NP>
 
   Limit_settings(const Mobius_mesh<P>& mesh, const NP& np) : Normal_settings<P, NP>(mesh, np)
   {
+    // The limit of a joined vertex needs the rings of all its sheets at
+    // once, which the limit stencils do not gather: subdivide first.
+    CGAL_ext::internal::refuse_non_manifold_joins(mesh, "the limit functions");
     edge_sharpness = CGAL_ext::internal::edge_sharpness_of(mesh, np);
     vertex_sharpness = CGAL_ext::internal::vertex_sharpness_of(mesh, np);
     corner_if_one_face =
