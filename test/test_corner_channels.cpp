@@ -639,6 +639,31 @@ TEST(CornerChannelsOpenSubdiv, LoopShapes)
 #endif
 }
 
+// On non-manifold input the channel is subdivided on the sheets, each split
+// edge a border of the channel in each sheet: as OpenSubdiv's face-varying
+// rules on the joined input where the borders are linear. (In the other
+// modes OpenSubdiv makes every value of a non-manifold vertex with a seam a
+// corner, which the sheets do not: see doc/subdivision.md.)
+TEST(CornerChannelsOpenSubdiv, NonManifoldShapeWithLinearBorders)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  const std::string file = test::data("opensubdiv/catmark_fan.obj");
+  const Shape s = read_shape(file);
+  Mesh base;
+  CGAL_ext::IO::read_polygon_mesh(file, base,
+                                  CGAL_ext::parameters::non_manifold_policy(CGAL_ext::Non_manifold_policy::split));
+  ASSERT_GT(CGAL_ext::non_manifold_counts(base).edges, 0u);
+  for (Face_varying_interpolation mode : {Face_varying_interpolation::boundaries, Face_varying_interpolation::all})
+    for (int levels = 1; levels <= 3; ++levels) {
+      SCOPED_TRACE(std::string(mode_name(mode)) + ", levels " + std::to_string(levels));
+      Mesh m = base;
+      subdivide(m, false, levels, mode, s);
+      EXPECT_LE(max_difference(our_corners(m), opensubdiv_corners(s, Sdc::SCHEME_CATMARK, levels, mode)), 1e-12);
+    }
+#endif
+}
+
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
 // A Möbius strip whose texture coordinates (angle around, height) have one
 // seam, where the angle wraps; as a shape, with its `vt` indices.
