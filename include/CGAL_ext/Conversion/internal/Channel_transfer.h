@@ -39,12 +39,7 @@ void for_each_channel_type(F&& f)
     if constexpr (!std::is_same_v<typename decltype(tag)::type, bool>)
       f(tag);
   });
-  f(Type_tag<std::array<float, 2>>());
-  f(Type_tag<std::array<float, 3>>());
-  f(Type_tag<std::array<float, 4>>());
-  f(Type_tag<std::array<double, 2>>());
-  f(Type_tag<std::array<double, 3>>());
-  f(Type_tag<std::array<double, 4>>());
+  for_each_small_array_type(f);
   if constexpr (std::is_same_v<P1, P2>) {
     using K = typename CGAL::Kernel_traits<P1>::Kernel;
     f(Type_tag<typename K::Point_2>());

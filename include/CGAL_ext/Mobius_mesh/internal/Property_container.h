@@ -14,6 +14,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
@@ -35,6 +36,20 @@ struct Type_tag
 {
   using type = T;
 };
+
+// Calls f(Type_tag<T>()) for the arrays of 2 to 4 floats or doubles: the
+// fixed-size values (texture coordinates, colours) that the channels,
+// conversions and subdivision carry.
+template <class F>
+void for_each_small_array_type(F&& f)
+{
+  f(Type_tag<std::array<float, 2>>());
+  f(Type_tag<std::array<float, 3>>());
+  f(Type_tag<std::array<float, 4>>());
+  f(Type_tag<std::array<double, 2>>());
+  f(Type_tag<std::array<double, 3>>());
+  f(Type_tag<std::array<double, 4>>());
+}
 
 // Where a transfer takes its values from: element `first + i` of the target
 // takes element `source_of[i]` of the source, unless that is `no_source`.

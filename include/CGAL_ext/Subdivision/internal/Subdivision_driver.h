@@ -159,12 +159,7 @@ void for_each_interpolated_type(F&& f)
   f(Type_tag<double>());
   f(Type_tag<typename K::Point_3>());
   f(Type_tag<typename K::Vector_3>());
-  f(Type_tag<std::array<float, 2>>());
-  f(Type_tag<std::array<float, 3>>());
-  f(Type_tag<std::array<float, 4>>());
-  f(Type_tag<std::array<double, 2>>());
-  f(Type_tag<std::array<double, 3>>());
-  f(Type_tag<std::array<double, 4>>());
+  CGAL_ext::internal::for_each_small_array_type(f);
 }
 
 // The kernel's 2D points and vectors (texture coordinates).
