@@ -12,6 +12,7 @@
 // options.
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/decimation.h>
 #include <CGAL_ext/isotropic_remeshing.h>
 #include <CGAL_ext/merge_borders.h>
@@ -184,8 +185,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     out.write(reinterpret_cast<const char*>(data + options.size()), std::streamsize(size - options.size()));
   }
   Mesh mesh;
+  // As the tools read: subdivide takes non-manifold input as sheets.
+  const bool sheets = cgal_ext_fuzz_family() == std::string("subdivide");
   try {
-    CGAL_ext::IO::read_polygon_mesh(scratch_file(), mesh);
+    CGAL_ext::IO::read_polygon_mesh(
+      scratch_file(), mesh,
+      CGAL_ext::parameters::non_manifold_policy(sheets ? CGAL_ext::Non_manifold_policy::split
+                                                       : CGAL_ext::Non_manifold_policy::refuse));
   } catch (const CGAL_ext::Error&) {
     return 0;
   }
@@ -199,5 +205,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   check(mesh.is_valid(), "the result is not valid");
+  if (CGAL_ext::non_manifold_join_map(mesh)) { // the joins follow the levels
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    CGAL_ext::joined_polygon_soup(mesh, points, polygons);
+    check(polygons.size() == mesh.number_of_faces(), "the joined soup lost faces");
+  }
   return 0;
 }
