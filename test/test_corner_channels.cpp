@@ -640,11 +640,10 @@ TEST(CornerChannelsOpenSubdiv, LoopShapes)
 }
 
 // On non-manifold input the channel is subdivided on the sheets, each split
-// edge a border of the channel in each sheet: as OpenSubdiv's face-varying
-// rules on the joined input where the borders are linear. (In the other
-// modes OpenSubdiv makes every value of a non-manifold vertex with a seam a
-// corner, which the sheets do not: see doc/subdivision.md.)
-TEST(CornerChannelsOpenSubdiv, NonManifoldShapeWithLinearBorders)
+// edge a border of the channel in each sheet, the values of a non-manifold
+// vertex where the channel is cut corners: as OpenSubdiv's face-varying rules
+// on the joined input, in every mode.
+TEST(CornerChannelsOpenSubdiv, NonManifoldShape)
 {
   REQUIRE_OPENSUBDIV();
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
@@ -654,7 +653,7 @@ TEST(CornerChannelsOpenSubdiv, NonManifoldShapeWithLinearBorders)
   CGAL_ext::IO::read_polygon_mesh(file, base,
                                   CGAL_ext::parameters::non_manifold_policy(CGAL_ext::Non_manifold_policy::split));
   ASSERT_GT(CGAL_ext::non_manifold_counts(base).edges, 0u);
-  for (Face_varying_interpolation mode : {Face_varying_interpolation::boundaries, Face_varying_interpolation::all})
+  for (Face_varying_interpolation mode : all_modes)
     for (int levels = 1; levels <= 3; ++levels) {
       SCOPED_TRACE(std::string(mode_name(mode)) + ", levels " + std::to_string(levels));
       Mesh m = base;

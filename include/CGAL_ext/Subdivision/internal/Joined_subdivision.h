@@ -21,6 +21,8 @@
 #define CGAL_EXT_SUBDIVISION_INTERNAL_JOINED_SUBDIVISION_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
+#include <CGAL_ext/Mobius_mesh/internal/Corner_channel_array.h>
 #include <CGAL_ext/Mobius_mesh/internal/Join_classes.h>
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -83,6 +85,28 @@ Joined_ring<P> joined_ring(const Mobius_mesh<P>& mesh, const CGAL_ext::internal:
   return ring;
 }
 
+// Whether a corner channel of `mesh` holds several values at the vertices
+// `copies` (one vertex of the input).
+template <class P>
+bool has_several_corner_values(const Mobius_mesh<P>& mesh, const std::vector<u32>& copies)
+{
+  bool several = false;
+  const auto& hprops = CGAL_ext::internal::Connectivity_access::properties<Halfedge_index>(mesh);
+  hprops.template for_each_array<CGAL_ext::internal::Base_corner_channel>(
+    [&](const CGAL_ext::internal::Base_corner_channel& channel) {
+      u32 first = CGAL_ext::internal::Base_corner_channel::no_value;
+      for (u32 c : copies)
+        for (Dart d : CGAL_ext::halfedges_around_target(Vertex_index(c), mesh)) {
+          if (mesh.is_border(d))
+            continue;
+          const u32 value = channel.indices()[mesh.corner(d).idx()];
+          several = several || (first != CGAL_ext::internal::Base_corner_channel::no_value && value != first);
+          first = value;
+        }
+    });
+  return several;
+}
+
 // OpenSubdiv's sharpening of the non-manifold vertices of the input
 // (Far::TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness): each
 // joined vertex gets the largest sharpness of its copies (a file's tag
@@ -109,7 +133,11 @@ std::vector<Joined_crease_vertex> sharpen_joined_vertices(const Mobius_mesh<P>& 
     const bool interior_crease = ring.non_manifold == 2 && ring.borders == 0 && ring.faces > ring.far.size();
     if (interior_crease)
       creases.push_back({c, s});
-    else
+    // A crease vertex's points are computed apart (joined_crease_point());
+    // its sharpness on the sheets decides only its corner values, which
+    // OpenSubdiv makes corners where a channel is cut there
+    // (Vtr::FVarLevel::completeTopologyFromFaceValues()).
+    if (!interior_crease || has_several_corner_values(mesh, c))
       s = infinitely_sharp;
     for (u32 v : c)
       vertex_sharpness[v] = s;
