@@ -46,7 +46,7 @@ set_tests_properties(convert.cut.mobius_is_a_disc PROPERTIES PASS_REGULAR_EXPRES
 add_test(NAME convert.corner_channels
   COMMAND convert ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube.obj ${_out}/convert_cube.obj)
 set_tests_properties(convert.corner_channels PROPERTIES PASS_REGULAR_EXPRESSION
-  "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0\\}\\]")
+  "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\}\\]")
 add_test(NAME convert.fails.missing_file COMMAND convert ${_data}/no_such_file.obj ${_out}/x.obj)
 set_tests_properties(convert.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION "${_fails}")
 add_test(NAME convert.fails.usage COMMAND convert)

@@ -18,8 +18,9 @@
 namespace examples {
 
 // The corner channels of a mesh (texture coordinates "c:uv", normals
-// "c:normal"): per channel its name, values, seam edges and the corners
-// without a value.
+// "c:normal"): per channel its name, values, seam edges, the corners
+// without a value, and its Möbius edges without and with a seam (those of
+// the mesh as it stands).
 template <class P>
 Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
 {
@@ -29,7 +30,9 @@ Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
                    .add("name", s.name)
                    .add("values", s.values)
                    .add("seam_edges", s.seam_edges)
-                   .add("corners_without_value", s.corners_without_value));
+                   .add("corners_without_value", s.corners_without_value)
+                   .add("mobius_edges_continuous", s.mobius_edges_continuous)
+                   .add("mobius_edges_seamed", s.mobius_edges_seamed));
   return channels;
 }
 
@@ -95,8 +98,10 @@ Json_object mesh_summary(const CGAL_ext::Mobius_mesh<P>& mesh)
     .add("euler_characteristic", CGAL_ext::euler_characteristic(mesh))
     .add("valid", mesh.is_valid());
   // Only where there are some: the line of a mesh without them stays as it was.
+  // On the oriented copy (orient() keeps each corner's value at its vertex):
+  // its Möbius edges are the ones counted in "mobius_edges".
   if (!mesh.corner_channels().empty())
-    summary.add("corner_channels", corner_channels_json(mesh));
+    summary.add("corner_channels", corner_channels_json(oriented));
   return summary;
 }
 

@@ -101,7 +101,7 @@ if(CGAL_EXT_BUILD_TESTS)
   # the other 5 folds); two quad splits (V' = V + E + F, E' = 2E + 4F) give
   # 125 values and 4 * 7 = 28 seam edges. Its normals are 6 quads apart: 150
   # values, all 48 edges seams. mesh_info reads them back from the file.
-  set(_cube_channels "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":125,\"seam_edges\":28,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":150,\"seam_edges\":48,\"corners_without_value\":0\\}\\]")
+  set(_cube_channels "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":125,\"seam_edges\":28,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\},\\{\"name\":\"c:normal\",\"values\":150,\"seam_edges\":48,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\}\\]")
   add_test(NAME example.subdivide.corner_data_obj_to_obj
            COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:subdivide> -DMESH_INFO=$<TARGET_FILE:mesh_info>
                    "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/cube_uv.obj;--levels;2"
