@@ -41,6 +41,18 @@ Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
 // asked to go on without them; what is dropped is named in the JSON line.
 inline const char* const drop_corner_data_flag = "--drop-corner-data";
 
+// --no-tags: a tool that writes a mesh leaves OpenSubdiv's tag lines out of
+// an OBJ output, which CGAL's OBJ reader then takes (it refuses a 't' line);
+// the sharpness and the subdivision options are lost.
+inline const char* const no_tags_flag = "--no-tags";
+
+// The named parameters with which a tool writes its output, as `--no-tags`
+// asks (`write_tags`: the flag was not given).
+inline auto write_parameters(bool write_tags)
+{
+  return CGAL_ext::parameters::write_subdivision_tags(write_tags);
+}
+
 // Why the format of `out` (a path checked already) cannot hold the corner
 // channels of `mesh` (CGAL_ext::IO::check_output_file()); empty if it can.
 template <class P>
