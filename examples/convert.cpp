@@ -63,7 +63,7 @@ int convert(int argc, char** argv)
   }
   Mesh out;
   CGAL_ext::from_surface_mesh(sm, out);
-  CGAL_ext::IO::write_polygon_mesh(args.positional[1], out, examples::write_parameters(!args.has(examples::no_tags_flag)));
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], out, examples::write_parameters(args));
   examples::print_mesh_summary(out);
   return 0;
 }

@@ -84,8 +84,9 @@ std::optional<double> hausdorff_distance(const Mesh& a, const Mesh& b)
 int decimate(int argc, char** argv)
 {
   const examples::Arguments args = examples::parse_arguments(
-    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"}, {"--protect-borders", "--no-relocation", "--no-hausdorff", examples::drop_corner_data_flag,
-                                                                  examples::no_tags_flag});
+    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"},
+    {"--protect-borders", "--no-relocation", "--no-hausdorff", examples::drop_corner_data_flag,
+     examples::no_tags_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--faces") && !args.has("--ratio") && !args.has("--max-error"))
@@ -119,7 +120,7 @@ int decimate(int argc, char** argv)
                              .protect_borders(args.has("--protect-borders"))
                              .relocate_vertices(!args.has("--no-relocation")));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(!args.has(examples::no_tags_flag)));
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
   std::optional<double> hausdorff;
   if (!args.has("--no-hausdorff")) {
     CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same

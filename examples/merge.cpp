@@ -96,7 +96,7 @@ int merge(int argc, char** argv)
                           : CGAL_ext::facing_borders(a, b);
     CGAL_ext::merge_borders(a, b, pairing, *manual);
   }
-  CGAL_ext::IO::write_polygon_mesh(args.positional[2], a, examples::write_parameters(!args.has(examples::no_tags_flag)));
+  CGAL_ext::IO::write_polygon_mesh(args.positional[2], a, examples::write_parameters(args));
   examples::print_mesh_summary(a);
   return 0;
 }

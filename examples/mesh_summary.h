@@ -53,6 +53,12 @@ inline auto write_parameters(bool write_tags)
   return CGAL_ext::parameters::write_subdivision_tags(write_tags);
 }
 
+// The same, for a tool that accepts `--no-tags` among its flags.
+inline auto write_parameters(const Arguments& args)
+{
+  return write_parameters(!args.has(no_tags_flag));
+}
+
 // Why the format of `out` (a path checked already) cannot hold the corner
 // channels of `mesh` (CGAL_ext::IO::check_output_file()); empty if it can.
 template <class P>

@@ -108,7 +108,7 @@ int remesh(int argc, char** argv)
     args.has("--max-memory") ? CGAL_ext::isotropic_remeshing(mesh, L, np.maximum_memory(max_memory))
                              : CGAL_ext::isotropic_remeshing(mesh, L, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(!args.has(examples::no_tags_flag)));
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
   examples::Json_object line;
   line.add("vertices", mesh.number_of_vertices())
     .add("edges", mesh.number_of_edges())

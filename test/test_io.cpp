@@ -1362,7 +1362,8 @@ TEST(IO_round_trip, write_subdivision_tags_false_writes_what_cgal_reads)
   // that the corners are written as f v/vt/vn, which CGAL's reader takes too).
   const fs::path dir = scratch_directory();
   Mesh_d mesh;
-  const CGAL_ext::Sharp_feature_options options = read_polygon_mesh(test::data("opensubdiv/catmark_cube_creases1.obj"), mesh);
+  const CGAL_ext::Sharp_feature_options options =
+    read_polygon_mesh(test::data("opensubdiv/catmark_cube_creases1.obj"), mesh);
   ASSERT_TRUE(options.boundary_interpolation);
   const auto slurp = [](const std::string& file) {
     std::ifstream in(file, std::ios::binary);
