@@ -1,4 +1,4 @@
-// convert IN OUT [--cut]
+// convert IN OUT [--cut] [--no-tags]
 //
 // Reads a polygon mesh (OBJ, OFF or PLY) into a Mobius_mesh and converts it
 // to a CGAL::Surface_mesh: orientable meshes as they are, non-orientable ones
@@ -28,11 +28,13 @@
 namespace {
 
 const examples::Tool_usage usage{
-  "convert", "convert IN OUT [--cut]",
+  "convert", "convert IN OUT [--cut] [--no-tags]",
   "Reads a polygon mesh (.obj, .off, .ply) and converts it to a CGAL::Surface_mesh: orientable\n"
   "meshes as they are, non-orientable ones cut along their Möbius edges with the cut recorded in\n"
   "a seam map. OUT is the round trip back (the seam glued), with the input's topology, or with\n"
   "  --cut   the Surface_mesh's oriented cut mesh as it is.\n"
+  "  --no-tags  an OBJ OUT without OpenSubdiv's tag lines (creases, corners), for readers that\n"
+  "           refuse them (CGAL's)\n"
   "Prints the counts of what is written as one line of JSON, as mesh_info does (Möbius edges\n"
   "counted once a copy is oriented).\n"};
 
@@ -40,7 +42,7 @@ int convert(int argc, char** argv)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
-  const examples::Arguments args = examples::parse_arguments(argc, argv, {}, {"--cut"});
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {}, {"--cut", examples::no_tags_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   Mesh mesh;
@@ -61,7 +63,7 @@ int convert(int argc, char** argv)
   }
   Mesh out;
   CGAL_ext::from_surface_mesh(sm, out);
-  CGAL_ext::IO::write_polygon_mesh(args.positional[1], out);
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], out, examples::write_parameters(args));
   examples::print_mesh_summary(out);
   return 0;
 }

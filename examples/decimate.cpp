@@ -1,5 +1,5 @@
 // decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders]
-//          [--no-relocation] [--no-hausdorff]
+//          [--no-relocation] [--no-hausdorff] [--no-tags]
 //
 // Simplifies a polygon mesh (.obj, .off, .ply), orientable or not, by
 // Garland–Heckbert edge collapses and writes the result. Prints one line of
@@ -41,7 +41,7 @@ using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 const examples::Tool_usage usage{
   "decimate",
   "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders] [--no-relocation] "
-  "[--no-hausdorff] [--drop-corner-data]",
+  "[--no-hausdorff] [--drop-corner-data] [--no-tags]",
   "Reads a polygon mesh (.obj, .off, .ply), orientable or not, triangulates it and collapses\n"
   "edges, cheapest first by Garland-Heckbert quadric error, until a stop condition holds (give\n"
   "one or more; the first reached stops):\n"
@@ -56,6 +56,8 @@ const examples::Tool_usage usage{
   "                     meshes its sampling can take longer than the decimation.\n"
   "  --drop-corner-data  go on without the input's texture coordinates and normals, which\n"
   "                     collapses do not carry (an input with them is refused otherwise).\n"
+  "  --no-tags          an OBJ OUT without OpenSubdiv's tag lines (the kept creases), which\n"
+  "                     CGAL's reader refuses.\n"
   "Edges with sharpness tags (OBJ 't crease') are kept. Writes OUT and prints its counts,\n"
   "topology, the time taken and the Hausdorff distance to the input as one line of JSON.\n"};
 
@@ -82,7 +84,9 @@ std::optional<double> hausdorff_distance(const Mesh& a, const Mesh& b)
 int decimate(int argc, char** argv)
 {
   const examples::Arguments args = examples::parse_arguments(
-    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"}, {"--protect-borders", "--no-relocation", "--no-hausdorff", examples::drop_corner_data_flag});
+    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"},
+    {"--protect-borders", "--no-relocation", "--no-hausdorff", examples::drop_corner_data_flag,
+     examples::no_tags_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--faces") && !args.has("--ratio") && !args.has("--max-error"))
@@ -116,7 +120,7 @@ int decimate(int argc, char** argv)
                              .protect_borders(args.has("--protect-borders"))
                              .relocate_vertices(!args.has("--no-relocation")));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
   std::optional<double> hausdorff;
   if (!args.has("--no-hausdorff")) {
     CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same

@@ -1,4 +1,5 @@
 // merge A B OUT [--tolerance T] [--strategy auto|keep-first|keep-second|average|bridge] [--loops I,J]
+//       [--no-tags]
 //
 // Reads two polygon meshes (OBJ, OFF or PLY), merges B's borders into A's,
 // writes the result to OUT and prints its counts as one line of JSON (see
@@ -24,7 +25,8 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 
 const examples::Tool_usage usage{
-  "merge", "merge A B OUT [--tolerance T] [--strategy auto|keep-first|keep-second|average|bridge] [--loops I,J]",
+  "merge",
+  "merge A B OUT [--tolerance T] [--strategy auto|keep-first|keep-second|average|bridge] [--loops I,J] [--no-tags]",
   "Reads two polygon meshes (.obj, .off, .ply), merges the borders of B into those of A and\n"
   "writes the result to OUT (format by extension).\n"
   "  --strategy auto         (the default) glue border vertices within the tolerance of each\n"
@@ -40,6 +42,8 @@ const examples::Tool_usage usage{
   "                          bridging the gap\n"
   "  --loops I,J             with those strategies: glue the whole border loops I of A and J of\n"
   "                          B instead (numbered from 0, as CGAL_ext::border_cycles lists them)\n"
+  "  --no-tags               an OBJ OUT without OpenSubdiv's tag lines (A's creases), which\n"
+  "                          CGAL's reader refuses\n"
   "Prints the counts of the result as one line of JSON: vertices, edges, faces, border_loops,\n"
   "mobius_edges (left once oriented), orientable, closed, components, euler_characteristic,\n"
   "valid.\n"};
@@ -65,7 +69,8 @@ CGAL_ext::Dart loop_numbered(const Mesh& mesh, const std::string& text, const ch
 
 int merge(int argc, char** argv)
 {
-  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--tolerance", "--strategy", "--loops"});
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--tolerance", "--strategy", "--loops"},
+                                                             {examples::no_tags_flag});
   if (args.positional.size() != 3)
     throw examples::Usage_error("expected three file names, got " + std::to_string(args.positional.size()));
   const double tolerance = examples::real_argument("the tolerance", args.value("--tolerance", "0"));
@@ -91,7 +96,7 @@ int merge(int argc, char** argv)
                           : CGAL_ext::facing_borders(a, b);
     CGAL_ext::merge_borders(a, b, pairing, *manual);
   }
-  CGAL_ext::IO::write_polygon_mesh(args.positional[2], a);
+  CGAL_ext::IO::write_polygon_mesh(args.positional[2], a, examples::write_parameters(args));
   examples::print_mesh_summary(a);
   return 0;
 }

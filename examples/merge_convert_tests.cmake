@@ -46,12 +46,24 @@ set_tests_properties(convert.cut.mobius_is_a_disc PROPERTIES PASS_REGULAR_EXPRES
 add_test(NAME convert.corner_channels
   COMMAND convert ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube.obj ${_out}/convert_cube.obj)
 set_tests_properties(convert.corner_channels PROPERTIES PASS_REGULAR_EXPRESSION
-  "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0\\}\\]")
+  "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\}\\]")
 add_test(NAME convert.fails.missing_file COMMAND convert ${_data}/no_such_file.obj ${_out}/x.obj)
 set_tests_properties(convert.fails.missing_file PROPERTIES PASS_REGULAR_EXPRESSION "${_fails}")
 add_test(NAME convert.fails.usage COMMAND convert)
 set_tests_properties(convert.fails.usage PROPERTIES PASS_REGULAR_EXPRESSION
-  "^convert: expected two file names, got 0; usage: convert IN OUT \\[--cut\\]\n$")
+  "^convert: expected two file names, got 0; usage: convert IN OUT \\[--cut\\] \\[--no-tags\\]\n$")
+# OpenSubdiv's tags: the cube with 12 creased edges (its file's 12 't crease'
+# lines) keeps them through the round trip; --no-tags writes no 't' line, the
+# OBJ that CGAL's reader takes.
+set(_creased ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube_creases1.obj)
+add_test(NAME convert.crease_tags
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:convert> "-DARGS=${_creased};${_out}/convert_creased.obj"
+          -DOUT=${_out}/convert_creased.obj "-DCOUNT_REGEX=^t crease 2/1/0 " -DCOUNT=12
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_output_lines.cmake)
+add_test(NAME convert.no_tags
+  COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:convert> "-DARGS=${_creased};${_out}/convert_no_tags.obj;--no-tags"
+          -DOUT=${_out}/convert_no_tags.obj "-DCOUNT_REGEX=^t " -DCOUNT=0
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_output_lines.cmake)
 
 # merge: two copies of a Möbius strip (100 V, 180 E, 80 F, a 40-edge border)
 # glued along their borders are a Klein bottle: 160 V, 320 E, 160 F, closed, chi 0.

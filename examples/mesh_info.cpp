@@ -6,7 +6,10 @@
 //    "orientable":true|false,"closed":true|false,"components":C,
 //    "euler_characteristic":X,"valid":true|false[,"corner_channels":[...]]}
 // with, for a file with texture coordinates or normals, each corner channel:
-//   {"name":"c:uv","values":N,"seam_edges":S,"corners_without_value":W}
+//   {"name":"c:uv","values":N,"seam_edges":S,"corners_without_value":W,
+//    "mobius_edges_continuous":C,"mobius_edges_seamed":M}
+// (C + M is mobius_edges: the Möbius edges of the oriented copy across
+// which the channel is continuous, and those along which it has a seam).
 // On bad input or usage it prints one line "mesh_info: <what>" on stderr and
 // exits with status 2.
 
@@ -30,7 +33,9 @@ const examples::Tool_usage usage{
   "copy is oriented with CGAL_ext::orient() (as few as it finds), as every tool counts them.\n"
   "A file with texture coordinates or normals (OBJ vt/vn, PLY and OFF per vertex) adds\n"
   "corner_channels: per channel (c:uv, c:normal) its name, values, seam_edges (edges along\n"
-  "which its values are cut) and corners_without_value.\n"};
+  "which its values are cut), corners_without_value, and mobius_edges_continuous and\n"
+  "mobius_edges_seamed (the Möbius edges counted in mobius_edges across which the channel is\n"
+  "continuous, and those along which it has a seam).\n"};
 
 int mesh_info(int argc, char** argv)
 {

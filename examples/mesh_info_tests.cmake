@@ -47,7 +47,27 @@ endforeach()
 # (a net of a cube keeps 5 folds); each face has normals of its own.
 add_test(NAME mesh_info.corner_channels COMMAND mesh_info ${_mesh_info_data}/opensubdiv/catmark_cube.obj)
 set_tests_properties(mesh_info.corner_channels PROPERTIES PASS_REGULAR_EXPRESSION
-  "\"valid\":true,\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0\\}\\]\\}\n$")
+  "\"valid\":true,\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":14,\"seam_edges\":7,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\},\\{\"name\":\"c:normal\",\"values\":24,\"seam_edges\":12,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\}\\]\\}\n$")
+
+# A Möbius strip of three quads (columns t_k b_k at 0, 120 and 240 degrees,
+# each a half turn further from the last; quad 2 joins column 2 to column 0
+# turned over) has one Möbius edge however it is oriented. With a texture
+# coordinate per vertex (f v/v) the channel is continuous across it; with
+# four of its own per quad every inner edge (3, the Möbius one included) is a seam.
+set(_strip_v "v 2.5 0 0\nv -1.125 1.9485 0.433\nv -0.875 -1.5155 0.433\nv 1.5 0 0\nv -0.875 1.5155 -0.433\nv -1.125 -1.9485 -0.433\n")
+set(_strip_continuous ${CMAKE_CURRENT_BINARY_DIR}/mobius3_uv_continuous.obj)
+file(WRITE ${_strip_continuous} "${_strip_v}vt 0 1\nvt 0.333 1\nvt 0.667 1\nvt 0 0\nvt 0.333 0\nvt 0.667 0\n"
+  "f 1/1 4/4 5/5 2/2\nf 2/2 5/5 6/6 3/3\nf 3/3 6/6 1/1 4/4\n")
+set(_strip_seamed ${CMAKE_CURRENT_BINARY_DIR}/mobius3_uv_per_quad.obj)
+file(WRITE ${_strip_seamed} "${_strip_v}vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+  "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 4/2 5/3 2/4\nf 2/5 5/6 6/7 3/8\nf 3/9 6/10 1/11 4/12\n")
+set(_strip_line "\"border_loops\":1,\"mobius_edges\":1,\"orientable\":false,\"closed\":false,\"components\":1,\"euler_characteristic\":0,\"valid\":true")
+add_test(NAME mesh_info.corner_channels_continuous_across_mobius COMMAND mesh_info ${_strip_continuous})
+set_tests_properties(mesh_info.corner_channels_continuous_across_mobius PROPERTIES PASS_REGULAR_EXPRESSION
+  "${_strip_line},\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":6,\"seam_edges\":0,\"corners_without_value\":0,\"mobius_edges_continuous\":1,\"mobius_edges_seamed\":0\\}\\]\\}\n$")
+add_test(NAME mesh_info.corner_channels_seamed_across_mobius COMMAND mesh_info ${_strip_seamed})
+set_tests_properties(mesh_info.corner_channels_seamed_across_mobius PROPERTIES PASS_REGULAR_EXPRESSION
+  "${_strip_line},\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":12,\"seam_edges\":3,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":1\\}\\]\\}\n$")
 
 set(_mesh_info_check ${CMAKE_CURRENT_SOURCE_DIR}/mesh_info_expect_failure.cmake)
 add_test(NAME mesh_info.fails.no_argument

@@ -19,8 +19,9 @@
 namespace examples {
 
 // The corner channels of a mesh (texture coordinates "c:uv", normals
-// "c:normal"): per channel its name, values, seam edges and the corners
-// without a value.
+// "c:normal"): per channel its name, values, seam edges, the corners
+// without a value, and its Möbius edges without and with a seam (those of
+// the mesh as it stands).
 template <class P>
 Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
 {
@@ -30,7 +31,9 @@ Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
                    .add("name", s.name)
                    .add("values", s.values)
                    .add("seam_edges", s.seam_edges)
-                   .add("corners_without_value", s.corners_without_value));
+                   .add("corners_without_value", s.corners_without_value)
+                   .add("mobius_edges_continuous", s.mobius_edges_continuous)
+                   .add("mobius_edges_seamed", s.mobius_edges_seamed));
   return channels;
 }
 
@@ -38,6 +41,24 @@ Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
 // the input's corner channels refuses the input, before the work, unless
 // asked to go on without them; what is dropped is named in the JSON line.
 inline const char* const drop_corner_data_flag = "--drop-corner-data";
+
+// --no-tags: a tool that writes a mesh leaves OpenSubdiv's tag lines out of
+// an OBJ output, which CGAL's OBJ reader then takes (it refuses a 't' line);
+// the sharpness and the subdivision options are lost.
+inline const char* const no_tags_flag = "--no-tags";
+
+// The named parameters with which a tool writes its output, as `--no-tags`
+// asks (`write_tags`: the flag was not given).
+inline auto write_parameters(bool write_tags)
+{
+  return CGAL_ext::parameters::write_subdivision_tags(write_tags);
+}
+
+// The same, for a tool that accepts `--no-tags` among its flags.
+inline auto write_parameters(const Arguments& args)
+{
+  return write_parameters(!args.has(no_tags_flag));
+}
 
 // Why the format of `out` (a path checked already) cannot hold the corner
 // channels of `mesh` (CGAL_ext::IO::check_output_file()); empty if it can.
@@ -96,8 +117,10 @@ Json_object mesh_summary(const CGAL_ext::Mobius_mesh<P>& mesh)
     .add("euler_characteristic", CGAL_ext::euler_characteristic(mesh))
     .add("valid", mesh.is_valid());
   // Only where there are some: the line of a mesh without them stays as it was.
+  // On the oriented copy (orient() keeps each corner's value at its vertex):
+  // its Möbius edges are the ones counted in "mobius_edges".
   if (!mesh.corner_channels().empty())
-    summary.add("corner_channels", corner_channels_json(mesh));
+    summary.add("corner_channels", corner_channels_json(oriented));
   // Non-manifold input, held as manifold sheets: the counts above are the
   // sheets', these the input's.
   if (CGAL_ext::non_manifold_join_map(mesh)) {

@@ -1,5 +1,5 @@
 // remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp]
-//        [--relax-constraints] [--max-memory BYTES] [--all-iterations] [--refuse-narrow]
+//        [--relax-constraints] [--max-memory BYTES] [--all-iterations] [--refuse-narrow] [--no-tags]
 //
 // Remeshes a polygon mesh (.obj, .off, .ply) into triangles whose edges are
 // close to L (Botsch and Kobbelt's isotropic remeshing), on any surface: a
@@ -34,7 +34,7 @@ namespace {
 const examples::Tool_usage usage{
   "remesh",
   "remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp] [--relax-constraints] "
-  "[--max-memory BYTES] [--all-iterations] [--refuse-narrow] [--drop-corner-data]",
+  "[--max-memory BYTES] [--all-iterations] [--refuse-narrow] [--drop-corner-data] [--no-tags]",
   "Reads a polygon mesh (.obj, .off, .ply), splits its faces into triangles and remeshes it so\n"
   "that its edges come close to L (Botsch and Kobbelt's loop of splits, collapses, flips,\n"
   "tangential relaxation and projection onto the input), on any surface, one-sided ones included.\n"
@@ -53,6 +53,8 @@ const examples::Tool_usage usage{
   "                       thinner than L), which can only be cut into a strip of slivers\n"
   "  --drop-corner-data   go on without the input's texture coordinates and normals, which\n"
   "                       remeshing does not carry (an input with them is refused otherwise)\n"
+  "  --no-tags            an OBJ OUT without OpenSubdiv's tag lines (the sharp edges), which\n"
+  "                       CGAL's reader refuses\n"
   "Writes OUT and prints its counts, topology, the share of edges between 4/5 L and 4/3 L, the\n"
   "iterations run, whether the loop settled early, the input's faces in narrow parts and the\n"
   "narrowest's width, and the time taken as one line of JSON.\n"};
@@ -75,7 +77,7 @@ int remesh(int argc, char** argv)
   const examples::Arguments args =
     examples::parse_arguments(argc, argv, {"--edge-length", "--iterations", "--max-memory"},
                               {"--protect-borders", "--protect-sharp", "--relax-constraints", "--all-iterations",
-                               "--refuse-narrow", examples::drop_corner_data_flag});
+                               "--refuse-narrow", examples::drop_corner_data_flag, examples::no_tags_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--edge-length"))
@@ -106,7 +108,7 @@ int remesh(int argc, char** argv)
     args.has("--max-memory") ? CGAL_ext::isotropic_remeshing(mesh, L, np.maximum_memory(max_memory))
                              : CGAL_ext::isotropic_remeshing(mesh, L, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
+  CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
   examples::Json_object line;
   line.add("vertices", mesh.number_of_vertices())
     .add("edges", mesh.number_of_edges())

@@ -1,7 +1,8 @@
 // subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N]
 //   [--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner]
 //   [--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck]
-//   [--max-memory BYTES] [--drop-corner-data]
+//   [--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all]
+//   [--max-memory BYTES] [--drop-corner-data] [--no-tags]
 //
 // Reads a mesh (OBJ with OpenSubdiv's tags, OFF, PLY), subdivides it and
 // writes the result (format by extension); see the usage text below. Bad
@@ -32,7 +33,8 @@ const examples::Tool_usage usage{
   "subdivide IN OUT [--scheme catmull-clark|loop|linear|doo-sabin|sqrt3] [--levels N] "
   "[--vertex-rule standard|edge-points] [--boundary none|edge-only|edge-and-corner] "
   "[--crease-method uniform|chaikin] [--triangles catmark|smooth] [--kernel double|epick|epeck] "
-  "[--max-memory BYTES] [--drop-corner-data]",
+  "[--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] "
+  "[--max-memory BYTES] [--drop-corner-data] [--no-tags]",
   "Reads a mesh (.obj with OpenSubdiv's tags, .off, .ply), subdivides it and writes the result to\n"
   "OUT (format by extension; an OBJ keeps the tags).\n"
   "  --scheme          catmull-clark (the default), loop, linear, doo-sabin or sqrt3\n"
@@ -44,10 +46,15 @@ const examples::Tool_usage usage{
   "  --triangles       catmark, or smooth: OpenSubdiv's smooth-triangle rule, a smoother\n"
   "                    Catmull-Clark edge rule next to triangles (OBJ tag 't smoothtriangles')\n"
   "  --kernel          double (the default), epick or epeck\n"
+  "  --fvar-interpolation  which texture coordinates and normals stay linear (OpenSubdiv's\n"
+  "                    FVarLinearInterpolation): none, corners-only, corners-plus1 (the default),\n"
+  "                    corners-plus2, boundaries or all (bilinear)\n"
   "  --max-memory      refuse before starting if the subdivision would need more bytes (the\n"
   "                    library's estimate of its peak; default: the memory available)\n"
   "  --drop-corner-data  go on without the input's texture coordinates and normals where the\n"
   "                    scheme (doo-sabin, sqrt3) or OUT's format cannot carry them (refused otherwise)\n"
+  "  --no-tags         write an OBJ without OpenSubdiv's tag lines (creases, corners, options),\n"
+  "                    for readers that refuse them (CGAL's)\n"
   "Texture coordinates and normals (OBJ vt/vn) are subdivided with OpenSubdiv's face-varying rules\n"
   "and written to OUT: OBJ holds them per corner, PLY per vertex where they have no seam.\n"
   "The OBJ tags give the defaults of --boundary (else edge-only), --crease-method (else uniform)\n"
@@ -75,6 +82,13 @@ const examples::Choices<CGAL_ext::Crease_method> crease_methods = {
   {"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}};
 const examples::Choices<CGAL_ext::Triangle_subdivision> triangle_rules = {
   {"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}};
+const examples::Choices<CGAL_ext::Face_varying_interpolation> fvar_modes = {
+  {"none", CGAL_ext::Face_varying_interpolation::none},
+  {"corners-only", CGAL_ext::Face_varying_interpolation::corners_only},
+  {"corners-plus1", CGAL_ext::Face_varying_interpolation::corners_plus1},
+  {"corners-plus2", CGAL_ext::Face_varying_interpolation::corners_plus2},
+  {"boundaries", CGAL_ext::Face_varying_interpolation::boundaries},
+  {"all", CGAL_ext::Face_varying_interpolation::all}};
 
 struct Settings
 {
@@ -86,8 +100,10 @@ struct Settings
   std::optional<CGAL_ext::Boundary_interpolation> boundary;
   std::optional<CGAL_ext::Crease_method> crease_method;
   std::optional<CGAL_ext::Triangle_subdivision> triangles;
+  CGAL_ext::Face_varying_interpolation fvar = CGAL_ext::Face_varying_interpolation::corners_plus1; // as OpenSubdiv
   double max_memory = S::Refinement_options().maximum_memory; // the library's default
   bool drop_corner_data = false;
+  bool write_tags = true;
 };
 
 Settings parse(int argc, char** argv)
@@ -95,8 +111,8 @@ Settings parse(int argc, char** argv)
   const examples::Arguments args = examples::parse_arguments(
     argc, argv,
     {"--scheme", "--levels", "--vertex-rule", "--boundary", "--crease-method", "--triangles", "--kernel",
-     "--max-memory"},
-    {examples::drop_corner_data_flag});
+     "--fvar-interpolation", "--max-memory"},
+    {examples::drop_corner_data_flag, examples::no_tags_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   Settings s;
@@ -110,6 +126,9 @@ Settings parse(int argc, char** argv)
   s.boundary = examples::choice_option(args, "--boundary", boundaries);
   s.crease_method = examples::choice_option(args, "--crease-method", crease_methods);
   s.triangles = examples::choice_option(args, "--triangles", triangle_rules);
+  s.fvar = examples::choice_argument("--fvar-interpolation", args.value("--fvar-interpolation", "corners-plus1"),
+                                     fvar_modes);
+  s.write_tags = !args.has(examples::no_tags_flag);
   s.drop_corner_data = args.has(examples::drop_corner_data_flag);
   if (args.has("--max-memory")) {
     s.max_memory = examples::real_argument("--max-memory", args.value("--max-memory", ""));
@@ -191,6 +210,7 @@ void run(const Settings& s)
                     .crease_method(crease)
                     .vertex_rule(s.vertex_rule)
                     .triangle_subdivision(triangles)
+                    .face_varying_interpolation(s.fvar)
                     .maximum_memory(s.max_memory);
 
   const auto start = std::chrono::steady_clock::now();
@@ -219,12 +239,13 @@ void run(const Settings& s)
     out_tags.crease_method = s.crease_method;
   if (s.triangles)
     out_tags.triangle_subdivision = s.triangles;
-  CGAL_ext::IO::write_polygon_mesh(s.out, mesh, CGAL_ext::parameters::default_values(), out_tags);
+  CGAL_ext::IO::write_polygon_mesh(s.out, mesh, examples::write_parameters(s.write_tags), out_tags);
   const CGAL_ext::Non_manifold_counts written = CGAL_ext::non_manifold_counts(mesh);
   examples::Json_object line;
   line.add("scheme", examples::choice_name(schemes, s.scheme))
     .add("kernel", examples::choice_name(kernels, s.kernel))
     .add("levels", s.levels)
+    .add("fvar_interpolation", examples::choice_name(fvar_modes, s.fvar))
     .add("vertices", written.input_vertices) // as written: non-manifold input joined again
     .add("edges", written.input_edges)
     .add("faces", mesh.number_of_faces())

@@ -108,7 +108,7 @@ if(CGAL_EXT_BUILD_TESTS)
   # the other 5 folds); two quad splits (V' = V + E + F, E' = 2E + 4F) give
   # 125 values and 4 * 7 = 28 seam edges. Its normals are 6 quads apart: 150
   # values, all 48 edges seams. mesh_info reads them back from the file.
-  set(_cube_channels "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":125,\"seam_edges\":28,\"corners_without_value\":0\\},\\{\"name\":\"c:normal\",\"values\":150,\"seam_edges\":48,\"corners_without_value\":0\\}\\]")
+  set(_cube_channels "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":125,\"seam_edges\":28,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\},\\{\"name\":\"c:normal\",\"values\":150,\"seam_edges\":48,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\}\\]")
   add_test(NAME example.subdivide.corner_data_obj_to_obj
            COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:subdivide> -DMESH_INFO=$<TARGET_FILE:mesh_info>
                    "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/cube_uv.obj;--levels;2"
@@ -137,6 +137,53 @@ if(CGAL_EXT_BUILD_TESTS)
   cgal_ext_tool_fails(example.subdivide.bad_scheme subdivide
     "${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--scheme;butterfly"
     "^subdivide: --scheme 'butterfly' is not catmull-clark, loop, linear, doo-sabin or sqrt3; usage: subdivide [^\n]+\n$")
+  # --fvar-interpolation: the cube's uv net (14 values: a column of four
+  # squares 1/4 wide from (0.375, 0) to (0.625, 1), a square on each side of
+  # the lowest) has 6 faces and 19 edges, so one step makes 14 + 19 + 6 = 39
+  # values in every mode. With 'all' they are bilinear: the input's values
+  # kept (vt 3, (0.375, 0.25)), face centres (face 1: the mean of (0.375, 0),
+  # (0.625, 0), (0.625, 0.25), (0.375, 0.25) is (0.5, 0.125)) and edge
+  # midpoints (vt 2 (0.625, 0) and vt 11 (0.875, 0): (0.75, 0)). With the
+  # default, corners-plus1, (0.375, 0.25), where the net's border turns
+  # between (0.125, 0.25) and (0.375, 0.5), follows OpenSubdiv's smooth
+  # border rule: 3/4 (0.375, 0.25) + 1/8 (0.125, 0.25) + 1/8 (0.375, 0.5)
+  # = (0.34375, 0.28125).
+  # One step of the cube with FLAGS (after IN OUT): 39 vt lines, among them
+  # each of PRESENT and none of ABSENT (lists of lines).
+  function(cgal_ext_subdivide_vt name flags present absent)
+    set(_written ${CMAKE_CURRENT_BINARY_DIR}/cube_${name}.obj)
+    add_test(NAME example.subdivide.${name}
+             COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:subdivide>
+                     "-DARGS=${_data}/opensubdiv/catmark_cube.obj;${_written};${flags}" -DOUT=${_written}
+                     "-DPRESENT=${present}" "-DABSENT=${absent}" "-DCOUNT_REGEX=^vt " -DCOUNT=39
+                     -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_output_lines.cmake)
+  endfunction()
+  cgal_ext_subdivide_vt(fvar_all_is_bilinear "--fvar-interpolation;all"
+                        "vt 0.375 0.25;vt 0.5 0.125;vt 0.75 0" "vt 0.34375 0.28125")
+  cgal_ext_subdivide_vt(fvar_default_smooths_borders "--levels;1"
+                        "vt 0.34375 0.28125;vt 0.5 0.125;vt 0.75 0" "vt 0.375 0.25")
+  # The default is corners-plus1, as OpenSubdiv's; 'boundaries' keeps the
+  # net's border linear, so it differs from it there.
+  set(_o ${CMAKE_CURRENT_BINARY_DIR}/cube_fvar)
+  add_test(NAME example.subdivide.fvar_default_is_corners_plus1
+           COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:subdivide>
+                   "-DFIRST=${_data}/opensubdiv/catmark_cube.obj;${_o}_implicit.obj" -DFIRST_OUT=${_o}_implicit.obj
+                   "-DSECOND=${_data}/opensubdiv/catmark_cube.obj;${_o}_plus1.obj;--fvar-interpolation;corners-plus1"
+                   -DSECOND_OUT=${_o}_plus1.obj
+                   "-DDIFFERENT=${_data}/opensubdiv/catmark_cube.obj;${_o}_boundaries.obj;--fvar-interpolation;boundaries"
+                   -DDIFFERENT_OUT=${_o}_boundaries.obj -P ${CMAKE_CURRENT_SOURCE_DIR}/same_output.cmake)
+  add_test(NAME example.subdivide.fvar_in_json_line
+           COMMAND subdivide ${_data}/opensubdiv/catmark_cube.obj ${CMAKE_CURRENT_BINARY_DIR}/x.obj --fvar-interpolation corners-plus2)
+  set_tests_properties(example.subdivide.fvar_in_json_line PROPERTIES
+    PASS_REGULAR_EXPRESSION "\"levels\":1,\"fvar_interpolation\":\"corners-plus2\",")
+  cgal_ext_tool_fails(example.subdivide.bad_fvar_interpolation subdivide
+    "${_data}/opensubdiv/catmark_cube.obj;${CMAKE_CURRENT_BINARY_DIR}/x.obj;--fvar-interpolation;corners_plus1"
+    "^subdivide: --fvar-interpolation 'corners_plus1' is not none, corners-only, corners-plus1, corners-plus2, boundaries or all; usage: subdivide [^\n]+\n$")
+  # --no-tags: the input's tag and the flag's option are not written.
+  add_test(NAME example.subdivide.no_tags
+           COMMAND ${CMAKE_COMMAND} -DSUBDIVIDE=$<TARGET_FILE:subdivide>
+                   -DIN=${_data}/opensubdiv/catmark_edgecorner.obj -DOUT=${CMAKE_CURRENT_BINARY_DIR}/edgecorner_no_tags.obj
+                   "-DARGS=--crease-method;chaikin;--no-tags" -P ${_tags_script})
   set_tests_properties(example.subdivide.sqrt3_on_quads example.subdivide.bad_option
                        example.subdivide.loop_on_quads PROPERTIES WILL_FAIL TRUE)
 endif()

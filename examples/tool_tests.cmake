@@ -49,6 +49,29 @@ if(CGAL_EXT_BUILD_TESTS)
     set_tests_properties(${_tool}.corner_channels_dropped PROPERTIES PASS_REGULAR_EXPRESSION
       "\"corner_channels_dropped\":\\[\"c:uv\",\"c:normal\"\\]}\n$")
   endforeach()
+
+  # --no-tags: the tools whose output keeps the input's creases (OpenSubdiv's
+  # cube with 12 creased edges) write them as 't crease' lines by default, and
+  # no 't' line with the flag. (offset and tessellate write no sharpness.)
+  set(_creased ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube_creases1.obj)
+  set(_tags_merge "${_creased};${_torus};@OUT@")
+  set(_tags_remesh "${_creased};@OUT@;${_corner_remesh};--drop-corner-data")
+  set(_tags_decimate "${_creased};@OUT@;${_corner_decimate};--drop-corner-data")
+  foreach(_tool merge remesh decimate)
+    foreach(_case tagged no_tags)
+      set(_written ${_corner_out}/tags_${_tool}_${_case}.obj)
+      string(REPLACE "@OUT@" "${_written}" _args "${_tags_${_tool}}")
+      if(_case STREQUAL "tagged")
+        set(_expect "-DCOUNT_REGEX=^t crease 2/1/0 " -DMIN_COUNT=1)
+      else()
+        list(APPEND _args --no-tags)
+        set(_expect "-DCOUNT_REGEX=^t " -DCOUNT=0)
+      endif()
+      add_test(NAME ${_tool}.${_case}
+        COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:${_tool}> "-DARGS=${_args}" -DOUT=${_written} ${_expect}
+                -P ${PROJECT_SOURCE_DIR}/examples/expect_output_lines.cmake)
+    endforeach()
+  endforeach()
 endif()
 
 # Examples whose size options once ended in bad_alloc: refused with one line.

@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -292,6 +293,63 @@ TEST(CornerIO, FacesWithoutValuesHaveCornersWithoutValue)
   EXPECT_EQ(mesh_corners<UV>(back, CGAL_ext::corner_uv_name, 2), mesh_corners<UV>(m, CGAL_ext::corner_uv_name, 2));
   EXPECT_EQ(CGAL_ext::corner_channel_summaries(back)[1].corners_without_value, 8u);
   fs::remove_all(dir);
+}
+
+// A Möbius strip of three quads: columns t_k b_k (vertices k and k + 3) at 0,
+// 120 and 240 degrees, each a half turn further; quad 2 joins column 2 to
+// column 0 turned over, so the faces' own orientations (kept: the surface is
+// one-sided) run the same way along t0 b0, its one Möbius edge.
+Mesh three_quad_mobius_strip()
+{
+  const std::vector<Point> points = {{2.5, 0, 0},    {-1.125, 1.9485, 0.433},  {-0.875, -1.5155, 0.433},
+                                     {1.5, 0, 0},    {-0.875, 1.5155, -0.433}, {-1.125, -1.9485, -0.433}};
+  const std::vector<std::vector<std::size_t>> quads = {{0, 3, 4, 1}, {1, 4, 5, 2}, {2, 5, 0, 3}};
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, quads, m, CGAL_ext::parameters::keep_orientation(true));
+  return m;
+}
+
+TEST(CornerIO, SummariesTellMobiusEdgesWithAndWithoutSeam)
+{
+  Mesh m = three_quad_mobius_strip();
+  ASSERT_EQ(m.number_of_faces(), 3u);
+  ASSERT_EQ(m.number_of_vertices(), 6u);
+  std::size_t mobius = 0;
+  for (CGAL_ext::Edge_index e : m.edges()) {
+    const std::size_t a = m.vertex(e, 0).idx(), b = m.vertex(e, 1).idx();
+    const bool t0_b0 = std::min(a, b) == 0 && std::max(a, b) == 3;
+    EXPECT_EQ(m.is_mobius(e), t0_b0) << a << ' ' << b;
+    mobius += m.is_mobius(e) ? 1 : 0;
+  }
+  ASSERT_EQ(mobius, 1u);
+  // Value indices: vertex v's own (v) on every corner but those of `cut`,
+  // (face, vertex) pairs that get a value of their own.
+  const auto summary = [&](const std::vector<std::pair<std::size_t, std::size_t>>& cut) {
+    Mesh copy = m;
+    auto uv = copy.add_corner_channel<UV>(CGAL_ext::corner_uv_name).first;
+    for (std::size_t v = 0; v < 6; ++v)
+      uv.add_value(UV(double(v), 0));
+    for (Face_index f : copy.faces())
+      for (Dart d : CGAL_ext::halfedges_around_face(copy.halfedge(f), copy)) {
+        const std::size_t v = copy.target(d).idx();
+        const bool own = std::find(cut.begin(), cut.end(), std::make_pair(std::size_t(f.idx()), v)) != cut.end();
+        uv.set_index(copy.corner(d), own ? uv.add_value(UV(double(v), 1)) : std::uint32_t(v));
+      }
+    return CGAL_ext::corner_channel_summaries(copy).front();
+  };
+  const auto expect = [&](const std::vector<std::pair<std::size_t, std::size_t>>& cut, std::size_t seams,
+                          std::size_t continuous, std::size_t seamed) {
+    const CGAL_ext::Corner_channel_summary s = summary(cut);
+    EXPECT_EQ(s.seam_edges, seams);
+    EXPECT_EQ(s.mobius_edges_continuous, continuous);
+    EXPECT_EQ(s.mobius_edges_seamed, seamed);
+    EXPECT_EQ(s.corners_without_value, 0u);
+  };
+  expect({}, 0, 1, 0);               // a value per vertex: continuous across the Möbius edge
+  expect({{2, 0}, {2, 3}}, 1, 0, 1); // quad 2 cut off along t0 b0 (from quad 0): the Möbius edge a seam
+  expect({{2, 0}}, 1, 0, 1);         // ... at one end of it only
+  expect({{1, 1}, {1, 4}}, 1, 1, 0); // quad 1 cut off along t1 b1 (from quad 0): a seam elsewhere
+  expect({{0, 0}, {0, 3}, {0, 1}, {0, 4}, {1, 2}, {1, 5}}, 3, 0, 1); // every inner edge
 }
 
 TEST(CornerIO, BadValuesAndIndicesNameTheLine)

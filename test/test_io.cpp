@@ -14,6 +14,7 @@
 
 #include "test_util.h"
 
+#include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -1352,6 +1353,57 @@ TEST(IO_round_trip, output_without_sharpness_is_read_by_cgal)
     EXPECT_EQ(cgal_mesh.number_of_faces(), 96u);
     EXPECT_TRUE(CGAL::is_closed(cgal_mesh));
   }
+  fs::remove_all(dir);
+}
+
+TEST(IO_round_trip, write_subdivision_tags_false_writes_what_cgal_reads)
+{
+  // OpenSubdiv's cube with 12 creased edges, its uv and normals (kept, so
+  // that the corners are written as f v/vt/vn, which CGAL's reader takes too).
+  const fs::path dir = scratch_directory();
+  Mesh_d mesh;
+  const CGAL_ext::Sharp_feature_options options =
+    read_polygon_mesh(test::data("opensubdiv/catmark_cube_creases1.obj"), mesh);
+  ASSERT_TRUE(options.boundary_interpolation);
+  const auto slurp = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const auto cgal_reads = [](const std::string& file) {
+    std::vector<test::Kd::Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    const bool read = CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
+    return read && points.size() == 8 && polygons.size() == 6;
+  };
+  // By default the sharpness goes into tag lines, which CGAL's reader refuses.
+  const std::string tagged = (dir / "tagged.obj").string();
+  write_polygon_mesh(tagged, mesh, CGAL_ext::parameters::default_values(), options);
+  const std::string tagged_text = slurp(tagged);
+  EXPECT_NE(tagged_text.find("\nt crease 2/1/0 "), std::string::npos);
+  EXPECT_NE(tagged_text.find("\nt interpolateboundary "), std::string::npos);
+  EXPECT_FALSE(cgal_reads(tagged));
+  // Without them: no 't' line, and CGAL's polygon soup reader takes the file.
+  const std::string plain = (dir / "plain.obj").string();
+  write_polygon_mesh(plain, mesh, CGAL_ext::parameters::write_subdivision_tags(false), options);
+  const std::string plain_text = slurp(plain);
+  EXPECT_EQ(plain_text.find("\nt "), std::string::npos);
+  EXPECT_NE(plain_text.find("\nvt "), std::string::npos);
+  EXPECT_TRUE(cgal_reads(plain));
+  std::vector<test::Kd::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::ifstream in(plain);
+  EXPECT_TRUE(CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false)));
+  // What the tags said is lost; the rest reads back as it was.
+  Mesh_d back;
+  const CGAL_ext::Sharp_feature_options back_options = read_polygon_mesh(plain, back);
+  EXPECT_FALSE(back_options.boundary_interpolation);
+  EXPECT_FALSE((back.property_map<Edge_index, float>(CGAL_ext::edge_sharpness_name).has_value()));
+  EXPECT_EQ(back.number_of_faces(), 6u);
+  EXPECT_EQ(back.corner_channels().size(), 2u);
+  // write_subdivision_tags(true) is the default.
+  const std::string explicit_true = (dir / "true.obj").string();
+  write_polygon_mesh(explicit_true, mesh, CGAL_ext::parameters::write_subdivision_tags(true), options);
+  EXPECT_EQ(slurp(explicit_true), tagged_text);
   fs::remove_all(dir);
 }
 

@@ -7,9 +7,11 @@
 #include "test_util.h"
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Sharp_features.h>
+#include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
 #include <CGAL/Aff_transformation_3.h>
@@ -17,6 +19,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <iterator>
 #include <string>
 #include <utility>
@@ -201,6 +206,120 @@ TEST(Transform, ExactOnEpeck)
     EXPECT_EQ(mesh.point(v), original.point(v));
   EXPECT_EQ(face_cycles(mesh), face_cycles(original));
   EXPECT_TRUE(mesh.is_valid());
+}
+
+// A square in the plane z = 0, walked counterclockwise seen from +z, with the
+// corner normals `normals` (a value per corner, in the order of its vertices).
+template <class P>
+CGAL_ext::Mobius_mesh<P> square_with_normals(const std::vector<CGAL_ext::Corner_normal<P>>& normals)
+{
+  const std::vector<P> points = {P(0, 0, 0), P(1, 0, 0), P(1, 1, 0), P(0, 1, 0)};
+  CGAL_ext::Mobius_mesh<P> mesh;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, std::vector<std::vector<std::size_t>>{{0, 1, 2, 3}}, mesh,
+                                        CGAL_ext::parameters::keep_orientation(true));
+  auto channel = mesh.template add_corner_channel<CGAL_ext::Corner_normal<P>>(CGAL_ext::corner_normal_name).first;
+  for (const auto& n : normals)
+    channel.add_value(n);
+  for (auto d : CGAL_ext::halfedges_around_face(mesh.halfedge(*mesh.faces().begin()), mesh))
+    channel.set_index(mesh.corner(d), std::uint32_t(mesh.target(d).idx()));
+  return mesh;
+}
+
+template <class P>
+std::vector<CGAL_ext::Corner_normal<P>> normals_at_vertices(const CGAL_ext::Mobius_mesh<P>& mesh)
+{
+  const auto channel = mesh.template corner_channel<CGAL_ext::Corner_normal<P>>(CGAL_ext::corner_normal_name);
+  std::vector<CGAL_ext::Corner_normal<P>> result(4);
+  for (auto d : CGAL_ext::halfedges_around_face(mesh.halfedge(*mesh.faces().begin()), mesh))
+    result[mesh.target(d).idx()] = (*channel)[mesh.corner(d)];
+  return result;
+}
+
+TEST(Transform, CornerNormalsFollowAScaleAndStayUnit)
+{
+  using V = Kd::Vector_3;
+  const double r2 = std::sqrt(2.0), r5 = std::sqrt(5.0);
+  auto mesh = square_with_normals<Kd::Point_3>({V(1 / r2, 1 / r2, 0), V(0, 0, 1), V(1, 0, 0), V(0, 0, 2)});
+  // Scaling x by 2: a plane x + y = c becomes x/2 + y = c, normal (1, 2, 0)/sqrt(5).
+  CGAL_ext::transform(mesh, CGAL::Aff_transformation_3<Kd>(2, 0, 0, 0, 1, 0, 0, 0, 1));
+  const auto n = normals_at_vertices(mesh);
+  EXPECT_NEAR(n[0].x(), 1 / r5, 1e-15);
+  EXPECT_NEAR(n[0].y(), 2 / r5, 1e-15);
+  EXPECT_EQ(n[0].z(), 0.0);
+  EXPECT_EQ(n[1], V(0, 0, 1)); // normal to the plane of the scaling: unchanged
+  EXPECT_EQ(n[2], V(1, 0, 0)); // (1/2, 0, 0), given back its length
+  EXPECT_EQ(n[3], V(0, 0, 2)); // a length of 2 stays 2
+  EXPECT_EQ(mesh.point(CGAL_ext::Vertex_index(2u)), Kd::Point_3(2, 1, 0));
+  // Texture coordinates are not touched.
+  EXPECT_EQ(mesh.corner_channels(), std::vector<std::string>{CGAL_ext::corner_normal_name});
+}
+
+TEST(Transform, CornerNormalsOfAMirrorAgreeWithTheKeptFaceCycle)
+{
+  using V = Kd::Vector_3;
+  auto mesh = square_with_normals<Kd::Point_3>({V(0, 0, 1), V(0, 0, 1), V(0, 0, 1), V(1, 0, 1)});
+  // x -> -x: the face keeps its cycle 0 1 2 3, now clockwise seen from +z,
+  // so its normal, the cross product of its edges, is -z.
+  CGAL_ext::transform(mesh, CGAL::Aff_transformation_3<Kd>(-1, 0, 0, 0, 1, 0, 0, 0, 1));
+  const auto p = [&](unsigned i) { return mesh.point(CGAL_ext::Vertex_index(i)); };
+  const V face_normal = CGAL::cross_product(p(1) - p(0), p(2) - p(1));
+  EXPECT_EQ(face_normal, V(0, 0, -1));
+  const auto n = normals_at_vertices(mesh);
+  EXPECT_EQ(n[0], face_normal);
+  EXPECT_EQ(n[3], V(1, 0, -1)); // -A^-T (1, 0, 1) = -(-1, 0, 1)
+}
+
+TEST(Transform, CornerNormalsAreExactOnEpeck)
+{
+  using FT = Epeck::FT;
+  using V = Epeck::Vector_3;
+  auto mesh = square_with_normals<Epeck::Point_3>({V(1, 1, 0), V(1, 2, 3), V(0, 0, 1), V(FT(1) / 3, 0, 1)});
+  // A shear and a scale with rationals: A = [[2, 1, 0], [0, 3, 0], [0, 0, 1/5]]
+  // (det 6/5), whose inverse transpose, by hand, is
+  // [[1/2, 0, 0], [-1/6, 1/3, 0], [0, 0, 5]].
+  const CGAL::Aff_transformation_3<Epeck> t(2, 1, 0, 0, 3, 0, 0, 0, FT(1) / 5);
+  CGAL_ext::transform(mesh, t);
+  const auto n = normals_at_vertices(mesh);
+  const auto expected = [](const V& m) {
+    return V(m.x() / 2, -m.x() / 6 + m.y() / 3, 5 * m.z());
+  };
+  EXPECT_EQ(n[0], expected(V(1, 1, 0))); // (1/2, 1/6, 0): not rescaled (a square root would be inexact)
+  EXPECT_EQ(n[0], V(FT(1) / 2, FT(1) / 6, 0));
+  EXPECT_EQ(n[1], expected(V(1, 2, 3)));
+  EXPECT_EQ(n[2], V(0, 0, 5));
+  EXPECT_EQ(n[3], expected(V(FT(1) / 3, 0, 1)));
+  // Normals stay normal: orthogonal to the transformed tangent (1, 1, 0) -> A (1, -1, 0).
+  EXPECT_EQ(n[0] * t.transform(V(1, -1, 0)), 0);
+  // A rotation keeps lengths: exact and unit where they were.
+  auto rotated = square_with_normals<Epeck::Point_3>({V(0, 0, 1), V(1, 0, 0), V(0, 1, 0), V(0, 0, 1)});
+  CGAL_ext::transform(rotated, CGAL::Aff_transformation_3<Epeck>(0, -1, 0, 1, 0, 0, 0, 0, 1));
+  EXPECT_EQ(normals_at_vertices(rotated)[1], V(0, 1, 0));
+  EXPECT_EQ(normals_at_vertices(rotated)[2], V(-1, 0, 0));
+}
+
+TEST(Transform, CornerNormalsRefusedWhereTheyCannotFollow)
+{
+  using V = Kd::Vector_3;
+  auto mesh = square_with_normals<Kd::Point_3>({V(0, 0, 1), V(0, 0, 1), V(0, 0, 1), V(0, 0, 1)});
+  const auto before = mesh.point(CGAL_ext::Vertex_index(1u));
+  // A singular map has no inverse transpose: refused, the mesh untouched.
+  EXPECT_THROW(CGAL_ext::transform(mesh, CGAL::Aff_transformation_3<Kd>(1, 0, 0, 0, 1, 0, 0, 0, 0)),
+               CGAL_ext::Parameter_error);
+  EXPECT_EQ(mesh.point(CGAL_ext::Vertex_index(1u)), before);
+  // A transformation without a matrix cannot carry normals.
+  struct Shift
+  {
+    Kd::Point_3 transform(const Kd::Point_3& p) const { return p + Kd::Vector_3(1, 0, 0); }
+  };
+  EXPECT_THROW(CGAL_ext::transform(mesh, Shift()), CGAL_ext::Parameter_error);
+  EXPECT_EQ(mesh.point(CGAL_ext::Vertex_index(1u)), before);
+  // Without normals it moves the points as before.
+  EXPECT_TRUE(mesh.remove_corner_channel(CGAL_ext::corner_normal_name));
+  CGAL_ext::transform(mesh, Shift());
+  EXPECT_EQ(mesh.point(CGAL_ext::Vertex_index(1u)), Kd::Point_3(2, 0, 0));
+  // Normals of a type the readers do not make are refused, not left behind.
+  mesh.add_corner_channel<std::array<double, 3>>(CGAL_ext::corner_normal_name);
+  EXPECT_THROW(CGAL_ext::transform(mesh, CGAL::Aff_transformation_3<Kd>(CGAL::SCALING, 2)), CGAL_ext::Parameter_error);
 }
 
 } // namespace

@@ -508,7 +508,8 @@ void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
 /// for each edge and `t corner 1/1/0 v s` for each vertex whose sharpness is
 /// not 0, and the options that are set in `options`. A mesh without sharpness
 /// and without options gets no tag line, so that readers which do not know
-/// OpenSubdiv's tags (CGAL's OBJ reader refuses any) read the file.
+/// OpenSubdiv's tags (CGAL's OBJ reader refuses any) read the file;
+/// `write_subdivision_tags(false)` leaves them out whatever the mesh holds.
 ///
 /// \param filename the file to write
 /// \param mesh the mesh
@@ -534,8 +535,16 @@ void check_output_file(const std::string& filename, const Mobius_mesh<P>& mesh)
 ///     \cgalParamType{Boolean}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{write_subdivision_tags}
+///     \cgalParamDescription{whether OBJ files get OpenSubdiv's tag lines (sharpness and `options`);
+///       `false` writes the dialect that CGAL's `read_OBJ()` and `read_polygon_soup()` read (they refuse
+///       a `t` line), losing the sharpness and the options}
+///     \cgalParamType{Boolean}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \param options mesh-level subdivision options, written as OBJ tags
+/// \param options mesh-level subdivision options, written as OBJ tags (unless
+///   `write_subdivision_tags(false)`)
 ///
 /// \throws IO_error if the extension is unknown, a coordinate (or a corner
 ///   value) is not a finite double (NaN, infinite, or beyond the doubles'
@@ -598,7 +607,8 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
       written = CGAL::IO::write_OBJ(out, points, polygons, cgal_np);
     else
       internal::write_obj_with_corners(out, points, polygons, corners, precision);
-    internal::write_obj_tags(out, mesh, np, options, joins, index);
+    if (choose_parameter(get_parameter(np, CGAL_ext::internal_np::write_subdivision_tags), true))
+      internal::write_obj_tags(out, mesh, np, options, joins, index);
   } else if (format == internal::Mesh_format::off) {
     if (corners.empty())
       written = CGAL::IO::write_OFF(out, points, polygons, cgal_np);

@@ -58,11 +58,22 @@ struct Corner_channel_summary
   std::size_t seam_edges = 0;
   /// The face corners that hold no value (subdivision refuses them).
   std::size_t corners_without_value = 0;
+  /// The Möbius edges of the mesh as it stands (`Mobius_mesh::is_mobius()`)
+  /// across which the channel is continuous: the two faces hold the same
+  /// value index at both ends.
+  std::size_t mobius_edges_continuous = 0;
+  /// The Möbius edges along which the channel is cut (seam edges, so also
+  /// counted in `seam_edges`). With `mobius_edges_continuous`, the mesh's
+  /// Möbius edges, each counted once.
+  std::size_t mobius_edges_seamed = 0;
 };
 
 /// \ingroup PkgMobiusMesh
 /// A summary of each corner channel of `mesh` (in order of creation): its
-/// values, seam edges and the corners without a value. Linear in the mesh's size.
+/// values, seam edges, the corners without a value, and whether it is
+/// continuous across each Möbius edge. Linear in the mesh's size.
+/// A seam is told by value indices, not by values: two indices of equal
+/// values make a seam, as the OBJ writer keeps them apart.
 template <class P>
 std::vector<Corner_channel_summary> corner_channel_summaries(const Mobius_mesh<P>& mesh)
 {
@@ -83,7 +94,13 @@ std::vector<Corner_channel_summary> corner_channel_summaries(const Mobius_mesh<P
       const Dart d(Mobius_mesh<P>::halfedge(e, 0), false), o = mesh.opposite(d);
       const bool cut_at_target = index[mesh.corner(d).idx()] != index[mesh.corner(mesh.prev(o)).idx()];
       const bool cut_at_source = index[mesh.corner(mesh.prev(d)).idx()] != index[mesh.corner(o).idx()];
-      s.seam_edges += cut_at_target || cut_at_source ? 1 : 0;
+      const bool seam = cut_at_target || cut_at_source;
+      s.seam_edges += seam ? 1 : 0;
+      // A Möbius edge is no different here (corners do not depend on the way
+      // a face is walked), but a texture of a one-sided surface needs a seam
+      // somewhere along its loop: whether it lies on the Möbius edges is told apart.
+      if (mesh.is_mobius(e))
+        ++(seam ? s.mobius_edges_seamed : s.mobius_edges_continuous);
     }
     result.push_back(std::move(s));
   });

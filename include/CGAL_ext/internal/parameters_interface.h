@@ -13,6 +13,7 @@ CGAL_EXT_add_named_parameter(non_manifold_policy_t, non_manifold_policy, non_man
 // sharp features, read and written by the OBJ tag reader and used by subdivision
 CGAL_EXT_add_named_parameter(edge_sharpness_t, edge_sharpness, edge_sharpness_map)
 CGAL_EXT_add_named_parameter(vertex_sharpness_t, vertex_sharpness, vertex_sharpness_map)
+CGAL_EXT_add_named_parameter(write_subdivision_tags_t, write_subdivision_tags, write_subdivision_tags)
 // subdivision
 CGAL_EXT_add_named_parameter(boundary_interpolation_t, boundary_interpolation, boundary_interpolation)
 CGAL_EXT_add_named_parameter(crease_method_t, crease_method, crease_method)
