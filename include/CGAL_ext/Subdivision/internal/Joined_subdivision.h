@@ -235,6 +235,9 @@ void subdivide_joined(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
           pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation), Face_varying_interpolation::corners_plus1))
         .maximum_memory(pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::maximum_memory),
                                              CGAL_ext::internal::available_memory()));
+    // The join map names vertices by index: a mesh with removed elements
+    // has indices the refiner does not keep.
+    CGAL_ext::internal::require_no_garbage(mesh, "subdivision");
     // Build the result aside: on failure the caller's mesh stays as it was.
     Mobius_mesh<P> work = mesh;
     const auto vpm = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
