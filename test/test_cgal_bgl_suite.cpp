@@ -447,8 +447,9 @@ TYPED_TEST(CgalBglGraphTraits, test_halfedge_around_vertex_iterator)
       for (; it != end; ++it) {
         ASSERT_EQ(target(*it, g), v);
         auto step = std::next(it);
-        if (step != end)
+        if (step != end) {
           ASSERT_EQ(*step, opposite(next(*it, g), g)); // clockwise
+        }
       }
     }
   });
@@ -1633,8 +1634,9 @@ TYPED_TEST(CgalBglFaceFilteredGraph, test_halfedge_around_vertex_iterator)
       for (; it != end; ++it) {
         ASSERT_EQ(target(*it, fg), v);
         auto step = std::next(it);
-        if (step != end)
+        if (step != end) {
           ASSERT_EQ(*step, opposite(next(*it, fg), fg));
+        }
       }
     }
   });

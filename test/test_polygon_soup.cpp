@@ -367,8 +367,9 @@ TEST(PolygonSoupErrors, SplittingRandomSoupsGivesAVertexPerFan)
       EXPECT_EQ(m.number_of_vertices(), fans);
       EXPECT_EQ(added, fans - points.size());
       EXPECT_EQ(m.number_of_faces(), triangles.size());
-      if (keep)
+      if (keep) {
         EXPECT_EQ(CGAL_ext::number_of_mobius_edges(m), mobius);
+      }
       for (std::size_t v = points.size(); v < m.number_of_vertices(); ++v)
         EXPECT_NE(std::find(points.begin(), points.end(), m.point(CGAL_ext::Vertex_index(std::uint32_t(v)))),
                   points.end());
