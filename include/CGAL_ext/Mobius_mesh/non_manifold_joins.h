@@ -92,14 +92,7 @@ template <class P>
 Non_manifold_counts non_manifold_counts(const Mobius_mesh<P>& mesh)
 {
   const internal::Join_classes classes(mesh);
-  Non_manifold_counts counts;
-  counts.vertices = classes.joined_vertices();
-  counts.edges = classes.joined_edges();
-  for (std::uint32_t v = 0; v < std::uint32_t(mesh.number_of_vertices()); ++v)
-    counts.input_vertices += classes.representative(v) == v ? 1 : 0;
-  for (std::uint32_t e = 0; e < std::uint32_t(mesh.number_of_edges()); ++e)
-    counts.input_edges += classes.edge_representative(e) == e ? 1 : 0;
-  return counts;
+  return {classes.joined_vertices(), classes.joined_edges(), classes.input_vertices(), classes.input_edges()};
 }
 
 /// \ingroup PkgMobiusMeshSoup

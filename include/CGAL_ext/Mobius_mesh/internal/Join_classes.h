@@ -56,7 +56,15 @@ public:
                               ", which is not a vertex joined to none");
       ++members_[rep_[v]];
     }
-    classify_edges(mesh);
+    for (u32 v = 0; v < nv; ++v) {
+      input_vertices_ += rep_[v] == v ? 1 : 0;
+      joined_vertices_ += rep_[v] == v && members_[v] > 1 ? 1 : 0;
+    }
+    input_edges_ = mesh.number_of_edges();
+    // Without joins every edge is its own class: nothing to classify (the
+    // writers build these classes for every mesh they write).
+    if (joined_vertices_ != 0)
+      classify_edges(mesh);
   }
 
   template <class P>
@@ -83,11 +91,15 @@ public:
   }
   // Whether vertex v is one of several vertices of one input vertex.
   bool is_joined(u32 v) const { return members_[rep_[v]] > 1; }
-  u32 edge_representative(u32 e) const { return edge_rep_[e]; }
+  u32 edge_representative(u32 e) const { return edge_rep_.empty() ? e : edge_rep_[e]; }
   // The copies of edge e's input edge (1 unless it was a non-manifold edge).
   u32 edge_members(u32 e) const { return edge_members_.empty() ? 1 : edge_members_[edge_rep_[e]]; }
+  // The vertices and edges of the input that are several of the mesh.
   std::size_t joined_vertices() const { return joined_vertices_; }
   std::size_t joined_edges() const { return joined_edges_; }
+  // The vertices and edges of the input: the mesh's, each class once.
+  std::size_t input_vertices() const { return input_vertices_; }
+  std::size_t input_edges() const { return input_edges_; }
 
   // The index of each vertex among the representatives, in order: where a
   // writer puts it once the joins are made again.
@@ -118,6 +130,7 @@ private:
       const auto [lo, hi] = std::minmax(rep_[a], rep_[b]);
       auto [it, added] = first.emplace(std::uint64_t(lo) << 32 | hi, std::make_pair(e, 0u));
       edge_rep_[e] = it->second.first;
+      input_edges_ -= added ? 0 : 1;
       if (++it->second.second == 2)
         ++joined_edges_;
     }
@@ -126,12 +139,10 @@ private:
       for (const auto& entry : first)
         edge_members_[entry.second.first] = entry.second.second;
     }
-    for (u32 v = 0; v < u32(rep_.size()); ++v)
-      joined_vertices_ += rep_[v] == v && members_[v] > 1 ? 1 : 0;
   }
 
   std::vector<u32> rep_, members_, edge_rep_, edge_members_;
-  std::size_t joined_vertices_ = 0, joined_edges_ = 0;
+  std::size_t joined_vertices_ = 0, joined_edges_ = 0, input_vertices_ = 0, input_edges_ = 0;
 };
 
 } // namespace internal
