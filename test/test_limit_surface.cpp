@@ -14,6 +14,7 @@
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
 #include <CGAL/Gmpq.h>
+#include <CGAL/Random.h>
 
 #include <gtest/gtest.h>
 
@@ -27,9 +28,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace limit_surface_tests {
@@ -546,6 +550,165 @@ TEST(Limit_surface, TessellationAtRateOneIsTheLimitPoints)
   // The free function is the member.
   const Mesh a = S::tessellate<S::Catmull_clark_mask>(strip, 2), b = Surface(strip).tessellate(2);
   EXPECT_EQ(a.points().data(), b.points().data());
+}
+
+// The shapes the projection tests walk: one-sided, n-gons, borders, creases, a high valence.
+std::vector<std::pair<std::string, Mesh>> projection_shapes()
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  meshes.emplace_back("mobius_strip", strip);
+  for (const char* name : {"catmark_cube", "catmark_nonquads", "catmark_edgecorner", "catmark_torus_creases1"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  return meshes;
+}
+
+// Whether the derivatives at (u, v) of f are those of the positions, by
+// central differences: on B-spline patches they are; on the Gregory patches
+// near irregular vertices they are Bfr's (those of the Bezier patch that the
+// blended points make), which differ by up to a few percent. Only a
+// parameter inside a sub-face, clear of its sides, is told.
+bool derivatives_are_exact(const Surface& surface, CGAL_ext::Face_index f, int sides, double u, double v)
+{
+  const double step = 1e-6, half = sides == 4 ? 1.0 : 0.5;
+  const double su = std::fmod(u, half), sv = std::fmod(v, half);
+  if (su < 1e-4 || sv < 1e-4 || su > half - 1e-4 || sv > half - 1e-4)
+    return false;
+  const Surface::Evaluation e = surface.evaluate(f, u, v);
+  const K::Vector_3 du = (surface.evaluate(f, u + step, v).point - surface.evaluate(f, u - step, v).point) / (2 * step);
+  const K::Vector_3 dv = (surface.evaluate(f, u, v + step).point - surface.evaluate(f, u, v - step).point) / (2 * step);
+  return std::sqrt((du - e.du).squared_length()) <= 1e-6 * std::sqrt(e.du.squared_length()) &&
+         std::sqrt((dv - e.dv).squared_length()) <= 1e-6 * std::sqrt(e.dv.squared_length());
+}
+
+// A point of the surface pushed off along its normal, by less than the
+// surface's curvature radius, comes back to that point: the closest point
+// of the surface is the foot of the normal through the query. Where the
+// normal is Bfr's approximation (Gregory patches), the foot moves by a
+// little: the point found is then no farther than the push and close to
+// the point pushed.
+TEST(Limit_surface, ClosestPointFindsTheFootOfTheNormal)
+{
+  for (const auto& [name, m] : projection_shapes()) {
+    const Surface surface(m);
+    const double scale = largest_coordinate(m), h = 1e-3 * scale;
+    double worst = 0, worst_approximate = 0;
+    std::size_t exact = 0;
+    for (CGAL_ext::Face_index f : m.faces())
+      for (const auto& uv : parameter_grid(int(m.degree(f)), 5)) {
+        const Surface::Evaluation e = surface.evaluate(f, uv[0], uv[1]);
+        if (e.normal == CGAL::NULL_VECTOR)
+          continue;
+        const bool on_patch = derivatives_are_exact(surface, f, int(m.degree(f)), uv[0], uv[1]);
+        for (double side : {1.0, -1.0}) {
+          const auto found = surface.closest_point(e.point + side * h * e.normal);
+          const double miss = std::sqrt(CGAL::squared_distance(found.point, e.point));
+          EXPECT_EQ(found.point, surface.evaluate(found.face, found.u, found.v).point) << name;
+          if (on_patch) {
+            EXPECT_NEAR(std::sqrt(found.squared_distance), h, 1e-9 * scale) << name << " f" << f.idx();
+            worst = std::max(worst, miss);
+            ++exact;
+          } else {
+            EXPECT_LE(std::sqrt(found.squared_distance), h * (1 + 1e-9)) << name << " f" << f.idx();
+            worst_approximate = std::max(worst_approximate, miss);
+          }
+        }
+      }
+    EXPECT_LE(worst, 1e-9 * scale) << name;
+    EXPECT_LE(worst_approximate, 1e-2 * h) << name;
+    EXPECT_GT(exact, 4 * m.number_of_faces()) << name;
+    std::ostringstream figures;
+    figures << std::scientific << std::setprecision(1) << worst / scale << " of the size; " << worst_approximate / h
+            << " of the push near Gregory patches";
+    RecordProperty("foot_" + name, figures.str());
+  }
+}
+
+// Against brute force: no sample of a fine tessellation is closer to a
+// query than the point found; where the derivatives are the positions'
+// and the point is inside a sub-face, the offset is normal to the surface.
+TEST(Limit_surface, ClosestPointIsNoFartherThanAnySample)
+{
+  CGAL::Random random(7);
+  for (const auto& [name, m] : projection_shapes()) {
+    const Surface surface(m);
+    const Mesh fine = surface.tessellate(24);
+    const double scale = largest_coordinate(m);
+    std::size_t stationary = 0;
+    for (int i = 0; i < 40; ++i) {
+      const Point q(random.get_double(-1.5, 1.5) * scale, random.get_double(-1.5, 1.5) * scale,
+                    random.get_double(-1.5, 1.5) * scale);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (CGAL_ext::Vertex_index v : fine.vertices())
+        nearest = std::min(nearest, CGAL::squared_distance(q, fine.point(v)));
+      const auto found = surface.closest_point(q);
+      EXPECT_LE(std::sqrt(found.squared_distance), std::sqrt(nearest) + 1e-12 * scale) << name << " query " << i;
+      const double u = CGAL::to_double(found.u), v = CGAL::to_double(found.v);
+      if (!derivatives_are_exact(surface, found.face, int(m.degree(found.face)), u, v))
+        continue;
+      const Surface::Evaluation e = surface.evaluate(found.face, u, v);
+      const K::Vector_3 r = q - found.point;
+      const double length = std::sqrt(r.squared_length());
+      EXPECT_LE(std::abs(r * e.du) / (length * std::sqrt(e.du.squared_length())), 1e-9) << name << " query " << i;
+      EXPECT_LE(std::abs(r * e.dv) / (length * std::sqrt(e.dv.squared_length())), 1e-9) << name << " query " << i;
+      ++stationary;
+    }
+    RecordProperty("stationary_" + name, std::to_string(stationary));
+  }
+}
+
+TEST(Limit_surface, ClosestPointFromSeveralThreads)
+{
+  Mesh m = build(read_shape(test::data("opensubdiv/catmark_nonquads.obj")));
+  const double scale = largest_coordinate(m);
+  std::vector<Point> queries;
+  CGAL::Random random(11);
+  for (int i = 0; i < 64; ++i)
+    queries.emplace_back(random.get_double(-1, 1) * scale, random.get_double(-1, 1) * scale,
+                         random.get_double(-1, 1) * scale);
+  std::vector<Surface::Location> serial;
+  for (const Point& q : queries)
+    serial.push_back(Surface(m).closest_point(q));
+  const Surface shared(m); // the search structure is built by whichever thread asks first
+  std::vector<Surface::Location> parallel(queries.size());
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      for (std::size_t i = t; i < queries.size(); i += 4)
+        parallel[i] = shared.closest_point(queries[i]);
+    });
+  for (std::thread& t : threads)
+    t.join();
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    EXPECT_EQ(parallel[i].face, serial[i].face) << i;
+    EXPECT_EQ(parallel[i].point, serial[i].point) << i;
+  }
+  // The free functions are the member.
+  EXPECT_EQ(S::closest_point_on_limit(shared, queries[0]).point, serial[0].point);
+  EXPECT_EQ(S::closest_point_on_limit<S::Catmull_clark_mask>(m, queries[0]).point, serial[0].point);
+}
+
+// In an exact kernel the point found is the surface exactly at the
+// parameter found, the same parameter as in double.
+TEST(Limit_surface, ClosestPointInAnExactKernel)
+{
+  using Kq = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  using Pq = Kq::Point_3;
+  std::vector<Pq> exact_points;
+  std::vector<Point> points;
+  const CGAL_ext::Mobius_mesh<Pq> mq = torus<Pq>(5, 4, exact_points);
+  const Mesh m = torus<Point>(5, 4, points);
+  const S::Limit_surface<S::Catmull_clark_mask, Pq> exact(mq);
+  const Surface inexact(m);
+  for (const Point& q : {Point(3, 4, 20), Point(10, 1, -5), Point(7.5, 9.25, 2)}) {
+    const auto a = exact.closest_point(Pq(q.x(), q.y(), q.z()));
+    const auto b = inexact.closest_point(q);
+    EXPECT_EQ(a.point, exact.evaluate(a.face, a.u, a.v).point);
+    EXPECT_EQ(a.squared_distance, CGAL::squared_distance(Pq(q.x(), q.y(), q.z()), a.point));
+    EXPECT_NEAR(CGAL::to_double(a.squared_distance), b.squared_distance, 1e-9 * b.squared_distance + 1e-12);
+  }
+  EXPECT_THROW(Surface(Mesh()).closest_point(Point(0, 0, 0)), CGAL_ext::Parameter_error);
 }
 
 } // namespace

@@ -10,7 +10,9 @@
 
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Limit_surface/internal/Patch_builder.h>
+#include <CGAL_ext/Limit_surface/internal/Parameterization.h>
 #include <CGAL_ext/Limit_surface/internal/Patches.h>
+#include <CGAL_ext/Limit_surface/internal/Projection.h>
 #include <CGAL_ext/Limit_surface/internal/Tessellation.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -21,6 +23,7 @@
 #include <CGAL_ext/subdivision.h>
 
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -46,6 +49,12 @@ struct Limit_surface_options
   /// Depth of refinement around semi-sharp creases and irregular corners
   /// (OpenSubdiv's `approxLevelSharp`); at least `approx_level_smooth`.
   unsigned approx_level_sharp = 6;
+  /// Samples per base edge of the search structure that
+  /// `Limit_surface::closest_point()` starts from (a quad is sampled on a
+  /// grid of this many cells a side, each sub-face of another face on half
+  /// as many): more makes the structure larger and the search try fewer
+  /// faces; the result does not depend on it where the closest point is unique.
+  unsigned projection_rate = 4;
 };
 
 /// \ingroup PkgSubdivision
@@ -60,7 +69,20 @@ struct Limit_surface_point
   typename Kernel::Vector_3 duu;   ///< ∂²/∂u²
   typename Kernel::Vector_3 duv;   ///< ∂²/∂u∂v
   typename Kernel::Vector_3 dvv;   ///< ∂²/∂v²
-  typename Kernel::Vector_3 normal; ///< `du × dv`, of unit length (the null vector where it vanishes)
+  typename Kernel::Vector_3 normal; ///< `du × dv`, of unit length (the null vector where it vanishes: |du × dv| ≤ 1e-10 |du| |dv|)
+};
+
+/// \ingroup PkgSubdivision
+/// The point of a limit surface closest to a query, as
+/// `Limit_surface::closest_point()` returns it.
+template <class Kernel>
+struct Limit_surface_location
+{
+  Face_index face;                      ///< the face the point lies on
+  typename Kernel::FT u, v;             ///< its parameter in `face` (see `Limit_surface`)
+  typename Kernel::Point_3 point;       ///< the surface at (`u`, `v`) of `face`
+  typename Kernel::Vector_3 normal;     ///< the unit normal there, seen from `face`'s orientation
+  typename Kernel::FT squared_distance; ///< from the query to `point`
 };
 
 /// \ingroup PkgSubdivision
@@ -115,6 +137,8 @@ public:
   using FT = typename Kernel::FT;
   /// What `evaluate()` returns.
   using Evaluation = Limit_surface_point<Kernel>;
+  /// What `closest_point()` returns.
+  using Location = Limit_surface_location<Kernel>;
 
   /// \brief makes the limit surface of `mesh` (which may be freed afterwards).
   ///
@@ -154,6 +178,7 @@ public:
     copy_sharpness(mesh, np);
     faces_.resize(mesh.number_of_faces());
     once_.reset(new std::once_flag[mesh.number_of_faces()]);
+    projection_rate_ = int(std::min(options.projection_rate, 1024u));
   }
 
   /// \brief the limit surface at parameter (`u`, `v`) of face `f` (see the
@@ -168,7 +193,7 @@ public:
     std::size_t list = 0;
     FT su = u, sv = v, scale = FT(1);
     if (patches.sub_faces.size() > 1) { // Bfr's quad sub-faces
-      const int n = int(patches.sub_faces.size()), row = sub_face_row(n);
+      const int n = int(patches.sub_faces.size()), row = internal::sub_face_row(n);
       int ut = int(CGAL::to_double(u) + 0.25), vt = int(CGAL::to_double(v) + 0.25);
       ut = std::max(0, std::min(ut, row - 1));
       vt = std::max(0, vt);
@@ -192,6 +217,44 @@ public:
     }
     throw Parameter_error("Limit_surface::evaluate: (u, v) lies outside the parameter domain of face f" +
                           std::to_string(f.idx()));
+  }
+
+  /// \brief the point of the limit surface closest to `query`: its face,
+  /// parameter, position, normal and squared distance.
+  ///
+  /// A search structure is built the first time (an AABB tree over the
+  /// surface sampled at `Limit_surface_options::projection_rate`, kept, so
+  /// several threads may ask at once); it gives a start in each face that
+  /// comes near the query, from which Newton's method on the surface's first
+  /// and second derivatives, held inside the face's parameter domain (each
+  /// sub-face's, for a face that is not a quad), finds the nearest point;
+  /// the nearest of those is returned. So the result is the closest point
+  /// wherever a start lies in its basin, which the sampling ensures where the
+  /// query is nearer the surface than its curvature radius; a query
+  /// equally far from several places (the centre of a sphere) gets one of them.
+  ///
+  /// The search runs in `double`; `point` and `normal` are then evaluated
+  /// at the parameter found, in the kernel (exactly, in an exact kernel, at
+  /// that rational parameter), and `squared_distance` computed from them.
+  /// \throws Parameter_error if the mesh has no face.
+  Location closest_point(const P& query) const
+  {
+    std::call_once(*projection_once_, [&] {
+      projection_ = std::make_unique<internal::Limit_projection<Limit_surface>>(*this, base_.mesh, projection_rate_);
+    });
+    if (projection_->empty())
+      throw Parameter_error("Limit_surface::closest_point: the mesh has no face");
+    const internal::Projection_result r = projection_->closest(
+      CGAL::Simple_cartesian<double>::Point_3(CGAL::to_double(query.x()), CGAL::to_double(query.y()), CGAL::to_double(query.z())));
+    Location location;
+    location.face = projection_->tile(r.tile).face;
+    location.u = FT(r.u);
+    location.v = FT(r.v);
+    const Evaluation e = evaluate(location.face, location.u, location.v);
+    location.point = e.point;
+    location.normal = e.normal;
+    location.squared_distance = CGAL::squared_distance(query, e.point);
+    return location;
   }
 
   /// The number of patches face `f` is pieced from (built if not yet).
@@ -258,9 +321,6 @@ private:
     std::vector<std::vector<internal::Patch<FT>>> sub_faces;
   };
 
-  // Bfr's row length of a sub-face layout.
-  static int sub_face_row(int n) { return n < 10 ? (2 + (n > 4 ? 1 : 0)) : (1 + int(std::sqrt(float(n - 1)))); }
-
   template <class NP>
   void copy_sharpness(const Mobius_mesh<P>& mesh, const NP& np)
   {
@@ -310,8 +370,11 @@ private:
     e.duv = vec(r.dst, s2);
     e.dvv = vec(r.dtt, s2);
     const typename Kernel::Vector_3 n = CGAL::cross_product(e.du, e.dv);
+    // Where du and dv are parallel to rounding (at some corners of faces
+    // that are not quads), their cross product's direction is noise.
     const double length = std::sqrt(CGAL::to_double(n.squared_length()));
-    e.normal = length > 0 ? n / FT(length) : CGAL::NULL_VECTOR;
+    const double parallel = 1e-10 * std::sqrt(CGAL::to_double(e.du.squared_length() * e.dv.squared_length()));
+    e.normal = length > parallel && length > 0 ? n / FT(length) : CGAL::NULL_VECTOR;
     return e;
   }
 
@@ -319,6 +382,9 @@ private:
   internal::Limit_options options_;
   mutable std::vector<std::unique_ptr<Face_patches>> faces_;
   std::unique_ptr<std::once_flag[]> once_;
+  int projection_rate_ = 4;
+  mutable std::unique_ptr<internal::Limit_projection<Limit_surface>> projection_;
+  std::unique_ptr<std::once_flag> projection_once_ = std::make_unique<std::once_flag>();
 };
 
 /// \ingroup PkgSubdivision
@@ -333,6 +399,31 @@ Mobius_mesh<P> tessellate(const Mobius_mesh<P>& mesh, int rate, const NP& np = p
                           const Limit_surface_options& options = Limit_surface_options())
 {
   return Limit_surface<Mask, P>(mesh, np, options).tessellate(rate);
+}
+
+/// \ingroup PkgSubdivision
+/// \brief the point of `surface` closest to `query`:
+/// `surface.closest_point(query)` (see there). Keep the surface to ask for
+/// many points: its search structure is built once.
+template <class Mask, class P>
+Limit_surface_location<typename Limit_surface<Mask, P>::Kernel>
+closest_point_on_limit(const Limit_surface<Mask, P>& surface, const P& query)
+{
+  return surface.closest_point(query);
+}
+
+/// \ingroup PkgSubdivision
+/// \brief the point of the limit surface of `mesh` under `Mask`
+/// (`Catmull_clark_mask`) closest to `query`:
+/// `Limit_surface<Mask, P>(mesh, np, options).closest_point(query)`.
+/// \throws Parameter_error as the constructor of `Limit_surface` and
+/// `Limit_surface::closest_point()`.
+template <class Mask, class P, class NP = parameters::Default_named_parameters>
+Limit_surface_location<typename CGAL::Kernel_traits<P>::Kernel>
+closest_point_on_limit(const Mobius_mesh<P>& mesh, const P& query, const NP& np = parameters::default_values(),
+                       const Limit_surface_options& options = Limit_surface_options())
+{
+  return Limit_surface<Mask, P>(mesh, np, options).closest_point(query);
 }
 
 } // namespace Subdivision

@@ -11,6 +11,7 @@
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
 
+#include <CGAL_ext/Limit_surface/internal/Parameterization.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/exceptions.h>
 
@@ -27,9 +28,6 @@
 namespace CGAL_ext {
 namespace Subdivision {
 namespace internal {
-
-// Bfr's row length of the sub-face layout of an n-gon (n != 4).
-inline int tessellation_sub_face_row(int n) { return n < 10 ? (2 + (n > 4 ? 1 : 0)) : (1 + int(std::sqrt(float(n - 1)))); }
 
 // Builds the tessellation of `mesh` (the surface's own copy of the base
 // mesh) at `rate` samples per edge. `Surface` is Limit_surface;
@@ -81,8 +79,8 @@ private:
   {
     if (sides == 4)
       return {su, sv};
-    const int row = tessellation_sub_face_row(sides);
-    return {FT(k % row) + su / FT(2), FT(k / row) + sv / FT(2)};
+    const std::array<int, 2> tile = sub_face_tile(sides, k);
+    return {FT(tile[0]) + su / FT(2), FT(tile[1]) + sv / FT(2)};
   }
 
   // The parameter at fraction i / N along edge k from corner k, as Bfr

@@ -577,7 +577,7 @@ private:
   std::size_t n_corners_ = 0;
   u32 n_edges_ = 0;
   Huge_page_vector<std::uint64_t> face_start_;
-  bool parallel_ = false;
+  [[maybe_unused]] bool parallel_ = false; // read only where TBB is linked
   bool split_edges_ = false;
   u32 n_non_manifold_edges_ = 0;
   Array partner_, corner_halfedge_, corners_at_, last_corner_, face_stamp_;
