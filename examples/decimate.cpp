@@ -1,5 +1,5 @@
 // decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders]
-//          [--no-relocation] [--no-hausdorff] [--no-tags]
+//          [--no-relocation] [--no-hausdorff] [--limit-distance] [--no-tags]
 //
 // Simplifies a polygon mesh (.obj, .off, .ply), orientable or not, by
 // Garland–Heckbert edge collapses and writes the result. Prints one line of
@@ -8,10 +8,14 @@
 //   Hausdorff distance between the input's and the result's surfaces,
 //   sampled by CGAL on their faces, edges and face corners (isolated vertices
 //   are no surface and are not sampled); null where the input or the result
-//   has no area, or with --no-hausdorff)}
+//   has no area, or with --no-hausdorff)[,"limit_distance":D (with
+//   --limit-distance: the largest distance from the result's vertices and face
+//   centroids to the input's Catmull–Clark limit surface, the shape a
+//   subdivision cage stands for)]}
 // A bad file or option: one line on stderr, exit status 2.
 
 #include "arguments.h"
+#include "limit_distance.h"
 #include "mesh_summary.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
@@ -41,7 +45,7 @@ using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 const examples::Tool_usage usage{
   "decimate",
   "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders] [--no-relocation] "
-  "[--no-hausdorff] [--drop-corner-data] [--no-tags]",
+  "[--no-hausdorff] [--limit-distance] [--drop-corner-data] [--no-tags]",
   "Reads a polygon mesh (.obj, .off, .ply), orientable or not, triangulates it and collapses\n"
   "edges, cheapest first by Garland-Heckbert quadric error, until a stop condition holds (give\n"
   "one or more; the first reached stops):\n"
@@ -54,6 +58,8 @@ const examples::Tool_usage usage{
   "                     move to lower the largest distance to the input).\n"
   "  --no-hausdorff     leave out the Hausdorff distance (null in the JSON line): on large\n"
   "                     meshes its sampling can take longer than the decimation.\n"
+  "  --limit-distance   take IN as a subdivision cage and say how far the result lies from\n"
+  "                     its Catmull-Clark limit surface (limit_distance in the JSON line).\n"
   "  --drop-corner-data  go on without the input's texture coordinates and normals, which\n"
   "                     collapses do not carry (an input with them is refused otherwise).\n"
   "  --no-tags          an OBJ OUT without OpenSubdiv's tag lines (the kept creases), which\n"
@@ -85,7 +91,7 @@ int decimate(int argc, char** argv)
 {
   const examples::Arguments args = examples::parse_arguments(
     argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"},
-    {"--protect-borders", "--no-relocation", "--no-hausdorff", examples::drop_corner_data_flag,
+    {"--protect-borders", "--no-relocation", "--no-hausdorff", "--limit-distance", examples::drop_corner_data_flag,
      examples::no_tags_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
@@ -121,6 +127,9 @@ int decimate(int argc, char** argv)
                              .relocate_vertices(!args.has("--no-relocation")));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
+  std::optional<double> to_limit;
+  if (args.has("--limit-distance")) // of the input as read: the cage, before its faces are split
+    to_limit = examples::limit_distance(mesh, input);
   std::optional<double> hausdorff;
   if (!args.has("--no-hausdorff")) {
     CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same
@@ -128,6 +137,8 @@ int decimate(int argc, char** argv)
   }
 
   examples::Json_object line = examples::mesh_summary(mesh).add("seconds", seconds).add("hausdorff", hausdorff);
+  if (to_limit)
+    line.add("limit_distance", *to_limit);
   if (args.has(examples::drop_corner_data_flag))
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);

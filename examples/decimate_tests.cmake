@@ -31,6 +31,12 @@ add_test(NAME decimate.error_bound_zero COMMAND decimate ${_data}/rp2_hemi_icosa
 set_tests_properties(decimate.error_bound_zero PROPERTIES PASS_REGULAR_EXPRESSION
   "^{\"vertices\":6,\"edges\":15,\"faces\":10,.*\"hausdorff\":(0|[0-9.]+e-[0-9]+)}")
 
+# --limit-distance: the distance of the result to the cage's limit surface, after the Hausdorff distance.
+add_test(NAME decimate.limit_distance COMMAND decimate ${_data}/torus_24x12_quads.obj ${_out}/decimate_torus_limit.obj
+         --faces 100 --limit-distance)
+set_tests_properties(decimate.limit_distance PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"faces\":100,.*\"hausdorff\":0\\.[0-9]+,\"limit_distance\":0\\.[0-9]+}")
+
 # Without the relocation, the same count and topology.
 add_test(NAME decimate.torus_to_100_no_relocation COMMAND decimate ${_data}/torus_24x12_quads.obj
          ${_out}/decimate_torus_unmoved.obj --faces 100 --no-relocation)

@@ -1,5 +1,6 @@
 // remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp]
-//        [--relax-constraints] [--max-memory BYTES] [--all-iterations] [--refuse-narrow] [--no-tags]
+//        [--relax-constraints] [--max-memory BYTES] [--all-iterations] [--refuse-narrow]
+//        [--project-to-limit] [--no-tags]
 //
 // Remeshes a polygon mesh (.obj, .off, .ply) into triangles whose edges are
 // close to L (Botsch and Kobbelt's isotropic remeshing), on any surface: a
@@ -7,16 +8,19 @@
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"orientable":true|false,
 //    "closed":true|false,"components":C,"euler_characteristic":X,"valid":true|false,
 //    "in_band":S,"iterations":I,"stopped_early":true|false,"narrow_faces":N,
-//    "narrowest_width":W,"seconds":T}
+//    "narrowest_width":W,"seconds":T[,"limit_distance":D]}
 // where S is the share of edges between 4/5 L and 4/3 L, I the iterations
 // run (fewer than K where the loop settled first), N the input's faces in
 // parts of the surface narrower than any triangle with sides in the band
-// (0.44 L), W the width of the narrowest (null if none).
+// (0.44 L), W the width of the narrowest (null if none), D (with
+// --project-to-limit) the largest distance from the result's vertices and
+// face centroids to the input's Catmull–Clark limit surface.
 // A bad file or option, a result larger than --max-memory, a narrow surface
 // with --refuse-narrow: one line on stderr, exit status 2.
 
 #include "arguments.h"
 #include "json_line.h"
+#include "limit_distance.h"
 #include "mesh_summary.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
@@ -34,7 +38,7 @@ namespace {
 const examples::Tool_usage usage{
   "remesh",
   "remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp] [--relax-constraints] "
-  "[--max-memory BYTES] [--all-iterations] [--refuse-narrow] [--drop-corner-data] [--no-tags]",
+  "[--max-memory BYTES] [--all-iterations] [--refuse-narrow] [--project-to-limit] [--drop-corner-data] [--no-tags]",
   "Reads a polygon mesh (.obj, .off, .ply), splits its faces into triangles and remeshes it so\n"
   "that its edges come close to L (Botsch and Kobbelt's loop of splits, collapses, flips,\n"
   "tangential relaxation and projection onto the input), on any surface, one-sided ones included.\n"
@@ -51,6 +55,9 @@ const examples::Tool_usage usage{
   "                       from the input and L; default: the memory available)\n"
   "  --refuse-narrow      refuse a surface narrower than 0.44 L in places (a needle, a strip\n"
   "                       thinner than L), which can only be cut into a strip of slivers\n"
+  "  --project-to-limit   take IN as a subdivision cage: vertices go onto its Catmull-Clark\n"
+  "                       limit surface (OBJ crease tags read) instead of onto its faces, and\n"
+  "                       the JSON line says how far the result lies from it (limit_distance)\n"
   "  --drop-corner-data   go on without the input's texture coordinates and normals, which\n"
   "                       remeshing does not carry (an input with them is refused otherwise)\n"
   "  --no-tags            an OBJ OUT without OpenSubdiv's tag lines (the sharp edges), which\n"
@@ -77,7 +84,8 @@ int remesh(int argc, char** argv)
   const examples::Arguments args =
     examples::parse_arguments(argc, argv, {"--edge-length", "--iterations", "--max-memory"},
                               {"--protect-borders", "--protect-sharp", "--relax-constraints", "--all-iterations",
-                               "--refuse-narrow", examples::drop_corner_data_flag, examples::no_tags_flag});
+                               "--refuse-narrow", "--project-to-limit", examples::drop_corner_data_flag,
+                               examples::no_tags_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--edge-length"))
@@ -102,7 +110,9 @@ int remesh(int argc, char** argv)
                     .protect_sharp_edges(args.has("--protect-sharp"))
                     .relax_constraints(args.has("--relax-constraints"))
                     .stop_when_converged(!args.has("--all-iterations"))
-                    .allow_narrow_regions(!args.has("--refuse-narrow"));
+                    .allow_narrow_regions(!args.has("--refuse-narrow"))
+                    .project_to_limit_surface(args.has("--project-to-limit"));
+  const Mesh input = args.has("--project-to-limit") ? mesh : Mesh();
   // Without --max-memory, the library's default: the memory available.
   const CGAL_ext::Isotropic_remeshing_result result =
     args.has("--max-memory") ? CGAL_ext::isotropic_remeshing(mesh, L, np.maximum_memory(max_memory))
@@ -125,6 +135,8 @@ int remesh(int argc, char** argv)
     .add("narrow_faces", result.narrow_faces)
     .add("narrowest_width", result.narrowest_width)
     .add("seconds", seconds);
+  if (args.has("--project-to-limit"))
+    line.add("limit_distance", examples::limit_distance(mesh, input));
   if (args.has(examples::drop_corner_data_flag))
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);

@@ -23,6 +23,15 @@ foreach(_case "mobius_20x4_tris;0.18" "klein_fig8_24x12_quads;0.45" "torus_24x12
     "\"border_loops\":${_border_loops},\"orientable\":${_orientable},\"closed\":[a-z]+,\"components\":1,\"euler_characteristic\":${_chi},\"valid\":true,\"in_band\":(0\\.9|1[,.])")
 endforeach()
 
+# With --project-to-limit the strip, taken as a cage, is remeshed onto its Catmull-Clark limit
+# surface: still one non-orientable strip, vertices and face centroids within 0.01 of it (on
+# the cage's faces they would be up to 0.1 away; test_remeshing.cpp measures both).
+add_test(NAME remesh.project_to_limit
+         COMMAND remesh ${_data}/mobius_20x4_tris.obj ${_out}/remesh_limit.obj --edge-length 0.1 --iterations 3
+                 --project-to-limit)
+set_tests_properties(remesh.project_to_limit PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"border_loops\":1,\"orientable\":false,\"closed\":false,\"components\":1,\"euler_characteristic\":0,\"valid\":true.*\"limit_distance\":(0\\.00[0-9]+|[0-9.]+e-0[3-9])}")
+
 # With --protect-borders the Möbius strip's border keeps its 40 vertices and edges.
 add_test(NAME remesh.protected_border
          COMMAND remesh ${_data}/mobius_20x4_tris.obj ${_out}/remesh_protected.obj --edge-length 0.15 --protect-borders)

@@ -20,7 +20,12 @@
 #include <CGAL_ext/Surface_mesh_conversion.h>
 #include <CGAL_ext/isotropic_remeshing.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/subdivision.h>
+#include <CGAL_ext/Subdivision/limit.h>
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -175,6 +180,82 @@ TEST(IsotropicRemeshing, KleinBottleStaysClosedAndOneSided)
   EXPECT_TRUE(all_triangles(m));
   EXPECT_EQ(shape_of(m), before);
   EXPECT_GE(share_in_band(m, L), 0.9);
+}
+
+// project_to_limit_surface: a coarse cage remeshed finely lies on its
+// Catmull–Clark limit surface. The reference is the library's uniform
+// subdivision, not the projection: five levels of catmull_clark() with every
+// vertex moved to its limit position (limit_points()), whose triangles lie
+// within about 1e-4 of the size of the limit surface. Without the projection
+// the same remeshing lies on the cage, a tenth of the size away.
+using Triangles = std::vector<test::Epick::Triangle_3>;
+
+// The largest distance from a vertex of m to the triangles.
+template <class P>
+double farthest_from(const CGAL_ext::Mobius_mesh<P>& m, const Triangles& reference)
+{
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<test::Epick, CGAL::AABB_triangle_primitive<test::Epick, Triangles::const_iterator>>>;
+  Tree tree(reference.begin(), reference.end());
+  tree.accelerate_distance_queries();
+  double farthest = 0;
+  for (Vertex_index v : m.vertices()) {
+    const Point p(CGAL::to_double(m.point(v).x()), CGAL::to_double(m.point(v).y()), CGAL::to_double(m.point(v).z()));
+    farthest = std::max(farthest, std::sqrt(tree.squared_distance(p)));
+  }
+  return farthest;
+}
+
+template <class P>
+void check_projection_to_limit(const CGAL_ext::Mobius_mesh<P>& cage, const std::string& name)
+{
+  namespace S = CGAL_ext::Subdivision;
+  Mesh refined;
+  for (Vertex_index v : cage.vertices())
+    refined.add_vertex(Point(CGAL::to_double(cage.point(v).x()), CGAL::to_double(cage.point(v).y()),
+                             CGAL::to_double(cage.point(v).z())));
+  for (CGAL_ext::Face_index f : cage.faces()) {
+    std::vector<Vertex_index> corners;
+    for (Vertex_index v : CGAL_ext::vertices_around_face(cage.halfedge(f), cage))
+      corners.push_back(v);
+    ASSERT_NE(refined.add_face(corners), CGAL_ext::Face_index()) << name;
+  }
+  S::catmull_clark(refined, np::number_of_iterations(5));
+  S::limit_points<S::Catmull_clark_mask>(refined, refined.points());
+  Triangles reference;
+  double size = 0;
+  for (CGAL_ext::Face_index f : refined.faces()) {
+    std::vector<Point> c;
+    for (Vertex_index v : CGAL_ext::vertices_around_face(refined.halfedge(f), refined)) {
+      c.push_back(refined.point(v));
+      size = std::max({size, std::abs(c.back().x()), std::abs(c.back().y()), std::abs(c.back().z())});
+    }
+    reference.emplace_back(c[0], c[1], c[2]);
+    reference.emplace_back(c[0], c[2], c[3]);
+  }
+
+  const double L = 0.25 * mean_edge_length(cage);
+  CGAL_ext::Mobius_mesh<P> projected = cage, plain = cage;
+  CGAL_ext::isotropic_remeshing(projected, L, np::number_of_iterations(3).project_to_limit_surface(true));
+  CGAL_ext::isotropic_remeshing(plain, L, np::number_of_iterations(3));
+  EXPECT_TRUE(projected.is_valid(true)) << name;
+  EXPECT_EQ(shape_of(projected), shape_of(cage)) << name;
+  EXPECT_GT(projected.number_of_faces(), 4 * cage.number_of_faces()) << name;
+  const double on_limit = farthest_from(projected, reference), on_cage = farthest_from(plain, reference);
+  EXPECT_LE(on_limit, 1e-3 * size) << name;
+  EXPECT_GE(on_cage, 10 * on_limit) << name;
+  ::testing::Test::RecordProperty("limit_distance_" + name, std::to_string(on_limit / size) + " (without: " + std::to_string(on_cage / size) + ")");
+}
+
+TEST(IsotropicRemeshing, ProjectedOntoTheLimitSurfaceOfTheCage)
+{
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  check_projection_to_limit(strip, "mobius_strip");
+  check_projection_to_limit(read_mesh<Point>("klein_fig8_24x12_quads.obj"), "klein_bottle");
+  // An exact kernel: the projection runs in double, the points are the kernel's.
+  CGAL_ext::Mobius_mesh<test::Epeck::Point_3> exact;
+  CGAL_ext::make_mobius_strip(exact, 12, 3);
+  check_projection_to_limit(exact, "mobius_strip_epeck");
 }
 
 // On an orientable surface CGAL's PMP::isotropic_remeshing is the

@@ -8,9 +8,10 @@
 #ifndef CGAL_EXT_ISOTROPIC_REMESHING_H
 #define CGAL_EXT_ISOTROPIC_REMESHING_H
 
-#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
+#include <CGAL_ext/Limit_surface.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Remeshing/internal/Isotropic_remesher.h>
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -53,6 +55,23 @@ struct Isotropic_remeshing_result
   /// side); infinity if there is none.
   double narrowest_width = std::numeric_limits<double>::infinity();
 };
+
+namespace internal {
+
+// The limit surface that project_to_limit_surface(true) asks for, or none.
+// Only a call that names the parameter instantiates Limit_surface.
+template <class P, class NP>
+std::unique_ptr<Subdivision::Limit_surface<Subdivision::Catmull_clark_mask, P>>
+limit_surface_to_project_on(const Mobius_mesh<P>& mesh, const NP& np)
+{
+  if constexpr (!parameters::is_default_parameter<NP, CGAL_ext::internal_np::project_to_limit_surface_t>::value) {
+    if (parameters::get_parameter(np, CGAL_ext::internal_np::project_to_limit_surface))
+      return std::make_unique<Subdivision::Limit_surface<Subdivision::Catmull_clark_mask, P>>(mesh, np);
+  }
+  return nullptr;
+}
+
+} // namespace internal
 
 /// \ingroup PkgMobiusMeshEditing
 /// \brief remeshes `mesh` into triangles whose edges are close to
@@ -147,6 +166,20 @@ struct Isotropic_remeshing_result
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{project_to_limit_surface}
+///     \cgalParamDescription{`true`: vertices are projected onto the
+///       Catmull–Clark limit surface of the input (`Subdivision::Limit_surface`,
+///       the input taken as a subdivision cage, read with the same named
+///       parameters: its sharpness maps, `boundary_interpolation`,
+///       `crease_method`) instead of onto its faces, by
+///       `Limit_surface::closest_point()`; a free border vertex goes to
+///       the middle of its border neighbours, onto the input's border loop,
+///       then onto the limit surface. So a remeshed cage lies on its smooth
+///       surface, but for the vertices that never move: protected ones, and
+///       those whose every move would turn a triangle over.}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{allow_narrow_regions}
 ///     \cgalParamDescription{what to do with a surface that is narrower than
 ///       L in places. A part of it is narrow where faces narrower than any
@@ -222,6 +255,13 @@ Isotropic_remeshing_result isotropic_remeshing(Mobius_mesh<P>& mesh, double targ
   // the face budget) must leave the caller's mesh as it was: the mesh is
   // edited in place, so that the caller's property maps stay valid, and put
   // back from a copy if anything throws.
+  // The limit surface of the input as it is, before its faces are split.
+  const auto limit = internal::limit_surface_to_project_on(mesh, np);
+  if (limit)
+    options.project = [&limit](const internal::Remeshing_point& p) {
+      const P on = limit->closest_point(P(p.x(), p.y(), p.z())).point;
+      return internal::Remeshing_point(CGAL::to_double(on.x()), CGAL::to_double(on.y()), CGAL::to_double(on.z()));
+    };
   const Mobius_mesh<P> before = mesh;
   try {
     triangulate_faces(mesh);

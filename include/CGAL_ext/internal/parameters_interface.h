@@ -38,5 +38,6 @@ CGAL_EXT_add_named_parameter(protect_borders_t, protect_borders, protect_borders
 CGAL_EXT_add_named_parameter(protect_sharp_edges_t, protect_sharp_edges, protect_sharp_edges)
 CGAL_EXT_add_named_parameter(stop_when_converged_t, stop_when_converged, stop_when_converged)
 CGAL_EXT_add_named_parameter(allow_narrow_regions_t, allow_narrow_regions, allow_narrow_regions)
+CGAL_EXT_add_named_parameter(project_to_limit_surface_t, project_to_limit_surface, project_to_limit_surface)
 // drawing
 CGAL_EXT_add_named_parameter(two_sided_style_t, two_sided_style, two_sided_style)

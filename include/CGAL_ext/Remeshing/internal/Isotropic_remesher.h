@@ -187,6 +187,10 @@ struct Remeshing_options
   bool relax_constraints = false;
   bool stop_when_converged = true;
   bool allow_narrow_regions = true;
+  // Where a moved vertex goes instead of the closest point of the input's
+  // triangles (project_to_limit_surface: the closest point of the input's
+  // limit surface); unset, the triangles.
+  std::function<Remeshing_point(const Remeshing_point&)> project;
   // The most faces the loop may hold at any time; isotropic_remeshing() sets
   // it from the size estimate that the memory check accepted.
   double face_budget = std::numeric_limits<double>::infinity();
@@ -248,6 +252,7 @@ public:
     Band_count before = band_count();
     done.share_in_band = before.share();
     unsigned settled = 0;
+    project_in_place(); // the input's vertices, before splits crowd them
     for (unsigned i = 0; i < options_.iterations; ++i) {
       split_long_edges();
       collapse_short_edges();
@@ -264,6 +269,7 @@ public:
       }
       before = after;
     }
+    project_in_place(); // those whose relaxed point would have turned a triangle over
     return done;
   }
 
@@ -690,6 +696,31 @@ private:
     }
   }
 
+  // With options_.project (the limit surface), every free vertex goes to
+  // the closest point of that surface to where it is: at the start, where the
+  // input's vertices are far from it (a cage's) and their edges long enough
+  // to take the move, and at the end, for those whose relaxed point was
+  // refused. A move that would turn a triangle over is halved, as CGAL does,
+  // four times at most.
+  void project_in_place()
+  {
+    if (!options_.project)
+      return;
+    for (Vertex_index v : mesh_.vertices()) {
+      if (mesh_.is_isolated(v) || is_fixed(v))
+        continue;
+      const Remeshing_point from = approximate(v), to = options_.project(from);
+      for (double fraction = 1; fraction > 0.05; fraction /= 2) {
+        const Remeshing_point at = from + fraction * (to - from);
+        if (remeshing_move_keeps_sides(mesh_.halfedge(v), at, mesh_)) {
+          mesh_.point(v) = P(at.x(), at.y(), at.z());
+          check_star(v);
+          break;
+        }
+      }
+    }
+  }
+
   // relax_constraints: each vertex of a protected polyline but its corners
   // slides along the input's polyline (see Constraint_polylines). As CGAL, a
   // move that would turn a triangle over is halved, four times at most,
@@ -736,7 +767,7 @@ private:
       return std::nullopt;
     const Remeshing_point centroid = CGAL::ORIGIN + sum / area;
     const Remeshing_point tangent = centroid + ((p - centroid) * normal) * normal;
-    return input_.closest_on_faces(tangent);
+    return options_.project ? options_.project(tangent) : input_.closest_on_faces(tangent);
   }
 
   std::optional<Remeshing_point> border_position(Vertex_index v) const
@@ -754,7 +785,13 @@ private:
     // Its two border edges are on one loop (the walk met one gap).
     if (!middle || border_loop_.empty())
       return std::nullopt;
-    return input_.closest_on_border(*middle, border_loop_[mesh_.edge(*border_dart).idx()]);
+    const std::optional<Remeshing_point> on_border =
+      input_.closest_on_border(*middle, border_loop_[mesh_.edge(*border_dart).idx()]);
+    // The limit surface's border runs inside the input's: the point of the
+    // input's border loop goes onto the limit surface, where it is nearest.
+    if (on_border && options_.project)
+      return options_.project(*on_border);
+    return on_border;
   }
 
   // After each operation, in debug builds: the darts around the touched
