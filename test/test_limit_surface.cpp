@@ -684,8 +684,12 @@ TEST(Limit_surface, ClosestPointFromSeveralThreads)
     EXPECT_EQ(parallel[i].face, serial[i].face) << i;
     EXPECT_EQ(parallel[i].point, serial[i].point) << i;
   }
-  // The free functions are the member.
+  // The free functions are the member; a surface moved after its first query answers the same.
   EXPECT_EQ(S::closest_point_on_limit(shared, queries[0]).point, serial[0].point);
+  Surface first(m);
+  EXPECT_EQ(first.closest_point(queries[1]).point, serial[1].point);
+  const Surface moved(std::move(first));
+  EXPECT_EQ(moved.closest_point(queries[2]).point, serial[2].point);
   EXPECT_EQ(S::closest_point_on_limit<S::Catmull_clark_mask>(m, queries[0]).point, serial[0].point);
 }
 

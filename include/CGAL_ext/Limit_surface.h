@@ -245,7 +245,7 @@ public:
     if (projection_->empty())
       throw Parameter_error("Limit_surface::closest_point: the mesh has no face");
     const internal::Projection_result r = projection_->closest(
-      CGAL::Simple_cartesian<double>::Point_3(CGAL::to_double(query.x()), CGAL::to_double(query.y()), CGAL::to_double(query.z())));
+      *this, CGAL::Simple_cartesian<double>::Point_3(CGAL::to_double(query.x()), CGAL::to_double(query.y()), CGAL::to_double(query.z())));
     Location location;
     location.face = projection_->tile(r.tile).face;
     location.u = FT(r.u);

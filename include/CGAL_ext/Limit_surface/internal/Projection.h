@@ -51,6 +51,8 @@ struct Projection_result
 };
 
 // `Surface` is Limit_surface; the search runs in double whatever its kernel.
+// The surface is passed to each call, not kept: the Limit_surface that owns
+// this structure may have been moved since it was built.
 template <class Surface>
 class Limit_projection
 {
@@ -78,17 +80,17 @@ public:
   // Samples each quad on a `rate` × `rate` grid, each sub-face of another
   // face on a (`rate` / 2)² one (the sub-face is half as wide).
   template <class P>
-  Limit_projection(const Surface& surface, const Mobius_mesh<P>& mesh, int rate) : s_(surface)
+  Limit_projection(const Surface& surface, const Mobius_mesh<P>& mesh, int rate)
   {
     for (Face_index f : mesh.faces()) {
       const int n = int(mesh.degree(f));
       if (n == 4) {
-        add_tile({f, 0.0, 0.0, 1.0}, std::max(1, rate));
+        add_tile(surface, {f, 0.0, 0.0, 1.0}, std::max(1, rate));
         continue;
       }
       for (int k = 0; k < n; ++k) {
         const std::array<int, 2> tile = sub_face_tile(n, k);
-        add_tile({f, double(tile[0]), double(tile[1]), 0.5}, std::max(1, rate / 2));
+        add_tile(surface, {f, double(tile[0]), double(tile[1]), 0.5}, std::max(1, rate / 2));
       }
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
@@ -103,7 +105,7 @@ public:
 
   // The closest point of the surface to q, among the local minima that
   // Newton's method reaches in the tiles the sampling puts near q.
-  Projection_result closest(const K::Point_3& q) const
+  Projection_result closest(const Surface& surface, const K::Point_3& q) const
   {
     const auto nearest = tree_.closest_point_and_primitive(q);
     const double reach = std::sqrt(CGAL::squared_distance(q, nearest.first)) + slack();
@@ -128,7 +130,7 @@ public:
       if (std::sqrt(d2) > std::sqrt(best.squared_distance) + slack())
         break; // no point of this tile's surface comes closer than the best
       const std::array<double, 2>& st = starts[tile].second;
-      const Projection_result r = newton(tile, st, q);
+      const Projection_result r = newton(surface, tile, st, q);
       if (r.squared_distance < best.squared_distance)
         best = r;
     }
@@ -157,20 +159,20 @@ private:
     return {t.u0 + t.size * s, t.v0 + t.size * r};
   }
 
-  K::Point_3 sample(const Projection_tile& t, double s, double r) const
+  K::Point_3 sample(const Surface& surface, const Projection_tile& t, double s, double r) const
   {
     const std::array<double, 2> uv = face_parameters(t, s, r);
-    return to_point(s_.evaluate(t.face, FT(uv[0]), FT(uv[1])).point);
+    return to_point(surface.evaluate(t.face, FT(uv[0]), FT(uv[1])).point);
   }
 
-  void add_tile(const Projection_tile& t, int n)
+  void add_tile(const Surface& surface, const Projection_tile& t, int n)
   {
     const std::uint32_t id = std::uint32_t(tiles_.size());
     tiles_.push_back(t);
     std::vector<K::Point_3> grid;
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) {
-        grid.push_back(sample(t, double(i) / n, double(j) / n));
+        grid.push_back(sample(surface, t, double(i) / n, double(j) / n));
         scale_ = std::max({scale_, std::abs(grid.back().x()), std::abs(grid.back().y()), std::abs(grid.back().z())});
       }
     const auto at = [&](int i, int j) { return std::size_t(j * (n + 1) + i); };
@@ -180,7 +182,7 @@ private:
         const std::size_t before = triangles_.size();
         add_triangle(id, grid, {at(i, j), at(i + 1, j), at(i + 1, j + 1)}, {st(i, j), st(i + 1, j), st(i + 1, j + 1)});
         add_triangle(id, grid, {at(i, j), at(i + 1, j + 1), at(i, j + 1)}, {st(i, j), st(i + 1, j + 1), st(i, j + 1)});
-        measure_gap(t, before, (i + 0.5) / n, (j + 0.5) / n);
+        measure_gap(surface, t, before, (i + 0.5) / n, (j + 0.5) / n);
       }
   }
 
@@ -195,11 +197,11 @@ private:
   }
 
   // The distance from the surface at a cell's centre to the cell's triangles.
-  void measure_gap(const Projection_tile& t, std::size_t first, double s, double r)
+  void measure_gap(const Surface& surface, const Projection_tile& t, std::size_t first, double s, double r)
   {
     if (first == triangles_.size())
       return;
-    const K::Point_3 centre = sample(t, s, r);
+    const K::Point_3 centre = sample(surface, t, s, r);
     double d2 = std::numeric_limits<double>::infinity();
     for (std::size_t i = first; i < triangles_.size(); ++i)
       d2 = std::min(d2, CGAL::squared_distance(centre, triangles_[i]));
@@ -224,9 +226,9 @@ private:
     return face_parameters(tiles_[sources_[i].tile], s, r);
   }
 
-  Local local(const Projection_tile& t, double u, double v, const K::Point_3& q) const
+  Local local(const Surface& surface, const Projection_tile& t, double u, double v, const K::Point_3& q) const
   {
-    const auto e = s_.evaluate(t.face, FT(u), FT(v));
+    const auto e = surface.evaluate(t.face, FT(u), FT(v));
     Local l{to_point(e.point) - q, to_vector(e.du), to_vector(e.dv), to_vector(e.duu), to_vector(e.duv),
             to_vector(e.dvv), 0.0};
     l.squared_distance = l.r.squared_length();
@@ -286,7 +288,8 @@ private:
 
   // Newton's method in one tile from `start`, halving a step that brings
   // the point neither closer nor nearer stationary, until the step vanishes.
-  Projection_result newton(std::uint32_t tile, const std::array<double, 2>& start, const K::Point_3& q) const
+  Projection_result newton(const Surface& surface, std::uint32_t tile, const std::array<double, 2>& start,
+                           const K::Point_3& q) const
   {
     const Projection_tile& t = tiles_[tile];
     const std::array<double, 2> lo{t.u0, t.v0}, hi{t.u0 + t.size, t.v0 + t.size};
@@ -298,7 +301,7 @@ private:
     };
     std::array<double, 2> x = start;
     snap(x);
-    Local l = local(t, x[0], x[1], q);
+    Local l = local(surface, t, x[0], x[1], q);
     for (int iteration = 0; iteration < 100; ++iteration) {
       const std::array<double, 2> step = newton_step(l, x, lo, hi);
       if (std::abs(step[0]) + std::abs(step[1]) <= 1e-14 * t.size)
@@ -309,7 +312,7 @@ private:
         for (int i = 0; i < 2; ++i)
           y[std::size_t(i)] = std::clamp(x[std::size_t(i)] + fraction * step[std::size_t(i)], lo[std::size_t(i)], hi[std::size_t(i)]);
         snap(y);
-        const Local m = local(t, y[0], y[1], q);
+        const Local m = local(surface, t, y[0], y[1], q);
         if (m.squared_distance < l.squared_distance || (m.squared_distance <= l.squared_distance + rounding(l) &&
                                                         free_gradient2(m, y, lo, hi) < free_gradient2(l, x, lo, hi))) {
           l = m;
@@ -323,7 +326,6 @@ private:
     return {tile, x[0], x[1], l.squared_distance};
   }
 
-  const Surface& s_;
   std::vector<Projection_tile> tiles_;
   Triangles triangles_;
   std::vector<Triangle_source> sources_;

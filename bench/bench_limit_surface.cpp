@@ -1,0 +1,369 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The limit surface at points spread over a mesh, side by side:
+// CGAL_ext::Subdivision::Limit_surface against OpenSubdiv's Bfr
+// (Far::TopologyRefiner, Bfr::RefinerSurfaceFactory, a Bfr::Surface per
+// face, its patch points, Evaluate) on the same points and faces:
+//   limit_surface/evaluate/torus320x320  make_torus(mesh, 320, 320): 102 400 quads, all regular
+//   limit_surface/evaluate/cube_level7   a cube refined seven times by catmull_clark(): 98 304 quads
+//                                        round 8 vertices of valence 3 (Gregory patches there)
+// 10 parameters per face (about a million points), the same for both, each
+// evaluated with its first and second derivatives (what Limit_surface
+// always computes). Timed: from the mesh (ours) or the points and face
+// lists (Bfr) to every point evaluated, the surface's construction
+// included; the factory's cache is Bfr's default. Implementations:
+// CGAL_ext_Limit_surface (serial), CGAL_ext_Limit_surface_parallel/threads:N
+// (faces split among N TBB threads, one surface), OpenSubdiv_Bfr and
+// OpenSubdiv_Bfr_parallel/threads:N (one factory; a Surface per thread), and
+// CGAL_ext_catmull_clark_2_levels: uniform refinement to about the same
+// number of points (16 per face; points of the level, not of the limit).
+//
+//   limit_surface/closest_point/...      ours alone: 10 000 queries near the
+//                                        surface (the search structure built
+//                                        in the first, and counted).
+//
+// At start the program checks that both give the same points (to 1e-9 of
+// the size) on every face: a comparison of different outputs is worthless.
+
+#include <CGAL_ext/Limit_surface.h>
+#include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/generators.h>
+#include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/subdivision.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Random.h>
+
+#include <benchmark/benchmark.h>
+
+#if CGAL_EXT_HAVE_OPENSUBDIV
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+#endif
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL_ext::Mobius_mesh<Point>;
+namespace S = CGAL_ext::Subdivision;
+using Surface = S::Limit_surface<S::Catmull_clark_mask, Point>;
+
+constexpr int points_per_face = 10;
+
+struct Input
+{
+  Mesh mesh;
+  std::vector<std::array<double, 2>> parameters; // points_per_face per face, face by face
+};
+
+Input make_input(const std::string& name)
+{
+  Input in;
+  if (name == "torus320x320") {
+    CGAL_ext::make_torus(in.mesh, 320, 320);
+  } else {
+    const std::vector<Point> corners{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                                     {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+    const std::vector<std::vector<std::size_t>> quads{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                                      {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    CGAL_ext::polygon_soup_to_mobius_mesh(corners, quads, in.mesh);
+    S::catmull_clark(in.mesh, CGAL_ext::parameters::number_of_iterations(7));
+  }
+  CGAL::Random random(1);
+  in.parameters.resize(in.mesh.number_of_faces() * points_per_face);
+  for (auto& uv : in.parameters)
+    uv = {random.get_double(0, 1), random.get_double(0, 1)};
+  return in;
+}
+
+const Input& input(const std::string& name)
+{
+  static std::map<std::string, Input> inputs;
+  auto it = inputs.find(name);
+  if (it == inputs.end())
+    it = inputs.emplace(name, make_input(name)).first;
+  return it->second;
+}
+
+// Evaluates the points of faces [begin, end) on `surface`; returns a sum that
+// keeps the compiler from dropping the work.
+double evaluate_ours(const Surface& surface, const Input& in, std::size_t begin, std::size_t end)
+{
+  double sum = 0;
+  for (std::size_t f = begin; f < end; ++f)
+    for (int k = 0; k < points_per_face; ++k) {
+      const auto& uv = in.parameters[f * points_per_face + std::size_t(k)];
+      sum += surface.evaluate(CGAL_ext::Face_index(f), uv[0], uv[1]).point.x();
+    }
+  return sum;
+}
+
+#if CGAL_EXT_HAVE_OPENSUBDIV
+namespace Far = OpenSubdiv::Far;
+namespace Bfr = OpenSubdiv::Bfr;
+
+// The mesh as OpenSubdiv takes it: coordinates and face lists.
+struct Osd_input
+{
+  std::vector<double> xyz;
+  std::vector<int> sizes, indices;
+};
+
+Osd_input osd_input(const Mesh& m)
+{
+  Osd_input o;
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    o.xyz.insert(o.xyz.end(), {m.point(v).x(), m.point(v).y(), m.point(v).z()});
+  for (CGAL_ext::Face_index f : m.faces()) {
+    o.sizes.push_back(int(m.degree(f)));
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+      o.indices.push_back(int(v.idx()));
+  }
+  return o;
+}
+
+std::unique_ptr<Far::TopologyRefiner> osd_refiner(const Osd_input& o)
+{
+  Far::TopologyDescriptor desc;
+  desc.numVertices = int(o.xyz.size() / 3);
+  desc.numFaces = int(o.sizes.size());
+  desc.numVertsPerFace = o.sizes.data();
+  desc.vertIndicesPerFace = o.indices.data();
+  OpenSubdiv::Sdc::Options options;
+  options.SetVtxBoundaryInterpolation(OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  return std::unique_ptr<Far::TopologyRefiner>(
+    Factory::Create(desc, Factory::Options(OpenSubdiv::Sdc::SCHEME_CATMARK, options)));
+}
+
+// Bfr on faces [begin, end), one Surface and one buffer of patch points
+// for the range; `out` (if given) receives the positions.
+double evaluate_bfr(const Bfr::RefinerSurfaceFactory<>& factory, const Osd_input& o, const Input& in,
+                    std::size_t begin, std::size_t end, std::vector<double>* out = nullptr)
+{
+  Bfr::Surface<double> surface;
+  std::vector<double> patch_points;
+  double sum = 0;
+  for (std::size_t f = begin; f < end; ++f) {
+    factory.InitVertexSurface(int(f), &surface);
+    patch_points.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
+    surface.PreparePatchPoints(o.xyz.data(), 3, patch_points.data(), 3);
+    for (int k = 0; k < points_per_face; ++k) {
+      const auto& uv = in.parameters[f * points_per_face + std::size_t(k)];
+      double p[3], du[3], dv[3], duu[3], duv[3], dvv[3];
+      surface.Evaluate(uv.data(), patch_points.data(), 3, p, du, dv, duu, duv, dvv);
+      sum += p[0];
+      if (out)
+        out->insert(out->end(), {p[0], p[1], p[2]});
+    }
+  }
+  return sum;
+}
+
+// Both give the same points, or the comparison is void.
+bool same_points(const std::string& name)
+{
+  const Input& in = input(name);
+  const Surface surface(in.mesh);
+  const Osd_input o = osd_input(in.mesh);
+  const auto refiner = osd_refiner(o);
+  const Bfr::RefinerSurfaceFactory<> factory(*refiner);
+  std::vector<double> theirs;
+  evaluate_bfr(factory, o, in, 0, in.mesh.number_of_faces(), &theirs);
+  double worst = 0, size = 0;
+  for (std::size_t f = 0; f < in.mesh.number_of_faces(); ++f)
+    for (int k = 0; k < points_per_face; ++k) {
+      const std::size_t i = f * points_per_face + std::size_t(k);
+      const Point p = surface.evaluate(CGAL_ext::Face_index(f), in.parameters[i][0], in.parameters[i][1]).point;
+      for (int c = 0; c < 3; ++c) {
+        worst = std::max(worst, std::abs(p[c] - theirs[3 * i + std::size_t(c)]));
+        size = std::max(size, std::abs(p[c]));
+      }
+    }
+  if (worst <= 1e-9 * size)
+    return true;
+  std::cerr << name << ": Limit_surface and Bfr differ by " << worst << " (size " << size << ")\n";
+  return false;
+}
+#endif
+
+// Runs `work(begin, end)` over the faces on `threads` TBB threads (serially
+// without TBB).
+template <class Work>
+double over_faces(std::size_t faces, int threads, const Work& work)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if (threads > 1) {
+    std::vector<double> sums(faces / 256 + 1, 0.0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+      sums[r.begin() / 256] += work(r.begin(), r.end());
+    });
+    double sum = 0;
+    for (double s : sums)
+      sum += s;
+    return sum;
+  }
+#endif
+  (void)threads;
+  return work(0, faces);
+}
+
+struct Thread_cap
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  explicit Thread_cap(int threads)
+    : control(tbb::global_control::max_allowed_parallelism, std::size_t(std::max(threads, 1)))
+  {}
+  tbb::global_control control;
+#else
+  explicit Thread_cap(int) {}
+#endif
+};
+
+void ours(benchmark::State& state, const std::string& name, int threads)
+{
+  const Input& in = input(name);
+  const Thread_cap cap(threads);
+  for (auto _ : state) {
+    const Surface surface(in.mesh);
+    benchmark::DoNotOptimize(over_faces(in.mesh.number_of_faces(), threads, [&](std::size_t b, std::size_t e) {
+      return evaluate_ours(surface, in, b, e);
+    }));
+  }
+  state.counters["points"] = double(in.parameters.size());
+}
+
+void refinement(benchmark::State& state, const std::string& name)
+{
+  const Input& in = input(name);
+  for (auto _ : state) {
+    state.PauseTiming();
+    Mesh m = in.mesh;
+    state.ResumeTiming();
+    S::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(2));
+    benchmark::DoNotOptimize(m.number_of_vertices());
+  }
+  state.counters["points"] = double(in.mesh.number_of_faces() * 16);
+}
+
+#if CGAL_EXT_HAVE_OPENSUBDIV
+void bfr(benchmark::State& state, const std::string& name, int threads)
+{
+  const Input& in = input(name);
+  const Osd_input o = osd_input(in.mesh);
+  const Thread_cap cap(threads);
+  for (auto _ : state) {
+    const auto refiner = osd_refiner(o);
+    const Bfr::RefinerSurfaceFactory<> factory(*refiner);
+    benchmark::DoNotOptimize(over_faces(in.mesh.number_of_faces(), threads, [&](std::size_t b, std::size_t e) {
+      return evaluate_bfr(factory, o, in, b, e);
+    }));
+  }
+  state.counters["points"] = double(in.parameters.size());
+}
+#endif
+
+// Queries pushed off the surface along its normal by 1 % of the size, from
+// fresh parameters of random faces.
+void closest_points(benchmark::State& state, const std::string& name)
+{
+  const Input& in = input(name);
+  std::vector<Point> queries;
+  {
+    const Surface surface(in.mesh);
+    CGAL::Random random(2);
+    for (int i = 0; i < 10000; ++i) {
+      const auto f = CGAL_ext::Face_index(std::size_t(random.get_int(0, int(in.mesh.number_of_faces()))));
+      const auto e = surface.evaluate(f, random.get_double(0, 1), random.get_double(0, 1));
+      queries.push_back(e.point + 0.01 * e.normal);
+    }
+  }
+  for (auto _ : state) {
+    const Surface surface(in.mesh);
+    double sum = 0;
+    for (const Point& q : queries)
+      sum += surface.closest_point(q).squared_distance;
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["queries"] = double(queries.size());
+}
+
+std::vector<int> thread_counts()
+{
+  std::vector<int> counts;
+  const int hardware = int(std::max(std::thread::hardware_concurrency(), 1u));
+  for (int t = 1; t < hardware; t *= 2)
+    counts.push_back(t);
+  counts.push_back(hardware);
+  return counts;
+}
+
+// Real time (threads work beside the main one), in milliseconds.
+template <class... Args>
+void add(const std::string& benchmark_name, Args&&... args)
+{
+  benchmark::RegisterBenchmark(benchmark_name.c_str(), std::forward<Args>(args)...)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+}
+
+void register_all()
+{
+  for (const std::string name : {"torus320x320", "cube_level7"}) {
+    const std::string group = "limit_surface/evaluate/" + name + "/";
+    add(group + "CGAL_ext_Limit_surface", ours, name, 1);
+#ifdef CGAL_LINKED_WITH_TBB
+    for (int t : thread_counts())
+      add(group + "CGAL_ext_Limit_surface_parallel/threads:" + std::to_string(t), ours, name, t);
+#endif
+#if CGAL_EXT_HAVE_OPENSUBDIV
+    add(group + "OpenSubdiv_Bfr", bfr, name, 1);
+#ifdef CGAL_LINKED_WITH_TBB
+    for (int t : thread_counts())
+      add(group + "OpenSubdiv_Bfr_parallel/threads:" + std::to_string(t), bfr, name, t);
+#endif
+#endif
+    add(group + "CGAL_ext_catmull_clark_2_levels", refinement, name);
+    add("limit_surface/closest_point/" + name + "/CGAL_ext_Limit_surface", closest_points, name);
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+#if CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"torus320x320", "cube_level7"})
+    if (!same_points(name))
+      return 1;
+#endif
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+    return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
