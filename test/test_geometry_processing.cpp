@@ -10,6 +10,7 @@
 #include "test_util.h"
 
 #include <CGAL_ext/Curvature/discrete_curvatures.h>
+#include <CGAL_ext/Curvature/principal_curvatures.h>
 #include <CGAL_ext/Geodesics/geodesic_distances.h>
 #include <CGAL_ext/Hole_filling/triangulate_hole.h>
 #include <CGAL_ext/IO/polygon_mesh_io.h>
@@ -40,6 +41,7 @@
 #include <cstdlib>
 #include <functional>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace geometry_processing_test {
@@ -314,6 +316,55 @@ TEST(Curvature, MeanCurvatureOfATorusAndPerDartOnOneSidedSurfaces)
     ASSERT_EQ(k.target(other_side), k.target(d));
     EXPECT_NEAR(CGAL_ext::mean_curvature(d, k), -CGAL_ext::mean_curvature(other_side, k), 1e-12);
   }
+}
+
+// Torus (R, r) = (2, 0.7), outward normal: k1 = 1 / r along the tube's
+// circles, k2 = cos v / (R + r cos v) along the parallels, and the mean of the
+// two near the cotangent formula's mean curvature. From the other side of
+// any surface k1, k2 become -k2, -k1 with the directions traded: one-sided
+// surfaces have them per side, as normals.
+TEST(Curvature, PrincipalCurvaturesOfATorusAndPerDartOnOneSidedSurfaces)
+{
+  Mesh t;
+  CGAL_ext::make_torus(t, 128, 64);
+  PMP::triangulate_faces(t);
+  double worst_k1 = 0, worst_k2 = 0, worst_direction = 0, worst_mean = 0;
+  for (Vertex_index v : t.vertices()) {
+    const Point& p = t.point(v);
+    const double q = std::hypot(p.x(), p.y()), cv = (q - 2.0) / 0.7, sv = p.z() / 0.7;
+    const double cu = p.x() / q, su = p.y() / q;
+    const CGAL_ext::Principal_curvatures c = CGAL_ext::principal_curvatures(t.halfedge(v), t);
+    worst_k1 = std::max(worst_k1, std::abs(c.max_curvature - 1 / 0.7));
+    worst_k2 = std::max(worst_k2, std::abs(c.min_curvature - cv / (2.0 + 0.7 * cv)));
+    const std::array<double, 3> meridian{-sv * cu, -sv * su, cv}, parallel{-su, cu, 0};
+    const auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    };
+    worst_direction = std::max({worst_direction, 1 - std::abs(dot(c.max_direction, meridian)),
+                                1 - std::abs(dot(c.min_direction, parallel))});
+    worst_mean = std::max(worst_mean, std::abs((c.max_curvature + c.min_curvature) / 2 -
+                                               CGAL_ext::mean_curvature(t.halfedge(v), t)));
+  }
+  EXPECT_LT(worst_k1, 0.03); // of 1.43; 0.0043 at twice the resolution (h²)
+  EXPECT_LT(worst_k2, 0.01);
+  EXPECT_LT(worst_direction, 1e-5); // 1 - |cos| of the angle to the closed form
+  EXPECT_LT(worst_mean, 0.03);
+  RecordProperty("torus_k1_k2_direction_mean", std::to_string(worst_k1) + " " + std::to_string(worst_k2) + " " +
+                                                   std::to_string(worst_direction) + " " + std::to_string(worst_mean));
+  for (Shape shape : {klein, mobius}) {
+    const Mesh k = make(shape);
+    for (CGAL_ext::Face_index f : k.faces()) {
+      const CGAL_ext::Dart d = k.halfedge(f), other_side = k.next(d).flipped();
+      ASSERT_EQ(k.target(other_side), k.target(d));
+      const CGAL_ext::Principal_curvatures a = CGAL_ext::principal_curvatures(d, k),
+                                           b = CGAL_ext::principal_curvatures(other_side, k);
+      EXPECT_NEAR(a.max_curvature, -b.min_curvature, 1e-9) << "shape " << shape;
+      EXPECT_NEAR(a.min_curvature, -b.max_curvature, 1e-9) << "shape " << shape;
+      for (int i = 0; i < 3; ++i)
+        EXPECT_NEAR(a.normal[std::size_t(i)], -b.normal[std::size_t(i)], 1e-9) << "shape " << shape;
+    }
+  }
+  EXPECT_THROW(CGAL_ext::principal_curvatures(t.halfedge(Vertex_index(0)), t, 0), CGAL_ext::Parameter_error);
 }
 
 // --------------------------------------------------------------- hole filling
