@@ -79,7 +79,8 @@ template <class Kernel>
 struct Limit_surface_location
 {
   Face_index face;                      ///< the face the point lies on
-  typename Kernel::FT u, v;             ///< its parameter in `face` (see `Limit_surface`)
+  typename Kernel::FT u;                ///< its parameter in `face` (see `Limit_surface`), first coordinate
+  typename Kernel::FT v;                ///< its parameter in `face`, second coordinate
   typename Kernel::Point_3 point;       ///< the surface at (`u`, `v`) of `face`
   typename Kernel::Vector_3 normal;     ///< the unit normal there, seen from `face`'s orientation
   typename Kernel::FT squared_distance; ///< from the query to `point`
