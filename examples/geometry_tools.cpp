@@ -1,6 +1,6 @@
 // The geometry tools, on any surface, one-sided ones included:
 //
-//   geodesics IN OUT.ply --source V[,W...] [--method heat|exact] [--triangulate]
+//   geodesics IN OUT.ply --source V[,W...] [--method heat|heat-intrinsic|exact] [--triangulate]
 //   fill_holes IN OUT [--fill triangulate|refine|fair] [--triangulate]
 //   smooth IN OUT [--iterations K] [--time T] [--triangulate]
 //   curvature IN OUT.ply [--triangulate]
@@ -120,20 +120,23 @@ Mesh::Property_map<Vertex_index, T> output_map(Mesh& mesh, const std::string& na
 // ------------------------------------------------------------------ geodesics
 
 const Tool_usage geodesics_usage{
-  "geodesics", "geodesics IN OUT.ply --source V[,W...] [--method heat|exact] [--triangulate]",
+  "geodesics", "geodesics IN OUT.ply --source V[,W...] [--method heat|heat-intrinsic|exact] [--triangulate]",
   "Reads a triangle mesh (.obj, .off, .ply), one-sided or not, and computes the geodesic distance\n"
   "along the surface from the source vertices (numbered from 0 in the order of the file) to every\n"
   "vertex. Distance needs no orientation: on a one-sided surface it is computed where CGAL can walk\n"
   "the mesh, and on its orientation double cover from both lifts of each source where it cannot.\n"
   "  --method heat   CGAL's heat method (Heat_method_3, Direct), an approximation (default)\n"
+  "  --method heat-intrinsic  the heat method on the intrinsic Delaunay triangulation\n"
+  "                  (Heat_method_3, Intrinsic_Delaunay): better on meshes with obtuse triangles\n"
   "  --method exact  CGAL's exact shortest paths on the piecewise flat surface (Surface_mesh_shortest_path)\n"
   "  --triangulate   split polygons into triangles first (else they are an error)\n"
   "Writes OUT.ply with the distance as the vertex property 'distance' (double), and prints the\n"
   "counts, the distance at the sources, the largest distance and its vertex as one line of JSON.\n"};
 
-enum class Geodesic_method { heat, exact };
+enum class Geodesic_method { heat, heat_intrinsic, exact };
 
 const Choices<Geodesic_method> geodesic_methods = {{"heat", Geodesic_method::heat},
+                                                   {"heat-intrinsic", Geodesic_method::heat_intrinsic},
                                                    {"exact", Geodesic_method::exact}};
 
 // "V[,W...]": vertices of `mesh`, by their index in the file.
@@ -167,7 +170,7 @@ int geodesics(int argc, char** argv)
   // CGAL's heat method factors a matrix that a vertex on no face makes
   // singular, and stops with an assertion: say why instead.
   for (Vertex_index v : mesh.vertices())
-    if (method == Geodesic_method::heat && !mesh.halfedge(v).is_valid())
+    if (method != Geodesic_method::exact && !mesh.halfedge(v).is_valid())
       throw std::runtime_error(args.positional[0] + ": vertex " + std::to_string(v.idx()) +
                                " is on no face, and the heat method needs every vertex on one (--method exact "
                                "takes it)");
@@ -175,6 +178,8 @@ int geodesics(int argc, char** argv)
   const Clock::time_point start = Clock::now();
   if (method == Geodesic_method::heat)
     CGAL_ext::estimate_geodesic_distances(mesh, distance, sources);
+  else if (method == Geodesic_method::heat_intrinsic)
+    CGAL_ext::estimate_geodesic_distances<CGAL::Heat_method_3::Intrinsic_Delaunay>(mesh, distance, sources);
   else
     CGAL_ext::exact_geodesic_distances(mesh, distance, sources);
   const double seconds = seconds_since(start);

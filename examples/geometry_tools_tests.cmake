@@ -52,6 +52,11 @@ cgal_ext_compare_figures(geodesics.rp2_exact_closed_form
 cgal_ext_compare_figures(geodesics.rp2_heat_closed_form
   RUN ${_geodesics} ${_data}/rp2_hemi_icosahedron.obj ${_out}/geodesics_rp2_heat.ply --source 0
   FIELD max_distance EXPECTED 1.7013016167 TOLERANCE 0.02)
+cgal_ext_compare_figures(geodesics.rp2_heat_intrinsic_closed_form
+  RUN ${_geodesics} ${_data}/rp2_hemi_icosahedron.obj ${_out}/geodesics_rp2_heat_intrinsic.ply --source 0
+      --method heat-intrinsic
+  STDOUT "\"method\":\"heat-intrinsic\","
+  FIELD max_distance EXPECTED 1.7013016167 TOLERANCE 0.02)
 
 # A flat convex rectangle, 2 x 1: the geodesic from a corner is the segment,
 # and the farthest vertex the opposite corner, at √5. The heat method within 3 %.
@@ -72,7 +77,7 @@ cgal_ext_compare_figures(geodesics.flat_rectangle_heat_closed_form
 # of vertex 0 are the cover's vertices 0 and 5 (offset numbers the cover's
 # vertices in the order its faces first use them); were they not, the cover's
 # largest distance would be some 70 % larger.
-foreach(_method exact heat)
+foreach(_method exact heat heat-intrinsic)
   cgal_ext_compare_figures(geodesics.klein_${_method}_equals_double_cover
     RUN ${_geodesics} ${_data}/klein_fig8_24x12_quads.obj ${_out}/geodesics_klein_${_method}.ply --source 0
         --method ${_method} --triangulate
