@@ -21,6 +21,7 @@
 #include "mesh_summary.h"
 
 #include <CGAL_ext/Curvature/discrete_curvatures.h>
+#include <CGAL_ext/Curvature/principal_curvatures.h>
 #include <CGAL_ext/Geodesics/geodesic_distances.h>
 #include <CGAL_ext/Hole_filling/triangulate_hole.h>
 #include <CGAL_ext/IO/polygon_mesh_io.h>
@@ -329,6 +330,9 @@ const Tool_usage curvature_usage{
   "                       the mesh has no Möbius edge (an orientable surface: files are read\n"
   "                       oriented). A one-sided surface has a mean curvature per side only\n"
   "                       (CGAL_ext::mean_curvature(dart, mesh)), not per vertex.\n"
+  "  max_curvature, min_curvature  the principal curvatures k1 >= k2 from the same side (a cubic jet\n"
+  "                       fitted to two rings, CGAL_ext::principal_curvatures()); only where there\n"
+  "                       is no Moebius edge, as mean_curvature.\n"
   "  --triangulate        split polygons into triangles first (else they are an error)\n"
   "Prints the counts, the total angle defect and the ranges of the curvatures as one line of JSON.\n"};
 
@@ -358,6 +362,17 @@ double vertex_area(const Mesh& mesh, Vertex_index v)
   return area;
 }
 
+// k1 >= k2 seen from the side `sign` gives (see vertex_side()): from the
+// other side of `d` they are -k2 and -k1. A vertex on no face has none (0).
+std::array<double, 2> principal_curvatures_from(const Mesh& mesh, Dart d, double sign)
+{
+  if (!d.is_valid())
+    return {0.0, 0.0};
+  const CGAL_ext::Principal_curvatures c = CGAL_ext::principal_curvatures(d, mesh);
+  return sign > 0 ? std::array<double, 2>{c.max_curvature, c.min_curvature}
+                  : std::array<double, 2>{-c.min_curvature, -c.max_curvature};
+}
+
 struct Range
 {
   double low = std::numeric_limits<double>::infinity(), high = -std::numeric_limits<double>::infinity();
@@ -381,11 +396,14 @@ int curvature(int argc, char** argv)
   auto gaussian = output_map<double>(mesh, "gaussian_curvature");
   auto norm = output_map<double>(mesh, "mean_curvature_norm");
   const bool signed_mean = !CGAL_ext::has_mobius_edges(mesh);
-  std::optional<Mesh::Property_map<Vertex_index, double>> mean;
-  if (signed_mean)
+  std::optional<Mesh::Property_map<Vertex_index, double>> mean, k1, k2;
+  if (signed_mean) {
     mean = output_map<double>(mesh, "mean_curvature");
+    k1 = output_map<double>(mesh, "max_curvature");
+    k2 = output_map<double>(mesh, "min_curvature");
+  }
   double total = 0;
-  Range gaussian_range, norm_range, mean_range;
+  Range gaussian_range, norm_range, mean_range, k1_range, k2_range;
   for (Vertex_index v : mesh.vertices()) {
     defect[v] = CGAL_ext::angle_defect(v, mesh);
     total += defect[v];
@@ -399,6 +417,11 @@ int curvature(int argc, char** argv)
       const auto [d, sign] = vertex_side(mesh, v);
       (*mean)[v] = d.is_valid() ? sign * CGAL_ext::mean_curvature(d, mesh) : 0.0;
       mean_range.add((*mean)[v]);
+      const std::array<double, 2> k = principal_curvatures_from(mesh, d, sign);
+      (*k1)[v] = k[0];
+      (*k2)[v] = k[1];
+      k1_range.add(k[0]);
+      k2_range.add(k[1]);
     }
   }
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
@@ -408,9 +431,9 @@ int curvature(int argc, char** argv)
     .add("gaussian_curvature", gaussian_range.json())
     .add("mean_curvature_norm", norm_range.json());
   if (signed_mean)
-    line.add("mean_curvature", mean_range.json());
+    line.add("max_curvature", k1_range.json()).add("min_curvature", k2_range.json()).add("mean_curvature", mean_range.json());
   else
-    line.add("mean_curvature", nullptr);
+    line.add("max_curvature", nullptr).add("min_curvature", nullptr).add("mean_curvature", nullptr);
   print_json_line(line);
   return 0;
 }

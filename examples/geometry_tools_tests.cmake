@@ -109,7 +109,7 @@ cgal_ext_tool_fails(geodesics.fails.not_ply geodesics
 
 # Gauss-Bonnet: the angle defects sum to 2π times the Euler characteristic the
 # file states, one-sided surfaces and surfaces with a border included. The
-# signed mean curvature only where there is no Möbius edge.
+# signed mean and principal curvatures only where there is no Möbius edge.
 file(GLOB _files ${_data}/*.obj)
 foreach(_file ${_files})
   get_filename_component(_name ${_file} NAME_WE)
@@ -131,7 +131,7 @@ foreach(_file ${_files})
   add_test(NAME curvature.gauss_bonnet.${_name}
     COMMAND curvature ${_file} ${_out}/curvature_${_name}.ply --triangulate)
   set_tests_properties(curvature.gauss_bonnet.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
-    "\"orientable\":${_orientable},.*\"euler_characteristic\":${_chi},\"valid\":true,.*\"total_angle_defect\":${_total},.*\"mean_curvature\":${_mean}}")
+    "\"orientable\":${_orientable},.*\"euler_characteristic\":${_chi},\"valid\":true,.*\"total_angle_defect\":${_total},.*\"max_curvature\":${_mean},\"min_curvature\":${_mean},\"mean_curvature\":${_mean}}")
 endforeach()
 
 # The torus (R = 2, r = 0.7, 24 x 12 quads, triangulated): its mean curvature
@@ -143,6 +143,18 @@ cgal_ext_compare_figures(curvature.torus_mean_curvature_outer
 cgal_ext_compare_figures(curvature.torus_mean_curvature_inner
   RUN $<TARGET_FILE:curvature> ${_data}/torus_24x12_quads.obj ${_out}/curvature_torus_inner.ply --triangulate
   FIELD mean_curvature PATTERN "\"mean_curvature\":.([-0-9.e]+)," EXPECTED 0.3296703 TOLERANCE 0.02)
+# Its principal curvatures: k1 = 1 / r = 1.4285714 everywhere (the largest
+# value checked), k2 = cos θ / (R + r cos θ), from -0.7692308 on the inner
+# equator to 0.3703704 on the outer one.
+cgal_ext_compare_figures(curvature.torus_max_curvature
+  RUN $<TARGET_FILE:curvature> ${_data}/torus_24x12_quads.obj ${_out}/curvature_torus_k1.ply --triangulate
+  FIELD max_curvature PATTERN "\"max_curvature\":.[^,]+,([-0-9.e]+)" EXPECTED 1.4285714 TOLERANCE 0.05)
+cgal_ext_compare_figures(curvature.torus_min_curvature_inner
+  RUN $<TARGET_FILE:curvature> ${_data}/torus_24x12_quads.obj ${_out}/curvature_torus_k2_inner.ply --triangulate
+  FIELD min_curvature PATTERN "\"min_curvature\":.([-0-9.e]+)," EXPECTED -0.7692308 TOLERANCE 0.05)
+cgal_ext_compare_figures(curvature.torus_min_curvature_outer
+  RUN $<TARGET_FILE:curvature> ${_data}/torus_24x12_quads.obj ${_out}/curvature_torus_k2_outer.ply --triangulate
+  FIELD min_curvature PATTERN "\"min_curvature\":.[^,]+,([-0-9.e]+)" EXPECTED 0.3703704 TOLERANCE 0.05)
 
 cgal_ext_tool_fails(curvature.fails.not_triangles curvature
   "${_data}/torus_24x12_quads.obj;${_out}/x.ply"
