@@ -20,6 +20,7 @@
 #include <CGAL_ext/merge_borders.h>
 #include <CGAL_ext/offset_mesh.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
+#include <CGAL_ext/Subdivision/limit.h>
 #include <CGAL_ext/subdivision.h>
 
 #include <CGAL/Surface_mesh.h>
@@ -435,7 +436,10 @@ struct Corner
 };
 
 // OpenSubdiv's last level's corners after `levels` steps.
-std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int levels, Face_varying_interpolation mode)
+// With `limit`, the values are their limits (PrimvarRefiner::LimitFaceVarying()
+// on the last level, which needs its full topology).
+std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int levels, Face_varying_interpolation mode,
+                                       bool limit = false)
 {
   std::vector<int> sizes, indices, uv_indices;
   for (std::size_t f = 0; f < s.faces.size(); ++f) {
@@ -465,7 +469,9 @@ std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int
   options.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(int(mode)));
   std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
     desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(type, options)));
-  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(levels));
+  Far::TopologyRefiner::UniformOptions uniform(levels);
+  uniform.fullTopologyInLastLevel = limit;
+  refiner->RefineUniform(uniform);
   Far::PrimvarRefinerReal<double> primvar(*refiner);
   std::vector<Osd_value> points, uvs;
   for (const Point& p : s.points)
@@ -478,6 +484,11 @@ std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int
     primvar.Interpolate(k, ps, pd);
     primvar.InterpolateFaceVarying(k, us, ud, 0);
     points.swap(p);
+    uvs.swap(u);
+  }
+  if (limit) {
+    std::vector<Osd_value> u(uvs.size());
+    primvar.LimitFaceVarying(uvs, u, 0);
     uvs.swap(u);
   }
   std::vector<Corner> corners;
@@ -759,6 +770,134 @@ TEST(CornerChannelsOpenSubdiv, MobiusStripWithSeam)
         worst[int(mode)] = std::max(worst[int(mode)], d);
       }
     report(quads ? "mobius (Catmull-Clark)" : "mobius (Loop)", worst);
+  }
+#endif
+}
+
+// ---- limit values of a channel (limit_corner_values())
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+// Replaces the values of "c:uv" by their limits, with the options the mesh
+// was subdivided with.
+void limit_in_place(Mesh& m, bool loop, Face_varying_interpolation mode, const Shape& s)
+{
+  const auto np = CGAL_ext::parameters::boundary_interpolation(s.boundary).face_varying_interpolation(mode);
+  if (loop)
+    S::limit_corner_values<S::Loop_mask>(m, "c:uv", np);
+  else
+    S::limit_corner_values<S::Catmull_clark_mask>(m, "c:uv", np);
+}
+
+// Our limits after 1 and 2 steps against OpenSubdiv's LimitFaceVarying() on
+// the same level, in each mode; returns the worst difference per mode. The
+// values are of the order of 1, so the difference is also relative. The
+// comparison must be able to fail: in the linear mode `all` the limits are
+// the refined values, in the others some move by more than `min_moved`.
+// `cover`: OpenSubdiv runs on the orientation double cover of `s`.
+std::array<double, 6> compare_limits(const Shape& s, const Mesh& base, bool loop, const Shape* cover = nullptr,
+                                     double min_moved = 1e-3)
+{
+  double moved_most = 0.0;
+  std::array<double, 6> worst{};
+  const Sdc::SchemeType type = loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
+  for (Face_varying_interpolation mode : all_modes)
+    for (int levels = 1; levels <= 2; ++levels) {
+      SCOPED_TRACE(std::string(mode_name(mode)) + ", levels " + std::to_string(levels));
+      Mesh m = base;
+      subdivide(m, loop, levels, mode, s);
+      const std::vector<Corner> refined = our_corners(m);
+      limit_in_place(m, loop, mode, s);
+      std::vector<Corner> ours = our_corners(m);
+      if (cover) { // each corner's twin has its value
+        const std::vector<Corner> once = ours;
+        ours.insert(ours.end(), once.begin(), once.end());
+      }
+      const double d = max_difference(ours, opensubdiv_corners(cover ? *cover : s, type, levels, mode, true));
+      EXPECT_LE(d, 1e-12);
+      worst[int(mode)] = std::max(worst[int(mode)], d);
+      double moved = 0.0;
+      for (std::size_t i = 0; i < refined.size(); ++i)
+        moved = std::max({moved, std::abs(refined[i].uv[0] - ours[i].uv[0]), std::abs(refined[i].uv[1] - ours[i].uv[1])});
+      if (mode == Face_varying_interpolation::all)
+        EXPECT_EQ(moved, 0.0);
+      else
+        moved_most = std::max(moved_most, moved);
+    }
+  EXPECT_GT(moved_most, min_moved);
+  return worst;
+}
+
+// The shapes' texture coordinates are linear on each chart, which every
+// limit rule keeps: an offset that is not (the same on both sides, by value
+// index) lets a wrong rule show.
+UV offset_of_value(std::size_t i) { return {0.01 * double(i % 7), 0.02 * double((3 * i) % 5)}; }
+
+std::array<double, 6> compare_limits_of(const std::string& name, bool loop, double min_moved = 1e-3)
+{
+  const std::string file = test::data("opensubdiv/" + name);
+  Mesh base;
+  CGAL_ext::IO::read_polygon_mesh(file, base); // values of the kernel's Point_2
+  Shape s = read_shape(file);
+  auto& values = base.corner_channel<CGAL_ext::Corner_uv<Point>>("c:uv")->values();
+  EXPECT_EQ(values.size(), s.uvs.size());
+  for (std::size_t i = 0; i < s.uvs.size(); ++i) {
+    const UV o = offset_of_value(i);
+    s.uvs[i] = {s.uvs[i][0] + o[0], s.uvs[i][1] + o[1]};
+    values[i] = {values[i].x() + o[0], values[i].y() + o[1]};
+  }
+  return compare_limits(s, base, loop, nullptr, min_moved);
+}
+
+void report_limits(const std::string& name, const std::array<double, 6>& worst)
+{
+  std::ostringstream line;
+  for (double w : worst)
+    line << " " << w;
+  std::cout << "[ max |limit ours - OpenSubdiv| per mode none..all ] " << name << ":" << line.str() << "\n";
+}
+#endif
+
+TEST(CornerChannelsOpenSubdiv, LimitsCatmullClarkShapes)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"catmark_cube.obj", "catmark_cube_corner4.obj", "catmark_chaikin1.obj",
+                           "catmark_edgecorner.obj", "catmark_nonquads.obj"}) {
+    SCOPED_TRACE(name);
+    report_limits(name, compare_limits_of(name, false));
+  }
+  // Every edge of this cube is semi-sharp through level 2, so every value is
+  // a corner or a crease of the channel, and the channel is bilinear between
+  // them: the limits move only by the crease rule's float weights
+  // (3e-8), which a corner taken for a crease, or the reverse, would miss.
+  report_limits("catmark_cube_creases1.obj", compare_limits_of("catmark_cube_creases1.obj", false, 1e-8));
+#endif
+}
+
+TEST(CornerChannelsOpenSubdiv, LimitsLoopShapes)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (const char* name : {"loop_tetrahedron.obj", "loop_icos_semisharp.obj", "loop_triangle_edgeonly.obj"}) {
+    SCOPED_TRACE(name);
+    report_limits(name, compare_limits_of(name, true));
+  }
+#endif
+}
+
+// On a Möbius strip (values of std::array<double, 2>), against OpenSubdiv on
+// its orientation double cover: each ring is gathered by darts across the
+// Möbius edges.
+TEST(CornerChannelsOpenSubdiv, LimitsMobiusStripWithSeam)
+{
+  REQUIRE_OPENSUBDIV();
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  for (bool quads : {true, false}) {
+    SCOPED_TRACE(quads ? "quads" : "triangles");
+    const Shape s = mobius_shape(quads), cover = double_cover(s);
+    const Mesh base = build(s);
+    ASSERT_GT(CGAL_ext::number_of_mobius_edges(base), 0u);
+    report_limits(quads ? "mobius (Catmull-Clark)" : "mobius (Loop)", compare_limits(s, base, !quads, &cover));
   }
 #endif
 }

@@ -42,11 +42,15 @@ constexpr bool has_limit_masks =
 // corner opposite the vertex in each face (quads), and each edge's
 // sharpness, a border edge being infinitely sharp. At a border vertex the
 // walk starts at the border, as OpenSubdiv orders a border vertex's edges.
+// The slots of the same corners (Mobius_mesh::corner()) let a mask read
+// face-varying data: an edge's far end in a face of the edge, a face's
+// opposite corner in that face.
 template <class P>
 struct Limit_ring
 {
   Vertex_index center;
   std::vector<Vertex_index> edge_ends, face_corners;
+  std::vector<Halfedge_index> edge_slots, face_slots;
   std::vector<float> edge_sharpness;
   float vertex_sharpness = 0.0f;
   Crease::Rule rule = Crease::Rule::smooth;
@@ -62,6 +66,8 @@ struct Limit_ring
     edge_ends.clear();
     face_corners.clear();
     edge_sharpness.clear();
+    edge_slots.clear();
+    face_slots.clear();
     Dart o = mesh.next(d);
     const Dart first = o;
     bool border = false;
@@ -75,6 +81,7 @@ struct Limit_ring
     do {
       add_edge(function, o, mesh, es);
       face_corners.push_back(mesh.target(mesh.next(o)));
+      face_slots.push_back(mesh.corner(mesh.next(o)));
       o = mesh.opposite(mesh.prev(o)); // the next dart leaving the vertex, around it
       if (mesh.is_border(o)) {
         add_edge(function, o, mesh, es); // the trailing border edge
@@ -93,6 +100,8 @@ struct Limit_ring
   void add_edge(const char* function, Dart o, const Mobius_mesh<P>& mesh, const EdgeSharpness& es)
   {
     edge_ends.push_back(mesh.target(o));
+    // A border dart has no corner: its edge's far end is read in the face across.
+    edge_slots.push_back(mesh.is_border(o) ? mesh.corner(mesh.prev(mesh.opposite(o))) : mesh.corner(o));
     const Edge_index e = mesh.edge(o);
     const float s = mesh.is_border(e) ? infinitely_sharp : es(e);
     if (!CGAL_ext::internal::is_valid_sharpness(s))
