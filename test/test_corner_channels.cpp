@@ -902,6 +902,144 @@ TEST(CornerChannelsOpenSubdiv, LimitsMobiusStripWithSeam)
 #endif
 }
 
+// In exact arithmetic, on a Möbius strip subdivided once: a channel without
+// a seam whose values are the points' (x, y) has the limit points' (x, y) as
+// limits, exactly (the same masks); a channel with a seam, moved by an exact
+// offset, has limits moved by it, exactly (every rule's weights sum to 1,
+// which the float weights of double do only to 3e-8); and the limits agree
+// with those computed in double, to those float weights.
+TEST(CornerChannels, LimitsExactKernel)
+{
+  using K = test::Epeck;
+  using EMesh = CGAL_ext::Mobius_mesh<K::Point_3>;
+  using P2 = K::Point_2;
+  EMesh m;
+  CGAL_ext::make_mobius_strip(m, 8, 2);
+  const auto np = CGAL_ext::parameters::number_of_iterations(1);
+  // "c:xy": one value per vertex; "c:uv": a seam where the angle wraps.
+  auto xy = m.add_corner_channel<P2>("c:xy").first;
+  auto uv = m.add_corner_channel<P2>("c:uv").first;
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    xy.add_value(P2(m.point(v).x(), m.point(v).y()));
+  // The angle around decides where the seam goes (in double: a decision, not a value).
+  auto turn = [&](CGAL_ext::Vertex_index v) {
+    return std::atan2(CGAL::to_double(m.point(v).y()), CGAL::to_double(m.point(v).x())) / (2 * M_PI) + 0.5;
+  };
+  std::map<std::pair<std::uint32_t, int>, std::uint32_t> value_of;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    double low = 1.0, high = 0.0;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, m)) {
+      low = std::min(low, turn(v));
+      high = std::max(high, turn(v));
+    }
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      const CGAL_ext::Vertex_index v = m.target(d);
+      xy.set_index(m.corner(d), v.idx());
+      const int wrapped = high - low > 0.5 && turn(v) < 0.5 ? 1 : 0;
+      auto [it, fresh] = value_of.emplace(std::make_pair(v.idx(), wrapped), 0u);
+      if (fresh)
+        it->second = uv.add_value(P2(m.point(v).z() + wrapped, m.point(v).x() * m.point(v).y()));
+      uv.set_index(m.corner(d), it->second);
+    }
+  }
+  // The same channel in double, on the same strip.
+  Mesh d;
+  CGAL_ext::make_mobius_strip(d, 8, 2);
+  auto duv = d.add_corner_channel<UV>("c:uv").first;
+  for (const P2& p : uv.values())
+    duv.add_value({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    duv.set_index(h, uv.index(h));
+  S::catmull_clark(m, np);
+  S::catmull_clark(d, np);
+  ASSERT_GT(CGAL_ext::corner_channel_summaries(m)[1].seam_edges, 0u);
+  auto sxy = *m.corner_channel<P2>("c:xy");
+  auto suv = *m.corner_channel<P2>("c:uv");
+  // The offset copy of "c:uv".
+  const K::Vector_2 t(K::FT(1) / K::FT(3), K::FT(2) / K::FT(7));
+  auto moved = m.add_corner_channel<P2>("c:moved").first;
+  for (const P2& p : suv.values())
+    moved.add_value(p + t);
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    moved.set_index(h, suv.index(h));
+  const std::vector<P2> before = suv.values();
+  S::limit_corner_values<S::Catmull_clark_mask>(m, sxy, sxy);
+  S::limit_corner_values<S::Catmull_clark_mask>(m, suv, suv);
+  S::limit_corner_values<S::Catmull_clark_mask>(m, moved, moved);
+  S::limit_corner_values<S::Catmull_clark_mask>(d, "c:uv");
+  double gap = 0.0;
+  std::size_t changed = 0;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart c : CGAL_ext::halfedges_around_face(f, m)) {
+      const K::Point_3 p = S::limit_point<S::Catmull_clark_mask>(m.target(c), m);
+      EXPECT_EQ(sxy[m.corner(c)], P2(p.x(), p.y()));
+      EXPECT_EQ(moved[m.corner(c)], suv[m.corner(c)] + t);
+      const UV& x = (*d.corner_channel<UV>("c:uv"))[d.corner(c)];
+      gap = std::max({gap, std::abs(x[0] - CGAL::to_double(suv[m.corner(c)].x())),
+                      std::abs(x[1] - CGAL::to_double(suv[m.corner(c)].y()))});
+      changed += suv[m.corner(c)] != before[suv.index(m.corner(c))] ? 1 : 0;
+    }
+  EXPECT_LE(gap, 1e-7);
+  EXPECT_GT(gap, 1e-10); // the seam's creases, weighted as OpenSubdiv does in double
+  EXPECT_GT(changed, 0u);
+}
+
+// Bad input is refused, typed, and nothing is written; a value index used
+// at several vertices gets a limit per vertex.
+TEST(CornerChannels, LimitsRefusedAndShared)
+{
+  Mesh m;
+  CGAL_ext::IO::read_polygon_mesh(test::data("opensubdiv/catmark_nonquads.obj"), m);
+  auto uv = *m.corner_channel<CGAL_ext::Corner_uv<Point>>("c:uv");
+  const auto values = uv.values();
+  EXPECT_THROW(S::limit_corner_values<S::Catmull_clark_mask>(m, "c:uv"), CGAL_ext::Parameter_error); // not quads
+  EXPECT_THROW(S::limit_corner_values<S::Loop_mask>(m, "c:uv"), CGAL_ext::Parameter_error);
+  EXPECT_EQ(uv.values(), values);
+  S::catmull_clark(m);
+  EXPECT_THROW(S::limit_corner_values<S::Catmull_clark_mask>(m, "c:st"), CGAL_ext::Parameter_error); // no such channel
+  m.add_corner_channel<int>("c:id");
+  EXPECT_THROW(S::limit_corner_values<S::Catmull_clark_mask>(m, "c:id"), CGAL_ext::Parameter_error);
+  uv = *m.corner_channel<CGAL_ext::Corner_uv<Point>>("c:uv");
+  Mesh other = m; // a channel of another mesh
+  auto foreign = *other.corner_channel<CGAL_ext::Corner_uv<Point>>("c:uv");
+  EXPECT_THROW(S::limit_corner_values<S::Catmull_clark_mask>(m, uv, foreign), CGAL_ext::Parameter_error);
+  EXPECT_THROW(S::limit_corner_values<S::Catmull_clark_mask>(m, foreign, uv), CGAL_ext::Parameter_error);
+  // A corner without a value.
+  const CGAL_ext::Halfedge_index h = m.corner(m.halfedge(CGAL_ext::Face_index(3)));
+  const std::uint32_t i = uv.index(h);
+  const auto refined = uv.values();
+  uv.set_index(h, uv.no_value());
+  EXPECT_THROW(S::limit_corner_values<S::Catmull_clark_mask>(m, "c:uv"), CGAL_ext::Parameter_error);
+  EXPECT_EQ(uv.values(), refined);
+  uv.set_index(h, i);
+  // Into another channel: the indices are the input's, the input untouched.
+  auto lim = m.add_corner_channel<CGAL_ext::Corner_uv<Point>>("c:limit").first;
+  S::limit_corner_values<S::Catmull_clark_mask>(m, uv, lim);
+  EXPECT_EQ(uv.values(), refined);
+  EXPECT_EQ(lim.number_of_values(), refined.size());
+  for (CGAL_ext::Halfedge_index g : m.halfedges())
+    EXPECT_EQ(lim.index(g), uv.index(g));
+  // Removed elements.
+  Mesh removed = m;
+  removed.remove_face(CGAL_ext::Face_index(0));
+  EXPECT_THROW(S::limit_corner_values<S::Catmull_clark_mask>(removed, "c:uv"), CGAL_ext::Parameter_error);
+  // One value for every corner: a value per vertex comes out, each the
+  // limit of a constant (the value itself, to rounding).
+  Mesh torus;
+  CGAL_ext::make_torus(torus, 6, 4, 2.0, 0.5);
+  auto one = torus.add_corner_channel<UV>("c:uv").first;
+  one.add_value({0.25, 0.75});
+  for (CGAL_ext::Halfedge_index g : torus.halfedges())
+    if (!torus.is_border(g))
+      one.set_index(g, 0);
+  S::limit_corner_values<S::Catmull_clark_mask>(torus, "c:uv");
+  EXPECT_EQ(one.number_of_values(), torus.number_of_vertices());
+  for (const UV& x : one.values()) {
+    EXPECT_NEAR(x[0], 0.25, 1e-15);
+    EXPECT_NEAR(x[1], 0.75, 1e-15);
+  }
+}
+
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL) && defined(CGAL_EXT_HAVE_OPENSUBDIV)
 // Texture coordinates as the refiner interpolates them.
 struct Vec2
