@@ -229,6 +229,27 @@ void limit_corner_values(Mobius_mesh<P>& mesh, const std::string& name, const NP
   internal::write_corner_limits<Mask>("limit_corner_values", mesh, name, np);
 }
 
+/// \ingroup PkgSubdivision
+/// \brief a corner channel through the levels of `refiner` and to the limit:
+/// `Refiner::interpolate_face_varying(mode, corners, values)`, after which
+/// each value of the last level is replaced by its limit. This is
+/// OpenSubdiv's `InterpolateFaceVarying()` at each level followed by
+/// `LimitFaceVarying()`, to the letter: the rule of each value (vertex mask,
+/// crease or corner) comes from the tags the refinement carried down the
+/// levels, which remember sharpness since spent (see
+/// `limit_corner_values()`, which reads them from a mesh as it stands).
+/// `corners` holds on return the value index of each halfedge's corner of
+/// the last level (null on the border), `values` their limits; the numbers
+/// and the weights are as `limit_corner_values()`'s.
+/// \tparam Mask `Catmull_clark_mask` or `Loop_mask`
+template <class Mask, class W, class Value>
+void limit_face_varying(const Refiner<Mask, W>& refiner, Face_varying_interpolation mode,
+                        std::vector<std::uint32_t>& corners, std::vector<Value>& values)
+{
+  static_assert(internal::has_limit_masks<Mask>, "limit masks exist for Catmull_clark_mask and Loop_mask");
+  internal::limit_face_varying(refiner, mode, corners, values);
+}
+
 } // namespace Subdivision
 } // namespace CGAL_ext
 

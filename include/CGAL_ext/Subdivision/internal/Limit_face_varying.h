@@ -103,31 +103,65 @@ struct Weighted_sum
   }
 };
 
-// The limit of each vertex value of F (F's numbering) from the channel's
-// values (indexed as `user`): a value whose topology matches its vertex's
-// takes the vertex's limit mask on the values of its ring; otherwise a value
-// tagged as a crease of the channel takes the crease rule towards the far
-// ends of the two edges that bound its span, and any other is a corner.
-template <class Mask, class W, class Value, class P, class NP>
-std::vector<Value> limit_vertex_values(const char* function, const Mobius_mesh<P>& mesh,
-                                       const Limit_settings<P, NP>& s, const Level& L, const Fvar_level& F,
-                                       const std::vector<u32>& user, const std::vector<Value>& values)
+// The ring of a vertex of a level as a limit mask reads it (Limit_ring's,
+// on a level): the corner slots that hold, in the ring's faces, the far end
+// of each edge (the trailing border edge's in the last face) and the corner
+// opposite the vertex; its rule and first two sharp edges, a border edge
+// being infinitely sharp and a border vertex of one face a corner under
+// `edge_and_corner`.
+struct Fvar_limit_ring
+{
+  Fvar_ring walk;
+  std::vector<u32> edge_slots, face_slots;
+  Crease::Rule rule = Crease::Rule::smooth;
+  unsigned crease_ends[2] = {0, 0};
+
+  void gather(const Level& L, u32 v, bool corner_if_one_face)
+  {
+    walk.walk(L, v);
+    const u32 m = walk.faces();
+    edge_slots.clear();
+    face_slots.clear();
+    unsigned sharp = 0;
+    for (u32 i = 0; i < u32(walk.edge.size()); ++i) {
+      edge_slots.push_back(i < m ? corner_slot(L, L.prev(walk.dart[i])) : corner_slot(L, L.next(walk.dart[m - 1])));
+      const u32 e = walk.edge[i];
+      if (Crease::is_sharp(is_border_edge(L, e) ? infinitely_sharp : sharpness_of_edge(L, e))) {
+        if (sharp < 2)
+          crease_ends[sharp] = i;
+        ++sharp;
+      }
+    }
+    for (u32 i = 0; i < m; ++i)
+      face_slots.push_back(corner_slot(L, L.next(L.next(walk.dart[i]))));
+    const bool corner = walk.border && corner_if_one_face && m == 1;
+    rule = Crease::vertex_rule(corner ? infinitely_sharp : sharpness_of_vertex(L, v), sharp);
+  }
+};
+
+// The limit of each vertex value of channel F on level L (F's numbering),
+// `values` indexed as F's values (F.value()): OpenSubdiv's
+// PrimvarRefiner::limitFVar(). A value whose topology matches its vertex's
+// takes the vertex's limit mask on the values of its ring; otherwise a
+// value tagged as a crease of the channel takes the crease rule towards the
+// far ends of the two edges that bound its span, and any other is a corner.
+template <class Mask, class W, class Value>
+std::vector<Value> limit_vertex_values(const Level& L, const Fvar_level& F, const std::vector<Value>& values,
+                                       bool corner_if_one_face)
 {
   std::vector<Value> out;
-  out.reserve(F.value_of.size());
-  Limit_ring<P> ring;
+  out.reserve(std::size_t(F.v_offset[L.nv]));
+  Fvar_limit_ring ring;
   Limit_mask<W> m;
-  Fvar_ring r;
   std::vector<u32> vv;
-  const auto at = [&](Halfedge_index slot) -> const Value& { return values[user[slot.idx()]]; };
+  const auto at = [&](u32 slot) -> const Value& { return values[F.value(F.corner[slot])]; };
   for (u32 v = 0; v < L.nv; ++v) {
     const u32 first = F.v_offset[v], count = F.v_offset[v + 1] - first;
     if (count == 0)
       continue;
+    ring.gather(L, v, corner_if_one_face);
     if (F.value_tag[first] == 0) {
-      ring.gather(function, CGAL_ext::internal::vertex_side_dart(Vertex_index(v), mesh), mesh, s.edge_sharpness,
-                  s.sharpness(Vertex_index(v)), s.corner_if_one_face);
-      position_mask<Mask>(ring, m);
+      position_mask<Mask>(ring.edge_slots.size(), ring.face_slots.size(), ring.rule, ring.crease_ends, m);
       // Smaller weights first, as OpenSubdiv adds them: faces, edges, vertex.
       Weighted_sum<W, Value> x;
       for (std::size_t i = 0; i < m.face.size(); ++i)
@@ -138,22 +172,49 @@ std::vector<Value> limit_vertex_values(const char* function, const Mobius_mesh<P
       out.push_back(x.sum ? *x.sum : values[F.value(first)]);
       continue;
     }
-    r.walk(L, v);
-    ring_values(L, F, r, vv);
+    ring_values(L, F, ring.walk, vv);
     for (u32 j = 0; j < count; ++j) {
       const Value& x = values[F.value(first + j)];
       if (!(F.value_tag[first + j] & Fvar_level::crease)) {
         out.push_back(x);
         continue;
       }
-      const std::pair<u32, u32> span = span_ends(F, r, vv, first + j, count);
-      const Value& a = values[F.value(F.corner[corner_slot(L, L.prev(r.dart[span.first]))])];
-      const Value& b = values[F.value(F.corner[corner_slot(L, L.next(r.dart[span.second]))])];
+      const std::pair<u32, u32> span = span_ends(F, ring.walk, vv, first + j, count);
+      const Value& a = at(corner_slot(L, L.prev(ring.walk.dart[span.first])));
+      const Value& b = at(corner_slot(L, L.next(ring.walk.dart[span.second])));
       const W we = crease_end_weight<W>();
       out.push_back(Value(Value(we * a + we * b) + crease_center_weight<W>() * x));
     }
   }
   return out;
+}
+
+// A channel through the levels of `r` and to the limit (OpenSubdiv's
+// InterpolateFaceVarying() at each level, then LimitFaceVarying()): the tags
+// that decide each value's rule are those the levels carried down, which
+// remember sharpness since spent. `corners` and `values` as
+// Refiner::interpolate_face_varying() takes them; out, the last level's
+// corners and the limits of its values.
+template <class Mask, class W, class Value>
+void limit_face_varying(const Refiner<Mask, W>& r, Face_varying_interpolation mode, std::vector<u32>& corners,
+                        std::vector<Value>& values)
+{
+  Fvar_level last;
+  interpolate_face_varying<CGAL::Sequential_tag>(r, mode, corners, values, [](u32) { return false; }, &last);
+  const Fvar_rules rules(mode, r.options().boundary_interpolation);
+  const bool corner_if_one_face = r.options().boundary_interpolation == Boundary_interpolation::edge_and_corner;
+  // The corners name vertex values (without levels, the base's values are
+  // named otherwise): the limits are numbered so.
+  if (rules.linear_all) {
+    std::vector<Value> kept;
+    kept.reserve(std::size_t(last.v_offset.back()));
+    for (u32 x = 0; x < last.v_offset.back(); ++x)
+      kept.push_back(values[last.value(x)]);
+    values.swap(kept);
+  } else {
+    values = limit_vertex_values<Mask, W>(level_of(r, r.number_of_levels()), last, values, corner_if_one_face);
+  }
+  corners.swap(last.corner);
 }
 
 // The value index of each halfedge's corner in `channel` (null on the
@@ -223,10 +284,10 @@ void write_corner_limits(const char* function, const Mobius_mesh<P>& mesh, const
     values.push_back(Linear::from(t));
   std::vector<Value> limits;
   if (rules.linear_all) { // OpenSubdiv's linear channel: every value is its own limit
-    for (u32 x = 0; x < u32(F.value_of.size()); ++x)
+    for (u32 x = 0; x < F.v_offset.back(); ++x)
       limits.push_back(values[F.value(x)]);
   } else {
-    limits = limit_vertex_values<Mask, W>(function, mesh, s, L, F, user, values);
+    limits = limit_vertex_values<Mask, W>(L, F, values, s.corner_if_one_face);
   }
 
   std::vector<T> out = from.values();

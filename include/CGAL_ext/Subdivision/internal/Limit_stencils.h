@@ -42,15 +42,11 @@ constexpr bool has_limit_masks =
 // corner opposite the vertex in each face (quads), and each edge's
 // sharpness, a border edge being infinitely sharp. At a border vertex the
 // walk starts at the border, as OpenSubdiv orders a border vertex's edges.
-// The slots of the same corners (Mobius_mesh::corner()) let a mask read
-// face-varying data: an edge's far end in a face of the edge, a face's
-// opposite corner in that face.
 template <class P>
 struct Limit_ring
 {
   Vertex_index center;
   std::vector<Vertex_index> edge_ends, face_corners;
-  std::vector<Halfedge_index> edge_slots, face_slots;
   std::vector<float> edge_sharpness;
   float vertex_sharpness = 0.0f;
   Crease::Rule rule = Crease::Rule::smooth;
@@ -66,8 +62,6 @@ struct Limit_ring
     edge_ends.clear();
     face_corners.clear();
     edge_sharpness.clear();
-    edge_slots.clear();
-    face_slots.clear();
     Dart o = mesh.next(d);
     const Dart first = o;
     bool border = false;
@@ -81,7 +75,6 @@ struct Limit_ring
     do {
       add_edge(function, o, mesh, es);
       face_corners.push_back(mesh.target(mesh.next(o)));
-      face_slots.push_back(mesh.corner(mesh.next(o)));
       o = mesh.opposite(mesh.prev(o)); // the next dart leaving the vertex, around it
       if (mesh.is_border(o)) {
         add_edge(function, o, mesh, es); // the trailing border edge
@@ -100,8 +93,6 @@ struct Limit_ring
   void add_edge(const char* function, Dart o, const Mobius_mesh<P>& mesh, const EdgeSharpness& es)
   {
     edge_ends.push_back(mesh.target(o));
-    // A border dart has no corner: its edge's far end is read in the face across.
-    edge_slots.push_back(mesh.is_border(o) ? mesh.corner(mesh.prev(mesh.opposite(o))) : mesh.corner(o));
     const Edge_index e = mesh.edge(o);
     const float s = mesh.is_border(e) ? infinitely_sharp : es(e);
     if (!CGAL_ext::internal::is_valid_sharpness(s))
@@ -151,18 +142,18 @@ W cosine(unsigned k, unsigned n)
 
 // The position masks (OpenSubdiv's assign*LimitMask), in the exact field
 // `W`: every weight of Catmull–Clark is rational, and Loop's are at valences
-// 3, 4 and 6 and on creases and corners.
-template <class Mask, class W, class P>
-void position_mask(const Limit_ring<P>& r, Limit_mask<W>& m)
+// 3, 4 and 6 and on creases and corners. Of a ring of `ne` edges and `nf`
+// faces whose vertex has rule `rule`, `crease_ends` its first two sharp edges.
+template <class Mask, class W>
+void position_mask(std::size_t ne, std::size_t nf, Crease::Rule rule, const unsigned* crease_ends, Limit_mask<W>& m)
 {
-  const std::size_t ne = r.edge_ends.size(), nf = r.face_corners.size();
   m.reset(ne, nf);
-  if (r.rule == Crease::Rule::corner || (std::is_same_v<Mask, Catmull_clark_mask> && r.rule != Crease::Rule::crease &&
-                                         nf == 2)) {
+  if (rule == Crease::Rule::corner || (std::is_same_v<Mask, Catmull_clark_mask> && rule != Crease::Rule::crease &&
+                                       nf == 2)) {
     m.vertex = W(1);
-  } else if (r.rule == Crease::Rule::crease) {
+  } else if (rule == Crease::Rule::crease) {
     m.vertex = W(2) / W(3);
-    m.edge[r.crease_ends[0]] = m.edge[r.crease_ends[1]] = W(1) / W(6);
+    m.edge[crease_ends[0]] = m.edge[crease_ends[1]] = W(1) / W(6);
   } else if constexpr (std::is_same_v<Mask, Catmull_clark_mask>) {
     const W n = W(int(nf));
     const W f = W(1) / (n * (n + W(5)));
@@ -188,6 +179,12 @@ void position_mask(const Limit_ring<P>& r, Limit_mask<W>& m)
       m.edge[i] = e;
     m.vertex = W(1) - e * W(int(n));
   }
+}
+
+template <class Mask, class W, class P>
+void position_mask(const Limit_ring<P>& r, Limit_mask<W>& m)
+{
+  position_mask<Mask>(r.edge_ends.size(), r.face_corners.size(), r.rule, r.crease_ends, m);
 }
 
 // Catmull–Clark's tangent masks (OpenSubdiv's assign*LimitTangentMasks).
