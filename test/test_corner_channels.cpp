@@ -964,19 +964,69 @@ TEST(CornerChannelsOpenSubdiv, LimitsLoopShapes)
 #endif
 }
 
-// On a Möbius strip (values of std::array<double, 2>), against OpenSubdiv on
-// its orientation double cover: each ring is gathered by darts across the
-// Möbius edges.
-TEST(CornerChannelsOpenSubdiv, LimitsMobiusStripWithSeam)
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+// A closed surface of `m` (quads, or each quad cut in two triangles) with a
+// channel of two charts, the faces on either side of the plane y = 0 (by
+// their centres), each corner's value (the angle around the z axis, z) in
+// its chart: two seams.
+Shape charted_shape(const Mesh& m, bool triangles)
+{
+  Shape s;
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    s.points.push_back(m.point(v));
+  std::map<std::pair<int, int>, int> value_of; // (vertex, chart) -> value
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::vector<int> vs;
+    double y = 0.0;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(f, m)) {
+      vs.push_back(int(v.idx()));
+      y += m.point(v).y();
+    }
+    const int chart = y < 0 ? 1 : 0;
+    auto value = [&](int v) {
+      auto [it, fresh] = value_of.emplace(std::make_pair(v, chart), int(s.uvs.size()));
+      if (fresh) {
+        const Point& p = s.points[std::size_t(v)];
+        const double turn = std::atan2(p.y(), p.x()) / (2 * M_PI);
+        s.uvs.push_back({chart == 1 && turn > 0 ? turn - 1.0 : turn, p.z() + 0.5 * chart});
+      }
+      return it->second;
+    };
+    std::vector<std::vector<int>> pieces{vs};
+    if (triangles)
+      pieces = {{vs[0], vs[1], vs[2]}, {vs[0], vs[2], vs[3]}};
+    for (const std::vector<int>& piece : pieces) {
+      std::vector<int> ft;
+      for (int v : piece)
+        ft.push_back(value(v));
+      s.faces.push_back(piece);
+      s.uv_faces.push_back(ft);
+    }
+  }
+  return s;
+}
+#endif
+
+// On one-sided surfaces (values of std::array<double, 2>), against
+// OpenSubdiv on their orientation double covers: each ring is gathered by
+// darts across the Möbius edges. A Möbius strip with one seam, and a Klein
+// bottle with two.
+TEST(CornerChannelsOpenSubdiv, LimitsOneSidedSurfaces)
 {
   REQUIRE_OPENSUBDIV();
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
+  Mesh klein;
+  CGAL_ext::make_klein_bottle(klein, 8, 6);
   for (bool quads : {true, false}) {
     SCOPED_TRACE(quads ? "quads" : "triangles");
-    const Shape s = mobius_shape(quads), cover = double_cover(s);
-    const Mesh base = build(s);
-    ASSERT_GT(CGAL_ext::number_of_mobius_edges(base), 0u);
-    report_limits(quads ? "mobius (Catmull-Clark)" : "mobius (Loop)", compare_limits(s, base, !quads, &cover));
+    const Shape strip = mobius_shape(quads), bottle = charted_shape(klein, !quads);
+    for (const Shape* s : {&strip, &bottle}) {
+      const Mesh base = build(*s);
+      ASSERT_GT(CGAL_ext::number_of_mobius_edges(base), 0u);
+      const Shape cover = double_cover(*s);
+      report_limits(std::string(s == &strip ? "mobius" : "klein") + (quads ? " (Catmull-Clark)" : " (Loop)"),
+                    compare_limits(*s, base, !quads, &cover));
+    }
   }
 #endif
 }
