@@ -883,8 +883,9 @@ Limit_gaps compare_limits(const Shape& s, const Mesh& base, bool loop, const Sha
       const std::vector<Corner> ours = our_corners(m);
       const double d = max_difference(doubled(ours), theirs);
       const bool dependent = mode == Face_varying_interpolation::corners_plus1 || mode == Face_varying_interpolation::corners_plus2;
-      if (!(mesh_history && dependent))
+      if (!(mesh_history && dependent)) {
         EXPECT_LE(d, 1e-12) << "limit_corner_values()";
+      }
       gaps.mesh[int(mode)] = std::max(gaps.mesh[int(mode)], d);
       refiner_limits(base, loop, levels, mode, s, by_refiner);
       const double e = max_difference(doubled(our_corners(by_refiner)), theirs);
@@ -1117,8 +1118,9 @@ TEST(CornerChannelsOpenSubdiv, LimitsRandomSeamsAndCreases)
       // values creases in OpenSubdiv (and the refiner's path), while the mesh
       // as it stands makes one of them a corner dependent on the other,
       // whose faces still hold a semi-sharp edge: the one case known apart.
-      if (seed == 5 && loop)
+      if (seed == 5 && loop) {
         EXPECT_GT(gaps.mesh[int(Face_varying_interpolation::corners_plus1)], 1e-3);
+      }
     }
 #endif
 }
