@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Limit positions, tangents and normals of Catmull–Clark and Loop surfaces,
-// from the limit masks of OpenSubdiv's Sdc schemes, on a mesh of any level.
+// and limit values of corner channels, from the limit masks of OpenSubdiv's
+// Sdc schemes, on a mesh of any level.
 
 #ifndef CGAL_EXT_SUBDIVISION_LIMIT_H
 #define CGAL_EXT_SUBDIVISION_LIMIT_H
@@ -167,6 +168,10 @@ void limit_normals(const Mobius_mesh<P>& mesh, VertexNormalMap limit_normals,
 /// seam or border edges that bound its faces) or a corner (kept), as the
 /// `face_varying_interpolation` mode, the mesh's creases and its borders
 /// make it; with `Face_varying_interpolation::all` every value is kept.
+/// The tags are read from `mesh` as it stands; OpenSubdiv's come down the
+/// levels of a refinement and can remember a vertex's spent sharpness under
+/// `corners_plus1` and `corners_plus2` (doc/corner_data.md, "Limit values"),
+/// which `limit_face_varying()` on a `Refiner` follows.
 ///
 /// `limits` may be `channel` itself (all values are computed first). Each
 /// corner of `limits` gets the limit of its value at its vertex: a value
