@@ -72,13 +72,14 @@ struct Fvar_ring
 {
   std::vector<u32> dart, edge;
   bool border = false;
+  std::vector<u32> all; // the walk's darts, kept to spare an allocation per vertex
 
   void walk(const Level& L, u32 v)
   {
     dart.clear();
     edge.clear();
     border = false;
-    std::vector<u32> all;
+    all.clear();
     L.for_each_dart_at(v, [&](u32 d) { all.push_back(d); });
     std::size_t first = 0;
     for (std::size_t i = 0; i < all.size(); ++i)
