@@ -4,7 +4,10 @@
 // (decimation, remeshing, offsets), and subdivision against OpenSubdiv 3.5's
 // PrimvarRefinerReal<double>::InterpolateFaceVarying in each of its six
 // linear-interpolation modes, on its own shapes and on the orientation double
-// cover of a Möbius strip; the parallel path against the serial one, bit for bit.
+// cover of a Möbius strip; the parallel path against the serial one, bit for bit;
+// limit values of a channel (limit_corner_values(), limit_face_varying())
+// against PrimvarRefinerReal<double>::LimitFaceVarying() on the same shapes,
+// random grids, a Möbius strip and a Klein bottle, and in exact arithmetic.
 #include "opensubdiv_tags.h"
 #include "test_util.h"
 
