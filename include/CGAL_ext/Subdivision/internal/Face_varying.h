@@ -72,13 +72,14 @@ struct Fvar_ring
 {
   std::vector<u32> dart, edge;
   bool border = false;
+  std::vector<u32> all; // the walk's darts, kept to spare an allocation per vertex
 
   void walk(const Level& L, u32 v)
   {
     dart.clear();
     edge.clear();
     border = false;
-    std::vector<u32> all;
+    all.clear();
     L.for_each_dart_at(v, [&](u32 d) { all.push_back(d); });
     std::size_t first = 0;
     for (std::size_t i = 0; i < all.size(); ++i)
@@ -617,11 +618,13 @@ private:
 
 // A channel through every level of `r`: `corners` (the value index of each
 // halfedge's corner of the base level, null on the border) and `values` in,
-// the same of the last level out. Under CGAL::Parallel_tag the steps of the
-// levels that `parallel(nv)` allows run on threads, with the serial result.
+// the same of the last level out, and in `last` (if given) the channel's
+// topology there, with the tags the levels carried down (the limit reads
+// them). Under CGAL::Parallel_tag the steps of the levels that
+// `parallel(nv)` allows run on threads, with the serial result.
 template <class Tag, class Refiner, class Value, class Parallel>
 void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode, std::vector<u32>& corners,
-                              std::vector<Value>& values, const Parallel& parallel)
+                              std::vector<Value>& values, const Parallel& parallel, Fvar_level* last = nullptr)
 {
   using Mask = std::decay_t<decltype(r.mask())>;
   const Fvar_rules rules(mode, r.options().boundary_interpolation);
@@ -636,6 +639,8 @@ void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode,
     std::swap(parent, child);
     values.swap(child_values);
   }
+  if (last)
+    *last = parent;
   // The last level's vertex values are its values.
   corners.swap(parent.corner);
   if (r.number_of_levels() == 0) {

@@ -142,18 +142,18 @@ W cosine(unsigned k, unsigned n)
 
 // The position masks (OpenSubdiv's assign*LimitMask), in the exact field
 // `W`: every weight of Catmull–Clark is rational, and Loop's are at valences
-// 3, 4 and 6 and on creases and corners.
-template <class Mask, class W, class P>
-void position_mask(const Limit_ring<P>& r, Limit_mask<W>& m)
+// 3, 4 and 6 and on creases and corners. Of a ring of `ne` edges and `nf`
+// faces whose vertex has rule `rule`, `crease_ends` its first two sharp edges.
+template <class Mask, class W>
+void position_mask(std::size_t ne, std::size_t nf, Crease::Rule rule, const unsigned* crease_ends, Limit_mask<W>& m)
 {
-  const std::size_t ne = r.edge_ends.size(), nf = r.face_corners.size();
   m.reset(ne, nf);
-  if (r.rule == Crease::Rule::corner || (std::is_same_v<Mask, Catmull_clark_mask> && r.rule != Crease::Rule::crease &&
-                                         nf == 2)) {
+  if (rule == Crease::Rule::corner || (std::is_same_v<Mask, Catmull_clark_mask> && rule != Crease::Rule::crease &&
+                                       nf == 2)) {
     m.vertex = W(1);
-  } else if (r.rule == Crease::Rule::crease) {
+  } else if (rule == Crease::Rule::crease) {
     m.vertex = W(2) / W(3);
-    m.edge[r.crease_ends[0]] = m.edge[r.crease_ends[1]] = W(1) / W(6);
+    m.edge[crease_ends[0]] = m.edge[crease_ends[1]] = W(1) / W(6);
   } else if constexpr (std::is_same_v<Mask, Catmull_clark_mask>) {
     const W n = W(int(nf));
     const W f = W(1) / (n * (n + W(5)));
@@ -179,6 +179,12 @@ void position_mask(const Limit_ring<P>& r, Limit_mask<W>& m)
       m.edge[i] = e;
     m.vertex = W(1) - e * W(int(n));
   }
+}
+
+template <class Mask, class W, class P>
+void position_mask(const Limit_ring<P>& r, Limit_mask<W>& m)
+{
+  position_mask<Mask>(r.edge_ends.size(), r.face_corners.size(), r.rule, r.crease_ends, m);
 }
 
 // Catmull–Clark's tangent masks (OpenSubdiv's assign*LimitTangentMasks).
