@@ -319,11 +319,13 @@ class Tessellation_against_bfr : public ::testing::TestWithParam<const char*>
 // preserved) face by face: the same number of samples and facets, each of
 // Bfr's coordinates evaluated to a sample of ours (the nearest one, within
 // 1e-10 of the size, and no two on one), and the same facets on those samples.
-TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
+template <class Surf>
+void tessellation_against_bfr(const std::string& name)
 {
-  const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
+  constexpr bool loop = std::is_same_v<Surf, Loop_surface>;
+  const Shape s = read_shape(test::data(std::string("opensubdiv/") + name + ".obj"));
   const Mesh m = build(s);
-  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
+  const Surf surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
   const double scale = largest_coordinate(m);
   for (int rate = 1; rate <= 8; ++rate) {
     const Mesh out = surface.tessellate(rate);
@@ -332,13 +334,21 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
     for (CGAL_ext::Face_index f : m.faces()) {
       Bfr::Tessellation::Options options;
       options.SetFacetSize(4).PreserveQuads(true);
-      const Bfr::Tessellation t(Bfr::Parameterization(Sdc::SCHEME_CATMARK, int(m.degree(f))), rate, options);
+      const Bfr::Tessellation t(Bfr::Parameterization(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, int(m.degree(f))), rate, options);
       ASSERT_TRUE(t.IsValid());
       std::vector<double> uv(2 * std::size_t(t.GetNumCoords()));
       t.GetCoords(uv.data());
+      // Bfr gives a triangle's coordinates i / N to float precision only (so
+      // u + v may pass 1): they are taken at the multiple of 1 / N they stand for.
+      if (loop)
+        for (double& x : uv) {
+          const double snapped = std::round(x * rate) / rate;
+          EXPECT_LE(std::abs(x - snapped), 1e-6) << name << " rate " << rate;
+          x = snapped;
+        }
       std::vector<int> facets(4 * std::size_t(t.GetNumFacets()));
       t.GetFacets(facets.data());
-      ASSERT_LE(facet + std::size_t(t.GetNumFacets()), out.number_of_faces()) << GetParam() << " rate " << rate;
+      ASSERT_LE(facet + std::size_t(t.GetNumFacets()), out.number_of_faces()) << name << " rate " << rate;
       // Our facets of f and their samples.
       std::set<std::vector<std::size_t>> ours;
       std::set<std::size_t> samples;
@@ -351,7 +361,7 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
         samples.insert(c.begin(), c.end());
       }
       facet += std::size_t(t.GetNumFacets());
-      EXPECT_EQ(samples.size(), std::size_t(t.GetNumCoords())) << GetParam() << " rate " << rate << " f" << f.idx();
+      EXPECT_EQ(samples.size(), std::size_t(t.GetNumCoords())) << name << " rate " << rate << " f" << f.idx();
       std::vector<std::size_t> match;
       for (std::size_t c = 0; c < std::size_t(t.GetNumCoords()); ++c) {
         const Point p = surface.evaluate(f, uv[2 * c], uv[2 * c + 1]).point;
@@ -366,7 +376,7 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
         match.push_back(best);
       }
       coords += match.size();
-      EXPECT_EQ(std::set<std::size_t>(match.begin(), match.end()).size(), match.size()) << GetParam() << " rate " << rate;
+      EXPECT_EQ(std::set<std::size_t>(match.begin(), match.end()).size(), match.size()) << name << " rate " << rate;
       std::set<std::vector<std::size_t>> theirs;
       for (std::size_t k = 0; k < std::size_t(t.GetNumFacets()); ++k) {
         std::vector<std::size_t> c;
@@ -376,14 +386,16 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
         std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
         theirs.insert(c);
       }
-      EXPECT_EQ(ours, theirs) << GetParam() << " rate " << rate << " f" << f.idx();
+      EXPECT_EQ(ours, theirs) << name << " rate " << rate << " f" << f.idx();
     }
-    EXPECT_EQ(facet, out.number_of_faces()) << GetParam() << " rate " << rate;
-    EXPECT_LE(worst, 1e-10 * scale) << GetParam() << " rate " << rate;
-    RecordProperty(std::string("rate") + std::to_string(rate) + "_position", std::to_string(worst / scale));
+    EXPECT_EQ(facet, out.number_of_faces()) << name << " rate " << rate;
+    EXPECT_LE(worst, 1e-10 * scale) << name << " rate " << rate;
+    ::testing::Test::RecordProperty(std::string("rate") + std::to_string(rate) + "_position", std::to_string(worst / scale));
     (void)coords;
   }
 }
+
+TEST_P(Tessellation_against_bfr, SameSamplesAndFacets) { tessellation_against_bfr<Surface>(GetParam()); }
 
 // Quads, borders and corners, n-gons, triangles.
 INSTANTIATE_TEST_SUITE_P(Shapes, Tessellation_against_bfr,
@@ -937,10 +949,55 @@ TEST(Limit_surface, LoopRefusesWhatItCannotEvaluate)
   const Loop_surface surface(m);
   EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), 0.75, 0.5), CGAL_ext::Parameter_error);
   EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), -0.25, 0.5), CGAL_ext::Parameter_error);
-  EXPECT_THROW(surface.tessellate(2), CGAL_ext::Parameter_error);
+  EXPECT_THROW(surface.tessellate(0), CGAL_ext::Parameter_error);
   EXPECT_THROW(surface.closest_point(Point(0, 0, 0)), CGAL_ext::Parameter_error);
   const Mesh quads = torus<Point>(4, 4, points);
   EXPECT_THROW(Loop_surface{quads}, CGAL_ext::Parameter_error);
+}
+
+// Watertight: a valid mesh of the same Euler characteristic, borders and
+// orientability, with V + E (N - 1) + F (N - 1)(N - 2) / 2 samples (no
+// room for duplicates), unit normals but at base vertices, and at rate 1
+// the base vertices' limit points (limit_point() where no semi-sharpness
+// is left, exactly).
+TEST(Limit_surface, LoopTessellationIsWatertight)
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3, 1, 1.0, 0.5, false);
+  meshes.emplace_back("mobius_strip", strip);
+  std::vector<Point> points;
+  meshes.emplace_back("triangle_torus", triangle_torus<Point>(5, 6, points));
+  for (const char* name : {"loop_tetrahedron", "loop_icos_semisharp", "loop_triangle_edgeonly"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  for (const auto& [name, m] : meshes) {
+    const Loop_surface surface(m);
+    for (std::size_t N = 1; N <= 5; ++N) {
+      const Mesh out = surface.tessellate(int(N));
+      EXPECT_TRUE(out.is_valid()) << name << " rate " << N;
+      EXPECT_EQ(out.number_of_faces(), m.number_of_faces() * N * N) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::euler_characteristic(out), CGAL_ext::euler_characteristic(m)) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::number_of_border_cycles(out), CGAL_ext::number_of_border_cycles(m)) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::is_orientable(out), CGAL_ext::is_orientable(m)) << name << " rate " << N;
+      EXPECT_EQ(out.number_of_vertices(),
+                m.number_of_vertices() + m.number_of_edges() * (N - 1) + m.number_of_faces() * (N - 1) * (N - 2) / 2)
+        << name << " rate " << N;
+      const auto normals = out.property_map<CGAL_ext::Vertex_index, K::Vector_3>("v:normal");
+      ASSERT_TRUE(normals.has_value()) << name;
+      for (CGAL_ext::Vertex_index v : out.vertices()) {
+        const double length = std::sqrt((*normals)[v].squared_length());
+        if (length == 0)
+          EXPECT_LT(v.idx(), m.number_of_vertices()) << name << " rate " << N;
+        else
+          EXPECT_NEAR(length, 1.0, 1e-12) << name << " rate " << N;
+      }
+      if (N == 1)
+        for (CGAL_ext::Vertex_index v : m.vertices())
+          if (!semi_sharp_at(m, v))
+            EXPECT_EQ(out.point(v), S::limit_point<S::Loop_mask>(v, m)) << name << " v" << v.idx();
+    }
+  }
+  EXPECT_EQ(S::tessellate<S::Loop_mask>(strip, 2).points().data(), Loop_surface(strip).tessellate(2).points().data());
 }
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
@@ -1030,6 +1087,14 @@ TEST(Limit_surface, RegularLoopTorusAgainstBfr)
   EXPECT_LE(d.second, 1e-12 * scale);
   record(d, scale);
 }
+class Loop_tessellation_against_bfr : public ::testing::TestWithParam<const char*>
+{};
+
+TEST_P(Loop_tessellation_against_bfr, SameSamplesAndFacets) { tessellation_against_bfr<Loop_surface>(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(Shapes, Loop_tessellation_against_bfr,
+                         ::testing::Values("loop_tetrahedron", "loop_triangle_edgeonly"));
+
 // A Möbius strip of triangles (valence 6 inside, regular and irregular
 // border vertices) against Bfr on its orientation double cover.
 TEST(Limit_surface, LoopMobiusStripAgainstBfrOnItsDoubleCover)

@@ -131,7 +131,7 @@ struct Limit_surface_location
 /// (the middle one turned half a turn, as in Bfr's patch tree), down to the
 /// same levels, and an irregular triangle at the last level is OpenSubdiv's
 /// 18-point quartic Gregory triangle, built as its `Far::LoopPatchBuilder`
-/// builds it. `tessellate()` and `closest_point()` are Catmull–Clark only.
+/// builds it. `closest_point()` is Catmull–Clark only.
 ///
 /// On a one-sided surface every neighbourhood is gathered by darts, so a
 /// patch across a Möbius edge is the patch of the orientation double cover;
@@ -304,9 +304,13 @@ public:
   /// sub-face meeting at the centre; at an odd rate a strip of M quads joins
   /// neighbouring sub-faces, and the centre is a triangle (n = 3) or a fan of
   /// n triangles round the face's centre point (so `rate` 1 fans an n-gon).
+  /// Under `Loop_mask` a triangle becomes `rate`² triangles, sample (i, j)
+  /// at parameter (i / rate, j / rate), i + j ≤ `rate` (Bfr's layout of a
+  /// triangle).
   ///
   /// Shared samples are computed once: the limit point of each base vertex
-  /// (`limit_point()` where all faces around it are quads, else the
+  /// (`limit_point()` where all faces around it are quads, or under
+  /// `Loop_mask` where no semi-sharpness is left at it, else the
   /// evaluation at the corner of the first face that reaches it), the
   /// `rate` − 1 samples inside each base edge (evaluated from the first face
   /// that reaches it, reused in reverse order by the face across, in the
@@ -323,25 +327,38 @@ public:
   /// for each halfedge of a face the normal at its target seen from that
   /// face's orientation (as `compute_corner_normals()` writes them), which
   /// is what a renderer wants on a one-sided surface.
-  /// \throws Parameter_error if `rate` is not positive, or for a Loop surface
-  /// (not available yet).
+  /// \throws Parameter_error if `rate` is not positive.
   Mobius_mesh<P> tessellate(int rate) const
   {
-    if constexpr (is_loop)
-      throw Parameter_error("Limit_surface::tessellate: not available for Loop surfaces");
     if (rate < 1)
       throw Parameter_error("Limit_surface::tessellate: the rate " + std::to_string(rate) + " is not positive");
     const auto& m = base_.mesh;
     const auto np = CGAL_ext::parameters::boundary_interpolation(options_.boundary);
-    // limit_point() reads quad rings only; elsewhere the corner evaluation
-    // is Bfr's limit point of the vertex.
-    const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
-      for (Face_index g : CGAL_ext::faces_around_target(m.halfedge(v), m))
-        if (g != Face_index() && m.degree(g) != 4)
+    if constexpr (is_loop) {
+      // limit_point() takes a semi-sharp vertex's crease or corner rule at
+      // once; the surface reaches its limit after the sharpness has decayed,
+      // which the corner evaluation gives.
+      const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+        if (Crease::is_semi_sharp(base_.vertex_sharpness(v)))
           return evaluated;
-      return P(limit_point<Catmull_clark_mask>(v, m, np));
-    };
-    return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point).run();
+        for (Dart d : CGAL_ext::halfedges_around_target(m.halfedge(v), m))
+          if (Crease::is_semi_sharp(base_.edge_sharpness(d)))
+            return evaluated;
+        return P(limit_point<Loop_mask>(v, m, np));
+      };
+      return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point, true)
+        .run();
+    } else {
+      // limit_point() reads quad rings only; elsewhere the corner evaluation
+      // is Bfr's limit point of the vertex.
+      const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+        for (Face_index g : CGAL_ext::faces_around_target(m.halfedge(v), m))
+          if (g != Face_index() && m.degree(g) != 4)
+            return evaluated;
+        return P(limit_point<Catmull_clark_mask>(v, m, np));
+      };
+      return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point).run();
+    }
   }
 
 private:
@@ -443,8 +460,8 @@ private:
 };
 
 /// \ingroup PkgSubdivision
-/// \brief the limit surface of `mesh` under `Mask` (`Catmull_clark_mask`)
-/// tessellated uniformly at `rate` samples per base edge:
+/// \brief the limit surface of `mesh` under `Mask` (`Catmull_clark_mask` or
+/// `Loop_mask`) tessellated uniformly at `rate` samples per base edge:
 /// `Limit_surface<Mask, P>(mesh, np, options).tessellate(rate)` (see there
 /// for the layout, the watertightness and the normals).
 /// \throws Parameter_error as the constructor of `Limit_surface` and
