@@ -629,13 +629,15 @@ std::vector<std::pair<std::string, Mesh>> projection_shapes()
 // near irregular vertices they are Bfr's (those of the Bezier patch that the
 // blended points make), which differ by up to a few percent. Only a
 // parameter inside a sub-face, clear of its sides, is told.
-bool derivatives_are_exact(const Surface& surface, CGAL_ext::Face_index f, int sides, double u, double v)
+template <class Surf>
+bool derivatives_are_exact(const Surf& surface, CGAL_ext::Face_index f, int sides, double u, double v)
 {
   const double step = 1e-6, half = sides == 4 ? 1.0 : 0.5;
   const double su = std::fmod(u, half), sv = std::fmod(v, half);
-  if (su < 1e-4 || sv < 1e-4 || su > half - 1e-4 || sv > half - 1e-4)
+  if (std::is_same_v<Surf, Loop_surface> ? (u < 1e-4 || v < 1e-4 || u + v > 1 - 1e-4)
+                                          : (su < 1e-4 || sv < 1e-4 || su > half - 1e-4 || sv > half - 1e-4))
     return false;
-  const Surface::Evaluation e = surface.evaluate(f, u, v);
+  const typename Surf::Evaluation e = surface.evaluate(f, u, v);
   const K::Vector_3 du = (surface.evaluate(f, u + step, v).point - surface.evaluate(f, u - step, v).point) / (2 * step);
   const K::Vector_3 dv = (surface.evaluate(f, u, v + step).point - surface.evaluate(f, u, v - step).point) / (2 * step);
   return std::sqrt((du - e.du).squared_length()) <= 1e-6 * std::sqrt(e.du.squared_length()) &&
@@ -648,16 +650,17 @@ bool derivatives_are_exact(const Surface& surface, CGAL_ext::Face_index f, int s
 // normal is Bfr's approximation (Gregory patches), the foot moves by a
 // little: the point found is then no farther than the push and close to
 // the point pushed.
-TEST(Limit_surface, ClosestPointFindsTheFootOfTheNormal)
+template <class Surf>
+void closest_point_finds_the_foot_of_the_normal(const std::vector<std::pair<std::string, Mesh>>& shapes)
 {
-  for (const auto& [name, m] : projection_shapes()) {
-    const Surface surface(m);
+  for (const auto& [name, m] : shapes) {
+    const Surf surface(m);
     const double scale = largest_coordinate(m), h = 1e-3 * scale;
     double worst = 0, worst_approximate = 0;
     std::size_t exact = 0;
     for (CGAL_ext::Face_index f : m.faces())
-      for (const auto& uv : parameter_grid(int(m.degree(f)), 5)) {
-        const Surface::Evaluation e = surface.evaluate(f, uv[0], uv[1]);
+      for (const auto& uv : std::is_same_v<Surf, Loop_surface> ? triangle_grid(5) : parameter_grid(int(m.degree(f)), 5)) {
+        const typename Surf::Evaluation e = surface.evaluate(f, uv[0], uv[1]);
         if (e.normal == CGAL::NULL_VECTOR)
           continue;
         const bool on_patch = derivatives_are_exact(surface, f, int(m.degree(f)), uv[0], uv[1]);
@@ -681,18 +684,24 @@ TEST(Limit_surface, ClosestPointFindsTheFootOfTheNormal)
     std::ostringstream figures;
     figures << std::scientific << std::setprecision(1) << worst / scale << " of the size; " << worst_approximate / h
             << " of the push near Gregory patches";
-    RecordProperty("foot_" + name, figures.str());
+    ::testing::Test::RecordProperty("foot_" + name, figures.str());
   }
+}
+
+TEST(Limit_surface, ClosestPointFindsTheFootOfTheNormal)
+{
+  closest_point_finds_the_foot_of_the_normal<Surface>(projection_shapes());
 }
 
 // Against brute force: no sample of a fine tessellation is closer to a
 // query than the point found; where the derivatives are the positions'
 // and the point is inside a sub-face, the offset is normal to the surface.
-TEST(Limit_surface, ClosestPointIsNoFartherThanAnySample)
+template <class Surf>
+void closest_point_is_no_farther_than_any_sample(const std::vector<std::pair<std::string, Mesh>>& shapes)
 {
   CGAL::Random random(7);
-  for (const auto& [name, m] : projection_shapes()) {
-    const Surface surface(m);
+  for (const auto& [name, m] : shapes) {
+    const Surf surface(m);
     const Mesh fine = surface.tessellate(24);
     const double scale = largest_coordinate(m);
     std::size_t stationary = 0;
@@ -707,15 +716,20 @@ TEST(Limit_surface, ClosestPointIsNoFartherThanAnySample)
       const double u = CGAL::to_double(found.u), v = CGAL::to_double(found.v);
       if (!derivatives_are_exact(surface, found.face, int(m.degree(found.face)), u, v))
         continue;
-      const Surface::Evaluation e = surface.evaluate(found.face, u, v);
+      const typename Surf::Evaluation e = surface.evaluate(found.face, u, v);
       const K::Vector_3 r = q - found.point;
       const double length = std::sqrt(r.squared_length());
       EXPECT_LE(std::abs(r * e.du) / (length * std::sqrt(e.du.squared_length())), 1e-9) << name << " query " << i;
       EXPECT_LE(std::abs(r * e.dv) / (length * std::sqrt(e.dv.squared_length())), 1e-9) << name << " query " << i;
       ++stationary;
     }
-    RecordProperty("stationary_" + name, std::to_string(stationary));
+    ::testing::Test::RecordProperty("stationary_" + name, std::to_string(stationary));
   }
+}
+
+TEST(Limit_surface, ClosestPointIsNoFartherThanAnySample)
+{
+  closest_point_is_no_farther_than_any_sample<Surface>(projection_shapes());
 }
 
 TEST(Limit_surface, ClosestPointFromSeveralThreads)
@@ -950,7 +964,7 @@ TEST(Limit_surface, LoopRefusesWhatItCannotEvaluate)
   EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), 0.75, 0.5), CGAL_ext::Parameter_error);
   EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), -0.25, 0.5), CGAL_ext::Parameter_error);
   EXPECT_THROW(surface.tessellate(0), CGAL_ext::Parameter_error);
-  EXPECT_THROW(surface.closest_point(Point(0, 0, 0)), CGAL_ext::Parameter_error);
+  EXPECT_THROW(Loop_surface(Mesh()).closest_point(Point(0, 0, 0)), CGAL_ext::Parameter_error);
   const Mesh quads = torus<Point>(4, 4, points);
   EXPECT_THROW(Loop_surface{quads}, CGAL_ext::Parameter_error);
 }
@@ -998,6 +1012,29 @@ TEST(Limit_surface, LoopTessellationIsWatertight)
     }
   }
   EXPECT_EQ(S::tessellate<S::Loop_mask>(strip, 2).points().data(), Loop_surface(strip).tessellate(2).points().data());
+}
+
+// The shapes the Loop projection tests walk: one-sided (with regular
+// triangles inside), valence 3, borders and corners.
+std::vector<std::pair<std::string, Mesh>> loop_projection_shapes()
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3, 1, 1.0, 0.5, false);
+  meshes.emplace_back("mobius_strip", strip);
+  for (const char* name : {"loop_tetrahedron", "loop_triangle_edgeonly"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  return meshes;
+}
+
+TEST(Limit_surface, LoopClosestPointFindsTheFootOfTheNormal)
+{
+  closest_point_finds_the_foot_of_the_normal<Loop_surface>(loop_projection_shapes());
+}
+
+TEST(Limit_surface, LoopClosestPointIsNoFartherThanAnySample)
+{
+  closest_point_is_no_farther_than_any_sample<Loop_surface>(loop_projection_shapes());
 }
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV

@@ -54,7 +54,8 @@ struct Limit_surface_options
   /// Samples per base edge of the search structure that
   /// `Limit_surface::closest_point()` starts from (a quad is sampled on a
   /// grid of this many cells a side, each sub-face of another face on half
-  /// as many): more makes the structure larger and the search try fewer
+  /// as many, a triangle of a Loop surface on a triangular grid of this many
+  /// cells a side): more makes the structure larger and the search try fewer
   /// faces; the result does not depend on it where the closest point is unique.
   unsigned projection_rate = 4;
 };
@@ -131,7 +132,7 @@ struct Limit_surface_location
 /// (the middle one turned half a turn, as in Bfr's patch tree), down to the
 /// same levels, and an irregular triangle at the last level is OpenSubdiv's
 /// 18-point quartic Gregory triangle, built as its `Far::LoopPatchBuilder`
-/// builds it. `closest_point()` is Catmull–Clark only.
+/// builds it.
 ///
 /// On a one-sided surface every neighbourhood is gathered by darts, so a
 /// patch across a Möbius edge is the patch of the orientation double cover;
@@ -204,7 +205,8 @@ public:
   }
 
   /// \brief the limit surface at parameter (`u`, `v`) of face `f` (see the
-  /// class for the parameterisation).
+  /// class for the parameterisation; for a Loop triangle in a floating-point
+  /// kernel, u + v may pass 1 by rounding, up to 4e-16).
   /// \throws Parameter_error if `f` is not a face of the mesh or (`u`, `v`)
   /// lies outside its parameter domain.
   Evaluation evaluate(Face_index f, const FT& u, const FT& v) const
@@ -251,7 +253,9 @@ public:
   /// several threads may ask at once); it gives a start in each face that
   /// comes near the query, from which Newton's method on the surface's first
   /// and second derivatives, held inside the face's parameter domain (each
-  /// sub-face's, for a face that is not a quad), finds the nearest point;
+  /// sub-face's, for a face that is not a quad; under `Loop_mask` the
+  /// triangle u, v ≥ 0, u + v ≤ 1, its long side held as the others), finds
+  /// the nearest point;
   /// the nearest of those is returned. So the result is the closest point
   /// wherever a start lies in its basin, which the sampling ensures where the
   /// query is nearer the surface than its curvature radius; a query
@@ -263,10 +267,9 @@ public:
   /// \throws Parameter_error if the mesh has no face.
   Location closest_point(const P& query) const
   {
-    if constexpr (is_loop)
-      throw Parameter_error("Limit_surface::closest_point: not available for Loop surfaces");
     std::call_once(*projection_once_, [&] {
-      projection_ = std::make_unique<internal::Limit_projection<Limit_surface>>(*this, base_.mesh, projection_rate_);
+      projection_ =
+        std::make_unique<internal::Limit_projection<Limit_surface>>(*this, base_.mesh, projection_rate_, is_loop);
     });
     if (projection_->empty())
       throw Parameter_error("Limit_surface::closest_point: the mesh has no face");
@@ -410,7 +413,10 @@ private:
   Evaluation evaluate_triangle(Face_index f, const std::vector<internal::Patch<FT>>& patches, const FT& u,
                                const FT& v) const
   {
-    if (u < FT(0) || v < FT(0) || u + v > FT(1))
+    // In floating point, u + v may pass 1 by rounding (1 - t and t summed).
+    const FT excess = u + v - FT(1);
+    const bool beyond = excess > FT(0) && !(std::is_floating_point_v<FT> && CGAL::to_double(excess) <= 4e-16);
+    if (u < FT(0) || v < FT(0) || beyond)
       throw Parameter_error("Limit_surface::evaluate: (u, v) lies outside the parameter domain of face f" +
                             std::to_string(f.idx()));
     unsigned depth = 0;
