@@ -1061,7 +1061,7 @@ INSTANTIATE_TEST_SUITE_P(Shapes, Loop_against_bfr,
 // A bumpy triangulated grid with a border: regular border vertices (three
 // faces), corners of one and of two faces, an interior vertex of valence 5
 // and one of 7, under both boundary rules, and with an infinitely sharp and
-// a semi-sharp crease.
+// a semi-sharp crease under both crease methods.
 TEST(Limit_surface, LoopGridAgainstBfr)
 {
   const int n = 6;
@@ -1086,7 +1086,8 @@ TEST(Limit_surface, LoopGridAgainstBfr)
   CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
   const double scale = largest_coordinate(m);
   for (auto boundary : {CGAL_ext::Boundary_interpolation::edge_only, CGAL_ext::Boundary_interpolation::edge_and_corner})
-    for (int creased = 0; creased < 2; ++creased) {
+    for (int creased = 0; creased < 3; ++creased) { // none; uniform; Chaikin
+      const auto method = creased == 2 ? CGAL_ext::Crease_method::chaikin : CGAL_ext::Crease_method::uniform;
       Mesh c = m;
       if (creased) {
         auto es = c.add_property_map<CGAL_ext::Edge_index, float>("e:sharpness", 0.0f).first;
@@ -1094,17 +1095,17 @@ TEST(Limit_surface, LoopGridAgainstBfr)
           const auto a = c.vertex(e, 0).idx(), b = c.vertex(e, 1).idx();
           if (a / (n + 1) == 4 && b / (n + 1) == 4) // the row j = 4: infinitely sharp
             es[e] = 10.0f;
-          if (a % (n + 1) == 1 && b % (n + 1) == 1 && a / (n + 1) < 3 && b / (n + 1) < 3) // a semi-sharp column
-            es[e] = 1.5f;
+          if (a % (n + 1) == 1 && b % (n + 1) == 1 && a / (n + 1) < 3 && b / (n + 1) < 3) // a semi-sharp column, 1.5 then 2.5
+            es[e] = 1.5f + float(std::min(a, b) / (n + 1));
         }
       }
-      const Loop_surface surface(c, CGAL_ext::parameters::boundary_interpolation(boundary));
-      const Differences d = against_bfr_on_mesh(c, surface, boundary, CGAL_ext::Crease_method::uniform);
+      const Loop_surface surface(c, CGAL_ext::parameters::boundary_interpolation(boundary).crease_method(method));
+      const Differences d = against_bfr_on_mesh(c, surface, boundary, method);
       EXPECT_LE(d.position, 1e-10 * scale) << int(boundary) << creased;
       EXPECT_LE(d.first, 1e-10 * scale) << int(boundary) << creased;
       EXPECT_LE(d.second_up_to_sign, 1e-9 * scale) << int(boundary) << creased;
       const std::string what = std::string(boundary == CGAL_ext::Boundary_interpolation::edge_only ? "edge_only" : "edge_and_corner") +
-                               (creased ? "_creased" : "");
+                               (creased == 1 ? "_creased" : creased == 2 ? "_creased_chaikin" : "");
       RecordProperty(what + "_position", sci(d.position / scale));
       RecordProperty(what + "_first", sci(d.first / scale));
       RecordProperty(what + "_second", sci(d.second_up_to_sign / scale));
