@@ -1007,8 +1007,9 @@ TEST(Limit_surface, LoopTessellationIsWatertight)
       }
       if (N == 1)
         for (CGAL_ext::Vertex_index v : m.vertices())
-          if (!semi_sharp_at(m, v))
+          if (!semi_sharp_at(m, v)) {
             EXPECT_EQ(out.point(v), S::limit_point<S::Loop_mask>(v, m)) << name << " v" << v.idx();
+          }
     }
   }
   EXPECT_EQ(S::tessellate<S::Loop_mask>(strip, 2).points().data(), Loop_surface(strip).tessellate(2).points().data());
