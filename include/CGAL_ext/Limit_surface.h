@@ -492,7 +492,7 @@ closest_point_on_limit(const Limit_surface<Mask, P>& surface, const P& query)
 
 /// \ingroup PkgSubdivision
 /// \brief the point of the limit surface of `mesh` under `Mask`
-/// (`Catmull_clark_mask`) closest to `query`:
+/// (`Catmull_clark_mask` or `Loop_mask`) closest to `query`:
 /// `Limit_surface<Mask, P>(mesh, np, options).closest_point(query)`.
 /// \throws Parameter_error as the constructor of `Limit_surface` and
 /// `Limit_surface::closest_point()`.
