@@ -1,9 +1,9 @@
-// The limit surface at any point: against OpenSubdiv 3.5's Bfr (surface
-// factory on a Far refiner, same options) at a grid of parameters in every
-// face of its regression shapes; against the closed-form bicubic B-spline on
-// a regular torus, in double and exactly with rationals; against
-// limit_point() at the corners; and a Möbius strip against Bfr on its
-// orientation double cover.
+// The limit surface at any point, Catmull–Clark and Loop: against
+// OpenSubdiv 3.5's Bfr (surface factory on a Far refiner, same options) at a
+// grid of parameters in every face of its regression shapes; against the
+// closed-form bicubic B-spline (quartic box spline) on a regular torus, in
+// double and exactly with rationals; against limit_point() at the corners;
+// and a Möbius strip against Bfr on its orientation double cover.
 #include "opensubdiv_tags.h"
 #include "test_util.h"
 
@@ -34,6 +34,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace limit_surface_tests {
@@ -45,6 +46,7 @@ using K = test::Kd;
 using Point = K::Point_3;
 using Mesh = CGAL_ext::Mobius_mesh<Point>;
 using Surface = S::Limit_surface<S::Catmull_clark_mask, Point>;
+using Loop_surface = S::Limit_surface<S::Loop_mask, Point>;
 
 // An OBJ file with OpenSubdiv's tags.
 struct Shape : test::Osd_tags
@@ -84,6 +86,14 @@ double largest_coordinate(const Mesh& m)
   return b;
 }
 
+// A figure for the test report, in scientific notation.
+std::string sci(double x)
+{
+  std::ostringstream o;
+  o << std::scientific << std::setprecision(1) << x;
+  return o.str();
+}
+
 double gap(const K::Vector_3& a, const double b[3])
 {
   return std::max({std::abs(a.x() - b[0]), std::abs(a.y() - b[1]), std::abs(a.z() - b[2])});
@@ -110,6 +120,16 @@ std::vector<std::array<double, 2>> parameter_grid(int n, int k)
   return uv;
 }
 
+// The parameters (i / k, j / k), i + j <= k, of a triangle (Loop).
+std::vector<std::array<double, 2>> triangle_grid(int k)
+{
+  std::vector<std::array<double, 2>> uv;
+  for (int i = 0; i <= k; ++i)
+    for (int j = 0; i + j <= k; ++j)
+      uv.push_back({double(i) / k, double(j) / k});
+  return uv;
+}
+
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
 namespace Far = OpenSubdiv::Far;
 namespace Bfr = OpenSubdiv::Bfr;
@@ -118,17 +138,24 @@ namespace Sdc = OpenSubdiv::Sdc;
 struct Differences
 {
   double position = 0, first = 0, second = 0;
+  // Loop: OpenSubdiv 3.5's EvaluatePatchBasis scales the second derivatives
+  // of a sub-triangle turned half a turn (the middle child of a triangle) by
+  // -(2^depth)² instead of (2^depth)², so Bfr's second derivatives there
+  // have the wrong sign; this compares them up to sign.
+  double second_up_to_sign = 0;
 };
 
 // Bfr on the faces, creases and corners of `faces` / the maps of `m`
 // (which share the vertex numbering), against `surface` on the faces of `m`:
-// `face_of(f)` is the face of the reference standing for f.
-template <class FaceOf>
-Differences against_bfr(const Mesh& m, const Surface& surface, const std::vector<std::vector<int>>& faces,
+// `face_of(f)` is the face of the reference standing for f. The scheme is
+// that of the surface.
+template <class Surf, class FaceOf>
+Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<std::vector<int>>& faces,
                         const std::vector<Point>& points, const std::vector<std::array<int, 2>>& creases,
                         const std::vector<float>& crease_values, CGAL_ext::Boundary_interpolation boundary,
                         CGAL_ext::Crease_method method, const FaceOf& face_of)
 {
+  constexpr bool loop = std::is_same_v<Surf, Loop_surface>;
   std::vector<int> sizes, indices, crease_indices, corner_indices;
   std::vector<float> corner_values;
   for (const auto& f : faces) {
@@ -157,7 +184,7 @@ Differences against_bfr(const Mesh& m, const Surface& surface, const std::vector
   const Sdc::Options options = test::opensubdiv_options(boundary, method);
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
-    Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
+    Factory::Create(desc, Factory::Options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, options)));
   Bfr::RefinerSurfaceFactory<> factory(*refiner); // approxLevelSmooth 2, approxLevelSharp 6
   std::vector<double> xyz;
   for (const Point& p : points)
@@ -168,13 +195,17 @@ Differences against_bfr(const Mesh& m, const Surface& surface, const std::vector
     EXPECT_TRUE(factory.InitVertexSurface(face_of(f), &bfr));
     std::vector<double> patch_points(std::size_t(bfr.GetNumPatchPoints()) * 3);
     bfr.PreparePatchPoints(xyz.data(), 3, patch_points.data(), 3);
-    for (const auto& uv : parameter_grid(int(m.degree(f)), 8)) {
+    for (const auto& uv : loop ? triangle_grid(8) : parameter_grid(int(m.degree(f)), 8)) {
       double p[3], du[3], dv[3], duu[3], duv[3], dvv[3];
       bfr.Evaluate(uv.data(), patch_points.data(), 3, p, du, dv, duu, duv, dvv);
       const auto r = surface.evaluate(f, uv[0], uv[1]);
       d.position = std::max(d.position, gap(r.point - CGAL::ORIGIN, p));
       d.first = std::max({d.first, gap(r.du, du), gap(r.dv, dv)});
       d.second = std::max({d.second, gap(r.duu, duu), gap(r.duv, duv), gap(r.dvv, dvv)});
+      const double negated[3][3] = {{-duu[0], -duu[1], -duu[2]}, {-duv[0], -duv[1], -duv[2]}, {-dvv[0], -dvv[1], -dvv[2]}};
+      d.second_up_to_sign = std::max(
+        d.second_up_to_sign, std::min(std::max({gap(r.duu, duu), gap(r.duv, duv), gap(r.dvv, dvv)}),
+                                      std::max({gap(r.duu, negated[0]), gap(r.duv, negated[1]), gap(r.dvv, negated[2])})));
     }
   }
   return d;
@@ -183,13 +214,12 @@ Differences against_bfr(const Mesh& m, const Surface& surface, const std::vector
 class Against_bfr : public ::testing::TestWithParam<const char*>
 {};
 
-TEST_P(Against_bfr, PositionsAndDerivatives)
+// Bfr on the faces of `m` as the mesh walks them, with every edge's
+// sharpness from the mesh's map (so that both see the same creases).
+template <class Surf>
+Differences against_bfr_on_mesh(const Mesh& m, const Surf& surface, CGAL_ext::Boundary_interpolation boundary,
+                                CGAL_ext::Crease_method method)
 {
-  const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
-  const Mesh m = build(s);
-  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
-  // The reference reads the faces as the mesh walks them, and every edge's
-  // sharpness from the mesh's map (so that both see the same creases).
   std::vector<std::vector<int>> faces;
   for (CGAL_ext::Face_index f : m.faces()) {
     faces.emplace_back();
@@ -198,21 +228,35 @@ TEST_P(Against_bfr, PositionsAndDerivatives)
   }
   std::vector<std::array<int, 2>> creases;
   std::vector<float> values;
-  const auto es = *m.property_map<CGAL_ext::Edge_index, float>("e:sharpness");
-  for (CGAL_ext::Edge_index e : m.edges())
-    if (es[e] > 0 && !m.is_border(e)) {
-      creases.push_back({int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
-      values.push_back(es[e]);
-    }
-  const Differences d = against_bfr(m, surface, faces, m.points().data(), creases, values, s.boundary, s.crease_method,
-                                    [](CGAL_ext::Face_index f) { return int(f.idx()); });
+  if (const auto es = m.property_map<CGAL_ext::Edge_index, float>("e:sharpness"))
+    for (CGAL_ext::Edge_index e : m.edges())
+      if ((*es)[e] > 0 && !m.is_border(e)) {
+        creases.push_back({int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
+        values.push_back((*es)[e]);
+      }
+  return against_bfr(m, surface, faces, m.points().data(), creases, values, boundary, method,
+                     [](CGAL_ext::Face_index f) { return int(f.idx()); });
+}
+
+void record(const Differences& d, double scale)
+{
+  ::testing::Test::RecordProperty("position", sci(d.position / scale));
+  ::testing::Test::RecordProperty("first_derivatives", sci(d.first / scale));
+  ::testing::Test::RecordProperty("second_derivatives", sci(d.second / scale));
+  ::testing::Test::RecordProperty("second_derivatives_up_to_sign", sci(d.second_up_to_sign / scale));
+}
+
+TEST_P(Against_bfr, PositionsAndDerivatives)
+{
+  const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
+  const Mesh m = build(s);
+  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
+  const Differences d = against_bfr_on_mesh(m, surface, s.boundary, s.crease_method);
   const double scale = largest_coordinate(m);
   EXPECT_LE(d.position, 1e-10 * scale) << GetParam();
   EXPECT_LE(d.first, 1e-10 * scale) << GetParam();
   EXPECT_LE(d.second, 1e-9 * scale) << GetParam();
-  RecordProperty("position", std::to_string(d.position / scale));
-  RecordProperty("first_derivatives", std::to_string(d.first / scale));
-  RecordProperty("second_derivatives", std::to_string(d.second / scale));
+  record(d, scale);
 }
 
 // Regular and extraordinary, closed and bordered, quads and n-gons, semi-sharp
@@ -222,14 +266,12 @@ INSTANTIATE_TEST_SUITE_P(Shapes, Against_bfr,
                                            "catmark_edgecorner", "catmark_nonquads", "catmark_pole64",
                                            "catmark_torus_creases1", "catmark_smoothtris1"));
 
-// A Möbius strip evaluated as Bfr evaluates its orientation double cover:
+// A one-sided mesh evaluated as Bfr evaluates its orientation double cover:
 // each face twice (once reversed), vertex v doubled into 2v and 2v + 1, the
 // copy of a face taken on the sheet its darts give each of its corners.
-TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
+template <class Surf>
+Differences against_bfr_on_double_cover(const Mesh& m, const Surf& surface)
 {
-  Mesh m;
-  CGAL_ext::make_mobius_strip(m, 12, 3);
-  const Surface surface(m);
   std::vector<Point> points;
   for (const Point& p : m.points().data()) {
     points.push_back(p);
@@ -254,9 +296,15 @@ TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
         std::reverse(face.begin(), face.end());
       faces.push_back(face);
     }
-  const Differences d =
-    against_bfr(m, surface, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
-                CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()); });
+  return against_bfr(m, surface, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
+                     CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()); });
+}
+
+TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3);
+  const Differences d = against_bfr_on_double_cover(m, Surface(m));
   const double scale = largest_coordinate(m);
   EXPECT_LE(d.position, 1e-10 * scale);
   EXPECT_LE(d.first, 1e-10 * scale);
@@ -271,11 +319,13 @@ class Tessellation_against_bfr : public ::testing::TestWithParam<const char*>
 // preserved) face by face: the same number of samples and facets, each of
 // Bfr's coordinates evaluated to a sample of ours (the nearest one, within
 // 1e-10 of the size, and no two on one), and the same facets on those samples.
-TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
+template <class Surf>
+void tessellation_against_bfr(const std::string& name)
 {
-  const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
+  constexpr bool loop = std::is_same_v<Surf, Loop_surface>;
+  const Shape s = read_shape(test::data(std::string("opensubdiv/") + name + ".obj"));
   const Mesh m = build(s);
-  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
+  const Surf surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
   const double scale = largest_coordinate(m);
   for (int rate = 1; rate <= 8; ++rate) {
     const Mesh out = surface.tessellate(rate);
@@ -284,13 +334,21 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
     for (CGAL_ext::Face_index f : m.faces()) {
       Bfr::Tessellation::Options options;
       options.SetFacetSize(4).PreserveQuads(true);
-      const Bfr::Tessellation t(Bfr::Parameterization(Sdc::SCHEME_CATMARK, int(m.degree(f))), rate, options);
+      const Bfr::Tessellation t(Bfr::Parameterization(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, int(m.degree(f))), rate, options);
       ASSERT_TRUE(t.IsValid());
       std::vector<double> uv(2 * std::size_t(t.GetNumCoords()));
       t.GetCoords(uv.data());
+      // Bfr gives a triangle's coordinates i / N to float precision only (so
+      // u + v may pass 1): they are taken at the multiple of 1 / N they stand for.
+      if (loop)
+        for (double& x : uv) {
+          const double snapped = std::round(x * rate) / rate;
+          EXPECT_LE(std::abs(x - snapped), 1e-6) << name << " rate " << rate;
+          x = snapped;
+        }
       std::vector<int> facets(4 * std::size_t(t.GetNumFacets()));
       t.GetFacets(facets.data());
-      ASSERT_LE(facet + std::size_t(t.GetNumFacets()), out.number_of_faces()) << GetParam() << " rate " << rate;
+      ASSERT_LE(facet + std::size_t(t.GetNumFacets()), out.number_of_faces()) << name << " rate " << rate;
       // Our facets of f and their samples.
       std::set<std::vector<std::size_t>> ours;
       std::set<std::size_t> samples;
@@ -303,7 +361,7 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
         samples.insert(c.begin(), c.end());
       }
       facet += std::size_t(t.GetNumFacets());
-      EXPECT_EQ(samples.size(), std::size_t(t.GetNumCoords())) << GetParam() << " rate " << rate << " f" << f.idx();
+      EXPECT_EQ(samples.size(), std::size_t(t.GetNumCoords())) << name << " rate " << rate << " f" << f.idx();
       std::vector<std::size_t> match;
       for (std::size_t c = 0; c < std::size_t(t.GetNumCoords()); ++c) {
         const Point p = surface.evaluate(f, uv[2 * c], uv[2 * c + 1]).point;
@@ -318,7 +376,7 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
         match.push_back(best);
       }
       coords += match.size();
-      EXPECT_EQ(std::set<std::size_t>(match.begin(), match.end()).size(), match.size()) << GetParam() << " rate " << rate;
+      EXPECT_EQ(std::set<std::size_t>(match.begin(), match.end()).size(), match.size()) << name << " rate " << rate;
       std::set<std::vector<std::size_t>> theirs;
       for (std::size_t k = 0; k < std::size_t(t.GetNumFacets()); ++k) {
         std::vector<std::size_t> c;
@@ -328,14 +386,16 @@ TEST_P(Tessellation_against_bfr, SameSamplesAndFacets)
         std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
         theirs.insert(c);
       }
-      EXPECT_EQ(ours, theirs) << GetParam() << " rate " << rate << " f" << f.idx();
+      EXPECT_EQ(ours, theirs) << name << " rate " << rate << " f" << f.idx();
     }
-    EXPECT_EQ(facet, out.number_of_faces()) << GetParam() << " rate " << rate;
-    EXPECT_LE(worst, 1e-10 * scale) << GetParam() << " rate " << rate;
-    RecordProperty(std::string("rate") + std::to_string(rate) + "_position", std::to_string(worst / scale));
+    EXPECT_EQ(facet, out.number_of_faces()) << name << " rate " << rate;
+    EXPECT_LE(worst, 1e-10 * scale) << name << " rate " << rate;
+    ::testing::Test::RecordProperty(std::string("rate") + std::to_string(rate) + "_position", std::to_string(worst / scale));
     (void)coords;
   }
 }
+
+TEST_P(Tessellation_against_bfr, SameSamplesAndFacets) { tessellation_against_bfr<Surface>(GetParam()); }
 
 // Quads, borders and corners, n-gons, triangles.
 INSTANTIATE_TEST_SUITE_P(Shapes, Tessellation_against_bfr,
@@ -569,13 +629,15 @@ std::vector<std::pair<std::string, Mesh>> projection_shapes()
 // near irregular vertices they are Bfr's (those of the Bezier patch that the
 // blended points make), which differ by up to a few percent. Only a
 // parameter inside a sub-face, clear of its sides, is told.
-bool derivatives_are_exact(const Surface& surface, CGAL_ext::Face_index f, int sides, double u, double v)
+template <class Surf>
+bool derivatives_are_exact(const Surf& surface, CGAL_ext::Face_index f, int sides, double u, double v)
 {
   const double step = 1e-6, half = sides == 4 ? 1.0 : 0.5;
   const double su = std::fmod(u, half), sv = std::fmod(v, half);
-  if (su < 1e-4 || sv < 1e-4 || su > half - 1e-4 || sv > half - 1e-4)
+  if (std::is_same_v<Surf, Loop_surface> ? (u < 1e-4 || v < 1e-4 || u + v > 1 - 1e-4)
+                                          : (su < 1e-4 || sv < 1e-4 || su > half - 1e-4 || sv > half - 1e-4))
     return false;
-  const Surface::Evaluation e = surface.evaluate(f, u, v);
+  const typename Surf::Evaluation e = surface.evaluate(f, u, v);
   const K::Vector_3 du = (surface.evaluate(f, u + step, v).point - surface.evaluate(f, u - step, v).point) / (2 * step);
   const K::Vector_3 dv = (surface.evaluate(f, u, v + step).point - surface.evaluate(f, u, v - step).point) / (2 * step);
   return std::sqrt((du - e.du).squared_length()) <= 1e-6 * std::sqrt(e.du.squared_length()) &&
@@ -588,16 +650,17 @@ bool derivatives_are_exact(const Surface& surface, CGAL_ext::Face_index f, int s
 // normal is Bfr's approximation (Gregory patches), the foot moves by a
 // little: the point found is then no farther than the push and close to
 // the point pushed.
-TEST(Limit_surface, ClosestPointFindsTheFootOfTheNormal)
+template <class Surf>
+void closest_point_finds_the_foot_of_the_normal(const std::vector<std::pair<std::string, Mesh>>& shapes)
 {
-  for (const auto& [name, m] : projection_shapes()) {
-    const Surface surface(m);
+  for (const auto& [name, m] : shapes) {
+    const Surf surface(m);
     const double scale = largest_coordinate(m), h = 1e-3 * scale;
     double worst = 0, worst_approximate = 0;
     std::size_t exact = 0;
     for (CGAL_ext::Face_index f : m.faces())
-      for (const auto& uv : parameter_grid(int(m.degree(f)), 5)) {
-        const Surface::Evaluation e = surface.evaluate(f, uv[0], uv[1]);
+      for (const auto& uv : std::is_same_v<Surf, Loop_surface> ? triangle_grid(5) : parameter_grid(int(m.degree(f)), 5)) {
+        const typename Surf::Evaluation e = surface.evaluate(f, uv[0], uv[1]);
         if (e.normal == CGAL::NULL_VECTOR)
           continue;
         const bool on_patch = derivatives_are_exact(surface, f, int(m.degree(f)), uv[0], uv[1]);
@@ -621,18 +684,24 @@ TEST(Limit_surface, ClosestPointFindsTheFootOfTheNormal)
     std::ostringstream figures;
     figures << std::scientific << std::setprecision(1) << worst / scale << " of the size; " << worst_approximate / h
             << " of the push near Gregory patches";
-    RecordProperty("foot_" + name, figures.str());
+    ::testing::Test::RecordProperty("foot_" + name, figures.str());
   }
+}
+
+TEST(Limit_surface, ClosestPointFindsTheFootOfTheNormal)
+{
+  closest_point_finds_the_foot_of_the_normal<Surface>(projection_shapes());
 }
 
 // Against brute force: no sample of a fine tessellation is closer to a
 // query than the point found; where the derivatives are the positions'
 // and the point is inside a sub-face, the offset is normal to the surface.
-TEST(Limit_surface, ClosestPointIsNoFartherThanAnySample)
+template <class Surf>
+void closest_point_is_no_farther_than_any_sample(const std::vector<std::pair<std::string, Mesh>>& shapes)
 {
   CGAL::Random random(7);
-  for (const auto& [name, m] : projection_shapes()) {
-    const Surface surface(m);
+  for (const auto& [name, m] : shapes) {
+    const Surf surface(m);
     const Mesh fine = surface.tessellate(24);
     const double scale = largest_coordinate(m);
     std::size_t stationary = 0;
@@ -647,15 +716,20 @@ TEST(Limit_surface, ClosestPointIsNoFartherThanAnySample)
       const double u = CGAL::to_double(found.u), v = CGAL::to_double(found.v);
       if (!derivatives_are_exact(surface, found.face, int(m.degree(found.face)), u, v))
         continue;
-      const Surface::Evaluation e = surface.evaluate(found.face, u, v);
+      const typename Surf::Evaluation e = surface.evaluate(found.face, u, v);
       const K::Vector_3 r = q - found.point;
       const double length = std::sqrt(r.squared_length());
       EXPECT_LE(std::abs(r * e.du) / (length * std::sqrt(e.du.squared_length())), 1e-9) << name << " query " << i;
       EXPECT_LE(std::abs(r * e.dv) / (length * std::sqrt(e.dv.squared_length())), 1e-9) << name << " query " << i;
       ++stationary;
     }
-    RecordProperty("stationary_" + name, std::to_string(stationary));
+    ::testing::Test::RecordProperty("stationary_" + name, std::to_string(stationary));
   }
+}
+
+TEST(Limit_surface, ClosestPointIsNoFartherThanAnySample)
+{
+  closest_point_is_no_farther_than_any_sample<Surface>(projection_shapes());
 }
 
 TEST(Limit_surface, ClosestPointFromSeveralThreads)
@@ -714,6 +788,389 @@ TEST(Limit_surface, ClosestPointInAnExactKernel)
   }
   EXPECT_THROW(Surface(Mesh()).closest_point(Point(0, 0, 0)), CGAL_ext::Parameter_error);
 }
+
+// ---- Loop ----
+
+// A torus of 2 nu nv triangles, every vertex of valence 6, with rational
+// coordinates: the quads of torus() split along (i + 1, j) - (i, j + 1), so
+// that grid steps (1, 0), (0, 1), (-1, 1) are the edges.
+template <class P>
+CGAL_ext::Mobius_mesh<P> triangle_torus(int nu, int nv, std::vector<P>& points)
+{
+  points.clear();
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j)
+      points.emplace_back(i * 4 + (j % 3), j * 5 - (i % 2), (i * j) % 7);
+  std::vector<std::vector<std::size_t>> faces;
+  auto id = [&](int i, int j) { return std::size_t(((i + nu) % nu) * nv + (j + nv) % nv); };
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+      faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  CGAL_ext::Mobius_mesh<P> m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
+  return m;
+}
+
+// Stam's quartic box-spline basis in barycentric coordinates (a, b, c of
+// the triangle's corners 0, 1, 2): the function of the point over a corner,
+// of the point across an edge, and of a far point near corner `a` on the
+// side of `b`.
+template <class FT>
+FT stam_corner(const FT& a, const FT& b, const FT& c)
+{
+  auto p = [](const FT& x, int k) { FT r(1); for (int i = 0; i < k; ++i) r *= x; return r; };
+  return (p(b, 4) + 6 * p(b, 3) * c + 8 * p(b, 3) * a + 36 * p(b, 2) * c * a + 24 * p(b, 2) * p(a, 2) +
+          24 * b * p(a, 3) + p(c, 4) + 6 * p(c, 3) * b + 8 * p(c, 3) * a + 36 * p(c, 2) * b * a +
+          24 * p(c, 2) * p(a, 2) + 24 * c * p(a, 3) + 6 * p(a, 4) + 60 * p(a, 2) * b * c + 12 * p(b, 2) * p(c, 2)) /
+         FT(12);
+}
+template <class FT>
+FT stam_edge(const FT& a, const FT& b, const FT& c)
+{
+  auto p = [](const FT& x, int k) { FT r(1); for (int i = 0; i < k; ++i) r *= x; return r; };
+  return (p(a, 4) + 2 * p(a, 3) * c + 6 * p(a, 3) * b + 6 * p(a, 2) * b * c + 12 * p(a, 2) * p(b, 2) + p(b, 4) +
+          2 * p(b, 3) * c + 6 * p(b, 3) * a + 6 * p(b, 2) * a * c) /
+         FT(12);
+}
+template <class FT>
+FT stam_far(const FT& a, const FT& b)
+{
+  return (a * a * a * a + 2 * a * a * a * b) / FT(12);
+}
+
+// The closed form at (u, v) of a triangle of triangle_torus(): the twelve
+// lattice points around it, each at P0 + x (P1 - P0) + y (P2 - P0) on the
+// grid, weighted by Stam's functions of the barycentric coordinates.
+template <class P, class FT>
+P box_spline_closed_form(const CGAL_ext::Mobius_mesh<P>& m, CGAL_ext::Face_index f, int nu, int nv, const FT& u,
+                         const FT& v)
+{
+  std::vector<std::array<int, 2>> c;
+  for (CGAL_ext::Vertex_index x : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+    c.push_back({int(x.idx()) / nv, int(x.idx()) % nv});
+  auto step = [](int d, int n) { d = ((d % n) + n) % n; return d > n / 2 ? d - n : d; };
+  const std::array<int, 2> e1{step(c[1][0] - c[0][0], nu), step(c[1][1] - c[0][1], nv)};
+  const std::array<int, 2> e2{step(c[2][0] - c[0][0], nu), step(c[2][1] - c[0][1], nv)};
+  const FT a = FT(1) - u - v, b = u, cc = v;
+  const struct
+  {
+    int x, y;
+    FT w;
+  } terms[12] = {{0, 0, stam_corner(a, b, cc)},  {1, 0, stam_corner(b, cc, a)},  {0, 1, stam_corner(cc, a, b)},
+                 {1, -1, stam_edge(a, b, cc)},   {1, 1, stam_edge(b, cc, a)},    {-1, 1, stam_edge(cc, a, b)},
+                 {0, -1, stam_far(a, b)},        {-1, 0, stam_far(a, cc)},       {2, 0, stam_far(b, cc)},
+                 {2, -1, stam_far(b, a)},        {-1, 2, stam_far(cc, a)},       {0, 2, stam_far(cc, b)}};
+  FT x(0), y(0), z(0);
+  for (const auto& t : terms) {
+    const int i = c[0][0] + t.x * e1[0] + t.y * e2[0], j = c[0][1] + t.x * e1[1] + t.y * e2[1];
+    const P& p = m.point(CGAL_ext::Vertex_index(std::size_t(((i % nu) + nu) % nu * nv + ((j % nv) + nv) % nv)));
+    x += t.w * p.x();
+    y += t.w * p.y();
+    z += t.w * p.z();
+  }
+  return P(x, y, z);
+}
+
+TEST(Limit_surface, RegularLoopTorusIsTheBoxSpline)
+{
+  std::vector<Point> points;
+  const Mesh m = triangle_torus<Point>(6, 7, points);
+  const Loop_surface surface(m);
+  const double scale = largest_coordinate(m);
+  double worst = 0;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    EXPECT_EQ(surface.number_of_patches(f), 1u);
+    for (const auto& uv : triangle_grid(6)) {
+      const Point a = surface.evaluate(f, uv[0], uv[1]).point;
+      const Point b = box_spline_closed_form(m, f, 6, 7, uv[0], uv[1]);
+      worst = std::max(worst, std::sqrt(CGAL::squared_distance(a, b)));
+    }
+  }
+  EXPECT_LE(worst, 1e-14 * scale);
+  RecordProperty("position", sci(worst / scale));
+}
+
+TEST(Limit_surface, RegularLoopTorusIsExactWithRationals)
+{
+  using Kq = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  using Pq = Kq::Point_3;
+  std::vector<Pq> points;
+  const CGAL_ext::Mobius_mesh<Pq> m = triangle_torus<Pq>(5, 6, points);
+  const S::Limit_surface<S::Loop_mask, Pq> surface(m);
+  for (CGAL_ext::Face_index f : m.faces())
+    for (const auto& uv : {std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(1, 3), CGAL::Gmpq(2, 7)},
+                           std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(0), CGAL::Gmpq(1)},
+                           std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(5, 9), CGAL::Gmpq(1, 3)}})
+      EXPECT_EQ(surface.evaluate(f, uv[0], uv[1]).point, box_spline_closed_form(m, f, 5, 6, uv[0], uv[1]));
+}
+
+// Whether v or an edge at it is semi-sharp: limit_point() then takes the
+// crease or corner rule at once, where the surface reaches it only after
+// the sharpness has decayed.
+bool semi_sharp_at(const Mesh& m, CGAL_ext::Vertex_index v)
+{
+  auto semi = [](float s) { return s > 0 && s < 10; };
+  if (const auto vs = m.property_map<CGAL_ext::Vertex_index, float>("v:sharpness"); vs && semi((*vs)[v]))
+    return true;
+  if (const auto es = m.property_map<CGAL_ext::Edge_index, float>("e:sharpness"))
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(v, m))
+      if (semi((*es)[m.edge(d)]))
+        return true;
+  return false;
+}
+
+// At the corners of a triangle, the limit position of the vertex there
+// (where no semi-sharpness is left to decay).
+TEST(Limit_surface, LoopCornersAreLimitPoints)
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  std::vector<Point> points;
+  meshes.emplace_back("triangle_torus", triangle_torus<Point>(6, 7, points));
+  for (const char* name : {"loop_tetrahedron", "loop_icos_semisharp", "loop_triangle_edgeonly"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  for (const auto& [name, m] : meshes)
+    for (auto boundary : {CGAL_ext::Boundary_interpolation::edge_only, CGAL_ext::Boundary_interpolation::edge_and_corner}) {
+      const auto np = CGAL_ext::parameters::boundary_interpolation(boundary);
+      const Loop_surface surface(m, np);
+      double worst = 0;
+      std::size_t compared = 0;
+      for (CGAL_ext::Face_index f : m.faces()) {
+        std::vector<CGAL_ext::Vertex_index> c;
+        for (CGAL_ext::Vertex_index x : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+          c.push_back(x);
+        const double uv[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+        for (std::size_t k = 0; k < 3; ++k) {
+          if (semi_sharp_at(m, c[k]))
+            continue;
+          const Point a = surface.evaluate(f, uv[k][0], uv[k][1]).point;
+          const Point b = S::limit_point<S::Loop_mask>(c[k], m, np);
+          worst = std::max(worst, std::sqrt(CGAL::squared_distance(a, b)));
+          ++compared;
+        }
+      }
+      EXPECT_LE(worst, 1e-14 * largest_coordinate(m)) << name;
+      EXPECT_GT(compared, m.number_of_faces()) << name;
+      RecordProperty("corners_" + name, sci(worst / largest_coordinate(m)));
+    }
+}
+
+TEST(Limit_surface, LoopRefusesWhatItCannotEvaluate)
+{
+  std::vector<Point> points;
+  const Mesh m = triangle_torus<Point>(5, 5, points);
+  const Loop_surface surface(m);
+  EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), 0.75, 0.5), CGAL_ext::Parameter_error);
+  EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), -0.25, 0.5), CGAL_ext::Parameter_error);
+  EXPECT_THROW(surface.tessellate(0), CGAL_ext::Parameter_error);
+  EXPECT_THROW(Loop_surface(Mesh()).closest_point(Point(0, 0, 0)), CGAL_ext::Parameter_error);
+  const Mesh quads = torus<Point>(4, 4, points);
+  EXPECT_THROW(Loop_surface{quads}, CGAL_ext::Parameter_error);
+}
+
+// Watertight: a valid mesh of the same Euler characteristic, borders and
+// orientability, with V + E (N - 1) + F (N - 1)(N - 2) / 2 samples (no
+// room for duplicates), unit normals but at base vertices, and at rate 1
+// the base vertices' limit points (limit_point() where no semi-sharpness
+// is left, exactly).
+TEST(Limit_surface, LoopTessellationIsWatertight)
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3, 1, 1.0, 0.5, false);
+  meshes.emplace_back("mobius_strip", strip);
+  std::vector<Point> points;
+  meshes.emplace_back("triangle_torus", triangle_torus<Point>(5, 6, points));
+  for (const char* name : {"loop_tetrahedron", "loop_icos_semisharp", "loop_triangle_edgeonly"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  for (const auto& [name, m] : meshes) {
+    const Loop_surface surface(m);
+    for (std::size_t N = 1; N <= 5; ++N) {
+      const Mesh out = surface.tessellate(int(N));
+      EXPECT_TRUE(out.is_valid()) << name << " rate " << N;
+      EXPECT_EQ(out.number_of_faces(), m.number_of_faces() * N * N) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::euler_characteristic(out), CGAL_ext::euler_characteristic(m)) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::number_of_border_cycles(out), CGAL_ext::number_of_border_cycles(m)) << name << " rate " << N;
+      EXPECT_EQ(CGAL_ext::is_orientable(out), CGAL_ext::is_orientable(m)) << name << " rate " << N;
+      EXPECT_EQ(out.number_of_vertices(),
+                m.number_of_vertices() + m.number_of_edges() * (N - 1) + m.number_of_faces() * (N - 1) * (N - 2) / 2)
+        << name << " rate " << N;
+      const auto normals = out.property_map<CGAL_ext::Vertex_index, K::Vector_3>("v:normal");
+      ASSERT_TRUE(normals.has_value()) << name;
+      for (CGAL_ext::Vertex_index v : out.vertices()) {
+        const double length = std::sqrt((*normals)[v].squared_length());
+        if (length == 0)
+          EXPECT_LT(v.idx(), m.number_of_vertices()) << name << " rate " << N;
+        else
+          EXPECT_NEAR(length, 1.0, 1e-12) << name << " rate " << N;
+      }
+      if (N == 1)
+        for (CGAL_ext::Vertex_index v : m.vertices())
+          if (!semi_sharp_at(m, v)) {
+            EXPECT_EQ(out.point(v), S::limit_point<S::Loop_mask>(v, m)) << name << " v" << v.idx();
+          }
+    }
+  }
+  EXPECT_EQ(S::tessellate<S::Loop_mask>(strip, 2).points().data(), Loop_surface(strip).tessellate(2).points().data());
+}
+
+// The shapes the Loop projection tests walk: one-sided (with regular
+// triangles inside), valence 3, borders and corners.
+std::vector<std::pair<std::string, Mesh>> loop_projection_shapes()
+{
+  std::vector<std::pair<std::string, Mesh>> meshes;
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3, 1, 1.0, 0.5, false);
+  meshes.emplace_back("mobius_strip", strip);
+  for (const char* name : {"loop_tetrahedron", "loop_triangle_edgeonly"})
+    meshes.emplace_back(name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))));
+  return meshes;
+}
+
+TEST(Limit_surface, LoopClosestPointFindsTheFootOfTheNormal)
+{
+  closest_point_finds_the_foot_of_the_normal<Loop_surface>(loop_projection_shapes());
+}
+
+TEST(Limit_surface, LoopClosestPointIsNoFartherThanAnySample)
+{
+  closest_point_is_no_farther_than_any_sample<Loop_surface>(loop_projection_shapes());
+}
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+class Loop_against_bfr : public ::testing::TestWithParam<const char*>
+{};
+
+TEST_P(Loop_against_bfr, PositionsAndDerivatives)
+{
+  const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
+  const Mesh m = build(s);
+  const Loop_surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
+  const Differences d = against_bfr_on_mesh(m, surface, s.boundary, s.crease_method);
+  const double scale = largest_coordinate(m);
+  EXPECT_LE(d.position, 1e-10 * scale) << GetParam();
+  EXPECT_LE(d.first, 1e-10 * scale) << GetParam();
+  EXPECT_LE(d.second_up_to_sign, 1e-9 * scale) << GetParam();
+  record(d, scale);
+}
+
+// Valence 3 everywhere; valence 5 with semi-sharp creases; borders.
+INSTANTIATE_TEST_SUITE_P(Shapes, Loop_against_bfr,
+                         ::testing::Values("loop_tetrahedron", "loop_icos_semisharp", "loop_triangle_edgeonly"));
+
+// A bumpy triangulated grid with a border: regular border vertices (three
+// faces), corners of one and of two faces, an interior vertex of valence 5
+// and one of 7, under both boundary rules, and with an infinitely sharp and
+// a semi-sharp crease under both crease methods.
+TEST(Limit_surface, LoopGridAgainstBfr)
+{
+  const int n = 6;
+  std::vector<Point> points;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      points.emplace_back(i + 0.1 * (j % 2), j, 0.3 * std::sin(i * 1.3 + j * 0.7));
+  auto id = [&](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  std::vector<std::vector<std::size_t>> faces;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      // One quad split the other way: valences 5 and 7 next to each other.
+      if (i == 3 && j == 2) {
+        faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      } else {
+        faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    }
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m);
+  const double scale = largest_coordinate(m);
+  for (auto boundary : {CGAL_ext::Boundary_interpolation::edge_only, CGAL_ext::Boundary_interpolation::edge_and_corner})
+    for (int creased = 0; creased < 3; ++creased) { // none; uniform; Chaikin
+      const auto method = creased == 2 ? CGAL_ext::Crease_method::chaikin : CGAL_ext::Crease_method::uniform;
+      Mesh c = m;
+      if (creased) {
+        auto es = c.add_property_map<CGAL_ext::Edge_index, float>("e:sharpness", 0.0f).first;
+        for (CGAL_ext::Edge_index e : c.edges()) {
+          const auto a = c.vertex(e, 0).idx(), b = c.vertex(e, 1).idx();
+          if (a / (n + 1) == 4 && b / (n + 1) == 4) // the row j = 4: infinitely sharp
+            es[e] = 10.0f;
+          if (a % (n + 1) == 1 && b % (n + 1) == 1 && a / (n + 1) < 3 && b / (n + 1) < 3) // a semi-sharp column, 1.5 then 2.5
+            es[e] = 1.5f + float(std::min(a, b) / (n + 1));
+        }
+      }
+      const Loop_surface surface(c, CGAL_ext::parameters::boundary_interpolation(boundary).crease_method(method));
+      const Differences d = against_bfr_on_mesh(c, surface, boundary, method);
+      EXPECT_LE(d.position, 1e-10 * scale) << int(boundary) << creased;
+      EXPECT_LE(d.first, 1e-10 * scale) << int(boundary) << creased;
+      EXPECT_LE(d.second_up_to_sign, 1e-9 * scale) << int(boundary) << creased;
+      const std::string what = std::string(boundary == CGAL_ext::Boundary_interpolation::edge_only ? "edge_only" : "edge_and_corner") +
+                               (creased == 1 ? "_creased" : creased == 2 ? "_creased_chaikin" : "");
+      RecordProperty(what + "_position", sci(d.position / scale));
+      RecordProperty(what + "_first", sci(d.first / scale));
+      RecordProperty(what + "_second", sci(d.second_up_to_sign / scale));
+    }
+}
+
+TEST(Limit_surface, RegularLoopTorusAgainstBfr)
+{
+  std::vector<Point> points;
+  const Mesh m = triangle_torus<Point>(6, 7, points);
+  const Loop_surface surface(m);
+  const Differences d = against_bfr_on_mesh(m, surface, CGAL_ext::Boundary_interpolation::edge_only,
+                                            CGAL_ext::Crease_method::uniform);
+  const double scale = largest_coordinate(m);
+  EXPECT_LE(d.position, 1e-12 * scale);
+  EXPECT_LE(d.first, 1e-12 * scale);
+  EXPECT_LE(d.second, 1e-12 * scale);
+  record(d, scale);
+}
+class Loop_tessellation_against_bfr : public ::testing::TestWithParam<const char*>
+{};
+
+TEST_P(Loop_tessellation_against_bfr, SameSamplesAndFacets) { tessellation_against_bfr<Loop_surface>(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(Shapes, Loop_tessellation_against_bfr,
+                         ::testing::Values("loop_tetrahedron", "loop_triangle_edgeonly"));
+
+// A Möbius strip of triangles (valence 6 inside, regular and irregular
+// border vertices) against Bfr on its orientation double cover.
+TEST(Limit_surface, LoopMobiusStripAgainstBfrOnItsDoubleCover)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3, 1, 1.0, 0.5, false);
+  ASSERT_FALSE(CGAL_ext::is_orientable(m));
+  const Differences d = against_bfr_on_double_cover(m, Loop_surface(m));
+  const double scale = largest_coordinate(m);
+  EXPECT_LE(d.position, 1e-10 * scale);
+  EXPECT_LE(d.first, 1e-10 * scale);
+  EXPECT_LE(d.second_up_to_sign, 1e-9 * scale);
+  record(d, scale);
+}
+
+// Our second derivatives are those of our first derivatives (which agree
+// with Bfr's) on the box-spline middle child of each triangle of the
+// tetrahedron (turned half a turn, where Bfr's have the other sign).
+TEST(Limit_surface, LoopSecondDerivativesAreThoseOfTheFirst)
+{
+  const Mesh m = build(read_shape(test::data("opensubdiv/loop_tetrahedron.obj")));
+  const Loop_surface surface(m);
+  const double h = 1e-5, scale = largest_coordinate(m);
+  double worst = 0;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (const auto& uv : {std::array<double, 2>{0.3, 0.3}, std::array<double, 2>{0.4, 0.2}, std::array<double, 2>{0.2, 0.35}}) {
+      const auto e = surface.evaluate(f, uv[0], uv[1]);
+      const auto up = surface.evaluate(f, uv[0] + h, uv[1]), um = surface.evaluate(f, uv[0] - h, uv[1]);
+      const auto vp = surface.evaluate(f, uv[0], uv[1] + h), vm = surface.evaluate(f, uv[0], uv[1] - h);
+      for (const auto& [exact, difference] : {std::pair{e.duu, (up.du - um.du) / (2 * h)}, std::pair{e.duv, (vp.du - vm.du) / (2 * h)},
+                                              std::pair{e.duv, (up.dv - um.dv) / (2 * h)}, std::pair{e.dvv, (vp.dv - vm.dv) / (2 * h)}})
+        worst = std::max(worst, std::sqrt((exact - difference).squared_length()));
+    }
+  EXPECT_LE(worst, 1e-6 * scale);
+  RecordProperty("central_differences", sci(worst / scale));
+}
+#endif // CGAL_EXT_HAVE_OPENSUBDIV
 
 } // namespace
 } // namespace limit_surface_tests

@@ -1,14 +1,15 @@
 // Copyright (c) 2026 CGAL_ext contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The limit surface of a Catmull–Clark mesh at any point of any face, with
-// derivatives and normal, parameterised as OpenSubdiv's Bfr parameterises a
-// base face, and evaluated as Bfr evaluates it.
+// The limit surface of a Catmull–Clark or Loop mesh at any point of any
+// face, with derivatives and normal, parameterised as OpenSubdiv's Bfr
+// parameterises a base face, and evaluated as Bfr evaluates it.
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_H
 #define CGAL_EXT_LIMIT_SURFACE_H
 
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
+#include <CGAL_ext/Limit_surface/internal/Loop_patch_builder.h>
 #include <CGAL_ext/Limit_surface/internal/Patch_builder.h>
 #include <CGAL_ext/Limit_surface/internal/Parameterization.h>
 #include <CGAL_ext/Limit_surface/internal/Patches.h>
@@ -28,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -52,7 +54,8 @@ struct Limit_surface_options
   /// Samples per base edge of the search structure that
   /// `Limit_surface::closest_point()` starts from (a quad is sampled on a
   /// grid of this many cells a side, each sub-face of another face on half
-  /// as many): more makes the structure larger and the search try fewer
+  /// as many, a triangle of a Loop surface on a triangular grid of this many
+  /// cells a side): more makes the structure larger and the search try fewer
   /// faces; the result does not depend on it where the closest point is unique.
   unsigned projection_rate = 4;
 };
@@ -87,8 +90,8 @@ struct Limit_surface_location
 };
 
 /// \ingroup PkgSubdivision
-/// \brief The limit surface of a mesh under `Mask` (`Catmull_clark_mask`),
-/// evaluated at any parameter of any face, with first and second
+/// \brief The limit surface of a mesh under `Mask` (`Catmull_clark_mask` or
+/// `Loop_mask`), evaluated at any parameter of any face, with first and second
 /// derivatives and the unit normal.
 ///
 /// Built once from a mesh; the patches of a face are made the first time
@@ -103,7 +106,8 @@ struct Limit_surface_location
 /// `ceil(sqrt(n))` unit tiles: sub-face k (the quarter at corner k, its u
 /// from corner k towards corner k + 1) covers [x, x + ½] × [y, y + ½] with
 /// x = k mod the row length, y = k div it; derivatives are with respect to
-/// those (u, v).
+/// those (u, v). Under `Loop_mask` every face is a triangle, its corner i
+/// at (0, 0), (1, 0), (0, 1): the domain is u, v ≥ 0, u + v ≤ 1.
 ///
 /// **How it is evaluated** (as OpenSubdiv's `Bfr::Surface`): a quad whose four
 /// corners are regular (valence 4 inside, two faces at a border or along an
@@ -120,16 +124,29 @@ struct Limit_surface_location
 /// those of OpenSubdiv's `Far::PatchBuilder`. At a corner of a face the
 /// position is the limit position of that vertex (`limit_point()`).
 ///
+/// Under `Loop_mask` likewise: a triangle whose three corners are regular
+/// (valence 6 inside, three faces at a border or along an infinitely sharp
+/// crease, one face at a corner) is the quartic box-spline patch of its 12
+/// points (beyond a border the missing points are reflected, as
+/// OpenSubdiv's boundary patches do), exact in an exact kernel; other
+/// triangles are refined by the library's Loop rules into four children
+/// (the middle one turned half a turn, as in Bfr's patch tree), down to the
+/// same levels, and an irregular triangle at the last level is OpenSubdiv's
+/// 18-point quartic Gregory triangle, built as its `Far::LoopPatchBuilder`
+/// builds it.
+///
 /// On a one-sided surface every neighbourhood is gathered by darts, so a
 /// patch across a Möbius edge is the patch of the orientation double cover;
 /// the normal is that of the face's own orientation.
 ///
-/// \tparam Mask `Catmull_clark_mask`
+/// \tparam Mask `Catmull_clark_mask` or `Loop_mask`
 /// \tparam P the point type of the mesh, of a CGAL kernel
 template <class Mask, class P>
 class Limit_surface
 {
-  static_assert(std::is_same_v<Mask, Catmull_clark_mask>, "Limit_surface evaluates Catmull-Clark surfaces");
+  static_assert(std::is_same_v<Mask, Catmull_clark_mask> || std::is_same_v<Mask, Loop_mask>,
+                "Limit_surface evaluates Catmull-Clark and Loop surfaces");
+  static constexpr bool is_loop = std::is_same_v<Mask, Loop_mask>;
 
 public:
   /// The kernel of `P`.
@@ -158,7 +175,8 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// \throws Parameter_error if `mesh` has removed elements, a sharpness is
-  /// NaN or negative, or the boundary interpolation is `none`.
+  /// NaN or negative, the boundary interpolation is `none`, or (`Loop_mask`)
+  /// a face is not a triangle.
   template <class NP = parameters::Default_named_parameters>
   explicit Limit_surface(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values(),
                          const Limit_surface_options& options = Limit_surface_options())
@@ -172,6 +190,11 @@ public:
     options_.level_sharp = std::max(options.approx_level_sharp, options.approx_level_smooth);
     if (options_.boundary == Boundary_interpolation::none)
       throw Parameter_error("Limit_surface: Boundary_interpolation::none is not supported");
+    if constexpr (is_loop)
+      for (Face_index f : mesh.faces())
+        if (mesh.degree(f) != 3)
+          throw Parameter_error("Limit_surface: face f" + std::to_string(f.idx()) +
+                                " is not a triangle, which Loop's limit surface needs");
     base_.mesh = mesh;
     const auto points = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
     for (Vertex_index v : mesh.vertices())
@@ -183,7 +206,8 @@ public:
   }
 
   /// \brief the limit surface at parameter (`u`, `v`) of face `f` (see the
-  /// class for the parameterisation).
+  /// class for the parameterisation; for a Loop triangle in a floating-point
+  /// kernel, u + v may pass 1 by rounding, up to 4e-16).
   /// \throws Parameter_error if `f` is not a face of the mesh or (`u`, `v`)
   /// lies outside its parameter domain.
   Evaluation evaluate(Face_index f, const FT& u, const FT& v) const
@@ -191,6 +215,8 @@ public:
     if (!base_.mesh.is_valid(f) || f.idx() >= faces_.size())
       throw Parameter_error("Limit_surface::evaluate: f" + std::to_string(f.idx()) + " is not a face of the mesh");
     const Face_patches& patches = patches_of(f);
+    if constexpr (is_loop)
+      return evaluate_triangle(f, patches.sub_faces[0], u, v);
     std::size_t list = 0;
     FT su = u, sv = v, scale = FT(1);
     if (patches.sub_faces.size() > 1) { // Bfr's quad sub-faces
@@ -228,7 +254,9 @@ public:
   /// several threads may ask at once); it gives a start in each face that
   /// comes near the query, from which Newton's method on the surface's first
   /// and second derivatives, held inside the face's parameter domain (each
-  /// sub-face's, for a face that is not a quad), finds the nearest point;
+  /// sub-face's, for a face that is not a quad; under `Loop_mask` the
+  /// triangle u, v ≥ 0, u + v ≤ 1, its long side held as the others), finds
+  /// the nearest point;
   /// the nearest of those is returned. So the result is the closest point
   /// wherever a start lies in its basin, which the sampling ensures where the
   /// query is nearer the surface than its curvature radius; a query
@@ -241,7 +269,8 @@ public:
   Location closest_point(const P& query) const
   {
     std::call_once(*projection_once_, [&] {
-      projection_ = std::make_unique<internal::Limit_projection<Limit_surface>>(*this, base_.mesh, projection_rate_);
+      projection_ =
+        std::make_unique<internal::Limit_projection<Limit_surface>>(*this, base_.mesh, projection_rate_, is_loop);
     });
     if (projection_->empty())
       throw Parameter_error("Limit_surface::closest_point: the mesh has no face");
@@ -279,9 +308,13 @@ public:
   /// sub-face meeting at the centre; at an odd rate a strip of M quads joins
   /// neighbouring sub-faces, and the centre is a triangle (n = 3) or a fan of
   /// n triangles round the face's centre point (so `rate` 1 fans an n-gon).
+  /// Under `Loop_mask` a triangle becomes `rate`² triangles, sample (i, j)
+  /// at parameter (i / rate, j / rate), i + j ≤ `rate` (Bfr's layout of a
+  /// triangle).
   ///
   /// Shared samples are computed once: the limit point of each base vertex
-  /// (`limit_point()` where all faces around it are quads, else the
+  /// (`limit_point()` where all faces around it are quads, or under
+  /// `Loop_mask` where no semi-sharpness is left at it, else the
   /// evaluation at the corner of the first face that reaches it), the
   /// `rate` − 1 samples inside each base edge (evaluated from the first face
   /// that reaches it, reused in reverse order by the face across, in the
@@ -305,15 +338,31 @@ public:
       throw Parameter_error("Limit_surface::tessellate: the rate " + std::to_string(rate) + " is not positive");
     const auto& m = base_.mesh;
     const auto np = CGAL_ext::parameters::boundary_interpolation(options_.boundary);
-    // limit_point() reads quad rings only; elsewhere the corner evaluation
-    // is Bfr's limit point of the vertex.
-    const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
-      for (Face_index g : CGAL_ext::faces_around_target(m.halfedge(v), m))
-        if (g != Face_index() && m.degree(g) != 4)
+    if constexpr (is_loop) {
+      // limit_point() takes a semi-sharp vertex's crease or corner rule at
+      // once; the surface reaches its limit after the sharpness has decayed,
+      // which the corner evaluation gives.
+      const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+        if (Crease::is_semi_sharp(base_.vertex_sharpness(v)))
           return evaluated;
-      return P(limit_point<Catmull_clark_mask>(v, m, np));
-    };
-    return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point).run();
+        for (Dart d : CGAL_ext::halfedges_around_target(m.halfedge(v), m))
+          if (Crease::is_semi_sharp(base_.edge_sharpness(d)))
+            return evaluated;
+        return P(limit_point<Loop_mask>(v, m, np));
+      };
+      return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point, true)
+        .run();
+    } else {
+      // limit_point() reads quad rings only; elsewhere the corner evaluation
+      // is Bfr's limit point of the vertex.
+      const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+        for (Face_index g : CGAL_ext::faces_around_target(m.halfedge(v), m))
+          if (g != Face_index() && m.degree(g) != 4)
+            return evaluated;
+        return P(limit_point<Catmull_clark_mask>(v, m, np));
+      };
+      return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point).run();
+    }
   }
 
 private:
@@ -345,7 +394,10 @@ private:
     std::call_once(once_[f.idx()], [&] {
       auto patches = std::make_unique<Face_patches>();
       const Dart d = base_.mesh.next(base_.mesh.halfedge(f)); // corner 0 -> corner 1
-      if (base_.mesh.degree(f) == 4) {
+      if constexpr (is_loop) {
+        patches->sub_faces.resize(1);
+        internal::Loop_patch_tree_builder<FT, P>(options_, patches->sub_faces[0]).build(base_, d, internal::Patch<FT>());
+      } else if (base_.mesh.degree(f) == 4) {
         patches->sub_faces.resize(1);
         internal::Patch_tree_builder<FT, P>(options_, patches->sub_faces[0]).build(base_, d, 0, 0.0, 0.0, 1.0);
       } else {
@@ -355,6 +407,32 @@ private:
       faces_[f.idx()] = std::move(patches);
     });
     return *faces_[f.idx()];
+  }
+
+  // A triangle's patch is found by Bfr's descent of its patch tree; the
+  // patch's own (s, t) run against (u, v) where it is turned.
+  Evaluation evaluate_triangle(Face_index f, const std::vector<internal::Patch<FT>>& patches, const FT& u,
+                               const FT& v) const
+  {
+    // In floating point, u + v may pass 1 by rounding (1 - t and t summed).
+    const FT excess = u + v - FT(1);
+    const bool beyond = excess > FT(0) && !(std::is_floating_point_v<FT> && CGAL::to_double(excess) <= 4e-16);
+    if (u < FT(0) || v < FT(0) || beyond)
+      throw Parameter_error("Limit_surface::evaluate: (u, v) lies outside the parameter domain of face f" +
+                            std::to_string(f.idx()));
+    unsigned depth = 0;
+    for (const auto& patch : patches)
+      depth = std::max(depth, patch.depth);
+    const std::uint64_t path = internal::triangle_path(u, v, depth);
+    for (const auto& patch : patches) {
+      const std::uint64_t mask = patch.depth == 0 ? 0 : (~std::uint64_t(0) >> (64 - 2 * patch.depth));
+      if ((path & mask) != patch.path)
+        continue;
+      const FT sign(patch.rotated ? -1 : 1), size(patch.size);
+      const FT s = sign * (u - FT(patch.u0)) / size, t = sign * (v - FT(patch.v0)) / size;
+      return finish(internal::evaluate_patch(patch, s, t), sign / size);
+    }
+    throw Parameter_error("Limit_surface: internal error, no patch at a parameter of face f" + std::to_string(f.idx()));
   }
 
   Evaluation finish(const internal::Patch_value<FT>& r, const FT& scale) const
@@ -389,8 +467,8 @@ private:
 };
 
 /// \ingroup PkgSubdivision
-/// \brief the limit surface of `mesh` under `Mask` (`Catmull_clark_mask`)
-/// tessellated uniformly at `rate` samples per base edge:
+/// \brief the limit surface of `mesh` under `Mask` (`Catmull_clark_mask` or
+/// `Loop_mask`) tessellated uniformly at `rate` samples per base edge:
 /// `Limit_surface<Mask, P>(mesh, np, options).tessellate(rate)` (see there
 /// for the layout, the watertightness and the normals).
 /// \throws Parameter_error as the constructor of `Limit_surface` and
@@ -415,7 +493,7 @@ closest_point_on_limit(const Limit_surface<Mask, P>& surface, const P& query)
 
 /// \ingroup PkgSubdivision
 /// \brief the point of the limit surface of `mesh` under `Mask`
-/// (`Catmull_clark_mask`) closest to `query`:
+/// (`Catmull_clark_mask` or `Loop_mask`) closest to `query`:
 /// `Limit_surface<Mask, P>(mesh, np, options).closest_point(query)`.
 /// \throws Parameter_error as the constructor of `Limit_surface` and
 /// `Limit_surface::closest_point()`.

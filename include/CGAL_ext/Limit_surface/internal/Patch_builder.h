@@ -80,10 +80,12 @@ Dart dart_between(const Mobius_mesh<P>& m, Face_index f, Vertex_index a, Vertex_
 // faces around the vertex that contains the face (all of them, or those
 // between two infinitely sharp edges or borders), its ring of points in
 // counter-clockwise order (the order of the darts) from the leading edge of
-// the span, the face's place in it, and the flags of its rules.
+// the span, the face's place in it, and the flags of its rules. The ring
+// holds for each face of the span its edge end and, in a quad, its opposite
+// corner; a bounded span ends with its trailing edge's end.
 struct Corner
 {
-  std::vector<Vertex_index> ring; // edge end, opposite corner, edge end, ... (quads)
+  std::vector<Vertex_index> ring; // edge end, opposite corner, edge end, ... (quads); edge ends (triangles)
   unsigned faces = 0;             // faces in the span
   unsigned face_in_ring = 0;
   unsigned all_faces = 0;
@@ -91,12 +93,13 @@ struct Corner
   bool boundary = false; // the span is bounded
   bool sharp = false;    // a corner rule from infinite sharpness
   bool semi_sharp = false;
-  bool non_quads = false;
+  bool irregular_faces = false; // a face of another size than the scheme's regular one
 };
 
-// The corner at source(o), o a dart of the face.
+// The corner at source(o), o a dart of the face, in a scheme whose regular
+// faces have `face_size` sides (4: Catmull–Clark, 3: Loop).
 template <class P>
-Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt)
+Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt, unsigned face_size = 4)
 {
   const Mobius_mesh<P>& m = L.mesh;
   Corner c;
@@ -115,7 +118,7 @@ Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt)
     do {
       count_edge(e);
       ++c.all_faces;
-      c.non_quads |= m.degree(m.face(e)) != 4;
+      c.irregular_faces |= m.degree(m.face(e)) != face_size;
       const Dart n = m.opposite(m.prev(e));
       if (m.is_border(n)) {
         count_edge(n);
@@ -129,7 +132,7 @@ Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt)
       while (!m.is_border(m.opposite(b))) {
         b = m.next(m.opposite(b));
         ++c.all_faces;
-        c.non_quads |= m.degree(m.face(b)) != 4;
+        c.irregular_faces |= m.degree(m.face(b)) != face_size;
         count_edge(b);
       }
     }
@@ -149,7 +152,8 @@ Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt)
   Dart e = start;
   do {
     c.ring.push_back(m.target(e));
-    c.ring.push_back(m.target(m.next(e)));
+    if (face_size == 4)
+      c.ring.push_back(m.target(m.next(e)));
     ++c.faces;
     e = m.opposite(m.prev(e));
     if (breaks(e)) {
@@ -166,16 +170,18 @@ Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt)
 }
 
 // OpenSubdiv's regular corner (semi-sharpness aside: a leaf at the last
-// level is regular whatever sharpness is left).
-inline bool regular_corner(const Corner& c)
+// level is regular whatever sharpness is left): 4 quads or 6 triangles
+// inside, 2 quads or 3 triangles along a border or an infinitely sharp
+// crease, one face at a sharp corner.
+inline bool regular_corner(const Corner& c, unsigned face_size = 4)
 {
-  if (c.non_quads)
+  if (c.irregular_faces)
     return false;
   if (c.infinite_edges == 0)
-    return !c.sharp && c.faces == 4;
+    return !c.sharp && c.faces == (face_size == 4 ? 4u : 6u);
   if (c.infinite_edges == 1)
     return false;
-  return c.sharp ? c.faces == 1 : c.faces == 2;
+  return c.sharp ? c.faces == 1 : c.faces == (face_size == 4 ? 2u : 3u);
 }
 
 // The four corners of the quad of frame d (d runs from corner 0 to corner 1).
@@ -647,7 +653,7 @@ public:
       patch.u0 = u0;
       patch.v0 = v0;
       patch.size = size;
-      patch.gregory = !regular;
+      patch.type = regular ? Patch_type::bspline : Patch_type::gregory;
       if (regular) {
         bspline_points<FT>(L, d, patch.points);
       } else {

@@ -1,16 +1,19 @@
 // Copyright (c) 2026 CGAL_ext contributors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The patches a limit surface is pieced from: the bicubic B-spline patch of
-// a regular region and the 20-point cubic Gregory patch that OpenSubdiv puts
-// where refinement stops near an irregular vertex, with their basis
-// functions and first and second derivatives.
+// The patches a limit surface is pieced from, with their basis functions and
+// first and second derivatives: for Catmull–Clark the bicubic B-spline patch
+// of a regular region and the 20-point cubic Gregory patch that OpenSubdiv
+// puts where refinement stops near an irregular vertex; for Loop the quartic
+// box-spline triangle of a regular region and OpenSubdiv's 18-point quartic
+// Gregory triangle.
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_PATCHES_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_PATCHES_H
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace CGAL_ext {
 namespace Subdivision {
@@ -129,14 +132,148 @@ void gregory_basis(const FT& s, const FT& t, Basis<FT, 20>& b)
     set(interior[k], interior_col[k], interior_row[k], g[k]);
 }
 
-// A patch over the square [u0, u0 + size] x [v0, v0 + size] of its face's
-// (or sub-face's) parameters.
+// x^k for a small k >= 0, and 0 for k < 0 (a derivative's vanished term).
+template <class FT>
+FT power(const FT& x, int k)
+{
+  if (k < 0)
+    return FT(0);
+  FT r(1);
+  for (int i = 0; i < k; ++i)
+    r *= x;
+  return r;
+}
+
+// The monomial s^a t^b and its derivatives, added `c` times into entry k.
+template <class FT, std::size_t N>
+void add_monomial(Basis<FT, N>& b, std::size_t k, const FT& c, int a, int e, const FT& s, const FT& t)
+{
+  b.w[k] += c * power(s, a) * power(t, e);
+  b.ds[k] += c * FT(a) * power(s, a - 1) * power(t, e);
+  b.dt[k] += c * FT(e) * power(s, a) * power(t, e - 1);
+  b.dss[k] += c * FT(a * (a - 1)) * power(s, a - 2) * power(t, e);
+  b.dst[k] += c * FT(a * e) * power(s, a - 1) * power(t, e - 1);
+  b.dtt[k] += c * FT(e * (e - 1)) * power(s, a) * power(t, e - 2);
+}
+
+template <class FT, std::size_t N>
+void clear(Basis<FT, N>& b)
+{
+  for (auto* a : {&b.w, &b.ds, &b.dt, &b.dss, &b.dst, &b.dtt})
+    a->fill(FT(0));
+}
+
+// The quartic box spline of a regular Loop triangle (Stam's basis, written
+// in the monomials of (s, t)), its 12 points laid out as OpenSubdiv lays
+// them out, on the triangular lattice:
+//
+//        10 -- 11
+//       7 --  8 --  9
+//    3 -- 4 --  5 --  6
+//       0 --  1 --  2
+//
+// the triangle's corners at 4 (s, t) = (0, 0), 5 (1, 0) and 8 (0, 1).
+// Derivatives are those of the polynomials, exact in an exact number type.
+template <class FT>
+void box_spline_basis(const FT& s, const FT& t, Basis<FT, 12>& b)
+{
+  // Monomials 1, s, t, s², st, t², s³, s²t, st², t³, s⁴, s³t, s²t², st³, t⁴.
+  static const int exponent[15][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {3, 0}, {2, 1},
+                                      {1, 2}, {0, 3}, {4, 0}, {3, 1}, {2, 2}, {1, 3}, {0, 4}};
+  // Twelve times each basis function.
+  static const int c[12][15] = {{1, -2, -4, 0, 6, 6, 2, 0, -6, -4, -1, -2, 0, 2, 1},
+                                {1, 2, -2, 0, -6, 0, -4, 0, 6, 2, 2, 4, 0, -2, -1},
+                                {0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -1, -2, 0, 0, 0},
+                                {1, -4, -2, 6, 6, 0, -4, -6, 0, 2, 1, 2, 0, -2, -1},
+                                {6, 0, 0, -12, -12, -12, 8, 12, 12, 8, -1, -2, 0, -2, -1},
+                                {1, 4, 2, 6, 6, 0, -4, -6, -12, -4, -1, -2, 0, 4, 2},
+                                {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0},
+                                {1, -2, 2, 0, -6, 0, 2, 6, 0, -4, -1, -2, 0, 4, 2},
+                                {1, 2, 4, 0, 6, 6, -4, -12, -6, -4, 2, 4, 0, -2, -1},
+                                {0, 0, 0, 0, 0, 0, 2, 6, 6, 2, -1, -2, 0, -2, -1},
+                                {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
+                                {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1}};
+  clear(b);
+  for (std::size_t k = 0; k < 12; ++k)
+    for (int m = 0; m < 15; ++m)
+      if (c[k][m] != 0)
+        add_monomial(b, k, FT(c[k][m]) / FT(12), exponent[m][0], exponent[m][1], s, t);
+}
+
+// The quartic Bernstein polynomial 4!/(i! j! k!) u^i v^j w^k, u = s, v = t,
+// w = 1 - s - t, and its derivatives in (s, t), added `factor` times into
+// entry n (d/ds = d/du - d/dw, d/dt = d/dv - d/dw).
+template <class FT, std::size_t N>
+void add_bernstein(Basis<FT, N>& b, std::size_t n, int i, int j, const FT& factor, const FT& s, const FT& t)
+{
+  static const int factorial[5] = {1, 1, 2, 6, 24};
+  const int k = 4 - i - j;
+  const FT u = s, v = t, w = FT(1) - s - t;
+  const FT c = factor * FT(24 / (factorial[i] * factorial[j] * factorial[k]));
+  // The derivative of u^i v^j w^k taken a times in u, b in v, e in w (at most twice each).
+  auto term = [&](int a, int b2, int e) {
+    auto falling = [](int x, int d) { return d == 0 ? 1 : d == 1 ? x : x * (x - 1); };
+    return FT(falling(i, a) * falling(j, b2) * falling(k, e)) * power(u, i - a) * power(v, j - b2) * power(w, k - e);
+  };
+  b.w[n] += c * term(0, 0, 0);
+  b.ds[n] += c * (term(1, 0, 0) - term(0, 0, 1));
+  b.dt[n] += c * (term(0, 1, 0) - term(0, 0, 1));
+  b.dss[n] += c * (term(2, 0, 0) - FT(2) * term(1, 0, 1) + term(0, 0, 2));
+  b.dst[n] += c * (term(1, 1, 0) - term(1, 0, 1) - term(0, 1, 1) + term(0, 0, 2));
+  b.dtt[n] += c * (term(0, 2, 0) - FT(2) * term(0, 1, 1) + term(0, 0, 2));
+}
+
+// OpenSubdiv's 18-point quartic Gregory triangle: five points per corner
+// (P, Ep, Em, Fp, Fm, corner k at (k == 1, k == 2)), then the middle points
+// of edges 0, 1 and 2. It is the quartic Bezier triangle whose three inner
+// points each blend a pair of face points rationally; the derivatives are
+// those of the Bezier triangle with the blended points, as OpenSubdiv
+// computes them (not those of the rational blend).
+template <class FT>
+void gregory_triangle_basis(const FT& s, const FT& t, Basis<FT, 18>& b)
+{
+  const FT u = s, v = t, w = FT(1) - s - t;
+  // At a corner both members of a pair have weight 0: any split will do.
+  auto share = [](const FT& a, const FT& b2) { return a + b2 > FT(0) ? a / (a + b2) : FT(1); };
+  const FT g0 = share(u, v), g1 = share(v, w), g2 = share(w, u);
+  // (entry, power of u, power of v, factor)
+  const struct
+  {
+    int entry, i, j;
+    FT factor;
+  } points[18] = {{0, 0, 0, FT(1)},  {1, 1, 0, FT(1)},  {2, 0, 1, FT(1)},      {3, 1, 1, g0},  {4, 1, 1, FT(1) - g0},
+                  {5, 4, 0, FT(1)},  {6, 3, 1, FT(1)},  {7, 3, 0, FT(1)},      {8, 2, 1, g1},  {9, 2, 1, FT(1) - g1},
+                  {10, 0, 4, FT(1)}, {11, 0, 3, FT(1)}, {12, 1, 3, FT(1)},     {13, 1, 2, g2}, {14, 1, 2, FT(1) - g2},
+                  {15, 2, 0, FT(1)}, {16, 2, 2, FT(1)}, {17, 0, 2, FT(1)}};
+  clear(b);
+  for (const auto& p : points)
+    add_bernstein(b, std::size_t(p.entry), p.i, p.j, p.factor, s, t);
+}
+
+// What a patch is.
+enum class Patch_type
+{
+  bspline,          // 16 points
+  gregory,          // 20 points
+  box_spline,       // 12 points
+  gregory_triangle, // 18 points
+};
+
+// A patch over a part of its face's (or sub-face's) parameters: the square
+// [u0, u0 + size] x [v0, v0 + size] for a quad patch; for a triangle, the
+// half of that square below its diagonal, or, `rotated`, the triangle of
+// corners (u0, v0), (u0 - size, v0), (u0, v0 - size), whose own (s, t) run
+// against (u, v). A triangle is found by the quadrants `path` (two bits per
+// level, the first level lowest) that lead to it from its face, `depth` deep.
 template <class FT>
 struct Patch
 {
-  bool gregory = false;
+  Patch_type type = Patch_type::bspline;
   double u0 = 0, v0 = 0, size = 1;
-  std::array<Coordinates<FT>, 20> points; // 16 used by a B-spline patch
+  bool rotated = false;
+  unsigned depth = 0;
+  std::uint64_t path = 0;
+  std::array<Coordinates<FT>, 20> points;
 };
 
 // Position and derivatives with respect to the patch's own (s, t).
@@ -166,14 +303,28 @@ Patch_value<FT> combine(const Basis<FT, N>& b, const std::array<Coordinates<FT>,
 template <class FT>
 Patch_value<FT> evaluate_patch(const Patch<FT>& patch, const FT& s, const FT& t)
 {
-  if (patch.gregory) {
+  switch (patch.type) {
+  case Patch_type::gregory: {
     Basis<FT, 20> b;
     gregory_basis(s, t, b);
     return combine(b, patch.points);
   }
-  Basis<FT, 16> b;
-  bspline_basis(s, t, b);
-  return combine(b, patch.points);
+  case Patch_type::box_spline: {
+    Basis<FT, 12> b;
+    box_spline_basis(s, t, b);
+    return combine(b, patch.points);
+  }
+  case Patch_type::gregory_triangle: {
+    Basis<FT, 18> b;
+    gregory_triangle_basis(s, t, b);
+    return combine(b, patch.points);
+  }
+  default: {
+    Basis<FT, 16> b;
+    bspline_basis(s, t, b);
+    return combine(b, patch.points);
+  }
+  }
 }
 
 } // namespace internal

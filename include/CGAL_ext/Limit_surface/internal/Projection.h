@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The closest point of a limit surface to a query point. A sampling of
-// every quad and sub-face into triangles, in an AABB tree, gives the start
-// and the sub-faces worth trying; in each, Newton's method on the surface's
-// own first and second derivatives, kept inside the sub-face's parameter
-// box, finishes. Where the minimum lies on the line between two sub-faces
+// every quad and sub-face (every triangle, for Loop) into triangles, in an
+// AABB tree, gives the start and the sub-faces worth trying; in each,
+// Newton's method on the surface's own first and second derivatives, kept
+// inside the sub-face's parameter box (or triangle), finishes. Where the minimum lies on the line between two sub-faces
 // (or faces), both are tried, since the sampling finds both near the query.
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_PROJECTION_H
@@ -19,6 +19,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Intersections_3/Bbox_3_Sphere_3.h>
 #include <CGAL/Intersections_3/Sphere_3_Triangle_3.h>
+#include <CGAL/Origin.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
@@ -35,11 +36,66 @@ namespace CGAL_ext {
 namespace Subdivision {
 namespace internal {
 
-// A quad face, or one sub-face of another face, as a box of the face's parameters.
+// A quad face, or one sub-face of another face, as a box of the face's
+// parameters; or a triangle of Loop over its domain u, v >= 0, u + v <= 1.
 struct Projection_tile
 {
   Face_index face;
   double u0, v0, size;
+  bool triangle = false;
+};
+
+// The parameter domain of a tile as Newton's method keeps to it: the box
+// [lo, hi], cut by u + v <= 1 for a triangle; its sides as half-planes
+// n · x <= c.
+struct Tile_domain
+{
+  std::array<double, 2> lo, hi;
+  bool triangle = false;
+  double size = 1;
+  std::vector<std::array<double, 3>> sides; // n0, n1, c
+
+  explicit Tile_domain(const Projection_tile& t)
+      : lo{t.u0, t.v0}, hi{t.u0 + t.size, t.v0 + t.size}, triangle(t.triangle), size(t.size)
+  {
+    sides = {{-1, 0, -lo[0]}, {0, -1, -lo[1]}};
+    if (triangle)
+      sides.push_back({1, 1, 1});
+    else
+      sides.insert(sides.end(), {{1, 0, hi[0]}, {0, 1, hi[1]}});
+  }
+
+  // Whether x is on `side` and a descent along -g would leave by it.
+  bool blocks(const std::array<double, 3>& side, const std::array<double, 2>& x, const double g[2]) const
+  {
+    return side[0] * x[0] + side[1] * x[1] >= side[2] - 1e-12 * size && side[0] * g[0] + side[1] * g[1] < 0;
+  }
+
+  // The nearest point of the long side of a triangle, from beyond it.
+  static void onto_long_side(std::array<double, 2>& y)
+  {
+    const double t = std::clamp((y[0] - y[1] + 1) / 2, 0.0, 1.0);
+    y = {t, 1 - t};
+  }
+
+  void project(std::array<double, 2>& y) const
+  {
+    for (std::size_t i = 0; i < 2; ++i)
+      y[i] = std::clamp(y[i], lo[i], hi[i]);
+    if (triangle && y[0] + y[1] > 1)
+      onto_long_side(y);
+  }
+
+  // A parameter within rounding of a side is on it, so that the side holds
+  // it rather than clamp every step to a vanishing move.
+  void snap(std::array<double, 2>& y) const
+  {
+    const double e = 1e-12 * size;
+    for (std::size_t i = 0; i < 2; ++i)
+      y[i] = y[i] - lo[i] <= e ? lo[i] : hi[i] - y[i] <= e ? hi[i] : y[i];
+    if (triangle && 1 - y[0] - y[1] <= e)
+      onto_long_side(y);
+  }
 };
 
 // Where the search ended: a tile, the face's parameters and the squared distance.
@@ -78,12 +134,17 @@ class Limit_projection
 
 public:
   // Samples each quad on a `rate` × `rate` grid, each sub-face of another
-  // face on a (`rate` / 2)² one (the sub-face is half as wide).
+  // face on a (`rate` / 2)² one (the sub-face is half as wide); with
+  // `triangle_domain` (Loop) each triangle on its own domain, `rate` samples a side.
   template <class P>
-  Limit_projection(const Surface& surface, const Mobius_mesh<P>& mesh, int rate)
+  Limit_projection(const Surface& surface, const Mobius_mesh<P>& mesh, int rate, bool triangle_domain = false)
   {
     for (Face_index f : mesh.faces()) {
       const int n = int(mesh.degree(f));
+      if (triangle_domain) {
+        add_tile(surface, {f, 0.0, 0.0, 1.0, true}, std::max(1, rate));
+        continue;
+      }
       if (n == 4) {
         add_tile(surface, {f, 0.0, 0.0, 1.0}, std::max(1, rate));
         continue;
@@ -172,11 +233,30 @@ private:
     std::vector<K::Point_3> grid;
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) {
+        if (t.triangle && i + j > n) { // outside the triangle: a place holder
+          grid.push_back(K::Point_3(CGAL::ORIGIN));
+          continue;
+        }
         grid.push_back(sample(surface, t, double(i) / n, double(j) / n));
         scale_ = std::max({scale_, std::abs(grid.back().x()), std::abs(grid.back().y()), std::abs(grid.back().z())});
       }
     const auto at = [&](int i, int j) { return std::size_t(j * (n + 1) + i); };
     const auto st = [&](int i, int j) { return std::array<double, 2>{double(i) / n, double(j) / n}; };
+    if (t.triangle) { // the grid's points with i + j <= n, two triangles a cell but on the long side
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i + j < n; ++i) {
+          std::size_t before = triangles_.size();
+          add_triangle(id, grid, {at(i, j), at(i + 1, j), at(i, j + 1)}, {st(i, j), st(i + 1, j), st(i, j + 1)});
+          measure_gap(surface, t, before, (i + 1.0 / 3) / n, (j + 1.0 / 3) / n);
+          if (i + j + 1 == n)
+            continue;
+          before = triangles_.size();
+          add_triangle(id, grid, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)},
+                       {st(i + 1, j), st(i + 1, j + 1), st(i, j + 1)});
+          measure_gap(surface, t, before, (i + 2.0 / 3) / n, (j + 2.0 / 3) / n);
+        }
+      return;
+    }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const std::size_t before = triangles_.size();
@@ -235,20 +315,21 @@ private:
     return l;
   }
 
-  // The Newton step for ½|S − q|² at l, with the coordinates that sit on
-  // the box's side and would leave it held (a projected Newton step). The
-  // Hessian is the full one where it is positive definite, Gauss–Newton's
-  // JᵀJ elsewhere (away from a minimum, or on a saddle).
-  static std::array<double, 2> newton_step(const Local& l, const std::array<double, 2>& x,
-                                           const std::array<double, 2>& lo, const std::array<double, 2>& hi)
+  // The Newton step for ½|S − q|² at l, held along a side of the domain
+  // that x sits on and the step would leave by (a projected Newton step),
+  // nothing where two sides hold it. The Hessian is the full one where it
+  // is positive definite, Gauss–Newton's JᵀJ elsewhere (away from a
+  // minimum, or on a saddle).
+  static std::array<double, 2> newton_step(const Local& l, const std::array<double, 2>& x, const Tile_domain& domain)
   {
     const double g[2] = {l.r * l.du, l.r * l.dv};
     const double G[3] = {l.du * l.du, l.du * l.dv, l.dv * l.dv};
     const double H[3] = {G[0] + l.r * l.duu, G[1] + l.r * l.duv, G[2] + l.r * l.dvv};
-    bool free[2];
-    for (int i = 0; i < 2; ++i)
-      free[i] = !((x[i] <= lo[i] && g[i] > 0) || (x[i] >= hi[i] && g[i] < 0));
-    if (free[0] && free[1]) {
+    std::vector<std::array<double, 3>> held;
+    for (const auto& side : domain.sides)
+      if (domain.blocks(side, x, g))
+        held.push_back(side);
+    if (held.empty()) {
       const bool full = H[0] > 0 && H[0] * H[2] - H[1] * H[1] > 0;
       const double* M = full ? H : G;
       const double det = M[0] * M[2] - M[1] * M[1];
@@ -257,13 +338,14 @@ private:
       const double trace = G[0] + G[2];
       return trace > 0 ? std::array<double, 2>{-g[0] / trace, -g[1] / trace} : std::array<double, 2>{0.0, 0.0};
     }
-    std::array<double, 2> step{0.0, 0.0};
-    for (int i = 0; i < 2; ++i)
-      if (free[i]) {
-        const double h = H[2 * i] > 0 ? H[2 * i] : G[2 * i];
-        step[std::size_t(i)] = h > 0 ? -g[i] / h : 0.0;
-      }
-    return step;
+    if (held.size() > 1)
+      return {0.0, 0.0};
+    // Along the side: d its direction, Newton's step in one variable.
+    const double d[2] = {-held[0][1], held[0][0]};
+    const auto quadratic = [&](const double* M) { return d[0] * d[0] * M[0] + 2 * d[0] * d[1] * M[1] + d[1] * d[1] * M[2]; };
+    const double h = quadratic(H) > 0 ? quadratic(H) : quadratic(G);
+    const double t = h > 0 ? -(g[0] * d[0] + g[1] * d[1]) / h : 0.0;
+    return {t * d[0], t * d[1]};
   }
 
   // Near the minimum the squared distance changes by less than its
@@ -274,16 +356,20 @@ private:
     return 1e-13 * (l.squared_distance + std::sqrt(l.squared_distance) * scale_);
   }
 
-  // |gradient|² over the coordinates that the box's sides do not hold.
-  static double free_gradient2(const Local& l, const std::array<double, 2>& x, const std::array<double, 2>& lo,
-                               const std::array<double, 2>& hi)
+  // |gradient|² along what the domain's sides leave free.
+  static double free_gradient2(const Local& l, const std::array<double, 2>& x, const Tile_domain& domain)
   {
     const double g[2] = {l.r * l.du, l.r * l.dv};
-    double sum = 0;
-    for (std::size_t i = 0; i < 2; ++i)
-      if (!((x[i] <= lo[i] && g[i] > 0) || (x[i] >= hi[i] && g[i] < 0)))
-        sum += g[i] * g[i];
-    return sum;
+    std::vector<std::array<double, 3>> held;
+    for (const auto& side : domain.sides)
+      if (domain.blocks(side, x, g))
+        held.push_back(side);
+    if (held.empty())
+      return g[0] * g[0] + g[1] * g[1];
+    if (held.size() > 1)
+      return 0;
+    const double along = -g[0] * held[0][1] + g[1] * held[0][0];
+    return along * along / (held[0][0] * held[0][0] + held[0][1] * held[0][1]);
   }
 
   // Newton's method in one tile from `start`, halving a step that brings
@@ -292,29 +378,23 @@ private:
                            const K::Point_3& q) const
   {
     const Projection_tile& t = tiles_[tile];
-    const std::array<double, 2> lo{t.u0, t.v0}, hi{t.u0 + t.size, t.v0 + t.size};
-    // A parameter within rounding of the box's side is on it, so that the
-    // side holds it rather than clamp every step to a vanishing move.
-    const auto snap = [&](std::array<double, 2>& y) {
-      for (std::size_t i = 0; i < 2; ++i)
-        y[i] = y[i] - lo[i] <= 1e-12 * t.size ? lo[i] : hi[i] - y[i] <= 1e-12 * t.size ? hi[i] : y[i];
-    };
+    const Tile_domain domain(t);
     std::array<double, 2> x = start;
-    snap(x);
+    domain.snap(x);
     Local l = local(surface, t, x[0], x[1], q);
     for (int iteration = 0; iteration < 100; ++iteration) {
-      const std::array<double, 2> step = newton_step(l, x, lo, hi);
+      const std::array<double, 2> step = newton_step(l, x, domain);
       if (std::abs(step[0]) + std::abs(step[1]) <= 1e-14 * t.size)
         break;
       bool closer = false;
       std::array<double, 2> y = x;
       for (double fraction = 1; fraction > 1e-6 && !closer; fraction /= 2) {
-        for (int i = 0; i < 2; ++i)
-          y[std::size_t(i)] = std::clamp(x[std::size_t(i)] + fraction * step[std::size_t(i)], lo[std::size_t(i)], hi[std::size_t(i)]);
-        snap(y);
+        y = {x[0] + fraction * step[0], x[1] + fraction * step[1]};
+        domain.project(y);
+        domain.snap(y);
         const Local m = local(surface, t, y[0], y[1], q);
         if (m.squared_distance < l.squared_distance || (m.squared_distance <= l.squared_distance + rounding(l) &&
-                                                        free_gradient2(m, y, lo, hi) < free_gradient2(l, x, lo, hi))) {
+                                                        free_gradient2(m, y, domain) < free_gradient2(l, x, domain))) {
           l = m;
           closer = true;
         }

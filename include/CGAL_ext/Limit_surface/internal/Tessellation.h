@@ -6,7 +6,7 @@
 // samples inside a base edge) is evaluated once and its index reused, so
 // neighbouring faces cannot disagree even by rounding. The layout of each
 // face is that of OpenSubdiv's Bfr::Tessellation at a uniform rate with
-// quads preserved.
+// quads preserved (Catmull–Clark), or of a triangle's domain (Loop).
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
@@ -32,7 +32,9 @@ namespace internal {
 // Builds the tessellation of `mesh` (the surface's own copy of the base
 // mesh) at `rate` samples per edge. `Surface` is Limit_surface;
 // `corner_point(v, f, evaluated)` gives the point of base vertex v, first
-// met at a corner of f where the surface evaluates to `evaluated`.
+// met at a corner of f where the surface evaluates to `evaluated`. With
+// `triangle_domain` (Loop) a triangle is parameterised over the triangle
+// (0, 0), (1, 0), (0, 1), not split into sub-faces.
 template <class Surface, class P, class CornerPoint>
 class Uniform_tessellator
 {
@@ -42,8 +44,9 @@ class Uniform_tessellator
   static constexpr std::size_t none = std::size_t(-1);
 
 public:
-  Uniform_tessellator(const Surface& surface, const Mobius_mesh<P>& mesh, int rate, const CornerPoint& corner_point)
-      : s_(surface), m_(mesh), n_(rate), corner_point_(corner_point)
+  Uniform_tessellator(const Surface& surface, const Mobius_mesh<P>& mesh, int rate, const CornerPoint& corner_point,
+                      bool triangle_domain = false)
+      : s_(surface), m_(mesh), n_(rate), corner_point_(corner_point), triangle_domain_(triangle_domain)
   {}
 
   // The result, with "v:normal" and, where the base has Möbius edges, "h:normal".
@@ -88,6 +91,13 @@ private:
   std::array<FT, 2> edge_param(int sides, int k, int i) const
   {
     const FT t = FT(i) / FT(n_);
+    if (whole_triangle(sides)) {
+      switch (k) {
+        case 0: return {t, FT(0)};
+        case 1: return {FT(1) - t, t};
+        default: return {FT(0), FT(1) - t};
+      }
+    }
     if (sides == 4) {
       switch (k) {
         case 0: return {t, FT(0)};
@@ -103,6 +113,10 @@ private:
 
   std::array<FT, 2> corner_param(int sides, int k) const
   {
+    if (whole_triangle(sides)) {
+      const int uv[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+      return {FT(uv[k][0]), FT(uv[k][1])};
+    }
     if (sides == 4) {
       const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
       return {FT(uv[k][0]), FT(uv[k][1])};
@@ -163,10 +177,40 @@ private:
     st.f = f;
     for (Dart d : CGAL_ext::halfedges_around_face(m_.halfedge(f), m_))
       st.darts.push_back(m_.next(d));
-    if (st.darts.size() == 4)
+    if (whole_triangle(int(st.darts.size())))
+      add_triangle(st);
+    else if (st.darts.size() == 4)
       add_quad(st);
     else
       add_polygon(st);
+  }
+
+  bool whole_triangle(int sides) const { return triangle_domain_ && sides == 3; }
+
+  // A triangle over its own domain: N² triangles, (i, j) at parameter
+  // (i / N, j / N), i + j <= N, the lattice's lines parallel to the sides.
+  void add_triangle(Face_state& st)
+  {
+    const int N = n_;
+    std::vector<std::size_t> g(std::size_t((N + 1) * (N + 1)), none);
+    auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j * (N + 1) + i)]; };
+    at(0, 0) = corner(st, 0);
+    at(N, 0) = corner(st, 1);
+    at(0, N) = corner(st, 2);
+    for (int i = 1; i < N; ++i) {
+      at(i, 0) = edge_sample(st, 0, i);
+      at(N - i, i) = edge_sample(st, 1, i);
+      at(0, N - i) = edge_sample(st, 2, i);
+    }
+    for (int j = 1; j < N; ++j)
+      for (int i = 1; i + j < N; ++i)
+        at(i, j) = add_sample(eval(st.f, {FT(i) / FT(N), FT(j) / FT(N)}));
+    for (int j = 0; j < N; ++j)
+      for (int i = 0; i + j < N; ++i) {
+        emit(st, {at(i, j), at(i + 1, j), at(i, j + 1)});
+        if (i + j + 1 < N)
+          emit(st, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
   }
 
   // A quad: an N × N grid of quads, (i, j) at parameter (i / N, j / N).
@@ -291,6 +335,7 @@ private:
   const Mobius_mesh<P>& m_;
   int n_;
   const CornerPoint& corner_point_;
+  bool triangle_domain_ = false;
   bool corner_normals_ = false;
   std::vector<P> points_;
   std::vector<Vector> normals_;
