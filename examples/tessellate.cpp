@@ -1,7 +1,7 @@
-// tessellate IN OUT --rate N [--boundary edge-only|edge-and-corner]
+// tessellate IN OUT --rate N [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]
 //
-// Samples the Catmull–Clark limit surface of a polygon mesh (.obj, .off,
-// .ply) uniformly, N segments along every base edge, in OpenSubdiv's
+// Samples the Catmull–Clark (or Loop) limit surface of a polygon (or
+// triangle) mesh (.obj, .off, .ply) uniformly, N segments along every base edge, in OpenSubdiv's
 // Bfr::Tessellation layout, and writes the result: watertight (faces share
 // the samples of their common edges), borders kept, a one-sided surface
 // one-sided. Prints one line of JSON, the counts of mesh_info and the time:
@@ -26,10 +26,12 @@
 namespace {
 
 const examples::Tool_usage usage{
-  "tessellate", "tessellate IN OUT --rate N [--boundary edge-only|edge-and-corner]",
-  "Reads a polygon mesh (.obj, .off, .ply) and writes a mesh of its Catmull-Clark limit surface,\n"
-  "each face sampled uniformly as OpenSubdiv's Bfr::Tessellation samples it:\n"
-  "  --rate      segments along every base edge, 1 to 64 (a quad becomes N x N quads).\n"
+  "tessellate", "tessellate IN OUT --rate N [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]",
+  "Reads a polygon mesh (.obj, .off, .ply) and writes a mesh of its limit surface, each face\n"
+  "sampled uniformly as OpenSubdiv's Bfr::Tessellation samples it:\n"
+  "  --rate      segments along every base edge, 1 to 64 (a quad becomes N x N quads, a\n"
+  "              triangle of a Loop surface N x N triangles).\n"
+  "  --scheme    catmull-clark (default) or loop (every face a triangle).\n"
   "  --boundary  border rule: edge-only (default) or edge-and-corner.\n"
   "Shared vertex and edge samples are computed once, so the result is watertight, with the\n"
   "input's borders, Euler characteristic and orientability. Prints its counts and the time\n"
@@ -39,25 +41,31 @@ const examples::Choices<CGAL_ext::Boundary_interpolation> boundaries = {
   {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
   {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}};
 
+enum class Scheme { catmull_clark, loop };
+
+const examples::Choices<Scheme> schemes = {{"catmull-clark", Scheme::catmull_clark}, {"loop", Scheme::loop}};
+
 int tessellate(int argc, char** argv)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   namespace S = CGAL_ext::Subdivision;
-  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--rate", "--boundary"}, {});
+  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--rate", "--scheme", "--boundary"}, {});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (!args.has("--rate"))
     throw examples::Usage_error("--rate is required");
   const int rate = int(examples::integer_argument("--rate", args.value("--rate", ""), 1, 64));
   const auto boundary = examples::choice_argument("--boundary", args.value("--boundary", "edge-only"), boundaries);
+  const Scheme scheme = examples::choice_argument("--scheme", args.value("--scheme", "catmull-clark"), schemes);
 
   Mesh mesh;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
   const auto start = std::chrono::steady_clock::now();
-  const Mesh out =
-    S::tessellate<S::Catmull_clark_mask>(mesh, rate, CGAL_ext::parameters::boundary_interpolation(boundary));
+  const auto np = CGAL_ext::parameters::boundary_interpolation(boundary);
+  const Mesh out = scheme == Scheme::loop ? S::tessellate<S::Loop_mask>(mesh, rate, np)
+                                          : S::tessellate<S::Catmull_clark_mask>(mesh, rate, np);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], out);
   examples::Json_object line = examples::mesh_summary(out);

@@ -27,6 +27,17 @@ add_test(NAME tessellate.mobius_counts COMMAND tessellate ${_data}/mobius_20x4_q
 set_tests_properties(tessellate.mobius_counts PROPERTIES PASS_REGULAR_EXPRESSION
   "^{\"vertices\":780,\"edges\":1500,\"faces\":720,\"border_loops\":1,")
 
+# Loop: the Möbius strip of 160 triangles (100 vertices, 260 edges) at rate 3:
+# 100 + 260 x 2 + 160 x 1 vertices (one inside each triangle), 160 x 9
+# triangles, still one non-orientable strip. A face that is not a triangle is refused.
+add_test(NAME tessellate.loop_mobius COMMAND tessellate ${_data}/mobius_20x4_tris.obj
+         ${_out}/tessellate_loop_mobius.obj --rate 3 --scheme loop)
+set_tests_properties(tessellate.loop_mobius PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":780,\"edges\":2220,\"faces\":1440,\"border_loops\":1,\"mobius_edges\":[0-9]+,\"orientable\":false,.*\"euler_characteristic\":0,\"valid\":true,")
+cgal_ext_tool_fails(tessellate.fails.loop_on_quads tessellate
+  "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--rate;2;--scheme;loop"
+  "^tessellate: [^\n]*not a triangle[^\n]*\n$")
+
 # A file that is not there, a rate out of range, a border rule that is none of the
 # accepted ones: one line, exit 2.
 cgal_ext_tool_fails(tessellate.fails.missing_file tessellate
