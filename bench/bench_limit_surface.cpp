@@ -46,7 +46,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 #endif
 
 #include <algorithm>
@@ -216,14 +216,10 @@ double over_faces(std::size_t faces, int threads, const Work& work)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if (threads > 1) {
-    std::vector<double> sums(faces / 256 + 1, 0.0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-      sums[r.begin() / 256] += work(r.begin(), r.end());
-    });
-    double sum = 0;
-    for (double s : sums)
-      sum += s;
-    return sum;
+    return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, faces, 256), 0.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double sum) { return sum + work(r.begin(), r.end()); },
+      [](double a, double b) { return a + b; });
   }
 #endif
   (void)threads;

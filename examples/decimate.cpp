@@ -118,6 +118,8 @@ int decimate(int argc, char** argv)
   const examples::Json_array dropped = examples::drop_corner_channels_if(
     input, "decimation does not carry them", args.has(examples::drop_corner_data_flag));
   Mesh mesh = input;
+  // Of the input as read: the cage, before its faces are split.
+  const auto cage = args.has("--limit-distance") ? examples::cage_surface(input) : nullptr;
   const auto start = std::chrono::steady_clock::now();
   CGAL_ext::decimate(mesh, CGAL_ext::parameters::number_of_faces(faces)
                              .face_ratio(ratio)
@@ -128,8 +130,8 @@ int decimate(int argc, char** argv)
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
   std::optional<double> to_limit;
-  if (args.has("--limit-distance")) // of the input as read: the cage, before its faces are split
-    to_limit = examples::limit_distance(mesh, input);
+  if (cage)
+    to_limit = examples::limit_distance(mesh, *cage);
   std::optional<double> hausdorff;
   if (!args.has("--no-hausdorff")) {
     CGAL_ext::triangulate_faces(input); // CGAL's sampling wants triangles; the surface is the same

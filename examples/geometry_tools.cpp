@@ -332,7 +332,9 @@ const Tool_usage curvature_usage{
   "                       (CGAL_ext::mean_curvature(dart, mesh)), not per vertex.\n"
   "  max_curvature, min_curvature  the principal curvatures k1 >= k2 from the same side (a cubic jet\n"
   "                       fitted to two rings, CGAL_ext::principal_curvatures()); only where there\n"
-  "                       is no Moebius edge, as mean_curvature.\n"
+  "                       is no Moebius edge, as mean_curvature; NaN at a vertex where no jet can\n"
+  "                       be fitted (fewer than 6 points within two rings, no normal), counted in\n"
+  "                       the JSON line (without_principal_curvatures).\n"
   "  --triangulate        split polygons into triangles first (else they are an error)\n"
   "Prints the counts, the total angle defect and the ranges of the curvatures as one line of JSON.\n"};
 
@@ -363,14 +365,20 @@ double vertex_area(const Mesh& mesh, Vertex_index v)
 }
 
 // k1 >= k2 seen from the side `sign` gives (see vertex_side()): from the
-// other side of `d` they are -k2 and -k1. A vertex on no face has none (0).
-std::array<double, 2> principal_curvatures_from(const Mesh& mesh, Dart d, double sign)
+// other side of `d` they are -k2 and -k1. None (NaN, counted by the caller)
+// where the jet cannot be fitted: a vertex on no face, fewer than 6 points
+// within two rings (a small component), no normal (degenerate faces).
+std::optional<std::array<double, 2>> principal_curvatures_from(const Mesh& mesh, Dart d, double sign)
 {
   if (!d.is_valid())
-    return {0.0, 0.0};
-  const CGAL_ext::Principal_curvatures c = CGAL_ext::principal_curvatures(d, mesh);
-  return sign > 0 ? std::array<double, 2>{c.max_curvature, c.min_curvature}
-                  : std::array<double, 2>{-c.min_curvature, -c.max_curvature};
+    return std::nullopt;
+  try {
+    const CGAL_ext::Principal_curvatures c = CGAL_ext::principal_curvatures(d, mesh);
+    return sign > 0 ? std::array<double, 2>{c.max_curvature, c.min_curvature}
+                    : std::array<double, 2>{-c.min_curvature, -c.max_curvature};
+  } catch (const CGAL_ext::Parameter_error&) {
+    return std::nullopt;
+  }
 }
 
 struct Range
@@ -404,6 +412,7 @@ int curvature(int argc, char** argv)
   }
   double total = 0;
   Range gaussian_range, norm_range, mean_range, k1_range, k2_range;
+  std::size_t without_principal = 0;
   for (Vertex_index v : mesh.vertices()) {
     defect[v] = CGAL_ext::angle_defect(v, mesh);
     total += defect[v];
@@ -417,11 +426,15 @@ int curvature(int argc, char** argv)
       const auto [d, sign] = vertex_side(mesh, v);
       (*mean)[v] = d.is_valid() ? sign * CGAL_ext::mean_curvature(d, mesh) : 0.0;
       mean_range.add((*mean)[v]);
-      const std::array<double, 2> k = principal_curvatures_from(mesh, d, sign);
-      (*k1)[v] = k[0];
-      (*k2)[v] = k[1];
-      k1_range.add(k[0]);
-      k2_range.add(k[1]);
+      const std::optional<std::array<double, 2>> k = principal_curvatures_from(mesh, d, sign);
+      (*k1)[v] = k ? (*k)[0] : std::numeric_limits<double>::quiet_NaN();
+      (*k2)[v] = k ? (*k)[1] : std::numeric_limits<double>::quiet_NaN();
+      if (k) {
+        k1_range.add((*k)[0]);
+        k2_range.add((*k)[1]);
+      } else {
+        ++without_principal;
+      }
     }
   }
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
@@ -430,6 +443,7 @@ int curvature(int argc, char** argv)
     .add("total_angle_defect", total)
     .add("gaussian_curvature", gaussian_range.json())
     .add("mean_curvature_norm", norm_range.json());
+  line.add("without_principal_curvatures", without_principal);
   if (signed_mean)
     line.add("max_curvature", k1_range.json()).add("min_curvature", k2_range.json()).add("mean_curvature", mean_range.json());
   else

@@ -15,17 +15,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace examples {
 
-// The largest distance from the vertices and face centroids of `result` to
-// the Catmull–Clark limit surface of `cage` (its own sharpness maps).
 template <class P>
-double limit_distance(const CGAL_ext::Mobius_mesh<P>& result, const CGAL_ext::Mobius_mesh<P>& cage)
+using Cage_surface = CGAL_ext::Subdivision::Limit_surface<CGAL_ext::Subdivision::Catmull_clark_mask, P>;
+
+// The Catmull–Clark limit surface of `cage` (its own sharpness maps), made
+// before the tool's work, so that a cage it refuses stops the tool before
+// anything is written.
+template <class P>
+std::unique_ptr<Cage_surface<P>> cage_surface(const CGAL_ext::Mobius_mesh<P>& cage)
 {
-  namespace S = CGAL_ext::Subdivision;
-  const S::Limit_surface<S::Catmull_clark_mask, P> surface(cage);
+  return std::make_unique<Cage_surface<P>>(cage);
+}
+
+// The largest distance from the vertices and face centroids of `result` to `surface`.
+template <class P>
+double limit_distance(const CGAL_ext::Mobius_mesh<P>& result, const Cage_surface<P>& surface)
+{
   double farthest = 0;
   const auto measure = [&](const P& p) {
     farthest = (std::max)(farthest, std::sqrt(CGAL::to_double(surface.closest_point(p).squared_distance)));

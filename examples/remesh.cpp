@@ -112,7 +112,7 @@ int remesh(int argc, char** argv)
                     .stop_when_converged(!args.has("--all-iterations"))
                     .allow_narrow_regions(!args.has("--refuse-narrow"))
                     .project_to_limit_surface(args.has("--project-to-limit"));
-  const Mesh input = args.has("--project-to-limit") ? mesh : Mesh();
+  const auto cage = args.has("--project-to-limit") ? examples::cage_surface(mesh) : nullptr;
   // Without --max-memory, the library's default: the memory available.
   const CGAL_ext::Isotropic_remeshing_result result =
     args.has("--max-memory") ? CGAL_ext::isotropic_remeshing(mesh, L, np.maximum_memory(max_memory))
@@ -136,7 +136,7 @@ int remesh(int argc, char** argv)
     .add("narrowest_width", result.narrowest_width)
     .add("seconds", seconds);
   if (args.has("--project-to-limit"))
-    line.add("limit_distance", examples::limit_distance(mesh, input));
+    line.add("limit_distance", examples::limit_distance(mesh, *cage));
   if (args.has(examples::drop_corner_data_flag))
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);

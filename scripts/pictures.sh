@@ -14,7 +14,7 @@ launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_EXT_BUILD_TESTS=OFF -DCGAL_EXT_BUILD_EXAMPLES=ON \
       "${launcher[@]}" >/dev/null
-cmake --build "$build" --target subdivide merge offset decimate remesh geodesics -j "${CGAL_EXT_JOBS:-$(nproc)}"
+cmake --build "$build" --target subdivide merge offset decimate remesh geodesics tessellate -j "${CGAL_EXT_JOBS:-$(nproc)}"
 cmake --build "$build" --target view -j "${CGAL_EXT_JOBS:-$(nproc)}" ||
   { echo "pictures: the view tool was not built (apt-get install libcgal-qt5-dev)" >&2; exit 2; }
 tools=$build/examples
@@ -113,3 +113,10 @@ edges=1 render "$work/boys_remeshed.obj" "$out/boys_remeshed.png"
 # triangulated) from vertex 0, by the heat method: violet near, yellow far.
 "$tools/geodesics" "$work/klein_cc2.obj" "$work/klein_distance.ply" --source 0 --triangulate >/dev/null
 scalar=distance render "$work/klein_distance.ply" "$out/klein_geodesic_distance.png"
+
+# The Catmull–Clark limit surface of the Klein bottle's cage (288 quads),
+# tessellated at rate 8 (every quad 8 x 8, shared samples computed once):
+# the cage with its edges, the tessellation beside it.
+"$tools/tessellate" "$data/klein_fig8_24x12_quads.obj" "$work/klein_tessellated.obj" --rate 8 >/dev/null
+edges=1 render "$data/klein_fig8_24x12_quads.obj" "$out/klein_cage.png" 360 300
+render "$work/klein_tessellated.obj" "$out/klein_tessellated.png" 360 300

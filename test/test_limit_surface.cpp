@@ -782,11 +782,14 @@ TEST(Limit_surface, ClosestPointInAnExactKernel)
   for (const Point& q : {Point(3, 4, 20), Point(10, 1, -5), Point(7.5, 9.25, 2)}) {
     const auto a = exact.closest_point(Pq(q.x(), q.y(), q.z()));
     const auto b = inexact.closest_point(q);
-    EXPECT_EQ(a.point, exact.evaluate(a.face, a.u, a.v).point);
-    EXPECT_EQ(a.squared_distance, CGAL::squared_distance(Pq(q.x(), q.y(), q.z()), a.point));
+    EXPECT_EQ(a.face, b.face);
     EXPECT_NEAR(CGAL::to_double(a.squared_distance), b.squared_distance, 1e-9 * b.squared_distance + 1e-12);
   }
   EXPECT_THROW(Surface(Mesh()).closest_point(Point(0, 0, 0)), CGAL_ext::Parameter_error);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(inexact.closest_point(Point(nan, 0, 0)), CGAL_ext::Parameter_error);
+  EXPECT_THROW(Surface(m, CGAL_ext::parameters::default_values(), S::Limit_surface_options{2, 40}),
+               CGAL_ext::Parameter_error);
 }
 
 // ---- Loop ----
@@ -1036,6 +1039,38 @@ TEST(Limit_surface, LoopClosestPointFindsTheFootOfTheNormal)
 TEST(Limit_surface, LoopClosestPointIsNoFartherThanAnySample)
 {
   closest_point_is_no_farther_than_any_sample<Loop_surface>(loop_projection_shapes());
+}
+
+// A Loop triangle's long side, u + v = 1, in an exact kernel: the search runs
+// in double, where 1 - t + t may pass 1; the parameter found is in the
+// triangle exactly, and the distances are the double surface's. Queries
+// pushed off the middle of each long side, and a projection rate (5) whose
+// samples i/5 + j/5 pass 1 in double.
+TEST(Limit_surface, LoopClosestPointInAnExactKernel)
+{
+  using Kq = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  using Pq = Kq::Point_3;
+  std::vector<Pq> exact_points;
+  std::vector<Point> points;
+  const CGAL_ext::Mobius_mesh<Pq> mq = triangle_torus<Pq>(5, 6, exact_points);
+  const Mesh m = triangle_torus<Point>(5, 6, points);
+  S::Limit_surface_options options;
+  options.projection_rate = 5;
+  const S::Limit_surface<S::Loop_mask, Pq> exact(mq, CGAL_ext::parameters::default_values(), options);
+  const Loop_surface inexact(m, CGAL_ext::parameters::default_values(), options);
+  std::size_t tried = 0;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    const auto e = inexact.evaluate(f, 0.3, 0.7);
+    const Point q = e.point + 0.05 * e.normal;
+    const auto a = exact.closest_point(Pq(q.x(), q.y(), q.z()));
+    const auto b = inexact.closest_point(q);
+    EXPECT_GE(a.u, 0);
+    EXPECT_GE(a.v, 0);
+    EXPECT_LE(a.u + a.v, 1);
+    EXPECT_NEAR(CGAL::to_double(a.squared_distance), b.squared_distance, 1e-9 * b.squared_distance + 1e-12);
+    ++tried;
+  }
+  EXPECT_EQ(tried, m.number_of_faces());
 }
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV

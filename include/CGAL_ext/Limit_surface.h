@@ -28,6 +28,7 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -55,8 +56,12 @@ struct Limit_surface_options
   /// `Limit_surface::closest_point()` starts from (a quad is sampled on a
   /// grid of this many cells a side, each sub-face of another face on half
   /// as many, a triangle of a Loop surface on a triangular grid of this many
-  /// cells a side): more makes the structure larger and the search try fewer
-  /// faces; the result does not depend on it where the closest point is unique.
+  /// cells a side; 0 counts as 1, more than 1024 as 1024): more makes the
+  /// structure larger and the search try fewer faces. The faces tried are
+  /// those whose samples come within the nearest sample's distance plus four
+  /// times the largest gap between the surface and its samples measured at
+  /// the cells' centres, an estimate: a finer rate makes a miss less likely
+  /// where the surface curves sharply within a cell.
   unsigned projection_rate = 4;
 };
 
@@ -157,6 +162,8 @@ public:
   using Evaluation = Limit_surface_point<Kernel>;
   /// What `closest_point()` returns.
   using Location = Limit_surface_location<Kernel>;
+  /// The deepest approximation level the constructor takes.
+  static constexpr unsigned max_approximation_level = 31;
 
   /// \brief makes the limit surface of `mesh` (which may be freed afterwards).
   ///
@@ -175,8 +182,9 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// \throws Parameter_error if `mesh` has removed elements, a sharpness is
-  /// NaN or negative, the boundary interpolation is `none`, or (`Loop_mask`)
-  /// a face is not a triangle.
+  /// NaN or negative, the boundary interpolation is `none`, an approximation
+  /// level is above `max_approximation_level` (31), or (`Loop_mask`) a face
+  /// is not a triangle.
   template <class NP = parameters::Default_named_parameters>
   explicit Limit_surface(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values(),
                          const Limit_surface_options& options = Limit_surface_options())
@@ -190,6 +198,11 @@ public:
     options_.level_sharp = std::max(options.approx_level_sharp, options.approx_level_smooth);
     if (options_.boundary == Boundary_interpolation::none)
       throw Parameter_error("Limit_surface: Boundary_interpolation::none is not supported");
+    // A patch's place in a Loop triangle's quadtree is two bits a level of
+    // one 64-bit word (and 31 levels refine a face 2^31 times a side).
+    if (options_.level_sharp > max_approximation_level)
+      throw Parameter_error("Limit_surface: approximation level " + std::to_string(options_.level_sharp) +
+                            " is above " + std::to_string(max_approximation_level));
     if constexpr (is_loop)
       for (Face_index f : mesh.faces())
         if (mesh.degree(f) != 3)
@@ -265,21 +278,28 @@ public:
   /// The search runs in `double`; `point` and `normal` are then evaluated
   /// at the parameter found, in the kernel (exactly, in an exact kernel, at
   /// that rational parameter), and `squared_distance` computed from them.
-  /// \throws Parameter_error if the mesh has no face.
+  /// \throws Parameter_error if a coordinate of `query` is not a finite
+  /// number, or the mesh has no face (or only degenerate ones).
   Location closest_point(const P& query) const
   {
     std::call_once(*projection_once_, [&] {
       projection_ =
         std::make_unique<internal::Limit_projection<Limit_surface>>(*this, base_.mesh, projection_rate_, is_loop);
     });
+    if (!(std::isfinite(CGAL::to_double(query.x())) && std::isfinite(CGAL::to_double(query.y())) &&
+          std::isfinite(CGAL::to_double(query.z()))))
+      throw Parameter_error("Limit_surface::closest_point: the query has a coordinate that is not a finite number");
     if (projection_->empty())
-      throw Parameter_error("Limit_surface::closest_point: the mesh has no face");
+      throw Parameter_error("Limit_surface::closest_point: no surface to project onto (the mesh has no face, or "
+                            "every sample of its faces is degenerate)");
     const internal::Projection_result r = projection_->closest(
       *this, CGAL::Simple_cartesian<double>::Point_3(CGAL::to_double(query.x()), CGAL::to_double(query.y()), CGAL::to_double(query.z())));
     Location location;
     location.face = projection_->tile(r.tile).face;
-    location.u = FT(r.u);
-    location.v = FT(r.v);
+    const std::array<FT, 2> at =
+      internal::Limit_projection<Limit_surface>::kernel_parameters(projection_->tile(r.tile), r.u, r.v);
+    location.u = at[0];
+    location.v = at[1];
     const Evaluation e = evaluate(location.face, location.u, location.v);
     location.point = e.point;
     location.normal = e.normal;

@@ -176,7 +176,11 @@ limit_surface_to_project_on(const Mobius_mesh<P>& mesh, const NP& np)
 ///       the middle of its border neighbours, onto the input's border loop,
 ///       then onto the limit surface. So a remeshed cage lies on its smooth
 ///       surface, but for the vertices that never move: protected ones, and
-///       those whose every move would turn a triangle over.}
+///       those whose every move would turn a triangle over. The limit surface
+///       reads `edge_sharpness_map`, `vertex_sharpness_map`,
+///       `boundary_interpolation`, `crease_method` and `vertex_point_map`
+///       as `Limit_surface` does, and refuses what it refuses;
+///       `maximum_memory` does not count it.}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
@@ -219,6 +223,8 @@ limit_surface_to_project_on(const Mobius_mesh<P>& mesh, const NP& np)
 /// foresee, such as a closed tube thinner than L).
 /// \throws Euler_error if a polygon cannot be triangulated (triangulate_faces()),
 /// or if an edit is refused part way (two faces on the same corners, say).
+/// \throws Parameter_error as `Subdivision::Limit_surface`'s constructor
+/// with `project_to_limit_surface(true)`.
 /// In all these cases `mesh` is as it was before the call: the checks run
 /// before it is touched, and a failure part way puts it back from a copy
 /// (property maps taken before such a failure must then be taken again).

@@ -17,6 +17,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -43,22 +44,19 @@ struct Principal_curvatures
 
 namespace internal {
 
-// The vertices within `rings` edges of v, v first, each once.
+// The vertices within `rings` edges of v, v first, each once. A few dozen:
+// looked up in the list itself, so that a call costs the rings, not the mesh.
 template <class P>
 std::vector<Vertex_index> vertex_rings(const Mobius_mesh<P>& mesh, Vertex_index v, unsigned rings)
 {
   std::vector<Vertex_index> found{v};
-  std::vector<bool> seen(mesh.num_vertices(), false);
-  seen[v.idx()] = true;
   std::size_t begin = 0;
   for (unsigned ring = 0; ring < rings; ++ring) {
     const std::size_t end = found.size();
     for (std::size_t i = begin; i < end; ++i)
       for (Dart d : CGAL_ext::halfedges_around_target(found[i], mesh))
-        if (!seen[mesh.source(d).idx()]) {
-          seen[mesh.source(d).idx()] = true;
+        if (std::find(found.begin(), found.end(), mesh.source(d)) == found.end())
           found.push_back(mesh.source(d));
-        }
     begin = end;
   }
   return found;

@@ -247,6 +247,9 @@ void limit_corner_values(Mobius_mesh<P>& mesh, const std::string& name, const NP
 /// the last level (null on the border), `values` their limits; the numbers
 /// and the weights are as `limit_corner_values()`'s.
 /// \tparam Mask `Catmull_clark_mask` or `Loop_mask`
+/// \throws Parameter_error if a face of the last level is not a quad
+/// (Catmull–Clark) or a triangle (Loop), checked before anything is
+/// written, or as `Refiner::interpolate_face_varying()`.
 template <class Mask, class W, class Value>
 void limit_face_varying(const Refiner<Mask, W>& refiner, Face_varying_interpolation mode,
                         std::vector<std::uint32_t>& corners, std::vector<Value>& values)

@@ -137,7 +137,7 @@ inline std::array<Gregory_triangle_corner, 3> gregory_triangle_corners(const std
     x.valence = x.faces + (x.boundary ? 1 : 0);
     x.regular = (x.faces << (x.boundary ? 1 : 0)) == 6 && !x.sharp;
     if (!x.regular)
-      x.cosine = std::cos((x.boundary ? M_PI : 2.0 * M_PI) / double(x.faces));
+      x.cosine = std::cos((x.boundary ? CGAL_PI : 2.0 * CGAL_PI) / double(x.faces));
   }
   for (int k = 0; k < 3; ++k) {
     Gregory_triangle_corner& x = g[k];
@@ -192,7 +192,7 @@ void irregular_edge_rows(const Gregory_triangle_corner& x, Row& p, Row& ep, Row&
     const Limit_ring<P> r = fan_ring<P>(n, n, false);
     position_mask<Loop_mask, double>(r, pm);
     loop_tangent_masks(r, t1, t2);
-    const double scale = (3.0 + 2.0 * std::cos(2.0 * M_PI / double(n))) / (6.0 * double(n));
+    const double scale = (3.0 + 2.0 * std::cos(2.0 * CGAL_PI / double(n))) / (6.0 * double(n));
     std::vector<double> t(n);
     for (unsigned i = 0; i < n; ++i)
       t[i] = pm.edge[i] + t1.edge[i] * scale;
@@ -212,7 +212,7 @@ void irregular_edge_rows(const Gregory_triangle_corner& x, Row& p, Row& ep, Row&
   loop_tangent_masks(r, t1, t2);
   p = {{x.v, pm.vertex}, {ring[0], pm.edge[0]}, {ring[N], pm.edge[N]}};
   auto edge_point = [&](Row& e, unsigned ring_edge) {
-    const double a = M_PI / double(N) * double(ring_edge), c = std::cos(a), s = std::sin(a);
+    const double a = CGAL_PI / double(N) * double(ring_edge), c = std::cos(a), s = std::sin(a);
     e = {{x.v, t2.vertex * s / 24.0 + pm.vertex}};
     for (unsigned i = 0; i <= N; ++i)
       e.push_back({ring[i], t2.edge[i] * s / 24.0});

@@ -156,13 +156,24 @@ public:
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.build();
-    tree_.accelerate_distance_queries(); // now: lazily, the first query would build it, racing others
+    tree_.accelerate_distance_queries(); // now, while one thread holds the structure, not in a query
   }
   Limit_projection(const Limit_projection&) = delete;
   Limit_projection& operator=(const Limit_projection&) = delete;
 
   bool empty() const { return triangles_.empty(); }
   const Projection_tile& tile(std::uint32_t i) const { return tiles_[i]; }
+
+  // A parameter found in double, as the kernel's numbers: on a triangle's
+  // long side u + v may pass 1 by a rounding in double, which an exact
+  // kernel would refuse; there v is taken as 1 - u, in the kernel.
+  static std::array<FT, 2> kernel_parameters(const Projection_tile& t, double u, double v)
+  {
+    FT fu(u), fv(v);
+    if (t.triangle && fu + fv > FT(1))
+      fv = FT(1) - fu;
+    return {fu, fv};
+  }
 
   // The closest point of the surface to q, among the local minima that
   // Newton's method reaches in the tiles the sampling puts near q.
@@ -223,7 +234,8 @@ private:
   K::Point_3 sample(const Surface& surface, const Projection_tile& t, double s, double r) const
   {
     const std::array<double, 2> uv = face_parameters(t, s, r);
-    return to_point(surface.evaluate(t.face, FT(uv[0]), FT(uv[1])).point);
+    const std::array<FT, 2> at = kernel_parameters(t, uv[0], uv[1]);
+    return to_point(surface.evaluate(t.face, at[0], at[1]).point);
   }
 
   void add_tile(const Surface& surface, const Projection_tile& t, int n)
@@ -308,7 +320,8 @@ private:
 
   Local local(const Surface& surface, const Projection_tile& t, double u, double v, const K::Point_3& q) const
   {
-    const auto e = surface.evaluate(t.face, FT(u), FT(v));
+    const std::array<FT, 2> at = kernel_parameters(t, u, v);
+    const auto e = surface.evaluate(t.face, at[0], at[1]);
     Local l{to_point(e.point) - q, to_vector(e.du), to_vector(e.dv), to_vector(e.duu), to_vector(e.duv),
             to_vector(e.dvv), 0.0};
     l.squared_distance = l.r.squared_length();

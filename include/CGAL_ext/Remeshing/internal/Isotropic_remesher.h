@@ -269,7 +269,7 @@ public:
       }
       before = after;
     }
-    project_in_place(); // those whose relaxed point would have turned a triangle over
+    project_in_place(); // every free vertex again: those whose relaxed point was refused stay off it otherwise
     return done;
   }
 
@@ -696,12 +696,28 @@ private:
     }
   }
 
+  // Moves v to `at(fraction)` for the largest of 1, 1/2, ... 1/16 that turns
+  // no triangle around it over (as CGAL gives up a move after four halvings);
+  // returns that fraction, or 0 if none.
+  template <class PointAt>
+  double move_keeping_sides(Vertex_index v, const PointAt& at)
+  {
+    for (double fraction = 1; fraction > 0.05; fraction /= 2) {
+      const Remeshing_point to = at(fraction);
+      if (remeshing_move_keeps_sides(mesh_.halfedge(v), to, mesh_)) {
+        mesh_.point(v) = P(to.x(), to.y(), to.z());
+        check_star(v);
+        return fraction;
+      }
+    }
+    return 0;
+  }
+
   // With options_.project (the limit surface), every free vertex goes to
   // the closest point of that surface to where it is: at the start, where the
   // input's vertices are far from it (a cage's) and their edges long enough
   // to take the move, and at the end, for those whose relaxed point was
-  // refused. A move that would turn a triangle over is halved, as CGAL does,
-  // four times at most.
+  // refused.
   void project_in_place()
   {
     if (!options_.project)
@@ -710,21 +726,13 @@ private:
       if (mesh_.is_isolated(v) || is_fixed(v))
         continue;
       const Remeshing_point from = approximate(v), to = options_.project(from);
-      for (double fraction = 1; fraction > 0.05; fraction /= 2) {
-        const Remeshing_point at = from + fraction * (to - from);
-        if (remeshing_move_keeps_sides(mesh_.halfedge(v), at, mesh_)) {
-          mesh_.point(v) = P(at.x(), at.y(), at.z());
-          check_star(v);
-          break;
-        }
-      }
+      move_keeping_sides(v, [&](double fraction) { return from + fraction * (to - from); });
     }
   }
 
   // relax_constraints: each vertex of a protected polyline but its corners
-  // slides along the input's polyline (see Constraint_polylines). As CGAL, a
-  // move that would turn a triangle over is halved, four times at most,
-  // before it is given up; any part of it stays on the polyline.
+  // slides along the input's polyline (see Constraint_polylines); any part
+  // of a move stays on the polyline.
   void slide_along_constraints()
   {
     if (!polylines_)
@@ -732,15 +740,9 @@ private:
     for (const Polyline_move& move : polylines_->relaxation_moves()) {
       const Vertex_index v = polylines_->vertex(move);
       CGAL_assertion(!mesh_.is_removed(v) && is_fixed(v));
-      for (double fraction = 1; fraction > 0.05; fraction /= 2) {
-        const Remeshing_point to = polylines_->point_after(move, fraction);
-        if (remeshing_move_keeps_sides(mesh_.halfedge(v), to, mesh_)) {
-          mesh_.point(v) = P(to.x(), to.y(), to.z());
-          polylines_->commit(move, fraction);
-          check_star(v);
-          break;
-        }
-      }
+      const double done = move_keeping_sides(v, [&](double fraction) { return polylines_->point_after(move, fraction); });
+      if (done > 0)
+        polylines_->commit(move, done);
     }
   }
 

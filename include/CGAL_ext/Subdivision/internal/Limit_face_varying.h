@@ -195,10 +195,34 @@ std::vector<Value> limit_vertex_values(const Level& L, const Fvar_level& F, cons
 // remember sharpness since spent. `corners` and `values` as
 // Refiner::interpolate_face_varying() takes them; out, the last level's
 // corners and the limits of its values.
+// The limit masks read quad (Catmull–Clark) or triangle (Loop) rings: a
+// refiner without levels may still hold the base's other faces.
+template <class Mask>
+void check_level_face_degrees(const char* function, const Level& L)
+{
+  constexpr u32 degree = std::is_same_v<Mask, Catmull_clark_mask> ? 4 : 3;
+  if (L.face_degree == degree)
+    return;
+  for (u32 f = 0; f < L.nf; ++f) {
+    u32 n = 0, h = L.f_first[f];
+    do {
+      ++n;
+      h = dart_encoding::halfedge_of_dart(L.h_next[h]);
+    } while (h != L.f_first[f]);
+    if (n != degree)
+      throw Parameter_error(std::string(function) + ": the limit masks of " +
+                            (degree == 4 ? "Catmull-Clark need a quad mesh (refine once first)"
+                                         : "Loop need a triangle mesh") +
+                            ", but face f" + std::to_string(f) + " of the last level has " + std::to_string(n) +
+                            " sides");
+  }
+}
+
 template <class Mask, class W, class Value>
 void limit_face_varying(const Refiner<Mask, W>& r, Face_varying_interpolation mode, std::vector<u32>& corners,
                         std::vector<Value>& values)
 {
+  check_level_face_degrees<Mask>("limit_face_varying", level_of(r, r.number_of_levels()));
   Fvar_level last;
   interpolate_face_varying<CGAL::Sequential_tag>(r, mode, corners, values, [](u32) { return false; }, &last);
   const Fvar_rules rules(mode, r.options().boundary_interpolation);
