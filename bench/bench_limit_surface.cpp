@@ -8,6 +8,8 @@
 //   limit_surface/evaluate/torus320x320  make_torus(mesh, 320, 320): 102 400 quads, all regular
 //   limit_surface/evaluate/cube_level7   a cube refined seven times by catmull_clark(): 98 304 quads
 //                                        round 8 vertices of valence 3 (Gregory patches there)
+//   limit_surface/evaluate/octahedron_level7  Loop: an octahedron refined seven times by loop():
+//                                        131 072 triangles round 6 vertices of valence 4
 // 10 parameters per face (about a million points), the same for both, each
 // evaluated with its first and second derivatives (what Limit_surface
 // always computes). Timed: from the mesh (ours) or the points and face
@@ -16,8 +18,9 @@
 // CGAL_ext_Limit_surface (serial), CGAL_ext_Limit_surface_parallel/threads:N
 // (faces split among N TBB threads, one surface), OpenSubdiv_Bfr and
 // OpenSubdiv_Bfr_parallel/threads:N (one factory; a Surface per thread), and
-// CGAL_ext_catmull_clark_2_levels: uniform refinement to about the same
-// number of points (16 per face; points of the level, not of the limit).
+// CGAL_ext_uniform_2_levels: uniform refinement (catmull_clark() or
+// loop()) to about the same number of points (16 or 10 per face; points of
+// the level, not of the limit).
 //
 //   limit_surface/closest_point/...      ours alone: 10 000 queries near the
 //                                        surface (the search structure built
@@ -59,6 +62,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -68,7 +72,8 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL_ext::Mobius_mesh<Point>;
 namespace S = CGAL_ext::Subdivision;
-using Surface = S::Limit_surface<S::Catmull_clark_mask, Point>;
+template <class Mask>
+using Surface = S::Limit_surface<Mask, Point>;
 
 constexpr int points_per_face = 10;
 
@@ -83,6 +88,12 @@ Input make_input(const std::string& name)
   Input in;
   if (name == "torus320x320") {
     CGAL_ext::make_torus(in.mesh, 320, 320);
+  } else if (name == "octahedron_level7") {
+    const std::vector<Point> corners{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const std::vector<std::vector<std::size_t>> triangles{{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                                          {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    CGAL_ext::polygon_soup_to_mobius_mesh(corners, triangles, in.mesh);
+    S::loop(in.mesh, CGAL_ext::parameters::number_of_iterations(7));
   } else {
     const std::vector<Point> corners{{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -93,8 +104,11 @@ Input make_input(const std::string& name)
   }
   CGAL::Random random(1);
   in.parameters.resize(in.mesh.number_of_faces() * points_per_face);
-  for (auto& uv : in.parameters)
+  for (auto& uv : in.parameters) {
     uv = {random.get_double(0, 1), random.get_double(0, 1)};
+    if (name == "octahedron_level7" && uv[0] + uv[1] > 1) // into the triangle, evenly
+      uv = {1 - uv[0], 1 - uv[1]};
+  }
   return in;
 }
 
@@ -109,7 +123,8 @@ const Input& input(const std::string& name)
 
 // Evaluates the points of faces [begin, end) on `surface`; returns a sum that
 // keeps the compiler from dropping the work.
-double evaluate_ours(const Surface& surface, const Input& in, std::size_t begin, std::size_t end)
+template <class Mask>
+double evaluate_ours(const Surface<Mask>& surface, const Input& in, std::size_t begin, std::size_t end)
 {
   double sum = 0;
   for (std::size_t f = begin; f < end; ++f)
@@ -144,6 +159,7 @@ Osd_input osd_input(const Mesh& m)
   return o;
 }
 
+template <class Mask>
 std::unique_ptr<Far::TopologyRefiner> osd_refiner(const Osd_input& o)
 {
   Far::TopologyDescriptor desc;
@@ -155,7 +171,9 @@ std::unique_ptr<Far::TopologyRefiner> osd_refiner(const Osd_input& o)
   options.SetVtxBoundaryInterpolation(OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   return std::unique_ptr<Far::TopologyRefiner>(
-    Factory::Create(desc, Factory::Options(OpenSubdiv::Sdc::SCHEME_CATMARK, options)));
+    Factory::Create(desc, Factory::Options(std::is_same_v<Mask, S::Loop_mask> ? OpenSubdiv::Sdc::SCHEME_LOOP
+                                                                              : OpenSubdiv::Sdc::SCHEME_CATMARK,
+                                           options)));
 }
 
 // Bfr on faces [begin, end), one Surface and one buffer of patch points
@@ -183,12 +201,13 @@ double evaluate_bfr(const Bfr::RefinerSurfaceFactory<>& factory, const Osd_input
 }
 
 // Both give the same points, or the comparison is void.
+template <class Mask>
 bool same_points(const std::string& name)
 {
   const Input& in = input(name);
-  const Surface surface(in.mesh);
+  const Surface<Mask> surface(in.mesh);
   const Osd_input o = osd_input(in.mesh);
-  const auto refiner = osd_refiner(o);
+  const auto refiner = osd_refiner<Mask>(o);
   const Bfr::RefinerSurfaceFactory<> factory(*refiner);
   std::vector<double> theirs;
   evaluate_bfr(factory, o, in, 0, in.mesh.number_of_faces(), &theirs);
@@ -238,12 +257,13 @@ struct Thread_cap
 #endif
 };
 
+template <class Mask>
 void ours(benchmark::State& state, const std::string& name, int threads)
 {
   const Input& in = input(name);
   const Thread_cap cap(threads);
   for (auto _ : state) {
-    const Surface surface(in.mesh);
+    const Surface<Mask> surface(in.mesh);
     benchmark::DoNotOptimize(over_faces(in.mesh.number_of_faces(), threads, [&](std::size_t b, std::size_t e) {
       return evaluate_ours(surface, in, b, e);
     }));
@@ -251,6 +271,7 @@ void ours(benchmark::State& state, const std::string& name, int threads)
   state.counters["points"] = double(in.parameters.size());
 }
 
+template <class Mask>
 void refinement(benchmark::State& state, const std::string& name)
 {
   const Input& in = input(name);
@@ -258,20 +279,24 @@ void refinement(benchmark::State& state, const std::string& name)
     state.PauseTiming();
     Mesh m = in.mesh;
     state.ResumeTiming();
-    S::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(2));
+    if constexpr (std::is_same_v<Mask, S::Loop_mask>)
+      S::loop(m, CGAL_ext::parameters::number_of_iterations(2));
+    else
+      S::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(2));
     benchmark::DoNotOptimize(m.number_of_vertices());
   }
-  state.counters["points"] = double(in.mesh.number_of_faces() * 16);
+  state.counters["faces"] = double(in.mesh.number_of_faces() * 16); // both schemes: 16 faces a face
 }
 
 #if CGAL_EXT_HAVE_OPENSUBDIV
+template <class Mask>
 void bfr(benchmark::State& state, const std::string& name, int threads)
 {
   const Input& in = input(name);
   const Osd_input o = osd_input(in.mesh);
   const Thread_cap cap(threads);
   for (auto _ : state) {
-    const auto refiner = osd_refiner(o);
+    const auto refiner = osd_refiner<Mask>(o);
     const Bfr::RefinerSurfaceFactory<> factory(*refiner);
     benchmark::DoNotOptimize(over_faces(in.mesh.number_of_faces(), threads, [&](std::size_t b, std::size_t e) {
       return evaluate_bfr(factory, o, in, b, e);
@@ -283,21 +308,23 @@ void bfr(benchmark::State& state, const std::string& name, int threads)
 
 // Queries pushed off the surface along its normal by 1 % of the size, from
 // fresh parameters of random faces.
+template <class Mask>
 void closest_points(benchmark::State& state, const std::string& name)
 {
   const Input& in = input(name);
   std::vector<Point> queries;
   {
-    const Surface surface(in.mesh);
+    const Surface<Mask> surface(in.mesh);
     CGAL::Random random(2);
     for (int i = 0; i < 10000; ++i) {
       const auto f = CGAL_ext::Face_index(std::size_t(random.get_int(0, int(in.mesh.number_of_faces()))));
-      const auto e = surface.evaluate(f, random.get_double(0, 1), random.get_double(0, 1));
+      const double u = random.get_double(0, 1), v = random.get_double(0, 1 - (std::is_same_v<Mask, S::Loop_mask> ? u : 0));
+      const auto e = surface.evaluate(f, u, v);
       queries.push_back(e.point + 0.01 * e.normal);
     }
   }
   for (auto _ : state) {
-    const Surface surface(in.mesh);
+    const Surface<Mask> surface(in.mesh);
     double sum = 0;
     for (const Point& q : queries)
       sum += surface.closest_point(q).squared_distance;
@@ -325,25 +352,31 @@ void add(const std::string& benchmark_name, Args&&... args)
     ->UseRealTime();
 }
 
-void register_all()
+template <class Mask>
+void register_case(const std::string& name)
 {
-  for (const std::string name : {"torus320x320", "cube_level7"}) {
-    const std::string group = "limit_surface/evaluate/" + name + "/";
-    add(group + "CGAL_ext_Limit_surface", ours, name, 1);
+  const std::string group = "limit_surface/evaluate/" + name + "/";
+  add(group + "CGAL_ext_Limit_surface", ours<Mask>, name, 1);
 #ifdef CGAL_LINKED_WITH_TBB
-    for (int t : thread_counts())
-      add(group + "CGAL_ext_Limit_surface_parallel/threads:" + std::to_string(t), ours, name, t);
+  for (int t : thread_counts())
+    add(group + "CGAL_ext_Limit_surface_parallel/threads:" + std::to_string(t), ours<Mask>, name, t);
 #endif
 #if CGAL_EXT_HAVE_OPENSUBDIV
-    add(group + "OpenSubdiv_Bfr", bfr, name, 1);
+  add(group + "OpenSubdiv_Bfr", bfr<Mask>, name, 1);
 #ifdef CGAL_LINKED_WITH_TBB
-    for (int t : thread_counts())
-      add(group + "OpenSubdiv_Bfr_parallel/threads:" + std::to_string(t), bfr, name, t);
+  for (int t : thread_counts())
+    add(group + "OpenSubdiv_Bfr_parallel/threads:" + std::to_string(t), bfr<Mask>, name, t);
 #endif
 #endif
-    add(group + "CGAL_ext_catmull_clark_2_levels", refinement, name);
-    add("limit_surface/closest_point/" + name + "/CGAL_ext_Limit_surface", closest_points, name);
-  }
+  add(group + "CGAL_ext_uniform_2_levels", refinement<Mask>, name);
+  add("limit_surface/closest_point/" + name + "/CGAL_ext_Limit_surface", closest_points<Mask>, name);
+}
+
+void register_all()
+{
+  register_case<S::Catmull_clark_mask>("torus320x320");
+  register_case<S::Catmull_clark_mask>("cube_level7");
+  register_case<S::Loop_mask>("octahedron_level7");
 }
 
 } // namespace
@@ -351,9 +384,9 @@ void register_all()
 int main(int argc, char** argv)
 {
 #if CGAL_EXT_HAVE_OPENSUBDIV
-  for (const char* name : {"torus320x320", "cube_level7"})
-    if (!same_points(name))
-      return 1;
+  if (!same_points<S::Catmull_clark_mask>("torus320x320") || !same_points<S::Catmull_clark_mask>("cube_level7") ||
+      !same_points<S::Loop_mask>("octahedron_level7"))
+    return 1;
 #endif
   register_all();
   benchmark::Initialize(&argc, argv);
