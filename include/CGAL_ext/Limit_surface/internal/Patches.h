@@ -144,18 +144,6 @@ FT power(const FT& x, int k)
   return r;
 }
 
-// The monomial s^a t^b and its derivatives, added `c` times into entry k.
-template <class FT, std::size_t N>
-void add_monomial(Basis<FT, N>& b, std::size_t k, const FT& c, int a, int e, const FT& s, const FT& t)
-{
-  b.w[k] += c * power(s, a) * power(t, e);
-  b.ds[k] += c * FT(a) * power(s, a - 1) * power(t, e);
-  b.dt[k] += c * FT(e) * power(s, a) * power(t, e - 1);
-  b.dss[k] += c * FT(a * (a - 1)) * power(s, a - 2) * power(t, e);
-  b.dst[k] += c * FT(a * e) * power(s, a - 1) * power(t, e - 1);
-  b.dtt[k] += c * FT(e * (e - 1)) * power(s, a) * power(t, e - 2);
-}
-
 template <class FT, std::size_t N>
 void clear(Basis<FT, N>& b)
 {
@@ -193,11 +181,32 @@ void box_spline_basis(const FT& s, const FT& t, Basis<FT, 12>& b)
                                 {0, 0, 0, 0, 0, 0, 2, 6, 6, 2, -1, -2, 0, -2, -1},
                                 {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
                                 {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1}};
-  clear(b);
-  for (std::size_t k = 0; k < 12; ++k)
-    for (int m = 0; m < 15; ++m)
-      if (c[k][m] != 0)
-        add_monomial(b, k, FT(c[k][m]) / FT(12), exponent[m][0], exponent[m][1], s, t);
+  // Each monomial and its five derivatives once, then the integer
+  // combinations: the basis is evaluated once per point, and this is most
+  // of a regular Loop patch's cost.
+  const FT ps[5] = {FT(1), s, s * s, s * s * s, s * s * s * s};
+  const FT pt[5] = {FT(1), t, t * t, t * t * t, t * t * t * t};
+  const auto at = [](const FT* p, int k) { return k < 0 ? FT(0) : p[k]; };
+  std::array<std::array<FT, 15>, 6> mono; // value, d/ds, d/dt, d²/ds², d²/dsdt, d²/dt²
+  for (std::size_t m = 0; m < 15; ++m) {
+    const int a = exponent[m][0], e = exponent[m][1];
+    mono[0][m] = ps[a] * pt[e];
+    mono[1][m] = FT(a) * at(ps, a - 1) * pt[e];
+    mono[2][m] = FT(e) * ps[a] * at(pt, e - 1);
+    mono[3][m] = FT(a * (a - 1)) * at(ps, a - 2) * pt[e];
+    mono[4][m] = FT(a * e) * at(ps, a - 1) * at(pt, e - 1);
+    mono[5][m] = FT(e * (e - 1)) * ps[a] * at(pt, e - 2);
+  }
+  std::array<FT, 12>* out[6] = {&b.w, &b.ds, &b.dt, &b.dss, &b.dst, &b.dtt};
+  const FT twelfth = FT(1) / FT(12);
+  for (std::size_t q = 0; q < 6; ++q)
+    for (std::size_t k = 0; k < 12; ++k) {
+      FT sum(0);
+      for (std::size_t m = 0; m < 15; ++m)
+        if (c[k][m] != 0)
+          sum += FT(c[k][m]) * mono[q][m];
+      (*out[q])[k] = sum * twelfth;
+    }
 }
 
 // The quartic Bernstein polynomial 4!/(i! j! k!) u^i v^j w^k, u = s, v = t,
