@@ -551,8 +551,13 @@ Dart copy_neighbourhood(const Level_mesh<P>& L, Dart d, Level_mesh<P>& out)
     map.push_back({v, c});
     return c;
   };
-  auto es = L.es ? std::optional(out.mesh.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first)
-                 : std::nullopt;
+  // A plain map and a flag, not an optional: GCC 12 warns (falsely) that the
+  // optional's map may be read uninitialised.
+  const bool sharp = bool(L.es);
+  typename Mobius_mesh<P>::template Property_map<Edge_index, float> es_map;
+  if (sharp)
+    es_map = out.mesh.template add_property_map<Edge_index, float>(edge_sharpness_name, 0.0f).first;
+  auto* es = sharp ? &es_map : nullptr;
   Face_index copy_of_face;
   std::vector<Vertex_index> source, copy;
   for (Face_index g : faces) {
