@@ -358,31 +358,30 @@ public:
       throw Parameter_error("Limit_surface::tessellate: the rate " + std::to_string(rate) + " is not positive");
     const auto& m = base_.mesh;
     const auto np = CGAL_ext::parameters::boundary_interpolation(options_.boundary);
-    if constexpr (is_loop) {
-      // limit_point() takes a semi-sharp vertex's crease or corner rule at
-      // once; the surface reaches its limit after the sharpness has decayed,
-      // which the corner evaluation gives.
-      const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+    // A base vertex's sample is limit_point() where that is the surface's
+    // limit there, else the corner evaluation (Bfr's limit point):
+    // limit_point() reads quad rings only (Catmull–Clark), and takes a
+    // semi-sharp vertex's crease or corner rule at once where the surface
+    // reaches it only after the sharpness has decayed (Loop).
+    const auto limit_point_is_the_limit = [&](Vertex_index v) {
+      if constexpr (is_loop) {
         if (Crease::is_semi_sharp(base_.vertex_sharpness(v)))
-          return evaluated;
+          return false;
         for (Dart d : CGAL_ext::halfedges_around_target(m.halfedge(v), m))
           if (Crease::is_semi_sharp(base_.edge_sharpness(d)))
-            return evaluated;
-        return P(limit_point<Loop_mask>(v, m, np));
-      };
-      return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point, true)
-        .run();
-    } else {
-      // limit_point() reads quad rings only; elsewhere the corner evaluation
-      // is Bfr's limit point of the vertex.
-      const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+            return false;
+      } else {
         for (Face_index g : CGAL_ext::faces_around_target(m.halfedge(v), m))
           if (g != Face_index() && m.degree(g) != 4)
-            return evaluated;
-        return P(limit_point<Catmull_clark_mask>(v, m, np));
-      };
-      return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point).run();
-    }
+            return false;
+      }
+      return true;
+    };
+    const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
+      return limit_point_is_the_limit(v) ? P(limit_point<Mask>(v, m, np)) : evaluated;
+    };
+    return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point, is_loop)
+      .run();
   }
 
 private:

@@ -398,19 +398,13 @@ public:
   {
     const auto dk = triangle_darts(L.mesh, d);
     std::array<Corner, 3> corners;
-    bool regular = true, semi = false, sharp_irregular = false;
+    Face_features features;
     for (int k = 0; k < 3; ++k) {
       corners[k] = analyse_corner(L, dk[k], opt_, 3);
-      const bool r = regular_corner(corners[k], 3);
-      regular &= r;
-      semi |= corners[k].semi_sharp;
-      sharp_irregular |= corners[k].sharp && !r;
+      features.add(corners[k], 3);
     }
-    // Far's feature-adaptive selection, as for quads.
-    const unsigned level = where.depth;
-    const bool refine = (level < opt_.level_smooth && (!regular || semi)) ||
-                        (level < std::max(opt_.level_sharp, opt_.level_smooth) && (semi || sharp_irregular));
-    if (!refine) {
+    const bool regular = features.regular;
+    if (!features.refines(opt_, where.depth)) {
       Patch<FT> patch = where;
       if (regular) {
         patch.type = Patch_type::box_spline;

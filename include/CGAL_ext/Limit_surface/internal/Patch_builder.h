@@ -184,6 +184,29 @@ inline bool regular_corner(const Corner& c, unsigned face_size = 4)
   return c.sharp ? c.faces == 1 : c.faces == (face_size == 4 ? 2u : 3u);
 }
 
+// What Far's feature-adaptive selection reads of a face's corners, for
+// quads and Loop triangles alike.
+struct Face_features
+{
+  bool regular = true, semi_sharp = false, sharp_irregular = false;
+
+  void add(const Corner& c, unsigned face_size)
+  {
+    const bool r = regular_corner(c, face_size);
+    regular &= r;
+    semi_sharp |= c.semi_sharp;
+    sharp_irregular |= c.sharp && !r;
+  }
+
+  // Every feature refines up to the smooth level, semi-sharp ones and
+  // irregular sharp corners up to the sharp level.
+  bool refines(const Limit_options& opt, unsigned level) const
+  {
+    return (level < opt.level_smooth && (!regular || semi_sharp)) ||
+           (level < std::max(opt.level_sharp, opt.level_smooth) && (semi_sharp || sharp_irregular));
+  }
+};
+
 // The four corners of the quad of frame d (d runs from corner 0 to corner 1).
 template <class P>
 std::array<Dart, 4> quad_darts(const Mobius_mesh<P>& m, Dart d)
@@ -640,20 +663,13 @@ public:
   {
     const auto dk = quad_darts(L.mesh, d);
     std::array<Corner, 4> corners;
-    bool regular = true, semi = false, sharp_irregular = false;
+    Face_features features;
     for (int k = 0; k < 4; ++k) {
       corners[k] = analyse_corner(L, dk[k], opt_);
-      const bool r = regular_corner(corners[k]);
-      regular &= r;
-      semi |= corners[k].semi_sharp;
-      sharp_irregular |= corners[k].sharp && !r;
+      features.add(corners[k], 4);
     }
-    // Far's feature-adaptive selection: every feature refines up to the
-    // smooth level, semi-sharp ones and irregular sharp corners up to the
-    // sharp level.
-    const bool refine = (level < opt_.level_smooth && (!regular || semi)) ||
-                        (level < std::max(opt_.level_sharp, opt_.level_smooth) && (semi || sharp_irregular));
-    if (!refine) {
+    const bool regular = features.regular;
+    if (!features.refines(opt_, level)) {
       Patch<FT> patch;
       patch.u0 = u0;
       patch.v0 = v0;
