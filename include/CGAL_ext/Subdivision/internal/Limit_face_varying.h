@@ -241,28 +241,6 @@ void limit_face_varying(const Refiner<Mask, W>& r, Face_varying_interpolation mo
   corners.swap(last.corner);
 }
 
-// The value index of each halfedge's corner in `channel` (null on the
-// border), every face corner's checked.
-template <class P, class T>
-std::vector<u32> corner_value_indices(const char* function, const Mobius_mesh<P>& mesh, const Channel_of<T>& channel)
-{
-  std::vector<u32> corners(mesh.number_of_halfedges(), null_u32);
-  const std::size_t n = channel.number_of_values();
-  for (Halfedge_index h : mesh.halfedges()) {
-    if (mesh.is_border(h))
-      continue;
-    const u32 i = channel.index(h);
-    if (i == Channel_of<T>::no_value() || i >= n)
-      throw Parameter_error(std::string(function) + ": corner channel \"" + channel.name() + "\": the corner of face f" +
-                            std::to_string(mesh.face(h).idx()) + " at vertex v" + std::to_string(mesh.target(h).idx()) +
-                            (i == Channel_of<T>::no_value() ? std::string(" has no value")
-                                                            : " has value index " + std::to_string(i) + " of " +
-                                                                std::to_string(n)));
-    corners[h.idx()] = i;
-  }
-  return corners;
-}
-
 template <class P, class T>
 void require_channel_of(const char* function, const Mobius_mesh<P>& mesh, const Channel_of<T>& c, const char* role)
 {
@@ -293,7 +271,7 @@ void write_corner_limits(const char* function, const Mobius_mesh<P>& mesh, const
   for (Face_index f : mesh.faces())
     check_face_degree<Mask>(function, f, mesh);
   const Limit_settings<P, NP> s(mesh, np);
-  const std::vector<u32> user = corner_value_indices(function, mesh, from);
+  const std::vector<u32> user = base_corners(function, mesh, from);
   const Face_varying_interpolation mode = pm::choose_parameter(
     pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation), Face_varying_interpolation::corners_plus1);
   const Fvar_rules rules(mode, CGAL_ext::internal::boundary_interpolation_of(np));
@@ -342,7 +320,7 @@ void write_corner_limits(const char* function, const Mobius_mesh<P>& mesh, const
   using K = typename CGAL::Kernel_traits<P>::Kernel;
   using W = typename Point_values<P>::Weight;
   bool found = false;
-  for_each_channel_type<K>([&](auto tag) {
+  for_each_interpolated_channel_type<K>([&](auto tag) {
     using T = typename decltype(tag)::type;
     if constexpr (Linear_value<W, K, T>::defined) {
       if (found)

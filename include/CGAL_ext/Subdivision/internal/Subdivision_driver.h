@@ -7,6 +7,7 @@
 #define CGAL_EXT_SUBDIVISION_INTERNAL_SUBDIVISION_DRIVER_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Linear_values.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
@@ -69,129 +70,13 @@ struct Point_values<P, K, false>
 
 // ---- the property maps carried through subdivision
 
-// How a vertex value of type T is interpolated: as `Value`, which has
-// `Value + Value` and `W * Value`, the weights being of type W. Not defined
-// for types without a linear combination (integers, strings, colours of
-// bytes): their maps are dropped.
-template <class W, class K, class T, class = void>
-struct Linear_value
-{
-  static constexpr bool defined = false;
-};
-// Floating-point numbers, as the weights' number type (exact with an exact kernel).
-template <class W, class K, class T>
-struct Linear_value<W, K, T, std::enable_if_t<std::is_floating_point_v<T>>>
-{
-  static constexpr bool defined = true;
-  using Value = W;
-  static Value from(const T& t) { return W(t); }
-  static T to(const Value& v) { return T(CGAL::to_double(v)); }
-};
-// The kernel's points and vectors (when its number type is the weights').
-template <class W, class K>
-struct Linear_value<W, K, typename K::Point_3, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
-{
-  static constexpr bool defined = true;
-  using Value = typename K::Vector_3;
-  static Value from(const typename K::Point_3& p) { return p - CGAL::ORIGIN; }
-  static typename K::Point_3 to(const Value& v) { return CGAL::ORIGIN + v; }
-};
-template <class W, class K>
-struct Linear_value<W, K, typename K::Vector_3, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
-{
-  static constexpr bool defined = true;
-  using Value = typename K::Vector_3;
-  static Value from(const Value& v) { return v; }
-  static Value to(const Value& v) { return v; }
-};
+// How values are combined (Linear_values.h), named here as the refiner's own.
+using CGAL_ext::internal::Linear_value;
+using CGAL_ext::internal::for_each_interpolated_type;
+using CGAL_ext::internal::for_each_interpolated_channel_type;
 
-// A fixed-size array of interpolated values (colours, texture coordinates).
-template <class V, std::size_t N>
-struct Value_array
-{
-  std::array<V, N> a;
-};
-template <class V, std::size_t N>
-Value_array<V, N> operator+(const Value_array<V, N>& x, const Value_array<V, N>& y)
-{
-  Value_array<V, N> r = x;
-  for (std::size_t i = 0; i < N; ++i)
-    r.a[i] = r.a[i] + y.a[i];
-  return r;
-}
-template <class W, class V, std::size_t N>
-Value_array<V, N> operator*(const W& w, const Value_array<V, N>& x)
-{
-  Value_array<V, N> r = x;
-  for (std::size_t i = 0; i < N; ++i)
-    r.a[i] = w * r.a[i];
-  return r;
-}
-template <class W, class K, class E, std::size_t N>
-struct Linear_value<W, K, std::array<E, N>, std::enable_if_t<Linear_value<W, K, E>::defined>>
-{
-  static constexpr bool defined = true;
-  using Element = Linear_value<W, K, E>;
-  using Value = Value_array<typename Element::Value, N>;
-  static Value from(const std::array<E, N>& t)
-  {
-    Value v{};
-    for (std::size_t i = 0; i < N; ++i)
-      v.a[i] = Element::from(t[i]);
-    return v;
-  }
-  static std::array<E, N> to(const Value& v)
-  {
-    std::array<E, N> t{};
-    for (std::size_t i = 0; i < N; ++i)
-      t[i] = Element::to(v.a[i]);
-    return t;
-  }
-};
-
-// The vertex value types whose maps are interpolated: a list, as the maps'
-// types are known only at run time (by name and type_info).
-template <class K, class F>
-void for_each_interpolated_type(F&& f)
-{
-  using CGAL_ext::internal::Type_tag;
-  f(Type_tag<float>());
-  f(Type_tag<double>());
-  f(Type_tag<typename K::Point_3>());
-  f(Type_tag<typename K::Vector_3>());
-  CGAL_ext::internal::for_each_small_array_type(f);
-}
-
-// The kernel's 2D points and vectors (texture coordinates).
-template <class W, class K>
-struct Linear_value<W, K, typename K::Point_2, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
-{
-  static constexpr bool defined = true;
-  using Value = typename K::Vector_2;
-  static Value from(const typename K::Point_2& p) { return p - CGAL::ORIGIN; }
-  static typename K::Point_2 to(const Value& v) { return CGAL::ORIGIN + v; }
-};
-template <class W, class K>
-struct Linear_value<W, K, typename K::Vector_2, std::enable_if_t<std::is_same_v<typename K::FT, W>>>
-{
-  static constexpr bool defined = true;
-  using Value = typename K::Vector_2;
-  static Value from(const Value& v) { return v; }
-  static Value to(const Value& v) { return v; }
-};
-
-// The value types of the corner channels that are interpolated: those of the
-// vertex maps, and the kernel's 2D points and vectors.
-template <class K, class F>
-void for_each_channel_type(F&& f)
-{
-  for_each_interpolated_type<K>(f);
-  f(CGAL_ext::internal::Type_tag<typename K::Point_2>());
-  f(CGAL_ext::internal::Type_tag<typename K::Vector_2>());
-}
-
-// The maps of `mesh` that a subdivision carries: vertex maps of the types
-// above, face maps of any type (but the points, the sharpness and the hole
+// The maps of `mesh` that a subdivision carries: vertex maps of the interpolated types
+// (Linear_values.h), face maps of any type (but the points, the sharpness and the hole
 // flags, which the subdivision writes itself), corner channels.
 template <class P>
 bool has_carried_maps(const Mobius_mesh<P>& mesh)
@@ -262,11 +147,11 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
   }
 }
 
-// The corner channel `name` of `mesh` as the refiner takes it: the value
-// index of each halfedge's corner (null on the border). A face corner
-// without a valid index is refused.
+// The value index of each halfedge's corner in `channel` (null on the
+// border), as the refiner takes a channel. A face corner without a valid
+// index is refused, in the words of `function`.
 template <class P, class Channel>
-std::vector<u32> base_corners(const Mobius_mesh<P>& mesh, const Channel& channel)
+std::vector<u32> base_corners(const char* function, const Mobius_mesh<P>& mesh, const Channel& channel)
 {
   std::vector<u32> corners(mesh.number_of_halfedges(), null_u32);
   const std::size_t n = channel.number_of_values();
@@ -276,7 +161,7 @@ std::vector<u32> base_corners(const Mobius_mesh<P>& mesh, const Channel& channel
     const u32 i = channel.index(h);
     if (i == Channel::no_value() || i >= n) {
       std::ostringstream what;
-      what << "subdivision: corner channel \"" << channel.name() << "\": the corner of face " << mesh.face(h)
+      what << function << ": corner channel \"" << channel.name() << "\": the corner of face " << mesh.face(h)
            << " at vertex " << mesh.target(h) << " (" << h << ") has "
            << (i == Channel::no_value() ? std::string("no value") : "value index " + std::to_string(i) + " of " + std::to_string(n));
       throw Parameter_error(what.str());
@@ -295,14 +180,14 @@ void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation 
 {
   using K = typename CGAL::Kernel_traits<P>::Kernel;
   for (const std::string& name : mesh.corner_channels()) {
-    for_each_channel_type<K>([&](auto tag) {
+    for_each_interpolated_channel_type<K>([&](auto tag) {
       using T = typename decltype(tag)::type;
       using L = Linear_value<W, K, T>;
       if constexpr (L::defined) {
         const auto from = mesh.template corner_channel<T>(name);
         if (!from)
           return;
-        std::vector<u32> corners = base_corners(mesh, *from);
+        std::vector<u32> corners = base_corners("subdivision", mesh, *from);
         std::vector<typename L::Value> values;
         values.reserve(from->number_of_values());
         for (const T& t : from->values())
@@ -321,28 +206,17 @@ void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation 
 }
 
 // Refuses, before anything is refined, a mesh with a corner channel that a
-// subdivision by `Mask` cannot carry: one whose values have no linear
-// combination, or any channel for the dual and √3 splits, whose new corners
-// lie across several parent faces.
+// subdivision by `Mask` cannot carry: any channel for the dual and √3 splits,
+// whose new corners lie across several parent faces, or one whose values have
+// no linear combination.
 template <class W, class Mask, class P>
 void check_channels(const Mobius_mesh<P>& mesh)
 {
-  using K = typename CGAL::Kernel_traits<P>::Kernel;
-  for (const std::string& name : mesh.corner_channels()) {
-    bool interpolated = false;
-    for_each_channel_type<K>([&](auto tag) {
-      using T = typename decltype(tag)::type;
-      if constexpr (Linear_value<W, K, T>::defined)
-        interpolated = interpolated || mesh.template corner_channel<T>(name).has_value();
-    });
-    if (Mask::split == Split::dual || Mask::split == Split::sqrt3)
-      throw Parameter_error("subdivision: Doo-Sabin and sqrt(3) subdivision do not carry corner channels (\"" + name +
-                            "\"); remove the channel or subdivide with Catmull-Clark, Loop, bilinear or linear");
-    if (!interpolated)
-      throw Parameter_error("subdivision: corner channel \"" + name +
-                            "\" has values of a type that is not interpolated (floating-point numbers, arrays of them, the "
-                            "kernel's points and vectors are); remove it before subdividing");
-  }
+  if ((Mask::split == Split::dual || Mask::split == Split::sqrt3) && !mesh.corner_channels().empty())
+    throw Parameter_error("subdivision: Doo-Sabin and sqrt(3) subdivision do not carry corner channels (\"" +
+                          mesh.corner_channels().front() +
+                          "\"); remove the channel or subdivide with Catmull-Clark, Loop, bilinear or linear");
+  CGAL_ext::internal::require_interpolated_channels<W>(mesh, "subdivision");
 }
 
 template <class Key, class Sharpness>
