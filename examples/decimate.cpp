@@ -11,7 +11,10 @@
 //   has no area, or with --no-hausdorff)[,"limit_distance":D (with
 //   --limit-distance: the largest distance from the result's vertices and face
 //   centroids to the input's Catmull–Clark limit surface, the shape a
-//   subdivision cage stands for)]}
+//   subdivision cage stands for)][,"corner_values_interpolated":true (the
+//   output has texture coordinates or normals: kept along their seams, where
+//   edges are not collapsed, and interpolated along the collapsed edges
+//   elsewhere, an approximation)][,"corner_channels_dropped":[...]]}
 // A bad file or option: one line on stderr, exit status 2.
 
 #include "arguments.h"
@@ -60,12 +63,13 @@ const examples::Tool_usage usage{
   "                     meshes its sampling can take longer than the decimation.\n"
   "  --limit-distance   take IN as a subdivision cage and say how far the result lies from\n"
   "                     its Catmull-Clark limit surface (limit_distance in the JSON line).\n"
-  "  --drop-corner-data  go on without the input's texture coordinates and normals, which\n"
-  "                     collapses do not carry (an input with them is refused otherwise).\n"
+  "  --drop-corner-data  go on without the input's texture coordinates and normals.\n"
   "  --no-tags          an OBJ OUT without OpenSubdiv's tag lines (the kept creases), which\n"
   "                     CGAL's reader refuses.\n"
-  "Edges with sharpness tags (OBJ 't crease') are kept. Writes OUT and prints its counts,\n"
-  "topology, the time taken and the Hausdorff distance to the input as one line of JSON.\n"};
+  "Edges with sharpness tags (OBJ 't crease') are kept. Texture coordinates and normals are\n"
+  "carried: their seams are kept with their values, and the corners that collapses merge elsewhere\n"
+  "take values interpolated along the collapsed edge. Writes OUT and prints its counts, topology,\n"
+  "the time taken and the Hausdorff distance to the input as one line of JSON.\n"};
 
 // The symmetric Hausdorff distance between the surfaces of two meshes, by
 // CGAL on their Surface_mesh copies (cut along the seams, same geometry);
@@ -115,8 +119,8 @@ int decimate(int argc, char** argv)
   Mesh input;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], input);
-  const examples::Json_array dropped = examples::drop_corner_channels_if(
-    input, "decimation does not carry them", args.has(examples::drop_corner_data_flag));
+  const bool drop = args.has(examples::drop_corner_data_flag);
+  const examples::Json_array dropped = examples::drop_corner_channels_if(input, drop ? "asked" : "", drop);
   Mesh mesh = input;
   // Of the input as read: the cage, before its faces are split.
   const auto cage = args.has("--limit-distance") ? examples::cage_surface(input) : nullptr;
@@ -141,7 +145,9 @@ int decimate(int argc, char** argv)
   examples::Json_object line = examples::mesh_summary(mesh).add("seconds", seconds).add("hausdorff", hausdorff);
   if (to_limit)
     line.add("limit_distance", *to_limit);
-  if (args.has(examples::drop_corner_data_flag))
+  if (!mesh.corner_channels().empty())
+    line.add("corner_values_interpolated", true);
+  if (drop)
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);
   return 0;

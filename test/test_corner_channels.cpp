@@ -326,7 +326,7 @@ TEST(CornerChannels, MergingKeepsEachCornersValue)
   EXPECT_EQ(CGAL_ext::corner_channel_summaries(a)[0].seam_edges, 2u); // the glued edges
 }
 
-TEST(CornerChannels, DecimationRemeshingAndOffsetsRefuseThem)
+TEST(CornerChannels, RemeshingAndOffsetsRefuseThemDecimationKeepsSeams)
 {
   Mesh m;
   CGAL_ext::make_torus(m, 8, 6, 2.0, 0.5);
@@ -343,11 +343,20 @@ TEST(CornerChannels, DecimationRemeshingAndOffsetsRefuseThem)
     EXPECT_EQ(m.number_of_faces(), faces);
     expect_at_their_corners(m);
   };
-  expect_refused([&] { CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.5)); }, "decimate");
   expect_refused([&] { CGAL_ext::isotropic_remeshing(m, 0.3); }, "isotropic_remeshing");
   Mesh out;
   expect_refused([&] { CGAL_ext::offset_mesh(m, 0.1, out); }, "offset_mesh");
-  // Without the channel they run.
+  // Decimation carries channels and never collapses a seam: here every corner
+  // has a value of its own, so every edge is one. The quads are triangulated,
+  // nothing collapses or moves, and each corner keeps its value.
+  Mesh decimated = m;
+  EXPECT_EQ(CGAL_ext::decimate(decimated, CGAL_ext::parameters::face_ratio(0.5)).collapses, 0u);
+  EXPECT_EQ(decimated.number_of_faces(), 2 * faces);
+  const auto uv = decimated.corner_channel<UV>("c:uv");
+  for (CGAL_ext::Face_index f : decimated.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, decimated))
+      EXPECT_EQ((*uv)[decimated.corner(d)][0], double(decimated.target(d).idx()));
+  // Without the channel it decimates.
   EXPECT_TRUE(m.remove_corner_channel("c:uv"));
   CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.25));
   EXPECT_LT(m.number_of_faces(), faces);

@@ -14,11 +14,13 @@
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
+#include <CGAL_ext/Mobius_mesh/internal/Linear_values.h>
 #include <CGAL_ext/Mobius_mesh/triangulate_faces.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/exceptions.h>
 
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/Modifiable_priority_queue.h>
 #include <CGAL/assertions.h>
 
@@ -55,6 +57,17 @@ namespace CGAL_ext {
 /// that minimises the largest of them; a move is kept only if the largest
 /// distance of its star went down and no face turned over. Border vertices
 /// and the ends of feature edges do not move.
+///
+/// Corner channels (texture coordinates, corner normals) are carried: the
+/// seams of each channel are feature edges (never collapsed, their ends never
+/// moved), so seams stay where they were, with their values. A collapse off
+/// the seams that meets one gives the faces it moves the seam side's values;
+/// one between two vertices off the seams gives the merged vertex one new
+/// value, interpolated along the edge at the projection of its new point (an
+/// approximation: Garland and Heckbert's attribute quadrics would weigh the
+/// values in the placement, here they follow it; the relocation moves
+/// vertices without changing their values). An edge between two vertices on
+/// seams is not collapsed. Values that no corner names any more are dropped.
 ///
 /// \param mesh a mesh without removed elements; it is garbage-collected at the end and its
 ///   unused capacity released
@@ -94,8 +107,8 @@ namespace CGAL_ext {
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if a parameter is out of range, no stop condition
-///   is given, the mesh has a corner channel (a collapse has no rule for the
-///   corners it moves: remove the channels, or decimate a copy without them), an edge's sharpness is NaN or negative, `mesh` has removed
+///   is given, the mesh has a corner channel whose values have no linear
+///   combination, an edge's sharpness is NaN or negative, `mesh` has removed
 ///   elements, a point has a coordinate
 ///   beyond +-1e60 (where quadrics in double overflow), or the mesh is less
 ///   than 1e-60 across (where its areas underflow).
@@ -106,8 +119,7 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
 {
   CGAL_ext::internal::require_no_garbage(mesh, "decimate");
   CGAL_ext::internal::refuse_non_manifold_joins(mesh, "decimate");
-  CGAL_ext::internal::refuse_corner_channels(mesh, "decimate",
-                                             "a collapse moves the corners of one vertex's faces to another vertex");
+  CGAL_ext::internal::require_interpolated_channels<typename CGAL::Kernel_traits<P>::Kernel::FT>(mesh, "decimate");
   std::size_t triangles = 0;
   for (Face_index f : mesh.faces())
     triangles += mesh.degree(f) - 2;
@@ -137,6 +149,7 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
   }
   typename Mobius_mesh<P>::Garbage_collection_maps moved;
   mesh.collect_garbage(moved);
+  CGAL_ext::internal::remove_unused_corner_values(mesh);
   mesh.shrink_to_fit();
   if (input && result.collapses > 0) {
     // Each vertex's input vertex of the same old index: a point of the input near it.

@@ -68,6 +68,45 @@ struct Corner_channel_summary
   std::size_t mobius_edges_seamed = 0;
 };
 
+namespace internal {
+
+// Whether the channel whose corners hold the value indices `index` is cut
+// along the edge `e` of two faces: their corners at one end (or both) hold
+// different indices.
+template <class P>
+bool is_channel_cut(const Mobius_mesh<P>& mesh, const std::vector<std::uint32_t>& index, Edge_index e)
+{
+  // The corners at both ends, on both sides: d's face and opposite(d)'s.
+  const Dart d(Mobius_mesh<P>::halfedge(e, 0), false), o = mesh.opposite(d);
+  return index[mesh.corner(d).idx()] != index[mesh.corner(mesh.prev(o)).idx()] ||
+         index[mesh.corner(mesh.prev(d)).idx()] != index[mesh.corner(o).idx()];
+}
+
+// The seams of all the corner channels of `mesh`, by edge index.
+template <class P>
+std::vector<char> corner_seam_edges(const Mobius_mesh<P>& mesh)
+{
+  std::vector<char> seam(mesh.num_edges(), 0);
+  const auto& hprops = Connectivity_access::properties<Halfedge_index>(mesh);
+  hprops.template for_each_array<Base_corner_channel>([&](const Base_corner_channel& c) {
+    for (Edge_index e : mesh.edges())
+      if (!mesh.is_border(e) && is_channel_cut(mesh, c.indices(), e))
+        seam[e.idx()] = 1;
+  });
+  return seam;
+}
+
+// Drops the values of every channel that no corner names (those of the
+// corners an edit removed), keeping the others in their order.
+template <class P>
+void remove_unused_corner_values(Mobius_mesh<P>& mesh)
+{
+  Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
+    [](Base_corner_channel& c) { c.remove_unused_values(); });
+}
+
+} // namespace internal
+
 /// \ingroup PkgMobiusMesh
 /// A summary of each corner channel of `mesh` (in order of creation): its
 /// values, seam edges, the corners without a value, and whether it is
@@ -90,11 +129,7 @@ std::vector<Corner_channel_summary> corner_channel_summaries(const Mobius_mesh<P
     for (Edge_index e : mesh.edges()) {
       if (mesh.is_border(e))
         continue;
-      // The corners at both ends, on both sides: d's face and opposite(d)'s.
-      const Dart d(Mobius_mesh<P>::halfedge(e, 0), false), o = mesh.opposite(d);
-      const bool cut_at_target = index[mesh.corner(d).idx()] != index[mesh.corner(mesh.prev(o)).idx()];
-      const bool cut_at_source = index[mesh.corner(mesh.prev(d)).idx()] != index[mesh.corner(o).idx()];
-      const bool seam = cut_at_target || cut_at_source;
+      const bool seam = internal::is_channel_cut(mesh, index, e);
       s.seam_edges += seam ? 1 : 0;
       // A Möbius edge is no different here (corners do not depend on the way
       // a face is walked), but a texture of a one-sided surface needs a seam

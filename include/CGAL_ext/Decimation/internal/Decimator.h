@@ -8,6 +8,7 @@
 #define CGAL_EXT_DECIMATION_INTERNAL_DECIMATOR_H
 
 #include <CGAL_ext/Decimation/Decimation_result.h>
+#include <CGAL_ext/Decimation/internal/Corner_merging.h>
 #include <CGAL_ext/Decimation/internal/Decimation_settings.h>
 #include <CGAL_ext/Decimation/internal/Quadric.h>
 #include <CGAL_ext/Mobius_mesh.h>
@@ -41,8 +42,9 @@ struct Collapse_candidate
 };
 
 // The Garland–Heckbert state of a decimation: per-vertex quadrics and plane
-// areas, feature flags and costs per edge, and CGAL's modifiable priority
-// queue of the edges by cost (one entry per edge, updated in place).
+// areas, feature flags and costs per edge, CGAL's modifiable priority queue
+// of the edges by cost (one entry per edge, updated in place), and the corner
+// channels' seams and merges (Corner_merging.h).
 template <class P>
 class Decimator
 {
@@ -50,7 +52,7 @@ public:
   Decimator(Mobius_mesh<P>& mesh, const Decimation_settings& settings, std::vector<char> feature)
     : m_(mesh), s_(settings), feature_(std::move(feature)), cost_(mesh.num_edges(), 0.0),
       refused_(mesh.num_edges(), 0), quadric_(mesh.num_vertices()), area_(mesh.num_vertices(), 0.0),
-      queue_(mesh.num_edges(), Cheaper{&cost_})
+      queue_(mesh.num_edges(), Cheaper{&cost_}), corners_(mesh, feature_)
   {
     options_.min_cos_normal_turn = settings.min_cos_normal_turn;
     options_.is_protected = [this](Edge_index e) { return feature_[e.idx()] != 0; };
@@ -151,7 +153,9 @@ private:
     Collapse_candidate c;
     const bool fp = fixed(p), fq = fixed(q);
     if (fp || fq) {
-      c.at_end = fp ? p : q;
+      // A seam vertex keeps its place, so that its corners keep their values.
+      const Vertex_index seam = corners_.seam_end(d);
+      c.at_end = seam.is_valid() ? seam : fp ? p : q;
       c.point = pt(c.at_end);
       c.cost = sum(c.point);
       return c;
@@ -197,6 +201,13 @@ private:
   {
     if (feature_[e.idx()])
       return; // a feature edge is never collapsed
+    if (!corners_.can_collapse(m_.halfedge(e))) {
+      // Nor is an edge between two seam vertices, perhaps queued before a
+      // collapse made one end a seam vertex.
+      if (queue_.contains(e))
+        queue_.erase(e);
+      return;
+    }
     cost_[e.idx()] = error_of(e, candidate(e));
     if (queue_.contains(e))
       queue_.update(e);
@@ -233,6 +244,7 @@ private:
   std::optional<typename Mobius_mesh<P>::template Property_map<Edge_index, float>> sharpness_;
   Collapse_options options_;
   CGAL::Modifiable_priority_queue<Edge_index, Cheaper, Edge_id> queue_;
+  Corner_merging<P> corners_; // after feature_, to which it adds the seams
 };
 
 // Collapses the edge `e` to `c` if check_collapse() allows it one way or the
@@ -262,7 +274,10 @@ bool Decimator<P>::collapse(Edge_index e, const Collapse_candidate& c)
   std::vector<std::pair<char, float>> side_values; // read before the collapse removes one of each pair
   for (Edge_index s : sides)
     side_values.emplace_back(feature_[s.idx()], sharpness_ ? (*sharpness_)[s] : 0.f);
+  const typename Corner_merging<P>::Plan corner_plan = corners_.plan(d, point); // read before the collapse
   Euler::collapse_edge(d, m_, Euler::unchecked); // check_collapse() checked the link condition
+  corners_.apply(corner_plan, q);
+  corners_.merge_flags(p, q);
   for (Edge_index s : sides) // one side of each collapsed triangle is gone
     if (m_.is_removed(s) && queue_.contains(s))
       queue_.erase(s);

@@ -61,6 +61,8 @@ public:
   std::vector<std::uint32_t>& indices() { return index_; }
   const std::vector<std::uint32_t>& indices() const { return index_; }
   virtual std::size_t number_of_values() const = 0;
+  // Drops the values that no slot names, keeping the others in their order.
+  virtual void remove_unused_values() = 0;
 
 protected:
   // Appends the indices [from, from + n) of `o`, shifted by `offset` (null stays null).
@@ -112,6 +114,24 @@ public:
   // Not T itself: a channel is found only as a channel, never as a halfedge map.
   const std::type_info& value_type() const override { return typeid(Corner_channel_array); }
   std::size_t number_of_values() const override { return values_.size(); }
+  void remove_unused_values() override
+  {
+    std::vector<std::uint32_t> renamed(values_.size(), no_value);
+    for (std::uint32_t i : index_)
+      if (i != no_value)
+        renamed[i] = 0;
+    std::uint32_t kept = 0;
+    for (std::size_t i = 0; i < values_.size(); ++i)
+      if (renamed[i] != no_value) {
+        if (kept != i) // (a self-move would leave some types empty)
+          values_[kept] = std::move(values_[i]);
+        renamed[i] = kept++;
+      }
+    values_.erase(values_.begin() + kept, values_.end());
+    for (std::uint32_t& i : index_)
+      if (i != no_value)
+        i = renamed[i];
+  }
 
   std::vector<T>& values() { return values_; }
 
