@@ -1,5 +1,5 @@
-// view FILE [--scalar NAME] [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z] [--up X,Y,Z] [--gap G]
-//      [--features-only]
+// view FILE [--scalar NAME | --uv-checker] [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z]
+//      [--up X,Y,Z] [--gap G] [--features-only]
 //
 // Shows a polygon mesh (.obj, .off, .ply) in CGAL's Basic_viewer_qt with one
 // colour per side: blue where each face's orientation points, orange on the
@@ -7,10 +7,12 @@
 // surface shows both colours on one side. Borders are red, sharp edges purple.
 // With --scalar NAME the faces are coloured by the PLY vertex property NAME
 // instead (a colour ramp from its smallest value to its largest), both sides
-// alike. With --screenshot it draws the mesh once, writes the PNG and prints
+// alike. With --uv-checker the texture coordinates (OBJ vt) are drawn as a
+// checker of 8 x 8 squares per unit, so that seams show where the squares do
+// not meet. With --screenshot it draws the mesh once, writes the PNG and prints
 // one line of JSON:
 //   {"screenshot":"OUT.png","width":W,"height":H,"faces":F,"mobius_edges":M,"border_edges":B
-//    [,"scalar":NAME,"min":LOW,"max":HIGH]}
+//    [,"scalar":NAME,"min":LOW,"max":HIGH][,"uv_checker_levels":L,"faces_drawn":D]}
 // A bad file or option, or no display: one line on stderr, exit status 2.
 
 #include "arguments.h"
@@ -18,7 +20,9 @@
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/draw_mobius_mesh.h>
+#include <CGAL_ext/subdivision.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
@@ -37,8 +41,8 @@ namespace {
 
 const examples::Tool_usage usage{
   "view",
-  "view FILE [--scalar NAME] [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z] [--up X,Y,Z] [--gap G] "
-  "[--features-only]",
+  "view FILE [--scalar NAME | --uv-checker] [--screenshot OUT.png] [--size WxH] [--direction X,Y,Z] [--up X,Y,Z] "
+  "[--gap G] [--features-only]",
   "Shows a polygon mesh (.obj, .off, .ply) with one colour per side: blue on the side each face's\n"
   "orientation points to, orange on the other. The colours swap across Möbius edges (green), so a\n"
   "one-sided surface shows both on one side. Borders are red, sharp edges purple by sharpness.\n"
@@ -46,6 +50,10 @@ const examples::Tool_usage usage{
   "                        the geodesics and curvature tools write them): each face by the mean of\n"
   "                        its corners, on a ramp from dark violet (the smallest value) through\n"
   "                        blue and green to yellow (the largest), both sides alike\n"
+  "  --uv-checker          draw the texture coordinates (OBJ vt) as a checker of 8 x 8 squares\n"
+  "                        per unit, both sides alike: a seam shows where the squares do not meet\n"
+  "                        (the faces are split finely enough for the squares, as far as 4 M faces;\n"
+  "                        only border, Möbius and sharp edges are drawn)\n"
   "  --screenshot OUT.png  draw once, write the picture and exit (needs a display: xvfb-run)\n"
   "  --size WxH            the picture's size in pixels (default 800x600)\n"
   "  --direction X,Y,Z     the direction the camera looks in (default -1,-0.6,-1.2)\n"
@@ -136,6 +144,60 @@ face_colours(Mesh& mesh, const std::vector<double>& values, double& low, double&
   return colours;
 }
 
+// --uv-checker: each face split by bilinear subdivision, which carries the
+// texture coordinates linearly (Face_varying_interpolation::all), until the
+// largest face spans at most a quarter of a square (or the mesh would pass
+// 4 M faces); each piece coloured by the square its mean coordinates fall in.
+// Returns the levels of splitting.
+constexpr double checker_squares = 8; // per unit of texture coordinate
+
+template <class Mesh>
+int split_for_checker(Mesh& mesh, const std::string& file)
+{
+  using Uv = CGAL_ext::Corner_uv<typename Mesh::Point>;
+  const auto uv = mesh.template corner_channel<Uv>(CGAL_ext::corner_uv_name);
+  if (!uv)
+    throw std::runtime_error(file + " has no texture coordinates (vt) for --uv-checker");
+  double span = 0;
+  for (CGAL_ext::Face_index f : mesh.faces())
+    for (CGAL_ext::Dart a : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
+      for (CGAL_ext::Dart b : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
+        if (uv->has_value(mesh.corner(a)) && uv->has_value(mesh.corner(b)))
+          span = std::max({span, std::abs((*uv)[mesh.corner(a)].x() - (*uv)[mesh.corner(b)].x()),
+                           std::abs((*uv)[mesh.corner(a)].y() - (*uv)[mesh.corner(b)].y())});
+  int levels = 0;
+  for (double faces = double(mesh.number_of_faces()) * 4; span * checker_squares > 0.25 && faces <= 4e6;
+       faces *= 4, span /= 2)
+    ++levels;
+  // Other channels (normals) are not drawn: left out rather than split.
+  for (const std::string& name : mesh.corner_channels())
+    if (name != CGAL_ext::corner_uv_name)
+      mesh.remove_corner_channel(name);
+  CGAL_ext::Subdivision::bilinear(mesh, CGAL_ext::parameters::number_of_iterations(levels).face_varying_interpolation(
+                                          CGAL_ext::Face_varying_interpolation::all));
+  return levels;
+}
+
+template <class Mesh>
+typename Mesh::template Property_map<CGAL_ext::Face_index, CGAL::IO::Color> checker_colours(Mesh& mesh)
+{
+  using Uv = CGAL_ext::Corner_uv<typename Mesh::Point>;
+  const auto uv = *mesh.template corner_channel<Uv>(CGAL_ext::corner_uv_name);
+  auto colours = mesh.template add_property_map<CGAL_ext::Face_index, CGAL::IO::Color>(
+                       "f:checker", CGAL::IO::Color(128, 128, 128)).first;
+  for (CGAL_ext::Face_index f : mesh.faces()) {
+    double u = 0, v = 0, n = 0;
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      u += uv[mesh.corner(d)].x();
+      v += uv[mesh.corner(d)].y();
+      ++n;
+    }
+    const long square = std::lround(std::floor(u / n * checker_squares) + std::floor(v / n * checker_squares));
+    colours[f] = square % 2 == 0 ? CGAL::IO::Color(235, 225, 200) : CGAL::IO::Color(70, 90, 150);
+  }
+  return colours;
+}
+
 void size_argument(const std::string& text, CGAL_ext::Screenshot_settings& settings)
 {
   const auto x = text.find('x');
@@ -151,7 +213,9 @@ int view(int argc, char** argv)
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   const examples::Arguments args =
     examples::parse_arguments(argc, argv, {"--scalar", "--screenshot", "--size", "--direction", "--up", "--gap"},
-                              {"--features-only"});
+                              {"--features-only", "--uv-checker"});
+  if (args.has("--scalar") && args.has("--uv-checker"))
+    throw examples::Usage_error("--scalar and --uv-checker colour the faces both: give one");
   if (args.positional.size() != 1)
     throw examples::Usage_error("expected one file name, got " + std::to_string(args.positional.size()));
   CGAL_ext::Screenshot_settings settings;
@@ -166,7 +230,7 @@ int view(int argc, char** argv)
     style.gap = examples::real_argument("--gap", args.value("--gap", ""));
   if (!(style.gap >= 0 && style.gap < 1))
     throw examples::Usage_error("--gap '" + args.value("--gap", "") + "' is not from 0 to 1");
-  style.plain_edges = !args.has("--features-only");
+  style.plain_edges = !args.has("--features-only") && !args.has("--uv-checker");
 
   Mesh mesh;
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
@@ -179,7 +243,18 @@ int view(int argc, char** argv)
   // Without --scalar every face keeps the style's two side colours.
   const auto np = CGAL_ext::parameters::two_sided_style(style);
   double low = 0, high = 0;
-  if (args.has("--scalar"))
+  int checker_levels = 0;
+  // The file's counts, before --uv-checker splits the faces.
+  const std::size_t faces = mesh.number_of_faces();
+  std::size_t mobius = 0, border = 0;
+  for (auto e : mesh.edges()) {
+    mobius += mesh.is_mobius(e);
+    border += mesh.is_border(e);
+  }
+  if (args.has("--uv-checker")) {
+    checker_levels = split_for_checker(mesh, args.positional[0]);
+    show(np.face_color_map(checker_colours(mesh)));
+  } else if (args.has("--scalar"))
     show(np.face_color_map(
       face_colours(mesh, vertex_scalars(mesh, args.positional[0], args.value("--scalar", "")), low, high)));
   else
@@ -187,20 +262,17 @@ int view(int argc, char** argv)
   if (!args.has("--screenshot"))
     return 0;
   const std::string out = args.value("--screenshot", "");
-  std::size_t mobius = 0, border = 0;
-  for (auto e : mesh.edges()) {
-    mobius += mesh.is_mobius(e);
-    border += mesh.is_border(e);
-  }
   examples::Json_object line;
   line.add("screenshot", out)
     .add("width", settings.width)
     .add("height", settings.height)
-    .add("faces", mesh.number_of_faces())
+    .add("faces", faces)
     .add("mobius_edges", mobius)
     .add("border_edges", border);
   if (args.has("--scalar"))
     line.add("scalar", args.value("--scalar", "")).add("min", low).add("max", high);
+  if (args.has("--uv-checker"))
+    line.add("uv_checker_levels", checker_levels).add("faces_drawn", mesh.number_of_faces());
   examples::print_json_line(line);
   return 0;
 }

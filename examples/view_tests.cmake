@@ -76,6 +76,21 @@ cgal_ext_tool_fails(view.fails.scalar view
   "^view: [^\n]*mobius_20x4_quads.obj has no vertex property 'distance' of numbers \\(it has none\\)\n$")
 set_tests_properties(view.fails.scalar PROPERTIES ENVIRONMENT "${_environment}")
 
+# Texture coordinates as a checker: a Möbius strip whose texture is cut open
+# across it (test/data/uv), its faces split until each spans a quarter of a
+# square. A file without vt: one line, exit 2.
+add_test(NAME view.uv_checker
+  COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${CGAL_EXT_XVFB_RUN} -DVIEW=$<TARGET_FILE:view>
+          -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${PROJECT_SOURCE_DIR}/test/data/uv/mobius_12x2_uv.obj
+          "-DOPTIONS=--uv-checker" -DPICTURE=${_out}/view_uv_checker.png -DSIDES=checker
+          "-DEXPECT=\"faces\":24,\"mobius_edges\":[0-9]+,\"border_edges\":24,\"uv_checker_levels\":4,\"faces_drawn\":6144}"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+set_tests_properties(view.uv_checker PROPERTIES ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
+cgal_ext_tool_fails(view.fails.uv_checker_without_vt view
+  "${_data}/mobius_20x4_quads.obj;--uv-checker;--screenshot;${_out}/x.png"
+  "^view: [^\n]*mobius_20x4_quads.obj has no texture coordinates \\(vt\\) for --uv-checker\n$")
+set_tests_properties(view.fails.uv_checker_without_vt PROPERTIES ENVIRONMENT "${_environment}")
+
 # No display: one line naming what is missing, exit 2, no picture.
 add_test(NAME view.fails.no_display
   COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY --unset=QT_QPA_PLATFORM

@@ -27,13 +27,16 @@ mkdir -p "$work" "$out"
 # render MESH PNG [WIDTH HEIGHT]: the mesh seen from above at an angle (40°
 # up, 25° round), z up, on white; with all its edges if $edges is set (cages
 # and coarse levels), else only its borders, Möbius edges and sharp edges;
-# coloured by the PLY vertex property $scalar if it is set.
+# coloured by the PLY vertex property $scalar if it is set, by the checker of
+# its texture coordinates if $checker is.
 edges=
 scalar=
+checker=
 render() {
   local width=${3:-480} height=${4:-360} options=()
   [ -n "$edges" ] || options+=(--features-only)
   [ -z "$scalar" ] || options+=(--scalar "$scalar")
+  [ -z "$checker" ] || options+=(--uv-checker)
   xvfb-run -a -s "-screen 0 1280x1024x24" "$tools/view" "$1" --screenshot "$2" --size "${width}x$height" \
     --direction -0.32,0.69,-0.64 "${options[@]}" >/dev/null 2>"$work/view.log" || { cat "$work/view.log" >&2; exit 2; }
   echo "pictures: $2 ($(stat -c %s "$2") bytes)"
@@ -44,6 +47,13 @@ subdivide() { "$tools/subdivide" "$@" >/dev/null; }
 edges=1 render "$data/mobius_20x4_quads.obj" "$out/mobius.png"
 subdivide "$data/mobius_20x4_quads.obj" "$work/mobius_cc3.obj" --levels 3
 render "$work/mobius_cc3.obj" "$out/mobius_catmull_clark.png"
+
+# A texture across the Möbius strip: the checker of its texture coordinates,
+# cut open by one seam across the strip, on the cage and after three
+# Catmull–Clark steps, which carry them by OpenSubdiv's face-varying rules.
+checker=1 render test/data/uv/mobius_12x2_uv.obj "$out/mobius_uv_cage.png"
+subdivide test/data/uv/mobius_12x2_uv.obj "$work/mobius_uv_cc3.obj" --levels 3
+checker=1 render "$work/mobius_uv_cc3.obj" "$out/mobius_uv_catmull_clark.png"
 
 # The figure-8 Klein bottle, smoothed by two Catmull–Clark steps.
 subdivide "$data/klein_fig8_24x12_quads.obj" "$work/klein_cc2.obj" --levels 2

@@ -1,4 +1,4 @@
-// side_colours PICTURE.png (both|front|ramp)
+// side_colours PICTURE.png (both|front|ramp|checker)
 //
 // Counts the pixels of a picture of the view tool that show the front side's
 // colour (blue: blue well above red) and the back side's (orange: red above
@@ -10,8 +10,11 @@
 // scalar (`view --scalar`) must show both ends of the colour ramp, each on at
 // least 0.2 %: its dark violet (red and blue above green) and its yellow (red
 // and green alike, well above blue), which neither side colour nor any edge
-// colour passes for.
-// Prints {"pixels":N,"front":F,"back":B,"low":L,"high":H} and exits 0 if the
+// colour passes for. With "checker", a picture of `view --uv-checker` must
+// show both colours of its squares, each on at least 1 %: the dark blue (as
+// the front's) and the cream (red and green above blue, neither orange nor
+// the ramp's yellow).
+// Prints {"pixels":N,"front":F,"back":B,"low":L,"high":H,"cream":C} and exits 0 if the
 // check holds, 1 if not, 2 if the picture cannot be read.
 #include <QImage>
 
@@ -23,8 +26,8 @@
 int main(int argc, char* argv[])
 {
   const std::string expect = argc == 3 ? argv[2] : "";
-  if (expect != "both" && expect != "front" && expect != "ramp") {
-    std::cerr << "usage: side_colours PICTURE.png (both|front|ramp)\n";
+  if (expect != "both" && expect != "front" && expect != "ramp" && expect != "checker") {
+    std::cerr << "usage: side_colours PICTURE.png (both|front|ramp|checker)\n";
     return 2;
   }
   const QImage image(QString::fromLocal8Bit(argv[1]));
@@ -32,7 +35,7 @@ int main(int argc, char* argv[])
     std::cerr << "side_colours: cannot read " << argv[1] << "\n";
     return 2;
   }
-  long front = 0, back = 0, low = 0, high = 0;
+  long front = 0, back = 0, low = 0, high = 0, cream = 0;
   for (int y = 0; y < image.height(); ++y)
     for (int x = 0; x < image.width(); ++x) {
       const QColor c = image.pixelColor(x, y);
@@ -41,14 +44,17 @@ int main(int argc, char* argv[])
       back += r > g + 20 && g > b + 30;
       low += r > g + 20 && b > g + 20 && b > 25;
       high += r > b + 80 && g > b + 80 && std::abs(r - g) < 40;
+      cream += r > b + 10 && g > b + 5 && std::abs(r - g) < 25 && b > 60;
     }
   const long pixels = long(image.width()) * image.height();
   std::cout << "{\"pixels\":" << pixels << ",\"front\":" << front << ",\"back\":" << back << ",\"low\":" << low
-            << ",\"high\":" << high << "}" << std::endl;
+            << ",\"high\":" << high << ",\"cream\":" << cream << "}" << std::endl;
   const double f = double(front) / double(pixels), b = double(back) / double(pixels);
   const double l = double(low) / double(pixels), h = double(high) / double(pixels);
+  const double c = double(cream) / double(pixels);
   const bool ok = expect == "both"    ? std::min(f, b) >= 0.02
                   : expect == "front" ? f >= 0.05 && b < 0.001
-                                      : std::min(l, h) >= 0.002;
+                  : expect == "ramp"  ? std::min(l, h) >= 0.002
+                                      : std::min(f, c) >= 0.01;
   return ok ? 0 : 1;
 }
