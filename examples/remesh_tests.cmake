@@ -66,16 +66,17 @@ cgal_ext_tool_fails(remesh.fails.max_memory remesh
   "${_data}/mobius_20x4_tris.obj;${_out}/x.obj;--edge-length;0.01;--max-memory;1e6"
   "^remesh: isotropic_remeshing to edge length 0.01 would need about [0-9.e+-]+ GB of memory, [^\n]+\n$")
 
-# A needle, one triangle 1000 long and 1e-6 wide, at L = 0.01: narrower than
+# A needle, one triangle 1000 long and 1e-6 wide, at L = 0.08: narrower than
 # any triangle of the band, it ends as a strip across it in bounded work (at
-# most two triangles per piece of its longest side cut in 2^17: 262 144; it
-# makes 196 600), in fewer iterations than asked, with the needle reported.
-# With --refuse-narrow: one line naming the face and its width, exit 2.
+# least one triangle per 4/3 L of its length, 9 375, and at most two per
+# piece of its longest side cut in 2^14: 32 768), in fewer iterations than
+# asked, with the needle reported. With --refuse-narrow: one line naming the
+# face and its width, exit 2.
 set(_needle ${PROJECT_SOURCE_DIR}/test/data/tools/needle_1000x1e-6.obj)
 add_test(NAME remesh.needle
-         COMMAND remesh ${_needle} ${_out}/remesh_needle.obj --edge-length 0.01 --iterations 5 --max-memory 1e8)
+         COMMAND remesh ${_needle} ${_out}/remesh_needle.obj --edge-length 0.08 --iterations 5 --max-memory 1e8)
 set_tests_properties(remesh.needle PROPERTIES PASS_REGULAR_EXPRESSION
-  "\"faces\":(1[0-9][0-9][0-9][0-9][0-9]|2[0-5][0-9][0-9][0-9][0-9]|[0-9]?[0-9]?[0-9]?[0-9]?[0-9]),\"border_loops\":1,.*\"valid\":true,.*\"iterations\":[1-4],\"stopped_early\":true,\"narrow_faces\":1,\"narrowest_width\":1e-06,")
+  "\"faces\":(937[5-9]|93[89][0-9]|9[4-9][0-9][0-9]|[12][0-9][0-9][0-9][0-9]|3[01][0-9][0-9][0-9]|32[0-6][0-9][0-9]|327[0-5][0-9]|3276[0-8]),\"border_loops\":1,.*\"valid\":true,.*\"iterations\":[1-4],\"stopped_early\":true,\"narrow_faces\":1,\"narrowest_width\":1e-06,")
 cgal_ext_tool_fails(remesh.fails.narrow remesh
   "${_needle};${_out}/x.obj;--edge-length;0.01;--refuse-narrow"
   "^remesh: isotropic_remeshing: face f0 is 1e-06 wide and 1000 long, [^\n]+\n$")

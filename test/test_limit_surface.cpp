@@ -1060,6 +1060,8 @@ TEST(Limit_surface, LoopClosestPointInAnExactKernel)
   const Loop_surface inexact(m, CGAL_ext::parameters::default_values(), options);
   std::size_t tried = 0;
   for (CGAL_ext::Face_index f : m.faces()) {
+    if (f.idx() % 3 != 0) // a third of the faces, spread round the torus: Gmpq is slow
+      continue;
     const auto e = inexact.evaluate(f, 0.3, 0.7);
     const Point q = e.point + 0.05 * e.normal;
     const auto a = exact.closest_point(Pq(q.x(), q.y(), q.z()));
@@ -1070,7 +1072,7 @@ TEST(Limit_surface, LoopClosestPointInAnExactKernel)
     EXPECT_NEAR(CGAL::to_double(a.squared_distance), b.squared_distance, 1e-9 * b.squared_distance + 1e-12);
     ++tried;
   }
-  EXPECT_EQ(tried, m.number_of_faces());
+  EXPECT_EQ(tried, (m.number_of_faces() + 2) / 3);
 }
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
