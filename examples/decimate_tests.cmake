@@ -77,9 +77,9 @@ set_tests_properties(decimate.hausdorff_ignores_isolated_vertices PROPERTIES PAS
 # Texture coordinates and normals go through: OpenSubdiv's cube with its uv
 # net and its per-face normals, subdivided 3 levels (768 triangles; the uv
 # net's 7 seam edges split into 56, the normals' 12 cube edges into 96), then
-# decimated by half. Seam edges are never collapsed and keep their values, so
-# mesh_info reads the same seams back from the file, and every corner has a
-# value.
+# decimated by half. Seam edges are never collapsed, so mesh_info reads the
+# same number of seam edges back from the file, and every corner has a value
+# (that the seams keep their values is tested in test_decimation.cpp).
 set(_cube_uv ${_out}/decimate_cube_uv_level3.obj)
 add_test(NAME decimate.corner_channels.setup
          COMMAND subdivide ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube.obj ${_cube_uv} --levels 3)

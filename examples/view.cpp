@@ -146,8 +146,10 @@ face_colours(Mesh& mesh, const std::vector<double>& values, double& low, double&
 
 // --uv-checker: each face split by bilinear subdivision, which carries the
 // texture coordinates linearly (Face_varying_interpolation::all), until the
-// largest face spans at most a quarter of a square (or the mesh would pass
-// 4 M faces); each piece coloured by the square its mean coordinates fall in.
+// largest face spans at most about a quarter of a square (each level halves
+// the span of a quad; a triangle's first split, into quads, two thirds), or
+// the mesh would pass 4 M faces; each piece coloured by the square its mean
+// coordinates fall in.
 // Returns the levels of splitting.
 constexpr double checker_squares = 8; // per unit of texture coordinate
 
@@ -160,11 +162,15 @@ int split_for_checker(Mesh& mesh, const std::string& file)
     throw std::runtime_error(file + " has no texture coordinates (vt) for --uv-checker");
   double span = 0;
   for (CGAL_ext::Face_index f : mesh.faces())
-    for (CGAL_ext::Dart a : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
+    for (CGAL_ext::Dart a : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      if (!uv->has_value(mesh.corner(a)))
+        throw std::runtime_error(file + ": face " + std::to_string(f.idx()) +
+                                 " has a corner without texture coordinates, which --uv-checker needs at every corner");
       for (CGAL_ext::Dart b : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
-        if (uv->has_value(mesh.corner(a)) && uv->has_value(mesh.corner(b)))
+        if (uv->has_value(mesh.corner(b)))
           span = std::max({span, std::abs((*uv)[mesh.corner(a)].x() - (*uv)[mesh.corner(b)].x()),
                            std::abs((*uv)[mesh.corner(a)].y() - (*uv)[mesh.corner(b)].y())});
+    }
   int levels = 0;
   for (double faces = double(mesh.number_of_faces()) * 4; span * checker_squares > 0.25 && faces <= 4e6;
        faces *= 4, span /= 2)

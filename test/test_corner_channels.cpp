@@ -347,8 +347,10 @@ TEST(CornerChannels, RemeshingAndOffsetsRefuseThemDecimationKeepsSeams)
   Mesh out;
   expect_refused([&] { CGAL_ext::offset_mesh(m, 0.1, out); }, "offset_mesh");
   // Decimation carries channels and never collapses a seam: here every corner
-  // has a value of its own, so every edge is one. The quads are triangulated,
-  // nothing collapses or moves, and each corner keeps its value.
+  // has a value of its own, so every edge of the quads is one and every
+  // vertex a seam vertex (the triangulation's diagonals join two, which no
+  // collapse joins). The quads are triangulated, nothing collapses or moves,
+  // and each corner keeps its value.
   Mesh decimated = m;
   EXPECT_EQ(CGAL_ext::decimate(decimated, CGAL_ext::parameters::face_ratio(0.5)).collapses, 0u);
   EXPECT_EQ(decimated.number_of_faces(), 2 * faces);

@@ -32,6 +32,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 #include <vector>
 
 namespace decimation_tests {
@@ -703,16 +704,29 @@ std::map<std::array<double, 3>, std::set<std::array<double, 2>>> seam_values(con
 // point and its values; the topology is kept.
 TEST(DecimationCornerChannels, TextureCoordinatesFollowTheirVerticesAndSeamsStay)
 {
-  for (const Uv_grid g : {Uv_grid{32, 16, true}, Uv_grid{48, 6, false}}) {
-    for (bool relocate : {false, true}) {
+  // The third case turns a band of the torus over (faces of 8 <= i < 12),
+  // whose borders become Möbius edges inside the texture's chart: collapses
+  // across them walk flipped darts.
+  for (const auto& [g, relocate, turned] : {std::tuple{Uv_grid{32, 16, true}, false, false},
+                                            std::tuple{Uv_grid{32, 16, true}, true, false},
+                                            std::tuple{Uv_grid{32, 16, true}, true, true},
+                                            std::tuple{Uv_grid{48, 6, false}, false, false},
+                                            std::tuple{Uv_grid{48, 6, false}, true, false}}) {
+    {
       Mesh m = g.mesh<Point>();
+      if (turned)
+        for (std::size_t p = 8 * 16 * 2; p < 12 * 16 * 2; ++p)
+          m.reverse_face_orientation(Face_index(p));
+      ASSERT_EQ(std::count_if(m.edges().begin(), m.edges().end(), [&](Edge_index e) { return m.is_mobius(e); }),
+                turned ? 2 * 16 : g.torus ? 0 : 6); // the band's two circles; the strip's weld
       const auto seams = seam_values(m);
       const Topology before = topology(m);
       const std::size_t faces = m.number_of_faces();
       const auto [distance0, span0] = uv_errors(m, g);
       ASSERT_LT(distance0, 1e-12);
       CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.25).relocate_vertices(relocate));
-      SCOPED_TRACE(std::string(g.torus ? "torus" : "Möbius strip") + (relocate ? ", relocated" : ""));
+      SCOPED_TRACE(std::string(g.torus ? "torus" : "Möbius strip") + (relocate ? ", relocated" : "") +
+                   (turned ? ", a band turned over" : ""));
       EXPECT_LE(m.number_of_faces(), faces / 4 + 2);
       EXPECT_TRUE(m.is_valid());
       EXPECT_EQ(topology(m), before);
@@ -727,7 +741,8 @@ TEST(DecimationCornerChannels, TextureCoordinatesFollowTheirVerticesAndSeamsStay
       // parameterisation (no attribute quadric weighs them).
       EXPECT_LT(distance, g.torus ? 0.25 : 0.05);
       EXPECT_LT(span, 0.5);
-      std::cout << (g.torus ? "torus" : "strip") << (relocate ? " relocated" : "") << ": " << m.number_of_faces()
+      std::cout << (g.torus ? "torus" : "strip") << (relocate ? " relocated" : "") << (turned ? " turned" : "")
+                << ": " << m.number_of_faces()
                 << " faces of " << faces << ", uv to surface " << distance << ", span " << span << " (input "
                 << span0 << ")\n";
       EXPECT_EQ(seam_values(m), seams);
@@ -755,14 +770,15 @@ TEST(DecimationCornerChannels, ExactKernelKeepsTheSeamsExactly)
     for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
       const auto& t = (*uv)[m.corner(d)];
       if (t.x() == 0 || t.x() == 1 || t.y() == 0 || t.y() == 1) {
-        EXPECT_EQ(t.x() * 16, CGAL::to_double(t.x() * 16)) << t;
-        EXPECT_EQ(t.y() * 8, CGAL::to_double(t.y() * 8)) << t;
+        EXPECT_EQ(t.x() * 16, std::round(CGAL::to_double(t.x() * 16))) << t;
+        EXPECT_EQ(t.y() * 8, std::round(CGAL::to_double(t.y() * 8))) << t;
       }
     }
 }
 
-// A channel whose values have no linear combination cannot be merged: refused
-// before the mesh is touched, naming it. Values no corner names are dropped.
+// A channel whose values have no linear combination cannot be merged, nor can
+// a value index past the values be read: both refused before the mesh is
+// touched, naming the channel. Values no corner names are dropped.
 TEST(DecimationCornerChannels, UninterpolatedValuesAreRefusedAndUnusedValuesDropped)
 {
   Mesh m = Uv_grid{12, 6, true}.mesh<Point>();
@@ -779,6 +795,19 @@ TEST(DecimationCornerChannels, UninterpolatedValuesAreRefusedAndUnusedValuesDrop
   }
   EXPECT_EQ(test::snapshot(m), before);
   m.remove_corner_channel("c:label");
+  {
+    Mesh bad = m;
+    auto uv = *bad.corner_channel<CGAL_ext::Corner_uv<Point>>(CGAL_ext::corner_uv_name);
+    uv.set_index(bad.corner(bad.halfedge(Face_index(3))), std::uint32_t(uv.number_of_values() + 5));
+    const std::string bad_before = test::snapshot(bad);
+    try {
+      CGAL_ext::decimate(bad, CGAL_ext::parameters::face_ratio(0.5));
+      ADD_FAILURE() << "a value index past the values was decimated";
+    } catch (const CGAL_ext::Parameter_error& e) {
+      EXPECT_NE(std::string(e.what()).find("the corner of face f3"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(test::snapshot(bad), bad_before);
+  }
   CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.5));
   const auto uv = m.corner_channel<CGAL_ext::Corner_uv<Point>>(CGAL_ext::corner_uv_name);
   std::set<std::uint32_t> used;

@@ -66,8 +66,10 @@ namespace CGAL_ext {
 /// value, interpolated along the edge at the projection of its new point (an
 /// approximation: Garland and Heckbert's attribute quadrics would weigh the
 /// values in the placement, here they follow it; the relocation moves
-/// vertices without changing their values). An edge between two vertices on
-/// seams is not collapsed. Values that no corner names any more are dropped.
+/// vertices without changing their values; where one end's corners have no
+/// value, the merged corners take the other's). An edge between two vertices
+/// on seams is not collapsed. The values are renumbered at the end: those no
+/// corner names (the input's unused ones too) are dropped.
 ///
 /// \param mesh a mesh without removed elements; it is garbage-collected at the end and its
 ///   unused capacity released
@@ -108,7 +110,7 @@ namespace CGAL_ext {
 /// \cgalNamedParamsEnd
 /// \throws Parameter_error if a parameter is out of range, no stop condition
 ///   is given, the mesh has a corner channel whose values have no linear
-///   combination, an edge's sharpness is NaN or negative, `mesh` has removed
+///   combination or a corner whose value index is past its values, an edge's sharpness is NaN or negative, `mesh` has removed
 ///   elements, a point has a coordinate
 ///   beyond +-1e60 (where quadrics in double overflow), or the mesh is less
 ///   than 1e-60 across (where its areas underflow).
@@ -120,6 +122,7 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
   CGAL_ext::internal::require_no_garbage(mesh, "decimate");
   CGAL_ext::internal::refuse_non_manifold_joins(mesh, "decimate");
   CGAL_ext::internal::require_interpolated_channels<typename CGAL::Kernel_traits<P>::Kernel::FT>(mesh, "decimate");
+  CGAL_ext::internal::require_valid_corner_indices(mesh, "decimate");
   std::size_t triangles = 0;
   for (Face_index f : mesh.faces())
     triangles += mesh.degree(f) - 2;

@@ -96,6 +96,26 @@ std::vector<char> corner_seam_edges(const Mobius_mesh<P>& mesh)
   return seam;
 }
 
+// Refuses, before `function` touches `mesh`, a face corner whose value index
+// is past its channel's values (no value is allowed), naming the channel,
+// the face and the vertex.
+template <class P>
+void require_valid_corner_indices(const Mobius_mesh<P>& mesh, const std::string& function)
+{
+  Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
+    [&](const Base_corner_channel& c) {
+      for (Face_index f : mesh.faces())
+        for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
+          const std::uint32_t i = c.indices()[mesh.corner(d).idx()];
+          if (i != Base_corner_channel::no_value && i >= c.number_of_values())
+            throw Parameter_error(function + ": corner channel \"" + c.name() + "\": the corner of face f" +
+                                  std::to_string(f.idx()) + " at vertex v" + std::to_string(mesh.target(d).idx()) +
+                                  " has value index " + std::to_string(i) + " of " +
+                                  std::to_string(c.number_of_values()));
+        }
+    });
+}
+
 // Drops the values of every channel that no corner names (those of the
 // corners an edit removed), keeping the others in their order.
 template <class P>

@@ -62,8 +62,10 @@ public:
         if constexpr (L::defined) {
           if (const auto c = mesh.template corner_channel<T>(name))
             channels_.push_back({&c->array()->indices(), [c = *c](u32 a, u32 b, double t) {
-                                   return c.add_value(L::to(W(1 - t) * L::from(c.values()[a]) +
-                                                            W(t) * L::from(c.values()[b])));
+                                   // 1 - t in W: the weights sum to 1 exactly with an exact kernel.
+                                   const W wt(t);
+                                   return c.add_value(L::to((W(1) - wt) * L::from(c.values()[a]) +
+                                                            wt * L::from(c.values()[b])));
                                  }});
         }
       });
@@ -223,8 +225,9 @@ private:
   }
 
   // The one index of two ends that each have one: theirs where they agree
-  // or the point is at an end, the other's where one has none, else a new
-  // value between them.
+  // or the point is at an end, the other's where one end's corners have no
+  // value (the merged region has one value or none: the one there is, rather
+  // than dropping it), else a new value between them.
   static u32 merged(const Channel& c, u32 ip, u32 iq, double t)
   {
     if (ip == iq || iq == Base_corner_channel::no_value || t == 0)

@@ -116,12 +116,13 @@ public:
   std::size_t number_of_values() const override { return values_.size(); }
   void remove_unused_values() override
   {
-    std::vector<std::uint32_t> renamed(values_.size(), no_value);
+    const std::size_t n = values_.size();
+    std::vector<std::uint32_t> renamed(n, no_value);
     for (std::uint32_t i : index_)
-      if (i != no_value)
+      if (i < n) // (an index past the values names none)
         renamed[i] = 0;
     std::uint32_t kept = 0;
-    for (std::size_t i = 0; i < values_.size(); ++i)
+    for (std::size_t i = 0; i < n; ++i)
       if (renamed[i] != no_value) {
         if (kept != i) // (a self-move would leave some types empty)
           values_[kept] = std::move(values_[i]);
@@ -129,7 +130,7 @@ public:
       }
     values_.erase(values_.begin() + kept, values_.end());
     for (std::uint32_t& i : index_)
-      if (i != no_value)
+      if (i < n)
         i = renamed[i];
   }
 
