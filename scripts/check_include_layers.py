@@ -12,7 +12,9 @@ naming each arrow) where
   neighbour of its layer.
 
 A header that no layer names fails too, so that a new folder is placed
-before it is used. Usage: python3 scripts/check_include_layers.py [root],
+before it is used; so does a public header (one outside every internal/
+folder) more than a third of whose lines are `namespace internal` code: a
+public header shows the interface, its family's internal/ the engine. Usage: python3 scripts/check_include_layers.py [root],
 root being the repository (by default, the one this script is in).
 """
 
@@ -29,7 +31,7 @@ LAYERS = [
     # are built on the Euler operations, and serve the algorithms that collapse.
     # So are the engines of the mesh algorithms of Mobius_mesh/ that build on
     # other mesh algorithms (the Euler operations, copies, the topology).
-    (r"Mobius_mesh/internal/(Collapse_checks|Fan_triangulation|Shape_builders|Soup_import|Mesh_copy|Two_sided_geometry)\.h", 2,
+    (r"Mobius_mesh/internal/(Collapse_checks|Fan_triangulation|Shape_builders|Soup_import|Mesh_copy|Two_sided_geometry|Normal_transformation)\.h", 2,
      "mesh algorithms"),
     # 1: the mesh and its internals.
     (r"Mobius_mesh\.h", 1, "mesh"),
@@ -38,7 +40,7 @@ LAYERS = [
     # sharpness maps and the soup import are such algorithms, with the paths
     # of top-level public headers.
     (r"Mobius_mesh/[^/]+\.h", 2, "mesh algorithms"),
-    (r"boost/graph/[^/]+\.h", 2, "mesh algorithms"),
+    (r"boost/graph/([^/]+|internal/[^/]+)\.h", 2, "mesh algorithms"),
     (r"(Sharp_features|polygon_soup_to_mobius_mesh)\.h", 2, "mesh algorithms"),
     # 3: the algorithm families, each in its folder with its internal/.
     (r"(Subdivision|Merging|Conversion|Decimation|Remeshing|IO|Geodesics|Curvature|Hole_filling|Smoothing|"
@@ -68,6 +70,8 @@ def family_of(path):
     paths (the soup import, the sharpness maps) to Mobius_mesh/."""
     if path.startswith("internal/"):
         return ""
+    if path.startswith("boost/graph/"):
+        return "boost/graph"
     if "/" in path:
         return path.split("/", 1)[0]
     entries = {"Mobius_mesh.h": "Mobius_mesh", "Limit_surface.h": "Limit_surface",
@@ -81,6 +85,23 @@ def internal_family(path):
     if len(parts) >= 2 and parts[-2] == "internal":
         return "/".join(parts[:-2])
     return None
+
+
+INTERNAL_OPEN = re.compile(r"^namespace internal \{")
+INTERNAL_CLOSE = re.compile(r"^\} // namespace internal")
+
+
+def internal_share(lines):
+    """The share of `lines` inside top-level `namespace internal` blocks."""
+    inside, count = False, 0
+    for line in lines:
+        if INTERNAL_OPEN.match(line):
+            inside = True
+        if inside:
+            count += 1
+        if INTERNAL_CLOSE.match(line):
+            inside = False
+    return count / max(len(lines), 1)
 
 
 def main():
@@ -103,24 +124,28 @@ def main():
         if here is None:
             continue
         with open(os.path.join(base, path), encoding="utf-8") as f:
-            for number, line in enumerate(f, 1):
-                m = INCLUDE.match(line)
-                if not m:
-                    continue
-                arrows += 1
-                target = m.group(1)
-                there = layer_of(target)
-                where = f"CGAL_ext/{path}:{number}: CGAL_ext/{path} -> CGAL_ext/{target}"
-                if there is None:
-                    problems.append(f"{where}: the included header is in no layer")
-                    continue
-                if there[0] > here[0]:
-                    problems.append(f"{where}: upward, from layer {here[0]} ({here[1]}) to layer "
-                                    f"{there[0]} ({there[1]})")
-                owner = internal_family(target)
-                if owner is not None and family_of(path) != owner and here[0] <= there[0]:
-                    problems.append(f"{where}: the engine of {owner or 'the core'}/ included from "
-                                    f"{family_of(path) or 'the top level'}, a neighbour of its layer")
+            lines = f.read().split("\n")
+        if internal_family(path) is None and internal_share(lines) > 1 / 3:
+            problems.append(f"CGAL_ext/{path}: {internal_share(lines):.0%} of its lines are internal code "
+                            f"(a third at most: move the engine to its family's internal/)")
+        for number, line in enumerate(lines, 1):
+            m = INCLUDE.match(line)
+            if not m:
+                continue
+            arrows += 1
+            target = m.group(1)
+            there = layer_of(target)
+            where = f"CGAL_ext/{path}:{number}: CGAL_ext/{path} -> CGAL_ext/{target}"
+            if there is None:
+                problems.append(f"{where}: the included header is in no layer")
+                continue
+            if there[0] > here[0]:
+                problems.append(f"{where}: upward, from layer {here[0]} ({here[1]}) to layer "
+                                f"{there[0]} ({there[1]})")
+            owner = internal_family(target)
+            if owner is not None and family_of(path) != owner and here[0] <= there[0]:
+                problems.append(f"{where}: the engine of {owner or 'the core'}/ included from "
+                                f"{family_of(path) or 'the top level'}, a neighbour of its layer")
 
     for p in problems:
         print(f"include layers: {p}", file=sys.stderr)
@@ -128,7 +153,8 @@ def main():
         print(f"include layers: {len(problems)} problem(s) in {arrows} include arrows of {len(headers)} headers",
               file=sys.stderr)
         return 1
-    print(f"include layers: {arrows} include arrows of {len(headers)} headers, none upward")
+    print(f"include layers: {arrows} include arrows of {len(headers)} headers, none upward; "
+          "no public header over a third internal")
     return 0
 
 

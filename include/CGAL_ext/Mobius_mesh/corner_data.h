@@ -12,6 +12,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
 #include <CGAL_ext/Mobius_mesh/internal/Corner_channel_array.h>
+#include <CGAL_ext/Mobius_mesh/internal/Corner_channel_checks.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -68,65 +69,6 @@ struct Corner_channel_summary
   std::size_t mobius_edges_seamed = 0;
 };
 
-namespace internal {
-
-// Whether the channel whose corners hold the value indices `index` is cut
-// along the edge `e` of two faces: their corners at one end (or both) hold
-// different indices.
-template <class P>
-bool is_channel_cut(const Mobius_mesh<P>& mesh, const std::vector<std::uint32_t>& index, Edge_index e)
-{
-  // The corners at both ends, on both sides: d's face and opposite(d)'s.
-  const Dart d(Mobius_mesh<P>::halfedge(e, 0), false), o = mesh.opposite(d);
-  return index[mesh.corner(d).idx()] != index[mesh.corner(mesh.prev(o)).idx()] ||
-         index[mesh.corner(mesh.prev(d)).idx()] != index[mesh.corner(o).idx()];
-}
-
-// The seams of all the corner channels of `mesh`, by edge index.
-template <class P>
-std::vector<char> corner_seam_edges(const Mobius_mesh<P>& mesh)
-{
-  std::vector<char> seam(mesh.num_edges(), 0);
-  const auto& hprops = Connectivity_access::properties<Halfedge_index>(mesh);
-  hprops.template for_each_array<Base_corner_channel>([&](const Base_corner_channel& c) {
-    for (Edge_index e : mesh.edges())
-      if (!mesh.is_border(e) && is_channel_cut(mesh, c.indices(), e))
-        seam[e.idx()] = 1;
-  });
-  return seam;
-}
-
-// Refuses, before `function` touches `mesh`, a face corner whose value index
-// is past its channel's values (no value is allowed), naming the channel,
-// the face and the vertex.
-template <class P>
-void require_valid_corner_indices(const Mobius_mesh<P>& mesh, const std::string& function)
-{
-  Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
-    [&](const Base_corner_channel& c) {
-      for (Face_index f : mesh.faces())
-        for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
-          const std::uint32_t i = c.indices()[mesh.corner(d).idx()];
-          if (i != Base_corner_channel::no_value && i >= c.number_of_values())
-            throw Parameter_error(function + ": corner channel \"" + c.name() + "\": the corner of face f" +
-                                  std::to_string(f.idx()) + " at vertex v" + std::to_string(mesh.target(d).idx()) +
-                                  " has value index " + std::to_string(i) + " of " +
-                                  std::to_string(c.number_of_values()));
-        }
-    });
-}
-
-// Drops the values of every channel that no corner names (those of the
-// corners an edit removed), keeping the others in their order.
-template <class P>
-void remove_unused_corner_values(Mobius_mesh<P>& mesh)
-{
-  Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
-    [](Base_corner_channel& c) { c.remove_unused_values(); });
-}
-
-} // namespace internal
-
 /// \ingroup PkgMobiusMesh
 /// A summary of each corner channel of `mesh` (in order of creation): its
 /// values, seam edges, the corners without a value, and whether it is
@@ -162,22 +104,6 @@ std::vector<Corner_channel_summary> corner_channel_summaries(const Mobius_mesh<P
   return result;
 }
 
-namespace internal {
-
-// The one refusal of the operations that cannot carry corner channels
-// (`why` says what they do to corners): before they touch the mesh, naming
-// the channel, so that no channel is dropped or garbled silently.
-template <class P>
-void refuse_corner_channels(const Mobius_mesh<P>& mesh, const std::string& function, const std::string& why)
-{
-  const std::vector<std::string> names = mesh.corner_channels();
-  if (!names.empty())
-    throw Parameter_error(function + ": the mesh has the corner channel \"" + names.front() + "\", which " +
-                          function + " does not carry (" + why +
-                          "); remove it first (Mobius_mesh::remove_corner_channel())");
-}
-
-} // namespace internal
 } // namespace CGAL_ext
 
 #endif // CGAL_EXT_MOBIUS_MESH_CORNER_DATA_H
