@@ -1,8 +1,9 @@
-// tessellate IN OUT --rate N [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]
+// tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]
 //
 // Samples the Catmull–Clark (or Loop) limit surface of a polygon (or
-// triangle) mesh (.obj, .off, .ply) uniformly, N segments along every base edge, in OpenSubdiv's
-// Bfr::Tessellation layout, and writes the result: watertight (faces share
+// triangle) mesh (.obj, .off, .ply) uniformly, N segments along every base
+// edge, or with each edge's rate chosen from a tolerance T, with
+// OpenSubdiv's Bfr::Tessellation samples, and writes the result: watertight (faces share
 // the samples of their common edges), borders kept, a one-sided surface
 // one-sided. Prints one line of JSON, the counts of mesh_info and the time:
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"mobius_edges":M,
@@ -21,16 +22,22 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <chrono>
+#include <cmath>
 #include <string>
 
 namespace {
 
 const examples::Tool_usage usage{
-  "tessellate", "tessellate IN OUT --rate N [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]",
+  "tessellate",
+  "tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]",
   "Reads a polygon mesh (.obj, .off, .ply) and writes a mesh of its limit surface, each face\n"
-  "sampled uniformly as OpenSubdiv's Bfr::Tessellation samples it:\n"
+  "sampled as OpenSubdiv's Bfr::Tessellation samples it:\n"
   "  --rate      segments along every base edge, 1 to 64 (a quad becomes N x N quads, a\n"
   "              triangle of a Loop surface N x N triangles).\n"
+  "  --tolerance instead of --rate: a distance in the mesh's units; each base edge gets the\n"
+  "              fewest segments (at most 64) whose midpoints lie within it of the surface,\n"
+  "              each face the inner rates Bfr infers from its edges' (the result's facets\n"
+  "              lie within a few tolerances of the surface).\n"
   "  --scheme    catmull-clark (default) or loop (every face a triangle).\n"
   "  --boundary  border rule: edge-only (default) or edge-and-corner.\n"
   "Shared vertex and edge samples are computed once, so the result is watertight, with the\n"
@@ -50,12 +57,16 @@ int tessellate(int argc, char** argv)
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   namespace S = CGAL_ext::Subdivision;
-  const examples::Arguments args = examples::parse_arguments(argc, argv, {"--rate", "--scheme", "--boundary"}, {});
+  const examples::Arguments args =
+    examples::parse_arguments(argc, argv, {"--rate", "--tolerance", "--scheme", "--boundary"}, {});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
-  if (!args.has("--rate"))
-    throw examples::Usage_error("--rate is required");
-  const int rate = int(examples::integer_argument("--rate", args.value("--rate", ""), 1, 64));
+  if (args.has("--rate") == args.has("--tolerance"))
+    throw examples::Usage_error("one of --rate and --tolerance is required");
+  const int rate = args.has("--rate") ? int(examples::integer_argument("--rate", args.value("--rate", ""), 1, 64)) : 0;
+  const double tolerance = args.has("--tolerance") ? examples::real_argument("--tolerance", args.value("--tolerance", "")) : 0;
+  if (args.has("--tolerance") && !(tolerance > 0 && std::isfinite(tolerance)))
+    throw examples::Usage_error("--tolerance must be positive and finite");
   const auto boundary = examples::choice_argument("--boundary", args.value("--boundary", "edge-only"), boundaries);
   const Scheme scheme = examples::choice_argument("--scheme", args.value("--scheme", "catmull-clark"), schemes);
 
@@ -64,8 +75,11 @@ int tessellate(int argc, char** argv)
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
   const auto start = std::chrono::steady_clock::now();
   const auto np = CGAL_ext::parameters::boundary_interpolation(boundary);
-  const Mesh out = scheme == Scheme::loop ? S::tessellate<S::Loop_mask>(mesh, rate, np)
-                                          : S::tessellate<S::Catmull_clark_mask>(mesh, rate, np);
+  const auto run = [&](auto mask) {
+    using Mask = decltype(mask);
+    return rate > 0 ? S::tessellate<Mask>(mesh, rate, np) : S::tessellate_to_tolerance<Mask>(mesh, tolerance, np);
+  };
+  const Mesh out = scheme == Scheme::loop ? run(S::Loop_mask()) : run(S::Catmull_clark_mask());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], out);
   examples::Json_object line = examples::mesh_summary(out);

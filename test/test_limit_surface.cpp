@@ -1216,5 +1216,176 @@ TEST(Limit_surface, LoopSecondDerivativesAreThoseOfTheFirst)
   }
 }
 
+
+// Tessellation to a tolerance: the shapes, with the Möbius strip, under
+// both schemes.
+struct Tolerance_case
+{
+  std::string name;
+  Mesh mesh;
+  bool loop;
+};
+
+std::vector<Tolerance_case> tolerance_cases()
+{
+  std::vector<Tolerance_case> cases;
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  cases.push_back({"mobius_strip", strip, false});
+  for (const char* name : {"catmark_nonquads", "catmark_edgecorner", "catmark_smoothtris1", "loop_tetrahedron"})
+    cases.push_back({name, build(read_shape(test::data(std::string("opensubdiv/") + name + ".obj"))),
+                     std::string(name).rfind("loop", 0) == 0});
+  return cases;
+}
+
+// The samples of each face are Bfr::Tessellation's at the rates chosen (its
+// coordinates, the face's outer rates from corner 0 and its inner rates,
+// evaluated to a sample of ours within 1e-12 of the size), every sample is
+// one of them, and the result is watertight with the base's topology.
+template <class Surf>
+void tolerance_tessellation_against_bfr(const Tolerance_case& c, double tolerance)
+{
+  const Surf surface(c.mesh);
+  const Mesh& m = c.mesh;
+  const double scale = largest_coordinate(m);
+  const Mesh out = surface.tessellate_to_tolerance(tolerance * scale);
+  const S::internal::Tessellation_rates rates =
+    S::internal::tolerance_rates(surface, m, tolerance * scale, 64, c.loop);
+  EXPECT_TRUE(out.is_valid()) << c.name;
+  EXPECT_EQ(CGAL_ext::euler_characteristic(out), CGAL_ext::euler_characteristic(m)) << c.name;
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(out), CGAL_ext::number_of_border_cycles(m)) << c.name;
+  EXPECT_EQ(CGAL_ext::is_orientable(out), CGAL_ext::is_orientable(m)) << c.name;
+  std::set<std::size_t> matched;
+  double worst = 0;
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::vector<int> r;
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      r.push_back(rates.edge[m.edge(m.next(d)).idx()]);
+    const auto inner = rates.inner[f.idx()];
+    r.push_back(inner[0]);
+    if (m.degree(f) == 4)
+      r.push_back(inner[1]);
+    const Bfr::Tessellation t(Bfr::Parameterization(c.loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, int(m.degree(f))),
+                              int(r.size()), r.data());
+    ASSERT_TRUE(t.IsValid()) << c.name;
+    std::vector<double> uv(2 * std::size_t(t.GetNumCoords()));
+    t.GetCoords(uv.data());
+    for (std::size_t k = 0; k < std::size_t(t.GetNumCoords()); ++k) {
+      double u = uv[2 * k], v = uv[2 * k + 1];
+      if (c.loop) { // to float precision in Bfr: taken at the fraction of a rate (or 1 / 3) they stand for
+        const auto snap = [&](double x) {
+          double best = std::round(x * 3) / 3;
+          for (int den : r)
+            if (std::abs(std::round(x * den) / den - x) < std::abs(best - x))
+              best = std::round(x * den) / den;
+          EXPECT_LE(std::abs(best - x), 1e-6) << c.name;
+          return best;
+        };
+        u = snap(u);
+        v = std::min(snap(v), 1.0 - u);
+      }
+      const Point p = surface.evaluate(f, u, v).point;
+      double d = 1e300;
+      std::size_t best = 0;
+      for (CGAL_ext::Vertex_index w : out.vertices())
+        if (const double x = std::sqrt(CGAL::squared_distance(p, out.point(w))); x < d) {
+          d = x;
+          best = w.idx();
+        }
+      worst = std::max(worst, d);
+      matched.insert(best);
+    }
+  }
+  EXPECT_LE(worst, 1e-12 * scale) << c.name << " at " << tolerance;
+  EXPECT_EQ(matched.size(), out.number_of_vertices()) << c.name << " at " << tolerance;
+}
+
+TEST(Limit_surface, TessellationToToleranceHasBfrsSamples)
+{
+  for (const Tolerance_case& c : tolerance_cases())
+    for (double tolerance : {1e-2, 1e-3}) {
+      if (c.loop)
+        tolerance_tessellation_against_bfr<Loop_surface>(c, tolerance);
+      else
+        tolerance_tessellation_against_bfr<Surface>(c, tolerance);
+    }
+}
+
+// At the rate of each edge its segments lie within the tolerance of the
+// surface at their midpoints (their distance to it found by closest_point(),
+// not by the local Newton steps the rates are chosen with) and, on a border,
+// within it of the border curve at its middle. The facets' centres lie
+// within a few tolerances (measured: up to 2.6), and a finer tolerance gives
+// more samples.
+TEST(Limit_surface, TessellationToToleranceBoundsItsEdges)
+{
+  for (const Tolerance_case& c : tolerance_cases()) {
+    if (c.loop || c.name == "catmark_smoothtris1")
+      continue; // one of each kind of face suffices here
+    const Surface surface(c.mesh);
+    const Mesh& m = c.mesh;
+    const double T = 1e-3 * largest_coordinate(m);
+    const auto rates = S::internal::tolerance_rates(surface, m, T, 64, false);
+    const auto deviation = [&](CGAL_ext::Face_index f, int k, int rate) {
+      const int n = int(m.degree(f));
+      const auto at = [&](int i, int of) {
+        const auto uv = S::internal::edge_parameter<double>(n, false, k, i, of);
+        return surface.evaluate(f, uv[0], uv[1]).point;
+      };
+      double chord = 0, curve = 0;
+      for (int i = 0; i < rate; ++i) {
+        const K::Segment_3 segment(at(i, rate), at(i + 1, rate));
+        chord = std::max(chord, std::sqrt(surface.closest_point(CGAL::midpoint(segment.source(), segment.target())).squared_distance));
+        curve = std::max(curve, std::sqrt(CGAL::squared_distance(at(2 * i + 1, 2 * rate), segment)));
+      }
+      return std::array<double, 2>{chord, curve};
+    };
+    for (CGAL_ext::Face_index f : m.faces()) {
+      int k = 0;
+      for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
+        const int r = rates.edge[m.edge(m.next(d)).idx()];
+        const bool border = m.is_border(m.edge(m.next(d)));
+        EXPECT_LE(deviation(f, k, r)[border ? 1 : 0], 1.01 * T) << c.name << " f" << f.idx() << " edge " << k;
+        ++k;
+      }
+    }
+    const Mesh out = surface.tessellate_to_tolerance(T);
+    double worst = 0;
+    for (CGAL_ext::Face_index g : out.faces()) {
+      K::Vector_3 sum = CGAL::NULL_VECTOR;
+      for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(out.halfedge(g), out))
+        sum = sum + (out.point(v) - CGAL::ORIGIN);
+      const Point centre = CGAL::ORIGIN + sum / double(out.degree(g));
+      worst = std::max(worst, std::sqrt(CGAL::to_double(surface.closest_point(centre).squared_distance)));
+    }
+    EXPECT_LE(worst, 4 * T) << c.name;
+    ::testing::Test::RecordProperty(c.name + "_worst_over_tolerance", std::to_string(worst / T));
+    EXPECT_GT(surface.tessellate_to_tolerance(T / 4).number_of_vertices(), out.number_of_vertices()) << c.name;
+  }
+}
+
+TEST(Limit_surface, TessellationToToleranceRefusesABadTolerance)
+{
+  Mesh strip;
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  const Surface surface(strip);
+  for (double t : {0.0, -1.0, std::nan(""), std::numeric_limits<double>::infinity()})
+    EXPECT_THROW(surface.tessellate_to_tolerance(t), CGAL_ext::Parameter_error) << t;
+  // In exact numbers, the same rates and samples as in double.
+  using Kq = CGAL::Simple_cartesian<CGAL::Gmpq>;
+  CGAL_ext::Mobius_mesh<Kq::Point_3> exact;
+  CGAL_ext::make_mobius_strip(exact, 12, 3);
+  const S::Limit_surface<S::Catmull_clark_mask, Kq::Point_3> exact_surface(exact);
+  const double T = 1e-2 * largest_coordinate(strip);
+  const auto q = exact_surface.tessellate_to_tolerance(T);
+  const Mesh d = surface.tessellate_to_tolerance(T);
+  ASSERT_EQ(q.number_of_vertices(), d.number_of_vertices());
+  EXPECT_EQ(q.number_of_faces(), d.number_of_faces());
+  for (CGAL_ext::Vertex_index v : d.vertices())
+    EXPECT_LE(std::sqrt(CGAL::squared_distance(d.point(v), Point(CGAL::to_double(q.point(v).x()), CGAL::to_double(q.point(v).y()),
+                                                                 CGAL::to_double(q.point(v).z())))),
+              1e-12);
+}
+
 } // namespace
 } // namespace limit_surface_tests

@@ -63,6 +63,9 @@ struct Limit_surface_options
   /// the cells' centres, an estimate: a finer rate makes a miss less likely
   /// where the surface curves sharply within a cell.
   unsigned projection_rate = 4;
+  /// The most segments `Limit_surface::tessellate_to_tolerance()` puts
+  /// along a base edge or across a face (0 counts as 1).
+  unsigned max_tessellation_rate = 64;
 };
 
 /// \ingroup PkgSubdivision
@@ -216,6 +219,7 @@ public:
     faces_.resize(mesh.number_of_faces());
     once_.reset(new std::once_flag[mesh.number_of_faces()]);
     projection_rate_ = int(std::min(options.projection_rate, 1024u));
+    max_tessellation_rate_ = int(std::min(std::max(options.max_tessellation_rate, 1u), 1u << 20));
   }
 
   /// \brief the limit surface at parameter (`u`, `v`) of face `f` (see the
@@ -356,6 +360,49 @@ public:
   {
     if (rate < 1)
       throw Parameter_error("Limit_surface::tessellate: the rate " + std::to_string(rate) + " is not positive");
+    return tessellate_at(
+      internal::Tessellation_rates::uniform(base_.mesh.number_of_edges(), base_.mesh.number_of_faces(), rate));
+  }
+
+  /// \brief a mesh of the limit surface whose rates are chosen so that it
+  /// lies within about `tolerance` of the surface (a distance in the
+  /// mesh's units): each base edge gets its own number of segments, each
+  /// face its own inner rates (two for a quad, along u and v), as
+  /// OpenSubdiv's `Bfr::Tessellation` takes them, so flat regions get few
+  /// facets and curved ones many.
+  ///
+  /// The rates come from the surface's second derivatives: a segment of
+  /// parameter length h of a curve c lies within max |c''| h² / 8 of it, so
+  /// an edge whose limit curve has max |c''| = a (over 9 samples along it)
+  /// gets ⌈√(a / (8 `tolerance`))⌉ segments, and a face the inner rate that
+  /// gives along each direction of its layout (u, v, and under `Loop_mask`
+  /// the third side's), over a 5 × 5 grid of samples of the face (of each
+  /// sub-face of a face that is not a quad), every rate between 1 and
+  /// `Limit_surface_options::max_tessellation_rate`. It is an estimate, not
+  /// a bound: a peak of curvature between the samples is missed, and the
+  /// centre of a cell lies within the sum of its sides' bounds.
+  ///
+  /// The samples of each face are those of `Bfr::Tessellation` at the same
+  /// rates: `i` / N along an edge of rate N, and inside the face Bfr's grid
+  /// at its inner rates (only its centre where an inner rate is 1, or at
+  /// most 2 for a Loop triangle). A face whose edges and inner rates are all
+  /// one rate is laid out as `tessellate()` lays it out at that rate; in
+  /// another, the interior grid less its outermost ring of cells is joined to
+  /// the samples of each edge by a strip of triangles. Shared samples, the
+  /// normals, and the orientation of the facets are as in `tessellate()`:
+  /// the result is watertight and a one-sided surface stays one-sided.
+  /// \throws Parameter_error if `tolerance` is not positive and finite.
+  Mobius_mesh<P> tessellate_to_tolerance(double tolerance) const
+  {
+    if (!(tolerance > 0) || !std::isfinite(tolerance))
+      throw Parameter_error("Limit_surface::tessellate_to_tolerance: the tolerance " + std::to_string(tolerance) +
+                            " is not positive and finite");
+    return tessellate_at(internal::tolerance_rates(*this, base_.mesh, tolerance, max_tessellation_rate_, is_loop));
+  }
+
+private:
+  Mobius_mesh<P> tessellate_at(const internal::Tessellation_rates& rates) const
+  {
     const auto& m = base_.mesh;
     const auto np = CGAL_ext::parameters::boundary_interpolation(options_.boundary);
     // A base vertex's sample is limit_point() where that is the surface's
@@ -380,11 +427,10 @@ public:
     const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
       return limit_point_is_the_limit(v) ? P(limit_point<Mask>(v, m, np)) : evaluated;
     };
-    return internal::Uniform_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rate, corner_point, is_loop)
+    return internal::Limit_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rates, corner_point, is_loop)
       .run();
   }
 
-private:
   struct Face_patches
   {
     std::vector<std::vector<internal::Patch<FT>>> sub_faces;
@@ -481,6 +527,7 @@ private:
   mutable std::vector<std::unique_ptr<Face_patches>> faces_;
   std::unique_ptr<std::once_flag[]> once_;
   int projection_rate_ = 4;
+  int max_tessellation_rate_ = 64;
   mutable std::unique_ptr<internal::Limit_projection<Limit_surface>> projection_;
   std::unique_ptr<std::once_flag> projection_once_ = std::make_unique<std::once_flag>();
 };
@@ -497,6 +544,22 @@ Mobius_mesh<P> tessellate(const Mobius_mesh<P>& mesh, int rate, const NP& np = p
                           const Limit_surface_options& options = Limit_surface_options())
 {
   return Limit_surface<Mask, P>(mesh, np, options).tessellate(rate);
+}
+
+/// \ingroup PkgSubdivision
+/// \brief the limit surface of `mesh` under `Mask` (`Catmull_clark_mask` or
+/// `Loop_mask`) tessellated with rates chosen so that it lies within about
+/// `tolerance` of the surface:
+/// `Limit_surface<Mask, P>(mesh, np, options).tessellate_to_tolerance(tolerance)`
+/// (see there for the rates and the layout).
+/// \throws Parameter_error as the constructor of `Limit_surface` and
+/// `Limit_surface::tessellate_to_tolerance()`.
+template <class Mask, class P, class NP = parameters::Default_named_parameters>
+Mobius_mesh<P> tessellate_to_tolerance(const Mobius_mesh<P>& mesh, double tolerance,
+                                       const NP& np = parameters::default_values(),
+                                       const Limit_surface_options& options = Limit_surface_options())
+{
+  return Limit_surface<Mask, P>(mesh, np, options).tessellate_to_tolerance(tolerance);
 }
 
 /// \ingroup PkgSubdivision

@@ -3,7 +3,9 @@
 //
 // OpenSubdiv's Bfr::Parameterization of a base face that is not a quad: n
 // quad sub-faces of size 1/2 laid out in rows of unit tiles. Evaluation,
-// tessellation and projection all place sub-faces by these two functions.
+// tessellation and projection all place sub-faces by these functions; the
+// tessellation and its rates place the points of a face's boundary by
+// corner_parameter() and edge_parameter().
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_PARAMETERIZATION_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_PARAMETERIZATION_H
@@ -21,6 +23,73 @@ inline int sub_face_row(int n) { return n < 10 ? (2 + (n > 4 ? 1 : 0)) : (1 + in
 // The tile of sub-face k of an n-gon: the corner (u, v) of its unit tile,
 // whose lower-left quarter the sub-face covers.
 inline std::array<int, 2> sub_face_tile(int n, int k) { return {k % sub_face_row(n), k / sub_face_row(n)}; }
+
+// (u, v) of local parameter (su, sv) of sub-face k of a face of `sides`
+// sides, or of a quad's own parameter (k unused).
+template <class FT>
+std::array<FT, 2> sub_face_parameter(int sides, int k, const FT& su, const FT& sv)
+{
+  if (sides == 4)
+    return {su, sv};
+  const std::array<int, 2> tile = sub_face_tile(sides, k);
+  return {FT(tile[0]) + su / FT(2), FT(tile[1]) + sv / FT(2)};
+}
+
+// The parameter of corner k of a face of `sides` sides; `triangle_domain`
+// (Loop) parameterises a triangle over (0, 0), (1, 0), (0, 1).
+template <class FT>
+std::array<FT, 2> corner_parameter(int sides, bool triangle_domain, int k)
+{
+  if (triangle_domain && sides == 3) {
+    const int uv[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    return {FT(uv[k][0]), FT(uv[k][1])};
+  }
+  if (sides == 4) {
+    const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    return {FT(uv[k][0]), FT(uv[k][1])};
+  }
+  return sub_face_parameter(sides, k, FT(0), FT(0));
+}
+
+// The parameter at fraction i / n along edge k (from corner k) of a face of
+// `sides` sides, as Bfr gives it: of an n-gon, in sub-face k for the first
+// half of the edge and in sub-face k + 1 after.
+template <class FT>
+std::array<FT, 2> edge_parameter(int sides, bool triangle_domain, int k, int i, int n)
+{
+  const FT t = FT(i) / FT(n);
+  if (triangle_domain && sides == 3) {
+    switch (k) {
+      case 0: return {t, FT(0)};
+      case 1: return {FT(1) - t, t};
+      default: return {FT(0), FT(1) - t};
+    }
+  }
+  if (sides == 4) {
+    switch (k) {
+      case 0: return {t, FT(0)};
+      case 1: return {FT(1), t};
+      case 2: return {FT(1) - t, FT(1)};
+      default: return {FT(0), FT(1) - t};
+    }
+  }
+  if (2 * i < n)
+    return sub_face_parameter(sides, k, FT(2) * t, FT(0));
+  return sub_face_parameter(sides, (k + 1) % sides, FT(0), FT(2) * (FT(1) - t));
+}
+
+// Which second derivative of the surface is that of edge k's curve at
+// fraction i / n, the edge parameterised over [0, 1] as edge_parameter()
+// does: 0 for ∂²/∂u², 1 for ∂²/∂v², 2 for that along (−1, 1) (∂²/∂u² −
+// 2 ∂²/∂u∂v + ∂²/∂v²), the third side of a Loop triangle.
+inline int edge_direction(int sides, bool triangle_domain, int k, int i, int n)
+{
+  if (triangle_domain && sides == 3)
+    return k == 0 ? 0 : k == 1 ? 2 : 1;
+  if (sides == 4)
+    return k % 2;
+  return 2 * i < n ? 0 : 1;
+}
 
 } // namespace internal
 } // namespace Subdivision

@@ -1,12 +1,12 @@
-// Copyright (c) 2026 CGAL_ext contributors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
-//
-// A uniform tessellation of a limit surface, watertight by construction:
-// every sample the faces share (the limit point of a base vertex, the
-// samples inside a base edge) is evaluated once and its index reused, so
-// neighbouring faces cannot disagree even by rounding. The layout of each
-// face is that of OpenSubdiv's Bfr::Tessellation at a uniform rate with
-// quads preserved (Catmull–Clark), or of a triangle's domain (Loop).
+// A tessellation of a limit surface, watertight by construction: every
+// sample the faces share (the limit point of a base vertex, the samples
+// inside a base edge) is evaluated once and its index reused, so
+// neighbouring faces cannot disagree even by rounding. The samples of each
+// face are those of OpenSubdiv's Bfr::Tessellation at the same rates; a face
+// whose rates are all one is laid out as Bfr lays it out (quads preserved
+// under Catmull–Clark, a triangle's domain under Loop), and a face whose
+// rates differ has Bfr's interior grid at its inner rates joined to the
+// samples of its edges by a strip of triangles.
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
@@ -16,11 +16,15 @@
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/Origin.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -29,14 +33,28 @@ namespace CGAL_ext {
 namespace Subdivision {
 namespace internal {
 
+// The rates of a tessellation, as Bfr::Tessellation takes them: for each
+// base edge the number of segments along it, for each face its inner rates
+// (along u and v for a quad; other faces use the first).
+struct Tessellation_rates
+{
+  std::vector<int> edge;                 // by edge index
+  std::vector<std::array<int, 2>> inner; // by face index
+
+  static Tessellation_rates uniform(std::size_t edges, std::size_t faces, int rate)
+  {
+    return {std::vector<int>(edges, rate), std::vector<std::array<int, 2>>(faces, {rate, rate})};
+  }
+};
+
 // Builds the tessellation of `mesh` (the surface's own copy of the base
-// mesh) at `rate` samples per edge. `Surface` is Limit_surface;
-// `corner_point(v, f, evaluated)` gives the point of base vertex v, first
-// met at a corner of f where the surface evaluates to `evaluated`. With
-// `triangle_domain` (Loop) a triangle is parameterised over the triangle
-// (0, 0), (1, 0), (0, 1), not split into sub-faces.
+// mesh) at `rates`. `Surface` is Limit_surface; `corner_point(v, f,
+// evaluated)` gives the point of base vertex v, first met at a corner of f
+// where the surface evaluates to `evaluated`. With `triangle_domain` (Loop)
+// a triangle is parameterised over the triangle (0, 0), (1, 0), (0, 1), not
+// split into sub-faces.
 template <class Surface, class P, class CornerPoint>
-class Uniform_tessellator
+class Limit_tessellator
 {
   using FT = typename Surface::FT;
   using Vector = typename Surface::Kernel::Vector_3;
@@ -44,9 +62,9 @@ class Uniform_tessellator
   static constexpr std::size_t none = std::size_t(-1);
 
 public:
-  Uniform_tessellator(const Surface& surface, const Mobius_mesh<P>& mesh, int rate, const CornerPoint& corner_point,
-                      bool triangle_domain = false)
-      : s_(surface), m_(mesh), n_(rate), corner_point_(corner_point), triangle_domain_(triangle_domain)
+  Limit_tessellator(const Surface& surface, const Mobius_mesh<P>& mesh, const Tessellation_rates& rates,
+                    const CornerPoint& corner_point, bool triangle_domain = false)
+      : s_(surface), m_(mesh), rates_(rates), corner_point_(corner_point), triangle_domain_(triangle_domain)
   {}
 
   // The result, with "v:normal" and, where the base has Möbius edges, "h:normal".
@@ -69,62 +87,30 @@ public:
   }
 
 private:
-  // One face: its corners' darts, and the sample index of each position of its layout.
+  // One face: its corners' darts and samples, and the normals of its
+  // boundary samples seen from it.
   struct Face_state
   {
     Face_index f;
-    std::vector<Dart> darts; // darts[k] runs from corner k to corner k + 1
+    std::vector<Dart> darts;          // darts[k] runs from corner k to corner k + 1
+    std::vector<std::size_t> corners; // the sample of each corner
     std::unordered_map<std::size_t, Vector> boundary_normals; // in f's orientation
   };
 
-  // (u, v) of a point of sub-face k (local (su, sv)) of an n-gon, or of a quad (k unused).
-  std::array<FT, 2> param(int sides, int k, const FT& su, const FT& sv) const
+  // A sample of the ring that a strip joins to an edge, at fraction
+  // num / den along the edge.
+  struct Ring_sample
   {
-    if (sides == 4)
-      return {su, sv};
-    const std::array<int, 2> tile = sub_face_tile(sides, k);
-    return {FT(tile[0]) + su / FT(2), FT(tile[1]) + sv / FT(2)};
-  }
+    std::size_t id;
+    long num, den;
+  };
 
-  // The parameter at fraction i / N along edge k from corner k, as Bfr
-  // gives it: in sub-face k for the first half, in sub-face k + 1 after.
-  std::array<FT, 2> edge_param(int sides, int k, int i) const
-  {
-    const FT t = FT(i) / FT(n_);
-    if (whole_triangle(sides)) {
-      switch (k) {
-        case 0: return {t, FT(0)};
-        case 1: return {FT(1) - t, t};
-        default: return {FT(0), FT(1) - t};
-      }
-    }
-    if (sides == 4) {
-      switch (k) {
-        case 0: return {t, FT(0)};
-        case 1: return {FT(1), t};
-        case 2: return {FT(1) - t, FT(1)};
-        default: return {FT(0), FT(1) - t};
-      }
-    }
-    if (2 * i < n_)
-      return param(sides, k, FT(2) * t, FT(0));
-    return param(sides, (k + 1) % sides, FT(0), FT(2) * (FT(1) - t));
-  }
-
-  std::array<FT, 2> corner_param(int sides, int k) const
-  {
-    if (whole_triangle(sides)) {
-      const int uv[3][2] = {{0, 0}, {1, 0}, {0, 1}};
-      return {FT(uv[k][0]), FT(uv[k][1])};
-    }
-    if (sides == 4) {
-      const int uv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-      return {FT(uv[k][0]), FT(uv[k][1])};
-    }
-    return param(sides, k, FT(0), FT(0));
-  }
+  int sides(const Face_state& st) const { return int(st.darts.size()); }
+  int edge_rate(const Face_state& st, int k) const { return rates_.edge[m_.edge(st.darts[std::size_t(k)]).idx()]; }
 
   Evaluation eval(Face_index f, const std::array<FT, 2>& uv) const { return s_.evaluate(f, uv[0], uv[1]); }
+
+  std::array<FT, 2> param(int n, int k, const FT& su, const FT& sv) const { return sub_face_parameter(n, k, su, sv); }
 
   std::size_t add_sample(const Evaluation& e)
   {
@@ -137,7 +123,7 @@ private:
   std::size_t corner(Face_state& st, int k)
   {
     const Vertex_index v = m_.source(st.darts[std::size_t(k)]);
-    const Evaluation e = eval(st.f, corner_param(int(st.darts.size()), k));
+    const Evaluation e = eval(st.f, corner_parameter<FT>(sides(st), triangle_domain_, k));
     if (!vertex_done_[v.idx()]) {
       vertex_done_[v.idx()] = true;
       points_[v.idx()] = corner_point_(v, st.f, e.point);
@@ -147,116 +133,191 @@ private:
     return v.idx();
   }
 
-  // The sample at fraction i / N (0 < i < N) along edge k from corner k.
-  // The first face to reach an edge evaluates its samples, in the order
-  // from its dart's source; another dart reads them backwards if it runs
-  // the other way, as a neighbour of the same orientation does, and
-  // forwards if it runs the same way: across a Möbius edge, whose far face
-  // sees the surface from the other side, so its normal is the negation.
+  // The sample at fraction i / N (0 < i < N, N the edge's rate) along edge k
+  // from corner k. The first face to reach an edge evaluates its samples,
+  // in the order from its dart's source; another dart reads them backwards
+  // if it runs the other way, as a neighbour of the same orientation does,
+  // and forwards if it runs the same way: across a Möbius edge, whose far
+  // face sees the surface from the other side, so its normal is the negation.
   std::size_t edge_sample(Face_state& st, int k, int i)
   {
-    const int sides = int(st.darts.size());
     const Dart d = st.darts[std::size_t(k)];
     const Edge_index e = m_.edge(d);
+    const int N = rates_.edge[e.idx()];
     if (edge_first_[e.idx()] == none) {
       edge_owner_[e.idx()] = d;
       edge_first_[e.idx()] = points_.size();
-      for (int j = 1; j < n_; ++j)
-        add_sample(eval(st.f, edge_param(sides, k, j)));
+      for (int j = 1; j < N; ++j)
+        add_sample(eval(st.f, edge_parameter<FT>(sides(st), triangle_domain_, k, j, N)));
     }
     const Dart owner = edge_owner_[e.idx()];
     const bool same_way = m_.source(owner) == m_.source(d); // an edge's ends differ
-    const std::size_t id = edge_first_[e.idx()] + std::size_t(same_way ? i - 1 : n_ - i - 1);
+    const std::size_t id = edge_first_[e.idx()] + std::size_t(same_way ? i - 1 : N - i - 1);
     st.boundary_normals[id] = same_way && !(owner == d) ? -normals_[id] : normals_[id];
     return id;
   }
 
+  // A face whose outer and inner rates are all one rate is laid out as Bfr
+  // lays it out at that uniform rate; another has Bfr's interior samples at
+  // its inner rates, raised where Bfr puts only the face's centre (an inner
+  // rate of 1, or 2 on a Loop triangle) to the rate that gives just that.
   void add_face(Face_index f)
   {
     Face_state st;
     st.f = f;
     for (Dart d : CGAL_ext::halfedges_around_face(m_.halfedge(f), m_))
       st.darts.push_back(m_.next(d));
-    if (whole_triangle(int(st.darts.size())))
-      add_triangle(st);
-    else if (st.darts.size() == 4)
-      add_quad(st);
+    const int n = sides(st);
+    for (int k = 0; k < n; ++k)
+      st.corners.push_back(corner(st, k));
+    const std::array<int, 2> inner = rates_.inner[f.idx()];
+    bool uniform = n != 4 || inner[1] == inner[0];
+    for (int k = 0; k < n; ++k)
+      uniform = uniform && edge_rate(st, k) == inner[0];
+    if (whole_triangle(n))
+      add_triangle(st, uniform ? inner[0] : std::max(inner[0], 3), !uniform);
+    else if (n == 4 && (uniform || (inner[0] >= 2 && inner[1] >= 2)))
+      add_quad(st, inner[0], inner[1], !uniform);
+    else if (n == 4)
+      add_quad(st, 2, 2, true);
     else
-      add_polygon(st);
+      add_polygon(st, uniform ? inner[0] : std::max(inner[0], 2), !uniform);
   }
 
   bool whole_triangle(int sides) const { return triangle_domain_ && sides == 3; }
 
-  // A triangle over its own domain: N² triangles, (i, j) at parameter
-  // (i / N, j / N), i + j <= N, the lattice's lines parallel to the sides.
-  void add_triangle(Face_state& st)
+  // The strip between edge k of the face (its corners and samples) and the
+  // part `ring` of the interior's outermost ring that faces it, from the
+  // ring's sample nearest corner k to that nearest corner k + 1: triangles
+  // made by walking both in order of their fraction along the edge (so the
+  // strips of neighbouring edges meet along the segment from a corner to
+  // the ring's sample nearest it).
+  void zip(Face_state& st, int k, const std::vector<Ring_sample>& ring)
   {
-    const int N = n_;
+    const int N = edge_rate(st, k);
+    std::vector<Ring_sample> edge{{st.corners[std::size_t(k)], 0, 1}};
+    for (int i = 1; i < N; ++i)
+      edge.push_back({edge_sample(st, k, i), i, N});
+    edge.push_back({st.corners[std::size_t((k + 1) % sides(st))], 1, 1});
+    std::size_t x = 0, y = 0;
+    while (x + 1 < edge.size() || y + 1 < ring.size()) {
+      const Ring_sample &a = edge[std::min(x + 1, edge.size() - 1)], &b = ring[std::min(y + 1, ring.size() - 1)];
+      if (y + 1 == ring.size() || (x + 1 < edge.size() && a.num * b.den <= b.num * a.den)) {
+        emit(st, {edge[x].id, edge[x + 1].id, ring[y].id});
+        ++x;
+      } else {
+        emit(st, {edge[x].id, ring[y + 1].id, ring[y].id});
+        ++y;
+      }
+    }
+  }
+
+  // A triangle over its own domain at rate N: N² triangles, (i, j) at
+  // parameter (i / N, j / N), i + j <= N, the lattice's lines parallel to
+  // the sides. With `strips`, the samples of the edges are their own and
+  // the lattice's outermost row of triangles (N >= 3) is replaced by strips.
+  void add_triangle(Face_state& st, int N, bool strips)
+  {
     std::vector<std::size_t> g(std::size_t((N + 1) * (N + 1)), none);
     auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j * (N + 1) + i)]; };
-    at(0, 0) = corner(st, 0);
-    at(N, 0) = corner(st, 1);
-    at(0, N) = corner(st, 2);
-    for (int i = 1; i < N; ++i) {
-      at(i, 0) = edge_sample(st, 0, i);
-      at(N - i, i) = edge_sample(st, 1, i);
-      at(0, N - i) = edge_sample(st, 2, i);
+    if (!strips) {
+      at(0, 0) = st.corners[0];
+      at(N, 0) = st.corners[1];
+      at(0, N) = st.corners[2];
+      for (int i = 1; i < N; ++i) {
+        at(i, 0) = edge_sample(st, 0, i);
+        at(N - i, i) = edge_sample(st, 1, i);
+        at(0, N - i) = edge_sample(st, 2, i);
+      }
     }
     for (int j = 1; j < N; ++j)
       for (int i = 1; i + j < N; ++i)
         at(i, j) = add_sample(eval(st.f, {FT(i) / FT(N), FT(j) / FT(N)}));
-    for (int j = 0; j < N; ++j)
-      for (int i = 0; i + j < N; ++i) {
+    const int lo = strips ? 1 : 0, hi = strips ? N - 1 : N;
+    for (int j = lo; j < hi; ++j)
+      for (int i = lo; i + j < hi; ++i) {
         emit(st, {at(i, j), at(i + 1, j), at(i, j + 1)});
-        if (i + j + 1 < N)
+        if (i + j + 1 < hi)
           emit(st, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
       }
+    if (!strips)
+      return;
+    // The ring's samples, by their fraction along each side (that of their
+    // projection onto it, in units of 1 / 2N).
+    std::array<std::vector<Ring_sample>, 3> ring;
+    for (int i = 1; i <= N - 2; ++i)
+      ring[0].push_back({at(i, 1), 2 * i, 2 * N});
+    for (int j = 1; j <= N - 2; ++j)
+      ring[1].push_back({at(N - 1 - j, j), 2 * j + 1, 2 * N});
+    for (int j = N - 2; j >= 1; --j)
+      ring[2].push_back({at(1, j), 2 * (N - j), 2 * N});
+    for (int k = 0; k < 3; ++k)
+      zip(st, k, ring[std::size_t(k)]);
   }
 
-  // A quad: an N × N grid of quads, (i, j) at parameter (i / N, j / N).
-  void add_quad(Face_state& st)
+  // A quad: a U × V grid of quads, (i, j) at parameter (i / U, j / V). With
+  // `strips` (U, V >= 2), the samples of the edges are their own and the
+  // grid's outermost ring of quads is replaced by strips.
+  void add_quad(Face_state& st, int U, int V, bool strips)
   {
-    const int N = n_;
-    std::vector<std::size_t> g(std::size_t((N + 1) * (N + 1)), none);
-    auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j * (N + 1) + i)]; };
-    at(0, 0) = corner(st, 0);
-    at(N, 0) = corner(st, 1);
-    at(N, N) = corner(st, 2);
-    at(0, N) = corner(st, 3);
-    for (int i = 1; i < N; ++i) {
-      at(i, 0) = edge_sample(st, 0, i);
-      at(N, i) = edge_sample(st, 1, i);
-      at(N - i, N) = edge_sample(st, 2, i);
-      at(0, N - i) = edge_sample(st, 3, i);
+    std::vector<std::size_t> g(std::size_t((U + 1) * (V + 1)), none);
+    auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j * (U + 1) + i)]; };
+    if (!strips) { // U = V
+      at(0, 0) = st.corners[0];
+      at(U, 0) = st.corners[1];
+      at(U, U) = st.corners[2];
+      at(0, U) = st.corners[3];
+      for (int i = 1; i < U; ++i) {
+        at(i, 0) = edge_sample(st, 0, i);
+        at(U, i) = edge_sample(st, 1, i);
+        at(U - i, U) = edge_sample(st, 2, i);
+        at(0, U - i) = edge_sample(st, 3, i);
+      }
     }
-    for (int j = 1; j < N; ++j) // rows, as Bfr orders its interior points
-      for (int i = 1; i < N; ++i)
-        at(i, j) = add_sample(eval(st.f, {FT(i) / FT(N), FT(j) / FT(N)}));
-    for (int j = 0; j < N; ++j)
-      for (int i = 0; i < N; ++i)
+    for (int j = 1; j < V; ++j) // rows, as Bfr orders its interior points
+      for (int i = 1; i < U; ++i)
+        at(i, j) = add_sample(eval(st.f, {FT(i) / FT(U), FT(j) / FT(V)}));
+    const int lo = strips ? 1 : 0;
+    for (int j = lo; j < V - lo; ++j)
+      for (int i = lo; i < U - lo; ++i)
         emit(st, {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    if (!strips)
+      return;
+    std::array<std::vector<Ring_sample>, 4> ring;
+    for (int i = 1; i < U; ++i) {
+      ring[0].push_back({at(i, 1), i, U});
+      ring[2].push_back({at(U - i, V - 1), i, U});
+    }
+    for (int j = 1; j < V; ++j) {
+      ring[1].push_back({at(U - 1, j), j, V});
+      ring[3].push_back({at(1, V - j), j, V});
+    }
+    for (int k = 0; k < 4; ++k)
+      zip(st, k, ring[std::size_t(k)]);
   }
 
-  // An n-gon, as Bfr lays it out: sub-face k holds the grid G_k(i, j),
-  // 0 <= i, j <= M = N div 2, at local parameter (2i / N, 2j / N), G_k(i, 0)
-  // on edge k and G_k(0, j) on edge k - 1. At an even rate the grids meet
-  // along the spokes (G_k(M, j) = G_{k+1}(j, M)) and at the centre; at an
-  // odd rate a strip of quads joins neighbouring grids and their inner
-  // corners make a triangle (n = 3) or a fan of triangles round the centre.
-  void add_polygon(Face_state& st)
+  // An n-gon at rate N, as Bfr lays it out: sub-face k holds the grid
+  // G_k(i, j), 0 <= i, j <= M = N div 2, at local parameter (2i / N, 2j / N),
+  // G_k(i, 0) on edge k and G_k(0, j) on edge k - 1. At an even rate the
+  // grids meet along the spokes (G_k(M, j) = G_{k+1}(j, M)) and at the
+  // centre; at an odd rate a strip of quads joins neighbouring grids and
+  // their inner corners make a triangle (n = 3) or a fan of triangles round
+  // the centre. With `strips` (N >= 2), the samples of the edges are their
+  // own and the grids' outermost rows are replaced by strips.
+  void add_polygon(Face_state& st, int N, bool strips)
   {
-    const int n = int(st.darts.size()), N = n_, M = N / 2;
+    const int n = sides(st), M = N / 2;
     const bool even = N % 2 == 0;
     std::vector<std::vector<std::size_t>> g(std::size_t(n), std::vector<std::size_t>(std::size_t((M + 1) * (M + 1)), none));
     auto at = [&](int k, int i, int j) -> std::size_t& { return g[std::size_t((k + n) % n)][std::size_t(j * (M + 1) + i)]; };
-    for (int k = 0; k < n; ++k) {
-      at(k, 0, 0) = corner(st, k);
-      for (int i = 1; i <= M; ++i)
-        at(k, i, 0) = edge_sample(st, k, i);
-    }
-    for (int k = 0; k < n; ++k)
-      for (int j = 1; j <= M; ++j)
-        at(k, 0, j) = edge_sample(st, (k + n - 1) % n, N - j);
+    if (!strips)
+      for (int k = 0; k < n; ++k) {
+        at(k, 0, 0) = st.corners[std::size_t(k)];
+        for (int i = 1; i <= M; ++i)
+          at(k, i, 0) = edge_sample(st, k, i);
+        for (int j = 1; j <= M; ++j)
+          at(k, 0, j) = edge_sample(st, (k + n - 1) % n, N - j);
+      }
     std::size_t centre = none;
     if (even || n > 3)
       centre = add_sample(eval(st.f, param(n, 0, FT(1), FT(1))));
@@ -273,20 +334,33 @@ private:
       for (int k = 0; k < n; ++k)
         for (int j = 1; j < M; ++j)
           at(k, M, j) = at(k + 1, j, M);
+    const int lo = strips ? 1 : 0;
     for (int k = 0; k < n; ++k)
-      for (int j = 0; j < M; ++j)
-        for (int i = 0; i < M; ++i)
+      for (int j = lo; j < M; ++j)
+        for (int i = lo; i < M; ++i)
           emit(st, {at(k, i, j), at(k, i + 1, j), at(k, i + 1, j + 1), at(k, i, j + 1)});
-    if (even)
-      return;
-    for (int k = 0; k < n; ++k)
-      for (int j = 0; j < M; ++j)
-        emit(st, {at(k, M, j), at(k + 1, j, M), at(k + 1, j + 1, M), at(k, M, j + 1)});
-    if (n == 3)
-      emit(st, {at(0, M, M), at(1, M, M), at(2, M, M)});
-    else
+    if (!even) {
       for (int k = 0; k < n; ++k)
-        emit(st, {at(k, M, M), at(k + 1, M, M), centre});
+        for (int j = lo; j < M; ++j)
+          emit(st, {at(k, M, j), at(k + 1, j, M), at(k + 1, j + 1, M), at(k, M, j + 1)});
+      if (n == 3)
+        emit(st, {at(0, M, M), at(1, M, M), at(2, M, M)});
+      else
+        for (int k = 0; k < n; ++k)
+          emit(st, {at(k, M, M), at(k + 1, M, M), centre});
+    }
+    if (!strips)
+      return;
+    // Along edge k the ring runs over row 1 of sub-face k, then down
+    // column 1 of sub-face k + 1 (G_{k+1}(1, j) faces the edge's sample N − j).
+    for (int k = 0; k < n; ++k) {
+      std::vector<Ring_sample> ring;
+      for (int i = 1; i <= M; ++i)
+        ring.push_back({at(k, i, 1), i, N});
+      for (int j = even ? M - 1 : M; j >= 1; --j)
+        ring.push_back({at(k + 1, 1, j), N - j, N});
+      zip(st, k, ring);
+    }
   }
 
   void emit(const Face_state& st, std::vector<std::size_t> facet)
@@ -333,7 +407,7 @@ private:
 
   const Surface& s_;
   const Mobius_mesh<P>& m_;
-  int n_;
+  const Tessellation_rates& rates_;
   const CornerPoint& corner_point_;
   bool triangle_domain_ = false;
   bool corner_normals_ = false;
@@ -345,6 +419,203 @@ private:
   std::vector<std::vector<std::size_t>> facets_;
   std::vector<std::vector<Vector>> facet_normals_;
 };
+
+// The smallest rate in [1, max_rate] at which `within(rate)` holds (else
+// max_rate): searched by doubling, then by bisection, as a deviation falls
+// with the rate (but for rounding).
+template <class Within>
+int smallest_rate(const Within& within, int max_rate)
+{
+  int lo = 1, hi = 1; // within(hi), and not within(lo - 1)
+  while (!within(hi)) {
+    if (hi >= max_rate)
+      return max_rate;
+    lo = hi + 1;
+    hi = std::min(2 * hi, max_rate);
+  }
+  while (lo < hi) {
+    const int mid = lo + (hi - lo) / 2;
+    if (within(mid))
+      hi = mid;
+    else
+      lo = mid + 1;
+  }
+  return hi;
+}
+
+// One face of a limit surface, as the choice of rates sees it: its
+// evaluation, and the distance from a point to it near a parameter.
+template <class Surface>
+struct Face_surface
+{
+  using FT = typename Surface::FT;
+  using Evaluation = typename Surface::Evaluation;
+
+  const Surface& surface;
+  Face_index f;
+  int sides;
+  bool triangle_domain;
+
+  Evaluation at(const std::array<FT, 2>& uv) const { return surface.evaluate(f, uv[0], uv[1]); }
+
+  // The distance from q to the surface by two Newton steps on |S(u, v) − q|²
+  // from `start`, kept in the domain of its sub-face (of the face, for a quad
+  // or a Loop triangle): where the foot lies beyond, an overestimate. The
+  // steps are taken in double, so that an exact kernel's numbers do not grow.
+  template <class Point>
+  double distance_near(const Point& q, const std::array<FT, 2>& start) const
+  {
+    const bool whole = sides == 4 || (triangle_domain && sides == 3);
+    double u = CGAL::to_double(start[0]), v = CGAL::to_double(start[1]);
+    const double u0 = whole ? 0.0 : std::floor(u), v0 = whole ? 0.0 : std::floor(v), side = whole ? 1.0 : 0.5;
+    Evaluation e = at(start);
+    for (int step = 0; step < 2; ++step) {
+      const auto r = q - e.point;
+      const double a = CGAL::to_double(e.du * e.du), b = CGAL::to_double(e.du * e.dv), c = CGAL::to_double(e.dv * e.dv);
+      const double x = CGAL::to_double(e.du * r), y = CGAL::to_double(e.dv * r), det = a * c - b * b;
+      if (!(det > 1e-24 * a * c))
+        break; // at a degenerate corner: the distance from there
+      u = std::clamp(u + (c * x - b * y) / det, u0, u0 + side);
+      v = std::clamp(v + (a * y - b * x) / det, v0, v0 + side);
+      if (triangle_domain && sides == 3 && u + v > 1) { // back onto the hypotenuse
+        u = std::clamp((1 + u - v) / 2, 0.0, 1.0);
+        v = 1 - u;
+      }
+      e = at({FT(u), FT(v)});
+    }
+    return std::sqrt(CGAL::to_double(CGAL::squared_distance(q, e.point)));
+  }
+};
+
+// Whether the `rate` segments of a curve on face `face` (its parameter at
+// fraction i / n along it: `param(i, n)`) lie within `tolerance` of the
+// surface at their midpoints (Face_surface::distance_near() from the curve's
+// midpoint); of a border curve, whether the curve's midpoint lies within
+// `tolerance` of its segment (a chord of a border leaves the surface where
+// the border bends inwards).
+template <class Surface, class Param>
+bool segments_within(const Face_surface<Surface>& face, const Param& param, int rate, double tolerance,
+                     bool border = false)
+{
+  auto a = face.at(param(0, rate));
+  for (int i = 0; i < rate; ++i) {
+    const auto b = face.at(param(i + 1, rate));
+    const std::array<typename Surface::FT, 2> middle = param(2 * i + 1, 2 * rate);
+    const double off =
+      border ? std::sqrt(CGAL::to_double(CGAL::squared_distance(face.at(middle).point, typename Surface::Kernel::Segment_3(a.point, b.point))))
+             : face.distance_near(CGAL::midpoint(a.point, b.point), middle);
+    if (off > tolerance)
+      return false;
+    a = b;
+  }
+  return true;
+}
+
+// The smallest rate (at most max_rate) at which the segments of edge k of
+// `face` lie within `tolerance` of the surface (a border's: of the border).
+template <class Surface>
+int edge_rate_within(const Face_surface<Surface>& face, int k, bool border, double tolerance, int max_rate)
+{
+  using FT = typename Surface::FT;
+  const auto param = [&](int i, int n) { return edge_parameter<FT>(face.sides, face.triangle_domain, k, i, n); };
+  return smallest_rate([&](int rate) { return segments_within(face, param, rate, tolerance, border); }, max_rate);
+}
+
+// The smallest rate (at most max_rate) at which the segments along the
+// lines `lines` of `face` lie within `tolerance` of the surface, a line
+// being its ends' parameters and the rate the number of segments along a
+// unit of parameter (so a line of parameter length 1/2 is cut in rate / 2).
+template <class Surface>
+int lines_rate_within(const Face_surface<Surface>& face, const std::vector<std::array<typename Surface::FT, 4>>& lines,
+                      int per_unit, double tolerance, int max_rate)
+{
+  using FT = typename Surface::FT;
+  const auto within = [&](int rate) {
+    for (const auto& l : lines) {
+      const auto param = [&](int i, int n) {
+        const FT t = FT(i) / FT(n);
+        return std::array<FT, 2>{l[0] + t * (l[2] - l[0]), l[1] + t * (l[3] - l[1])};
+      };
+      if (!segments_within(face, param, rate, tolerance))
+        return false;
+    }
+    return true;
+  };
+  return std::min(max_rate, per_unit * smallest_rate(within, (max_rate + per_unit - 1) / per_unit));
+}
+
+// The interior lines of face f along which its inner rates are measured,
+// for each inner rate: for a quad the lines v = 1/4, 1/2, 3/4 (its rate
+// along u) and u = 1/4, 1/2, 3/4 (along v); for a Loop triangle its three
+// mid-lines, parallel to its sides; for another face the lines at 1/4, 1/2
+// and 3/4 of each sub-face both ways. Mid-lines and sub-face lines are half
+// a unit of parameter long.
+template <class FT>
+std::vector<std::vector<std::array<FT, 4>>> inner_lines(int sides, bool triangle_domain)
+{
+  const FT q[3] = {FT(1) / FT(4), FT(1) / FT(2), FT(3) / FT(4)}, h = FT(1) / FT(2);
+  if (sides == 4) {
+    std::vector<std::array<FT, 4>> along_u, along_v;
+    for (const FT& c : q) {
+      along_u.push_back({FT(0), c, FT(1), c});
+      along_v.push_back({c, FT(0), c, FT(1)});
+    }
+    return {along_u, along_v};
+  }
+  if (triangle_domain && sides == 3)
+    return {{{FT(0), h, h, h}, {h, FT(0), h, h}, {h, FT(0), FT(0), h}}};
+  std::vector<std::array<FT, 4>> lines;
+  for (int k = 0; k < sides; ++k)
+    for (const FT& c : q) {
+      const std::array<FT, 2> a = sub_face_parameter(sides, k, FT(0), c), b = sub_face_parameter(sides, k, FT(1), c);
+      const std::array<FT, 2> d = sub_face_parameter(sides, k, c, FT(0)), e = sub_face_parameter(sides, k, c, FT(1));
+      lines.push_back({a[0], a[1], b[0], b[1]});
+      lines.push_back({d[0], d[1], e[0], e[1]});
+    }
+  return {lines};
+}
+
+// Rates whose samples lie within about `tolerance` of the surface: each edge
+// the smallest rate whose segments do (edge_rate_within()); each face the
+// larger of the inner rates that Bfr infers from its edges' (the mean of
+// opposite edges' for a quad, of all edges' for another face) and those at
+// which the segments along its inner lines do (inner_lines()). A quad with
+// an inner rate of 1 one way and more the other takes 2: Bfr puts only its
+// centre inside at 1, which would drop the other way's samples.
+template <class Surface, class P>
+Tessellation_rates tolerance_rates(const Surface& surface, const Mobius_mesh<P>& m, double tolerance, int max_rate,
+                                   bool triangle_domain)
+{
+  using FT = typename Surface::FT;
+  Tessellation_rates rates = Tessellation_rates::uniform(m.number_of_edges(), m.number_of_faces(), 1);
+  std::vector<char> edge_done(m.number_of_edges(), 0);
+  for (Face_index f : m.faces()) {
+    std::vector<int> outer;
+    const int n = int(m.degree(f));
+    const Face_surface<Surface> face{surface, f, n, triangle_domain};
+    int k = 0;
+    for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
+      const Edge_index e = m.edge(m.next(d)); // edge k runs from corner k
+      if (!std::exchange(edge_done[e.idx()], 1))
+        rates.edge[e.idx()] = edge_rate_within(face, k, m.is_border(e), tolerance, max_rate);
+      outer.push_back(rates.edge[e.idx()]);
+      ++k;
+    }
+    const auto lines = inner_lines<FT>(n, triangle_domain);
+    const int per_unit = n == 4 ? 1 : 2;
+    if (n == 4) {
+      const int u = std::max((outer[0] + outer[2]) / 2, lines_rate_within(face, lines[0], 1, tolerance, max_rate));
+      const int v = std::max((outer[1] + outer[3]) / 2, lines_rate_within(face, lines[1], 1, tolerance, max_rate));
+      rates.inner[f.idx()] = u == 1 && v == 1 ? std::array<int, 2>{1, 1} : std::array<int, 2>{std::max(u, 2), std::max(v, 2)};
+    } else {
+      int sum = 0;
+      for (int r : outer)
+        sum += r;
+      rates.inner[f.idx()].fill(std::max(sum / n, lines_rate_within(face, lines[0], per_unit, tolerance, max_rate)));
+    }
+  }
+  return rates;
+}
 
 } // namespace internal
 } // namespace Subdivision
