@@ -51,15 +51,12 @@ cgal_ext_tool_fails(tessellate.fails.boundary tessellate
   "^tessellate: --boundary 'none' is not edge-only or edge-and-corner; usage: [^\n]+\n$")
 
 # To a tolerance: the Möbius strip stays one watertight one-sided strip (its
-# Euler characteristic 0, one border loop). Neither or both of --rate and
-# --tolerance, or a tolerance that is not positive: refused.
+# Euler characteristic 0, one border loop). Both --rate and --tolerance, or
+# a tolerance that is not positive: refused (neither: example.tessellate.bad_argument).
 add_test(NAME tessellate.tolerance_mobius COMMAND tessellate ${_data}/mobius_20x4_quads.obj
          ${_out}/tessellate_tolerance_mobius.obj --tolerance 0.001)
 set_tests_properties(tessellate.tolerance_mobius PROPERTIES PASS_REGULAR_EXPRESSION
   "\"border_loops\":1,.*\"orientable\":false,.*\"euler_characteristic\":0,\"valid\":true,")
-cgal_ext_tool_fails(tessellate.fails.no_rate tessellate
-  "${_data}/mobius_20x4_quads.obj;${_out}/x.obj"
-  "^tessellate: one of --rate and --tolerance is required; usage: [^\n]+\n$")
 cgal_ext_tool_fails(tessellate.fails.rate_and_tolerance tessellate
   "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--rate;2;--tolerance;0.1"
   "^tessellate: one of --rate and --tolerance is required; usage: [^\n]+\n$")

@@ -64,7 +64,7 @@ struct Limit_surface_options
   /// where the surface curves sharply within a cell.
   unsigned projection_rate = 4;
   /// The most segments `Limit_surface::tessellate_to_tolerance()` puts
-  /// along a base edge or across a face (0 counts as 1).
+  /// along a base edge or across a face (0 counts as 1, more than 4096 as 4096).
   unsigned max_tessellation_rate = 64;
 };
 
@@ -219,7 +219,7 @@ public:
     faces_.resize(mesh.number_of_faces());
     once_.reset(new std::once_flag[mesh.number_of_faces()]);
     projection_rate_ = int(std::min(options.projection_rate, 1024u));
-    max_tessellation_rate_ = int(std::min(std::max(options.max_tessellation_rate, 1u), 1u << 20));
+    max_tessellation_rate_ = int(std::min(std::max(options.max_tessellation_rate, 1u), 4096u));
   }
 
   /// \brief the limit surface at parameter (`u`, `v`) of face `f` (see the
@@ -364,28 +364,32 @@ public:
       internal::Tessellation_rates::uniform(base_.mesh.number_of_edges(), base_.mesh.number_of_faces(), rate));
   }
 
-  /// \brief a mesh of the limit surface whose rates are chosen so that it
-  /// lies within about `tolerance` of the surface (a distance in the
-  /// mesh's units): each base edge gets its own number of segments, each
-  /// face its own inner rates (two for a quad, along u and v), as
-  /// OpenSubdiv's `Bfr::Tessellation` takes them, so flat regions get few
-  /// facets and curved ones many.
+  /// \brief a mesh of the limit surface whose rates are chosen from
+  /// `tolerance` (a distance in the mesh's units): each base edge gets its
+  /// own number of segments, each face its own inner rates (two for a quad,
+  /// along u and v), as OpenSubdiv's `Bfr::Tessellation` takes them, so flat
+  /// regions get few facets and curved ones many.
   ///
-  /// The rates come from the surface's second derivatives: a segment of
-  /// parameter length h of a curve c lies within max |c''| h² / 8 of it, so
-  /// an edge whose limit curve has max |c''| = a (over 9 samples along it)
-  /// gets ⌈√(a / (8 `tolerance`))⌉ segments, and a face the inner rate that
-  /// gives along each direction of its layout (u, v, and under `Loop_mask`
-  /// the third side's), over a 5 × 5 grid of samples of the face (of each
-  /// sub-face of a face that is not a quad), every rate between 1 and
-  /// `Limit_surface_options::max_tessellation_rate`. It is an estimate, not
-  /// a bound: a peak of curvature between the samples is missed, and the
-  /// centre of a cell lies within the sum of its sides' bounds.
+  /// An edge gets the fewest segments whose midpoints lie within `tolerance`
+  /// of the surface (their distance found by two Newton steps from the
+  /// limit curve's point halfway along each segment, kept in the face); a
+  /// border edge the fewest whose border curve passes within `tolerance` of
+  /// each segment at its middle. A face gets the larger of the inner rates
+  /// Bfr infers from its edges' (the mean of opposite edges' for a quad, of
+  /// all edges' for another face) and those at which the segments along
+  /// its inner lines lie within `tolerance` (a quad's lines at 1/4, 1/2 and
+  /// 3/4 each way, a Loop triangle's three mid-lines, the lines at 1/4, 1/2
+  /// and 3/4 of each sub-face of another face); a quad with an inner rate of
+  /// 1 one way and more the other gets 2. Every rate is found by doubling,
+  /// then bisection, up to `Limit_surface_options::max_tessellation_rate`.
+  /// The tolerance bounds segments, not facets: a facet's centre can lie off
+  /// by the sum of its two directions' deviations (measured up to 2.6
+  /// `tolerance`, see the manual).
   ///
   /// The samples of each face are those of `Bfr::Tessellation` at the same
   /// rates: `i` / N along an edge of rate N, and inside the face Bfr's grid
   /// at its inner rates (only its centre where an inner rate is 1, or at
-  /// most 2 for a Loop triangle). A face whose edges and inner rates are all
+  /// most 3 for a Loop triangle). A face whose edges and inner rates are all
   /// one rate is laid out as `tessellate()` lays it out at that rate; in
   /// another, the interior grid less its outermost ring of cells is joined to
   /// the samples of each edge by a strip of triangles. Shared samples, the

@@ -4,7 +4,7 @@
 // OpenSubdiv's Bfr::Parameterization of a base face that is not a quad: n
 // quad sub-faces of size 1/2 laid out in rows of unit tiles. Evaluation,
 // tessellation and projection all place sub-faces by these functions; the
-// tessellation and its rates place the points of a face's boundary by
+// the tessellation and its rates place the points of a face's boundary by
 // corner_parameter() and edge_parameter().
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_PARAMETERIZATION_H
@@ -76,19 +76,6 @@ std::array<FT, 2> edge_parameter(int sides, bool triangle_domain, int k, int i, 
   if (2 * i < n)
     return sub_face_parameter(sides, k, FT(2) * t, FT(0));
   return sub_face_parameter(sides, (k + 1) % sides, FT(0), FT(2) * (FT(1) - t));
-}
-
-// Which second derivative of the surface is that of edge k's curve at
-// fraction i / n, the edge parameterised over [0, 1] as edge_parameter()
-// does: 0 for ∂²/∂u², 1 for ∂²/∂v², 2 for that along (−1, 1) (∂²/∂u² −
-// 2 ∂²/∂u∂v + ∂²/∂v²), the third side of a Loop triangle.
-inline int edge_direction(int sides, bool triangle_domain, int k, int i, int n)
-{
-  if (triangle_domain && sides == 3)
-    return k == 0 ? 0 : k == 1 ? 2 : 1;
-  if (sides == 4)
-    return k % 2;
-  return 2 * i < n ? 0 : 1;
 }
 
 } // namespace internal

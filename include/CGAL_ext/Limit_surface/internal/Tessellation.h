@@ -23,8 +23,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
-#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -102,7 +102,7 @@ private:
   struct Ring_sample
   {
     std::size_t id;
-    long num, den;
+    std::int64_t num, den;
   };
 
   int sides(const Face_state& st) const { return int(st.darts.size()); }
@@ -218,8 +218,8 @@ private:
   // the lattice's outermost row of triangles (N >= 3) is replaced by strips.
   void add_triangle(Face_state& st, int N, bool strips)
   {
-    std::vector<std::size_t> g(std::size_t((N + 1) * (N + 1)), none);
-    auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j * (N + 1) + i)]; };
+    std::vector<std::size_t> g(std::size_t(N + 1) * std::size_t(N + 1), none);
+    auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j) * std::size_t(N + 1) + std::size_t(i)]; };
     if (!strips) {
       at(0, 0) = st.corners[0];
       at(N, 0) = st.corners[1];
@@ -260,8 +260,8 @@ private:
   // grid's outermost ring of quads is replaced by strips.
   void add_quad(Face_state& st, int U, int V, bool strips)
   {
-    std::vector<std::size_t> g(std::size_t((U + 1) * (V + 1)), none);
-    auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j * (U + 1) + i)]; };
+    std::vector<std::size_t> g(std::size_t(U + 1) * std::size_t(V + 1), none);
+    auto at = [&](int i, int j) -> std::size_t& { return g[std::size_t(j) * std::size_t(U + 1) + std::size_t(i)]; };
     if (!strips) { // U = V
       at(0, 0) = st.corners[0];
       at(U, 0) = st.corners[1];
