@@ -11,10 +11,10 @@
 //   has no area, or with --no-hausdorff)[,"limit_distance":D (with
 //   --limit-distance: the largest distance from the result's vertices and face
 //   centroids to the input's Catmull–Clark limit surface, the shape a
-//   subdivision cage stands for)][,"corner_values_interpolated":true (the
+//   subdivision cage stands for)][,"corner_values_interpolated":N (the
 //   output has texture coordinates or normals: kept along their seams, where
 //   edges are not collapsed, and interpolated along the collapsed edges
-//   elsewhere, an approximation)][,"corner_channels_dropped":[...]]}
+//   elsewhere, an approximation; N values of the output were so made)][,"corner_channels_dropped":[...]]}
 // A bad file or option: one line on stderr, exit status 2.
 
 #include "arguments.h"
@@ -125,12 +125,13 @@ int decimate(int argc, char** argv)
   // Of the input as read: the cage, before its faces are split.
   const auto cage = args.has("--limit-distance") ? examples::cage_surface(input) : nullptr;
   const auto start = std::chrono::steady_clock::now();
-  CGAL_ext::decimate(mesh, CGAL_ext::parameters::number_of_faces(faces)
-                             .face_ratio(ratio)
-                             .maximum_error(error)
-                             .maximum_normal_deviation(angle)
-                             .protect_borders(args.has("--protect-borders"))
-                             .relocate_vertices(!args.has("--no-relocation")));
+  const CGAL_ext::Decimation_result done =
+    CGAL_ext::decimate(mesh, CGAL_ext::parameters::number_of_faces(faces)
+                               .face_ratio(ratio)
+                               .maximum_error(error)
+                               .maximum_normal_deviation(angle)
+                               .protect_borders(args.has("--protect-borders"))
+                               .relocate_vertices(!args.has("--no-relocation")));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
   std::optional<double> to_limit;
@@ -146,7 +147,7 @@ int decimate(int argc, char** argv)
   if (to_limit)
     line.add("limit_distance", *to_limit);
   if (!mesh.corner_channels().empty())
-    line.add("corner_values_interpolated", true);
+    line.add("corner_values_interpolated", done.corner_values_interpolated);
   if (drop)
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);

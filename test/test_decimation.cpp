@@ -724,9 +724,29 @@ TEST(DecimationCornerChannels, TextureCoordinatesFollowTheirVerticesAndSeamsStay
       const std::size_t faces = m.number_of_faces();
       const auto [distance0, span0] = uv_errors(m, g);
       ASSERT_LT(distance0, 1e-12);
-      CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.25).relocate_vertices(relocate));
+      const auto uv_before = m.corner_channel<CGAL_ext::Corner_uv<Point>>(CGAL_ext::corner_uv_name);
+      ASSERT_TRUE(uv_before.has_value());
+      std::set<std::pair<double, double>> input_values;
+      for (const auto& value : uv_before->values())
+        input_values.emplace(value.x(), value.y());
+      const CGAL_ext::Decimation_result done =
+        CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.25).relocate_vertices(relocate));
       SCOPED_TRACE(std::string(g.torus ? "torus" : "Möbius strip") + (relocate ? ", relocated" : "") +
                    (turned ? ", a band turned over" : ""));
+      // The values the result names that the input does not hold: those
+      // made by interpolation, strictly between two values.
+      const auto uv_after = m.corner_channel<CGAL_ext::Corner_uv<Point>>(CGAL_ext::corner_uv_name);
+      ASSERT_TRUE(uv_after.has_value());
+      std::set<std::uint32_t> new_indices;
+      for (Face_index f : m.faces())
+        for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
+          const std::uint32_t i = uv_after->index(m.corner(d));
+          const auto& value = uv_after->values()[i];
+          if (!input_values.count({value.x(), value.y()}))
+            new_indices.insert(i);
+        }
+      EXPECT_EQ(done.corner_values_interpolated, new_indices.size());
+      EXPECT_GT(done.corner_values_interpolated, 0u);
       EXPECT_LE(m.number_of_faces(), faces / 4 + 2);
       EXPECT_TRUE(m.is_valid());
       EXPECT_EQ(topology(m), before);

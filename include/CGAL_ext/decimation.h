@@ -137,6 +137,7 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
   if (settings.relocate_vertices)
     input.emplace(mesh);
   Decimation_result result;
+  const std::vector<std::size_t> values_before = internal::corner_value_counts(mesh);
   std::vector<char> on_feature; // by vertex index, for the relocation only
   {
     internal::Decimator<P> decimator(mesh, settings, internal::feature_edges(mesh, np, settings.protect_borders));
@@ -152,6 +153,7 @@ Decimation_result decimate(Mobius_mesh<P>& mesh, const NP& np = parameters::defa
   }
   typename Mobius_mesh<P>::Garbage_collection_maps moved;
   mesh.collect_garbage(moved);
+  result.corner_values_interpolated = internal::added_values_in_use(mesh, values_before);
   CGAL_ext::internal::remove_unused_corner_values(mesh);
   mesh.shrink_to_fit();
   if (input && result.collapses > 0) {

@@ -22,6 +22,10 @@ struct Decimation_result
   /// Vertices moved after the collapses to lower the largest distance to the
   /// input (see `relocate_vertices`).
   std::size_t relocations = 0;
+  /// Values of the corner channels (all channels together) that the result
+  /// holds and that collapses made by interpolating two values along the
+  /// collapsed edge; the others are the input's own.
+  std::size_t corner_values_interpolated = 0;
 };
 
 } // namespace CGAL_ext

@@ -20,6 +20,7 @@
 #include <functional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
@@ -241,6 +242,37 @@ private:
   std::vector<Channel> channels_;
   std::vector<char> seam_vertex_; // by vertex index
 };
+
+// The number of values of each corner channel of `mesh`, in order of creation.
+template <class P>
+std::vector<std::size_t> corner_value_counts(const Mobius_mesh<P>& mesh)
+{
+  std::vector<std::size_t> counts;
+  Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
+    [&](const Base_corner_channel& c) { counts.push_back(c.number_of_values()); });
+  return counts;
+}
+
+// The values of the corner channels of `mesh` that a face corner names and
+// that were added after the first `counts_before` of each channel (those the
+// channel held before): the values interpolated by collapses that remain.
+template <class P>
+std::size_t added_values_in_use(const Mobius_mesh<P>& mesh, const std::vector<std::size_t>& counts_before)
+{
+  std::size_t added = 0, channel = 0;
+  Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
+    [&](const Base_corner_channel& c) {
+      const std::size_t before = counts_before[channel++];
+      std::vector<char> used(c.number_of_values() > before ? c.number_of_values() - before : 0, 0);
+      for (Face_index f : mesh.faces())
+        for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
+          const std::uint32_t i = c.indices()[mesh.corner(d).idx()];
+          if (i != Base_corner_channel::no_value && i >= before && !std::exchange(used[i - before], 1))
+            ++added;
+        }
+    });
+  return added;
+}
 
 } // namespace internal
 } // namespace CGAL_ext
