@@ -1273,6 +1273,13 @@ void tolerance_tessellation_against_bfr(const Tolerance_case& c, double toleranc
     }
   std::set<std::size_t> matched;
   double worst = 0;
+  // The samples by x, so that a point's nearest sample is looked for among
+  // those of nearly its x (within 1e-9 of the size: none farther can match).
+  std::vector<std::pair<double, std::size_t>> by_x;
+  for (CGAL_ext::Vertex_index w : out.vertices())
+    by_x.emplace_back(out.point(w).x(), w.idx());
+  std::sort(by_x.begin(), by_x.end());
+  const double window = 1e-9 * scale;
   for (CGAL_ext::Face_index f : m.faces()) {
     std::vector<int> r;
     for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
@@ -1303,10 +1310,11 @@ void tolerance_tessellation_against_bfr(const Tolerance_case& c, double toleranc
       const Point p = surface.evaluate(f, u, v).point;
       double d = 1e300;
       std::size_t best = 0;
-      for (CGAL_ext::Vertex_index w : out.vertices())
-        if (const double x = std::sqrt(CGAL::squared_distance(p, out.point(w))); x < d) {
+      for (auto it = std::lower_bound(by_x.begin(), by_x.end(), std::pair<double, std::size_t>(p.x() - window, 0));
+           it != by_x.end() && it->first <= p.x() + window; ++it)
+        if (const double x = std::sqrt(CGAL::squared_distance(p, out.point(CGAL_ext::Vertex_index(it->second)))); x < d) {
           d = x;
-          best = w.idx();
+          best = it->second;
         }
       worst = std::max(worst, d);
       matched.insert(best);
