@@ -157,7 +157,7 @@ public:
 private:
   // CGAL 5.5's viewer makes its shaders with `new` and adds them to its
   // programs, which do not own them, and makes its clipping plane's frame
-  // with `new`; its destructor frees neither (4.5 KB a viewer, which the
+  // with `new`; its destructor frees neither (3 KB a viewer, which the
   // leak checker reports). A later CGAL may own them: left to it.
   void free_what_cgal_keeps()
   {
