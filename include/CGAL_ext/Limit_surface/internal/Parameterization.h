@@ -24,6 +24,17 @@ inline int sub_face_row(int n) { return n < 10 ? (2 + (n > 4 ? 1 : 0)) : (1 + in
 // whose lower-left quarter the sub-face covers.
 inline std::array<int, 2> sub_face_tile(int n, int k) { return {k % sub_face_row(n), k / sub_face_row(n)}; }
 
+// Whether a face of `sides` sides is parameterised over a triangle, (0, 0),
+// (1, 0), (0, 1) (a triangle under Loop: `triangle_domain`).
+inline bool is_triangle_domain(int sides, bool triangle_domain) { return triangle_domain && sides == 3; }
+
+// Whether a face has one parameter domain of its own (a quad, a Loop
+// triangle) rather than n quad sub-faces.
+inline bool has_own_domain(int sides, bool triangle_domain)
+{
+  return sides == 4 || is_triangle_domain(sides, triangle_domain);
+}
+
 // (u, v) of local parameter (su, sv) of sub-face k of a face of `sides`
 // sides, or of a quad's own parameter (k unused).
 template <class FT>
@@ -40,7 +51,7 @@ std::array<FT, 2> sub_face_parameter(int sides, int k, const FT& su, const FT& s
 template <class FT>
 std::array<FT, 2> corner_parameter(int sides, bool triangle_domain, int k)
 {
-  if (triangle_domain && sides == 3) {
+  if (is_triangle_domain(sides, triangle_domain)) {
     const int uv[3][2] = {{0, 0}, {1, 0}, {0, 1}};
     return {FT(uv[k][0]), FT(uv[k][1])};
   }
@@ -58,7 +69,7 @@ template <class FT>
 std::array<FT, 2> edge_parameter(int sides, bool triangle_domain, int k, int i, int n)
 {
   const FT t = FT(i) / FT(n);
-  if (triangle_domain && sides == 3) {
+  if (is_triangle_domain(sides, triangle_domain)) {
     switch (k) {
       case 0: return {t, FT(0)};
       case 1: return {FT(1) - t, t};

@@ -110,8 +110,6 @@ private:
 
   Evaluation eval(Face_index f, const std::array<FT, 2>& uv) const { return s_.evaluate(f, uv[0], uv[1]); }
 
-  std::array<FT, 2> param(int n, int k, const FT& su, const FT& sv) const { return sub_face_parameter(n, k, su, sv); }
-
   std::size_t add_sample(const Evaluation& e)
   {
     points_.push_back(e.point);
@@ -174,7 +172,7 @@ private:
     bool uniform = n != 4 || inner[1] == inner[0];
     for (int k = 0; k < n; ++k)
       uniform = uniform && edge_rate(st, k) == inner[0];
-    if (whole_triangle(n))
+    if (is_triangle_domain(n, triangle_domain_))
       add_triangle(st, uniform ? inner[0] : std::max(inner[0], 3), !uniform);
     else if (n == 4 && (uniform || (inner[0] >= 2 && inner[1] >= 2)))
       add_quad(st, inner[0], inner[1], !uniform);
@@ -183,8 +181,6 @@ private:
     else
       add_polygon(st, uniform ? inner[0] : std::max(inner[0], 2), !uniform);
   }
-
-  bool whole_triangle(int sides) const { return triangle_domain_ && sides == 3; }
 
   // The strip between edge k of the face (its corners and samples) and the
   // part `ring` of the interior's outermost ring that faces it, from the
@@ -320,14 +316,14 @@ private:
       }
     std::size_t centre = none;
     if (even || n > 3)
-      centre = add_sample(eval(st.f, param(n, 0, FT(1), FT(1))));
+      centre = add_sample(eval(st.f, sub_face_parameter(n, 0, FT(1), FT(1))));
     for (int k = 0; k < n; ++k) {
       for (int j = 1; j <= M; ++j)
         for (int i = 1; i <= M; ++i) {
           if (even && i == M && j == M)
             at(k, i, j) = centre;
           else if (!(even && i == M)) // G_k(M, j) is the next sub-face's row M
-            at(k, i, j) = add_sample(eval(st.f, param(n, k, FT(2 * i) / FT(N), FT(2 * j) / FT(N))));
+            at(k, i, j) = add_sample(eval(st.f, sub_face_parameter(n, k, FT(2 * i) / FT(N), FT(2 * j) / FT(N))));
         }
     }
     if (even)
@@ -465,7 +461,7 @@ struct Face_surface
   template <class Point>
   double distance_near(const Point& q, const std::array<FT, 2>& start) const
   {
-    const bool whole = sides == 4 || (triangle_domain && sides == 3);
+    const bool whole = has_own_domain(sides, triangle_domain);
     double u = CGAL::to_double(start[0]), v = CGAL::to_double(start[1]);
     const double u0 = whole ? 0.0 : std::floor(u), v0 = whole ? 0.0 : std::floor(v), side = whole ? 1.0 : 0.5;
     Evaluation e = at(start);
@@ -477,7 +473,7 @@ struct Face_surface
         break; // at a degenerate corner: the distance from there
       u = std::clamp(u + (c * x - b * y) / det, u0, u0 + side);
       v = std::clamp(v + (a * y - b * x) / det, v0, v0 + side);
-      if (triangle_domain && sides == 3 && u + v > 1) { // back onto the hypotenuse
+      if (is_triangle_domain(sides, triangle_domain) && u + v > 1) { // back onto the hypotenuse
         u = std::clamp((1 + u - v) / 2, 0.0, 1.0);
         v = 1 - u;
       }
@@ -562,7 +558,7 @@ std::vector<std::vector<std::array<FT, 4>>> inner_lines(int sides, bool triangle
     }
     return {along_u, along_v};
   }
-  if (triangle_domain && sides == 3)
+  if (is_triangle_domain(sides, triangle_domain))
     return {{{FT(0), h, h, h}, {h, FT(0), h, h}, {h, FT(0), FT(0), h}}};
   std::vector<std::array<FT, 4>> lines;
   for (int k = 0; k < sides; ++k)
