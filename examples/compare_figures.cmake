@@ -1,11 +1,12 @@
 # cmake -DRUN=<tool;args> -DFIELD=<name> [-DPATTERN=<regex>] [-DSTDOUT=<regex>]
 #       (-DEXPECTED=<number> | -DOTHER_FIELD=<name>
-#        | [-DBETWEEN=<tool;args>] -DREFERENCE=<tool;args> [-DREFERENCE_FIELD=<name>])
+#        | [-DBETWEEN=<tool;args>] -DREFERENCE=<tool;args> [-DREFERENCE_FIELD=<name>]
+#          [-DREFERENCE_PATTERN=<regex>])
 #       -DTOLERANCE=<relative> -DCLOSE=<close_numbers> -P compare_figures.cmake
 #
 # Runs RUN, which must exit 0 and print one JSON line (matching STDOUT if
 # given), and takes the number of its field FIELD (or the first group of
-# PATTERN). Compares it (close_numbers) with EXPECTED, a closed form, with
+# PATTERN; REFERENCE_PATTERN for the reference's line). Compares it (close_numbers) with EXPECTED, a closed form, with
 # the field OTHER_FIELD of the same line, or with the field of the line that REFERENCE prints, after BETWEEN has run: the same
 # figure computed another way (BETWEEN makes REFERENCE's input, such as the
 # orientation double cover of RUN's output).
@@ -44,7 +45,7 @@ else()
     set(REFERENCE_FIELD ${FIELD})
   endif()
   run_tool("the reference" "${REFERENCE}" _reference_line)
-  figure("the reference" "${_reference_line}" "${REFERENCE_FIELD}" "" _reference)
+  figure("the reference" "${_reference_line}" "${REFERENCE_FIELD}" "${REFERENCE_PATTERN}" _reference)
 endif()
 execute_process(COMMAND ${CLOSE} ${_value} ${_reference} ${TOLERANCE} RESULT_VARIABLE _status OUTPUT_VARIABLE _out
                 ERROR_VARIABLE _err)

@@ -326,29 +326,45 @@ const Tool_usage curvature_usage{
   "  gaussian_curvature   the angle defect per unit area (a third of the vertex's triangles)\n"
   "  mean_curvature_norm  |H|, the length of the mean curvature vector (cotangent formula), which\n"
   "                       needs no orientation: the same on both sides of a one-sided surface\n"
-  "  mean_curvature       H, signed, seen from the side the faces' orientation points to; only where\n"
-  "                       the mesh has no Möbius edge (an orientable surface: files are read\n"
-  "                       oriented). A one-sided surface has a mean curvature per side only\n"
-  "                       (CGAL_ext::mean_curvature(dart, mesh)), not per vertex.\n"
-  "  max_curvature, min_curvature  the principal curvatures k1 >= k2 from the same side (a cubic jet\n"
-  "                       fitted to two rings, CGAL_ext::principal_curvatures()); only where there\n"
-  "                       is no Moebius edge, as mean_curvature; NaN at a vertex where no jet can\n"
-  "                       be fitted (fewer than 6 points within two rings, no normal), counted in\n"
-  "                       the JSON line (without_principal_curvatures).\n"
+  "  side_nx, side_ny, side_nz  the unit normal of the side the next three are seen from: the side\n"
+  "                       the faces' orientation points to where the vertex's faces agree (files\n"
+  "                       are read oriented: everywhere on an orientable surface), one of the two\n"
+  "                       at a vertex on a Moebius edge. A one-sided surface has these curvatures\n"
+  "                       per side, not per vertex: seen from the side whose normal is n they are\n"
+  "                       multiplied by the sign of n . side_n (k1 and k2 trading places where it\n"
+  "                       is -1); `view OUT.ply --scalar mean_curvature` colours each side so.\n"
+  "  mean_curvature       H, signed, seen from that side (CGAL_ext::mean_curvature(dart, mesh))\n"
+  "  max_curvature, min_curvature  the principal curvatures k1 >= k2 from that side (a cubic jet\n"
+  "                       fitted to two rings, CGAL_ext::principal_curvatures()); NaN at a vertex\n"
+  "                       where no jet can be fitted (fewer than 6 points within two rings, no\n"
+  "                       normal), counted in the JSON line (without_principal_curvatures).\n"
   "  --triangulate        split polygons into triangles first (else they are an error)\n"
-  "Prints the counts, the total angle defect and the ranges of the curvatures as one line of JSON.\n"};
+  "Prints the counts, the total angle defect, the ranges of the curvatures and the number of\n"
+  "vertices on a Moebius edge (whose side is a choice) as one line of JSON.\n"};
 
-// Which side the signed mean curvature of `v` is seen from: a face dart into
-// `v`, flipped (-1) or not (+1). On a mesh without Möbius edges every face's
-// own darts are unflipped, so +1 is the side the orientation points to.
-std::pair<Dart, double> vertex_side(const Mesh& mesh, Vertex_index v)
+// The side the signed curvatures of `v` are seen from: the front of its
+// first face, as a dart into `v` (none for a vertex on no face). Where the
+// faces at `v` agree (no Möbius edge there: everywhere on an oriented
+// surface) that is the front of all of them.
+Dart vertex_side(const Mesh& mesh, Vertex_index v)
 {
   if (!mesh.halfedge(v).is_valid())
-    return {Dart(), 0.0}; // a vertex on no face
+    return Dart(); // a vertex on no face
   for (Dart d : CGAL_ext::halfedges_around_target(mesh.halfedge(v), mesh))
     if (!mesh.is_border(d))
-      return {d, d.is_flipped() ? -1.0 : 1.0};
-  return {Dart(), 0.0};
+      return d.is_flipped() ? mesh.next(d).flipped() : d; // the face's own dart into v
+  return Dart();
+}
+
+// True if the faces at `v` do not all see one side of it from the front.
+bool on_mobius_edge(const Mesh& mesh, Vertex_index v)
+{
+  bool front = false, back = false;
+  if (mesh.halfedge(v).is_valid())
+    for (Dart d : CGAL_ext::halfedges_around_target(mesh.halfedge(v), mesh))
+      if (!mesh.is_border(d))
+        (d.is_flipped() ? back : front) = true;
+  return front && back;
 }
 
 // A third of the area of the triangles at `v`: its share of the surface.
@@ -364,21 +380,31 @@ double vertex_area(const Mesh& mesh, Vertex_index v)
   return area;
 }
 
-// k1 >= k2 seen from the side `sign` gives (see vertex_side()): from the
-// other side of `d` they are -k2 and -k1. None (NaN, counted by the caller)
+// k1 >= k2 seen from the side of `d`. None (NaN, counted by the caller)
 // where the jet cannot be fitted: a vertex on no face, fewer than 6 points
 // within two rings (a small component), no normal (degenerate faces).
-std::optional<std::array<double, 2>> principal_curvatures_from(const Mesh& mesh, Dart d, double sign)
+std::optional<std::array<double, 2>> principal_curvatures_from(const Mesh& mesh, Dart d)
 {
   if (!d.is_valid())
     return std::nullopt;
   try {
     const CGAL_ext::Principal_curvatures c = CGAL_ext::principal_curvatures(d, mesh);
-    return sign > 0 ? std::array<double, 2>{c.max_curvature, c.min_curvature}
-                    : std::array<double, 2>{-c.min_curvature, -c.max_curvature};
+    return std::array<double, 2>{c.max_curvature, c.min_curvature};
   } catch (const CGAL_ext::Parameter_error&) {
     return std::nullopt;
   }
+}
+
+// The unit normal of the side of `d` (zero where there is none).
+std::array<double, 3> side_normal(const Mesh& mesh, Dart d)
+{
+  if (!d.is_valid())
+    return {0, 0, 0};
+  const Kernel::Vector_3 n = CGAL_ext::vertex_normal(d, mesh);
+  const double length = std::sqrt(CGAL::to_double(n.squared_length()));
+  if (!(length > 0))
+    return {0, 0, 0};
+  return {CGAL::to_double(n.x()) / length, CGAL::to_double(n.y()) / length, CGAL::to_double(n.z()) / length};
 }
 
 struct Range
@@ -392,6 +418,40 @@ struct Range
   Json_array json() const { return Json_array().add(low).add(high); }
 };
 
+// The output maps of the curvatures seen from a side, and their ranges.
+struct Side_curvatures
+{
+  explicit Side_curvatures(Mesh& mesh)
+    : side{output_map<double>(mesh, "side_nx"), output_map<double>(mesh, "side_ny"), output_map<double>(mesh, "side_nz")},
+      mean(output_map<double>(mesh, "mean_curvature")), k1(output_map<double>(mesh, "max_curvature")),
+      k2(output_map<double>(mesh, "min_curvature"))
+  {}
+
+  void compute(const Mesh& mesh, Vertex_index v)
+  {
+    const Dart d = vertex_side(mesh, v);
+    const std::array<double, 3> n = side_normal(mesh, d);
+    for (int i = 0; i < 3; ++i)
+      side[i][v] = n[std::size_t(i)];
+    mean[v] = d.is_valid() ? CGAL_ext::mean_curvature(d, mesh) : 0.0;
+    mean_range.add(mean[v]);
+    const std::optional<std::array<double, 2>> k = principal_curvatures_from(mesh, d);
+    k1[v] = k ? (*k)[0] : std::numeric_limits<double>::quiet_NaN();
+    k2[v] = k ? (*k)[1] : std::numeric_limits<double>::quiet_NaN();
+    if (k) {
+      k1_range.add((*k)[0]);
+      k2_range.add((*k)[1]);
+    } else {
+      ++without_principal;
+    }
+    on_mobius_edges += on_mobius_edge(mesh, v) ? 1 : 0;
+  }
+
+  Mesh::Property_map<Vertex_index, double> side[3], mean, k1, k2;
+  Range mean_range, k1_range, k2_range;
+  std::size_t without_principal = 0, on_mobius_edges = 0;
+};
+
 int curvature(int argc, char** argv)
 {
   const Arguments args = parse_arguments(argc, argv, {}, {"--triangulate"});
@@ -403,16 +463,9 @@ int curvature(int argc, char** argv)
   auto defect = output_map<double>(mesh, "angle_defect");
   auto gaussian = output_map<double>(mesh, "gaussian_curvature");
   auto norm = output_map<double>(mesh, "mean_curvature_norm");
-  const bool signed_mean = !CGAL_ext::has_mobius_edges(mesh);
-  std::optional<Mesh::Property_map<Vertex_index, double>> mean, k1, k2;
-  if (signed_mean) {
-    mean = output_map<double>(mesh, "mean_curvature");
-    k1 = output_map<double>(mesh, "max_curvature");
-    k2 = output_map<double>(mesh, "min_curvature");
-  }
+  Side_curvatures sided(mesh);
   double total = 0;
-  Range gaussian_range, norm_range, mean_range, k1_range, k2_range;
-  std::size_t without_principal = 0;
+  Range gaussian_range, norm_range;
   for (Vertex_index v : mesh.vertices()) {
     defect[v] = CGAL_ext::angle_defect(v, mesh);
     total += defect[v];
@@ -422,33 +475,19 @@ int curvature(int argc, char** argv)
     const std::array<double, 3> h = CGAL_ext::mean_curvature_vector(v, mesh);
     norm[v] = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
     norm_range.add(norm[v]);
-    if (signed_mean) {
-      const auto [d, sign] = vertex_side(mesh, v);
-      (*mean)[v] = d.is_valid() ? sign * CGAL_ext::mean_curvature(d, mesh) : 0.0;
-      mean_range.add((*mean)[v]);
-      const std::optional<std::array<double, 2>> k = principal_curvatures_from(mesh, d, sign);
-      (*k1)[v] = k ? (*k)[0] : std::numeric_limits<double>::quiet_NaN();
-      (*k2)[v] = k ? (*k)[1] : std::numeric_limits<double>::quiet_NaN();
-      if (k) {
-        k1_range.add((*k)[0]);
-        k2_range.add((*k)[1]);
-      } else {
-        ++without_principal;
-      }
-    }
+    sided.compute(mesh, v);
   }
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh);
-  Json_object line = mesh_summary(mesh);
-  line.add("triangulated_faces", triangulated)
-    .add("total_angle_defect", total)
-    .add("gaussian_curvature", gaussian_range.json())
-    .add("mean_curvature_norm", norm_range.json());
-  line.add("without_principal_curvatures", without_principal);
-  if (signed_mean)
-    line.add("max_curvature", k1_range.json()).add("min_curvature", k2_range.json()).add("mean_curvature", mean_range.json());
-  else
-    line.add("max_curvature", nullptr).add("min_curvature", nullptr).add("mean_curvature", nullptr);
-  print_json_line(line);
+  print_json_line(mesh_summary(mesh)
+                    .add("triangulated_faces", triangulated)
+                    .add("total_angle_defect", total)
+                    .add("gaussian_curvature", gaussian_range.json())
+                    .add("mean_curvature_norm", norm_range.json())
+                    .add("without_principal_curvatures", sided.without_principal)
+                    .add("vertices_on_mobius_edges", sided.on_mobius_edges)
+                    .add("max_curvature", sided.k1_range.json())
+                    .add("min_curvature", sided.k2_range.json())
+                    .add("mean_curvature", sided.mean_range.json()));
   return 0;
 }
 

@@ -7,9 +7,10 @@
 // surface shows both colours on one side. Borders are red, sharp edges purple.
 // With --scalar NAME the faces are coloured by the PLY vertex property NAME
 // instead (a colour ramp from its smallest value to its largest), both sides
-// alike. With --uv-checker the texture coordinates (OBJ vt) are drawn as a
-// checker of 8 x 8 squares per unit, so that seams show where the squares do
-// not meet. With --screenshot it draws the mesh once, writes the PNG and prints
+// alike, or each side by the value seen from it where the file gives the side
+// each vertex's value is seen from (side_nx, side_ny, side_nz). With
+// --uv-checker the texture coordinates (OBJ vt) are drawn as a checker of
+// 8 x 8 squares per unit, so that seams show where the squares do not meet. With --screenshot it draws the mesh once, writes the PNG and prints
 // one line of JSON:
 //   {"screenshot":"OUT.png","width":W,"height":H,"faces":F,"mobius_edges":M,"border_edges":B
 //    [,"scalar":NAME,"min":LOW,"max":HIGH][,"uv_checker_levels":L,"faces_drawn":D]}
@@ -21,11 +22,13 @@
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
+#include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/draw_mobius_mesh.h>
 #include <CGAL_ext/subdivision.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <array>
@@ -49,7 +52,11 @@ const examples::Tool_usage usage{
   "  --scalar NAME         colour the faces by the vertex property NAME of a PLY file instead (as\n"
   "                        the geodesics and curvature tools write them): each face by the mean of\n"
   "                        its corners, on a ramp from dark violet (the smallest value) through\n"
-  "                        blue and green to yellow (the largest), both sides alike\n"
+  "                        blue and green to yellow (the largest), both sides alike. Where the\n"
+  "                        file also has side_nx, side_ny, side_nz (as curvature writes them), NAME\n"
+  "                        is a value seen from that side of each vertex, which changes sign with\n"
+  "                        the side (as a mean curvature): each side of a face is coloured by the\n"
+  "                        values seen from it, on a ramp from -M to M (M the largest |NAME|)\n"
   "  --uv-checker          draw the texture coordinates (OBJ vt) as a checker of 8 x 8 squares\n"
   "                        per unit, both sides alike: a seam shows where the squares do not meet\n"
   "                        (the faces are split finely enough for the squares, as far as 4 M faces;\n"
@@ -77,9 +84,9 @@ std::array<double, 3> direction_argument(const std::string& option, const std::s
 }
 
 // The value of each vertex in its vertex property map "v:NAME", of any
-// arithmetic type the PLY reader makes.
+// arithmetic type the PLY reader makes; none if there is no such map.
 template <class Mesh>
-std::vector<double> vertex_scalars(const Mesh& mesh, const std::string& file, const std::string& name)
+std::vector<double> vertex_values(const Mesh& mesh, const std::string& name)
 {
   std::vector<double> values;
   const auto take = [&](auto zero) {
@@ -90,6 +97,14 @@ std::vector<double> vertex_scalars(const Mesh& mesh, const std::string& file, co
   };
   take(double()), take(float()), take(std::int8_t()), take(std::uint8_t()), take(std::int16_t());
   take(std::uint16_t()), take(std::int32_t()), take(std::uint32_t());
+  return values;
+}
+
+// vertex_values(), refused where the file has no property NAME.
+template <class Mesh>
+std::vector<double> vertex_scalars(const Mesh& mesh, const std::string& file, const std::string& name)
+{
+  std::vector<double> values = vertex_values(mesh, name);
   if (values.empty() && mesh.number_of_vertices() != 0) {
     std::string names;
     for (const std::string& p : mesh.template properties<CGAL_ext::Vertex_index>())
@@ -115,12 +130,8 @@ CGAL::IO::Color ramp(double t)
   return CGAL::IO::Color(rgb[0], rgb[1], rgb[2]);
 }
 
-// Each face's colour, in the face property map "f:ramp": the mean of its
-// corners' values on the ramp from the smallest finite value to the largest
-// (grey where a value is not finite).
-template <class Mesh>
-typename Mesh::template Property_map<CGAL_ext::Face_index, CGAL::IO::Color>
-face_colours(Mesh& mesh, const std::vector<double>& values, double& low, double& high)
+// The smallest and largest finite values.
+void finite_range(const std::vector<double>& values, double& low, double& high)
 {
   low = std::numeric_limits<double>::infinity();
   high = -low;
@@ -129,17 +140,60 @@ face_colours(Mesh& mesh, const std::vector<double>& values, double& low, double&
       low = std::min(low, x);
       high = std::max(high, x);
     }
-  auto colours = mesh.template add_property_map<CGAL_ext::Face_index, CGAL::IO::Color>(
-                       "f:ramp", CGAL::IO::Color(128, 128, 128)).first;
+}
+
+// The colour of a value on the ramp from `low` to `high`; grey where it is
+// not finite.
+CGAL::IO::Color ramp_colour(double x, double low, double high)
+{
+  return !std::isfinite(x) ? CGAL::IO::Color(128, 128, 128) : ramp(high > low ? (x - low) / (high - low) : 0.0);
+}
+
+// Each face's colour, in the face property map "f:ramp": the mean of its
+// corners' values on the ramp from the smallest finite value to the largest.
+template <class Mesh>
+typename Mesh::template Property_map<CGAL_ext::Face_index, CGAL::IO::Color>
+face_colours(Mesh& mesh, const std::vector<double>& values, double& low, double& high)
+{
+  finite_range(values, low, high);
+  auto colours = mesh.template add_property_map<CGAL_ext::Face_index, CGAL::IO::Color>("f:ramp").first;
   for (CGAL_ext::Face_index f : mesh.faces()) {
     double sum = 0, n = 0;
     for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh)) {
       sum += values[v.idx()];
       ++n;
     }
-    const double mean = sum / n;
-    if (std::isfinite(mean))
-      colours[f] = ramp(high > low ? (mean - low) / (high - low) : 0.0);
+    colours[f] = ramp_colour(sum / n, low, high);
+  }
+  return colours;
+}
+
+// Each side's colour, by face: front then back. `values` are seen from the
+// side whose normal is `sides` at each vertex; from the side of a dart `d`
+// into `v` the value is multiplied by the sign of that normal dotted with
+// `vertex_normal(d)`. A face's front shows the mean over its corners; its
+// back, seen from the other side everywhere, the opposite. The ramp runs
+// from -M to M, M the largest finite |value|.
+template <class Mesh>
+std::vector<std::array<CGAL::IO::Color, 2>> side_colours(const Mesh& mesh, const std::vector<double>& values,
+                                                         const std::array<std::vector<double>, 3>& sides,
+                                                         double& low, double& high)
+{
+  finite_range(values, low, high);
+  high = std::max(std::abs(low), std::abs(high));
+  low = -high;
+  std::vector<std::array<CGAL::IO::Color, 2>> colours(mesh.num_faces());
+  for (CGAL_ext::Face_index f : mesh.faces()) {
+    double sum = 0, n = 0;
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const std::size_t v = mesh.target(d).idx();
+      const auto normal = CGAL_ext::vertex_normal(d, mesh);
+      const double dot = CGAL::to_double(normal.x()) * sides[0][v] + CGAL::to_double(normal.y()) * sides[1][v] +
+                         CGAL::to_double(normal.z()) * sides[2][v];
+      sum += dot < 0 ? -values[v] : values[v];
+      ++n;
+    }
+    colours[f.idx()] = {ramp_colour(sum / n, low, high), ramp_colour(-sum / n, low, high)};
   }
   return colours;
 }
@@ -260,10 +314,18 @@ int view(int argc, char** argv)
   if (args.has("--uv-checker")) {
     checker_levels = split_for_checker(mesh, args.positional[0]);
     show(np.face_color_map(checker_colours(mesh)));
-  } else if (args.has("--scalar"))
-    show(np.face_color_map(
-      face_colours(mesh, vertex_scalars(mesh, args.positional[0], args.value("--scalar", "")), low, high)));
-  else
+  } else if (args.has("--scalar")) {
+    const std::vector<double> values = vertex_scalars(mesh, args.positional[0], args.value("--scalar", ""));
+    const std::array<std::vector<double>, 3> sides{vertex_values(mesh, "side_nx"), vertex_values(mesh, "side_ny"),
+                                                   vertex_values(mesh, "side_nz")};
+    if (sides[0].empty() || sides[1].empty() || sides[2].empty()) {
+      show(np.face_color_map(face_colours(mesh, values, low, high)));
+    } else {
+      const auto colours = side_colours(mesh, values, sides, low, high);
+      show(np.face_color_map(boost::make_function_property_map<CGAL_ext::Dart>(
+        [&](CGAL_ext::Dart d) { return colours[mesh.face(d).idx()][d.is_flipped() ? 1 : 0]; })));
+    }
+  } else
     show(np);
   if (!args.has("--screenshot"))
     return 0;

@@ -84,6 +84,36 @@ add_test(NAME view.scalar.klein_distance
           -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
 set_tests_properties(view.scalar.klein_distance PROPERTIES FIXTURES_REQUIRED view_scalar
   ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
+# A field seen from a side: the curvature tool's mean curvature, each side of
+# each face coloured by the values seen from it. On the Möbius strip, seen
+# from below, the picture shows both ends of the ramp (the sign changes once
+# round the strip). On the Klein bottle the ramp runs from -M to M, M the
+# largest mean curvature over both sides of every vertex: the largest over
+# the vertices of the bottle's orientation double cover (offset by 1e-5 to
+# either side, as for the geodesics), to the cover's offset (within 1e-4).
+add_test(NAME view.scalar.sides_setup_mobius
+  COMMAND curvature ${_data}/mobius_20x4_quads.obj ${_out}/view_mobius_curvature.ply --triangulate)
+add_test(NAME view.scalar.sides_setup_klein
+  COMMAND curvature ${_data}/klein_fig8_24x12_quads.obj ${_out}/view_klein_curvature.ply --triangulate)
+set_tests_properties(view.scalar.sides_setup_mobius view.scalar.sides_setup_klein PROPERTIES
+  FIXTURES_SETUP view_sides ENVIRONMENT "${_environment}")
+add_test(NAME view.scalar.mobius_mean_curvature_sides
+  COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${CGAL_EXT_XVFB_RUN} -DVIEW=$<TARGET_FILE:view>
+          -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${_out}/view_mobius_curvature.ply
+          "-DOPTIONS=--scalar;mean_curvature;--features-only;--direction;0,0,-1"
+          -DPICTURE=${_out}/view_mobius_curvature.png -DSIDES=ramp
+          "-DEXPECT=\"scalar\":\"mean_curvature\",\"min\":-([0-9.e]+),\"max\":([0-9.e]+)}"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+cgal_ext_compare_figures(view.scalar.klein_mean_curvature_equals_double_cover
+  RUN ${CGAL_EXT_XVFB_RUN} -a -s "-screen 0 1280x1024x24" $<TARGET_FILE:view> ${_out}/view_klein_curvature.ply
+      --scalar mean_curvature --screenshot ${_out}/view_klein_curvature.png
+  FIELD max
+  BETWEEN $<TARGET_FILE:offset> ${_out}/view_klein_curvature.ply ${_out}/view_klein_cover.ply --distance 1e-5 --solid
+  REFERENCE $<TARGET_FILE:curvature> ${_out}/view_klein_cover.ply ${_out}/view_klein_cover_curvature.ply
+  REFERENCE_PATTERN "\"mean_curvature\":\\[[^,]+,([-0-9.e]+)\\]"
+  TOLERANCE 1e-4)
+set_tests_properties(view.scalar.mobius_mean_curvature_sides view.scalar.klein_mean_curvature_equals_double_cover
+  PROPERTIES FIXTURES_REQUIRED view_sides ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
 cgal_ext_tool_fails(view.fails.scalar view
   "${_data}/mobius_20x4_quads.obj;--scalar;distance;--screenshot;${_out}/x.png"
   "^view: [^\n]*mobius_20x4_quads.obj has no vertex property 'distance' of numbers \\(it has none\\)\n$")

@@ -14,7 +14,7 @@ launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCGAL_EXT_BUILD_TESTS=OFF -DCGAL_EXT_BUILD_EXAMPLES=ON \
       "${launcher[@]}" >/dev/null
-cmake --build "$build" --target subdivide merge offset decimate remesh geodesics tessellate -j "${CGAL_EXT_JOBS:-$(nproc)}"
+cmake --build "$build" --target subdivide merge offset decimate remesh geodesics curvature tessellate -j "${CGAL_EXT_JOBS:-$(nproc)}"
 cmake --build "$build" --target view -j "${CGAL_EXT_JOBS:-$(nproc)}" ||
   { echo "pictures: the view tool was not built (apt-get install libcgal-qt5-dev)" >&2; exit 2; }
 tools=$build/examples
@@ -123,6 +123,12 @@ edges=1 render "$work/boys_remeshed.obj" "$out/boys_remeshed.png"
 # triangulated) from vertex 0, by the heat method: violet near, yellow far.
 "$tools/geodesics" "$work/klein_cc2.obj" "$work/klein_distance.ply" --source 0 --triangulate >/dev/null
 scalar=distance render "$work/klein_distance.ply" "$out/klein_geodesic_distance.png"
+
+# Its mean curvature, each side of each face coloured by the values seen from
+# it (the curvature tool writes the side each vertex's value is seen from):
+# violet -M, yellow M, M the largest over both sides.
+"$tools/curvature" "$work/klein_cc2.obj" "$work/klein_curvature.ply" --triangulate >/dev/null
+scalar=mean_curvature render "$work/klein_curvature.ply" "$out/klein_mean_curvature.png"
 
 # The Catmull–Clark limit surface of the Klein bottle's cage (288 quads),
 # tessellated at rate 8 (every quad 8 x 8, shared samples computed once):

@@ -13,6 +13,7 @@
 #include <CGAL_ext/draw_mobius_mesh.h>
 
 #include <CGAL/Bbox_3.h>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <gtest/gtest.h>
 
@@ -211,6 +212,27 @@ TEST(TwoSidedScene, FaceColourMapPaintsBothSides)
   ASSERT_EQ(painted.segments.size(), plain.segments.size());
   for (std::size_t i = 0; i < plain.segments.size(); ++i)
     EXPECT_EQ(painted.segments[i].color, plain.segments[i].color);
+}
+
+// A colour per dart paints each side of a face in the colour of the side
+// seen from that dart: the front from halfedge(f), the back from its flip.
+TEST(TwoSidedScene, FaceColourMapByDartPaintsEachSide)
+{
+  X::Mobius_mesh<Kd::Point_3> strip;
+  X::make_mobius_strip(strip, 12, 3);
+  const auto side_colour = [&strip](X::Dart d) {
+    const X::Face_index f = strip.face(d);
+    return CGAL::IO::Color(static_cast<unsigned char>(f.idx() * 5), d.is_flipped() ? 200 : 50, 7);
+  };
+  const auto by_dart = boost::make_function_property_map<X::Dart>(side_colour);
+  const X::Two_sided_scene plain = X::make_two_sided_scene(strip);
+  const X::Two_sided_scene painted = X::make_two_sided_scene(strip, X::parameters::face_color_map(by_dart));
+  ASSERT_EQ(painted.faces.size(), 2 * strip.number_of_faces());
+  for (const auto& face : painted.faces) {
+    const X::Dart d = strip.halfedge(face.face);
+    EXPECT_EQ(face.color, side_colour(face.back ? d.flipped() : d)) << face.face << (face.back ? " back" : " front");
+  }
+  EXPECT_EQ(painted.corners, plain.corners);
 }
 
 TEST(TwoSidedScene, BadInputIsRefused)

@@ -58,9 +58,12 @@ namespace CGAL_ext {
 ///     \cgalParamDefault{`Two_sided_style()`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{face_color_map}
-///     \cgalParamDescription{a readable property map from `Face_index` to `CGAL::IO::Color`: both
-///       sides of each face in its colour instead of the style's front and back (a scalar
-///       field shown by a colour ramp, which needs no side); edges keep their colours}
+///     \cgalParamDescription{a readable property map to `CGAL::IO::Color`, instead of the style's
+///       front and back colours; edges keep theirs. Keyed by `Face_index`: both sides of each face
+///       in its colour (a scalar field that needs no side, as a distance). Keyed by `Dart`: each
+///       side in its own, the colour of the side of `face(d)` seen from `d`, asked for with
+///       `halfedge(f)` (the front) and `halfedge(f).flipped()` (the back): a field that has a
+///       value per side, as a mean curvature, which changes sign from one side to the other}
 ///     \cgalParamDefault{none: the style's side colours}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_sharpness_map}

@@ -18,9 +18,11 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/property_map.h>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <vector>
 #include <CGAL_ext/Mobius_mesh/Two_sided_style.h>
 
@@ -77,6 +79,9 @@ private:
   mutable std::vector<char> known_;
 };
 
+// A face's colours: its front side's, then its back side's.
+using Side_colors = std::array<CGAL::IO::Color, 2>;
+
 inline CGAL::IO::Color blend(const CGAL::IO::Color& a, const CGAL::IO::Color& b, double t)
 {
   const auto mix = [t](unsigned char x, unsigned char y) {
@@ -87,7 +92,7 @@ inline CGAL::IO::Color blend(const CGAL::IO::Color& a, const CGAL::IO::Color& b,
 
 template <class P, class Geometry>
 void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, const Two_sided_style& style,
-                         double half_gap, const std::vector<CGAL::IO::Color>& face_colors, Two_sided_scene& scene)
+                         double half_gap, const std::vector<Side_colors>& face_colors, Two_sided_scene& scene)
 {
   std::vector<Dart> darts;
   std::vector<Two_sided_scene::Point> points;
@@ -101,7 +106,7 @@ void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, c
       normals.push_back(geometry.normal(d));
     }
     for (const bool back : {false, true}) {
-      const CGAL::IO::Color color = !face_colors.empty() ? face_colors[f.idx()] : back ? style.back : style.front;
+      const CGAL::IO::Color color = face_colors.empty() ? back ? style.back : style.front : face_colors[f.idx()][back];
       scene.faces.push_back({scene.corners.size(), darts.size(), back, f, color});
       // The back side runs the other way round, so that its corners' order
       // agrees with its normals for a renderer that culls.
@@ -115,18 +120,28 @@ void add_two_sided_faces(const Mobius_mesh<P>& mesh, const Geometry& geometry, c
   }
 }
 
-// The colour of each face from the `face_color_map` parameter, by face
-// index; none without it.
+// The colours of each face's two sides (front, back) from the
+// `face_color_map` parameter, by face index; none without it. A map keyed by
+// `Face_index` gives both sides the face's colour; one keyed by `Dart` gives
+// each side the colour of the side of `face(d)` seen from `d`: the front is
+// asked for with `halfedge(f)`, the back with its flip.
 template <class P, class NP>
-std::vector<CGAL::IO::Color> face_color_values(const Mobius_mesh<P>& mesh, const NP& np)
+std::vector<Side_colors> face_color_values(const Mobius_mesh<P>& mesh, const NP& np)
 {
   namespace pm = CGAL_ext::parameters;
-  std::vector<CGAL::IO::Color> values;
+  std::vector<Side_colors> values;
   if constexpr (!pm::is_default_parameter<NP, CGAL::internal_np::face_color_map_t>::value) {
     const auto given = pm::get_parameter(np, CGAL::internal_np::face_color_map);
+    using Key = typename boost::property_traits<std::decay_t<decltype(given)>>::key_type;
+    static_assert(std::is_same_v<Key, Face_index> || std::is_same_v<Key, Dart>,
+                  "face_color_map: a property map keyed by Face_index (both sides) or by Dart (each side)");
     values.resize(mesh.num_faces());
-    for (Face_index f : mesh.faces())
-      values[f.idx()] = get(given, f);
+    for (Face_index f : mesh.faces()) {
+      if constexpr (std::is_same_v<Key, Dart>)
+        values[f.idx()] = {get(given, mesh.halfedge(f)), get(given, mesh.halfedge(f).flipped())};
+      else
+        values[f.idx()] = {get(given, f), get(given, f)};
+    }
   }
   return values;
 }
