@@ -10,8 +10,9 @@
 // alike, or each side by the value seen from it where the file gives the side
 // each vertex's value is seen from (side_nx, side_ny, side_nz). With
 // --uv-checker the texture coordinates (OBJ vt) are drawn as a checker of
-// 8 x 8 squares per unit, so that seams show where the squares do not meet. With --screenshot it draws the mesh once, writes the PNG and prints
-// one line of JSON:
+// 8 x 8 squares per unit, so that seams show where the squares do not meet.
+// With --screenshot it draws the mesh once, writes the PNG and prints one
+// line of JSON:
 //   {"screenshot":"OUT.png","width":W,"height":H,"faces":F,"mobius_edges":M,"border_edges":B
 //    [,"scalar":NAME,"min":LOW,"max":HIGH][,"uv_checker_levels":L,"faces_drawn":D]}
 // A bad file or option, or no display: one line on stderr, exit status 2.
