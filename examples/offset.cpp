@@ -33,8 +33,10 @@ const examples::Tool_usage usage{
   "genus 1). On an orientable surface: the shell on the side its normals point to, or with\n"
   "  --solid      both shells, joined along the border by a rim.\n"
   "  --weighting  how face normals make a vertex normal: area (default), uniform or angle.\n"
-  "  --drop-corner-data  go on without the input's texture coordinates and normals, which the\n"
-  "               offset does not carry (an input with them is refused otherwise).\n"
+  "  --drop-corner-data  go on without the input's texture coordinates and normals.\n"
+  "Texture coordinates and normals per face corner are carried: each copy of a face keeps its\n"
+  "corners' values (normals turned on the copy on the face's back side); the rim faces' corners\n"
+  "have none, counted in the JSON line.\n"
   "Writes OUT and prints its counts and the time taken as one line of JSON.\n"};
 
 const examples::Choices<CGAL_ext::Vertex_normal_weighting> weightings = {
@@ -60,8 +62,8 @@ int offset(int argc, char** argv)
   Mesh mesh, out;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
-  const examples::Json_array dropped = examples::drop_corner_channels_if(
-    mesh, "the offset does not carry them", args.has(examples::drop_corner_data_flag));
+  const bool drop = args.has(examples::drop_corner_data_flag);
+  const examples::Json_array dropped = examples::drop_corner_channels_if(mesh, drop ? "asked" : "", drop);
   const auto start = std::chrono::steady_clock::now();
   const CGAL_ext::Offset_result r = CGAL_ext::offset_mesh(
     mesh, distance, out, CGAL_ext::parameters::solid(args.has("--solid")).vertex_normal_weighting(weighting));
@@ -77,7 +79,9 @@ int offset(int argc, char** argv)
     .add("components", r.components)
     .add("euler_characteristic", r.euler_characteristic)
     .add("seconds", seconds);
-  if (args.has(examples::drop_corner_data_flag))
+  if (!out.corner_channels().empty())
+    line.add("corners_without_values", r.corners_without_values);
+  if (drop)
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);
   return 0;

@@ -44,3 +44,12 @@ cgal_ext_tool_fails(offset.fails.distance offset
 cgal_ext_tool_fails(offset.fails.weighting offset
   "${_data}/mobius_min_5tris.obj;${_out}/x.obj;--distance;1;--weighting;median"
   "^offset: --weighting 'median' is not uniform, area or angle; usage: [^\n]+\n$")
+
+# Texture coordinates are carried: the Möbius strip of 12 x 2 quads cut open
+# across by one seam (test/data/uv) has a border of 24 edges, so its offset
+# has 24 rim quads, whose 96 corners have none; the faces' copies keep theirs
+# (the corner-by-corner check is CornerChannels.OffsetsCarryThemOnBothSides).
+add_test(NAME offset.texture_coordinates COMMAND offset ${PROJECT_SOURCE_DIR}/test/data/uv/mobius_12x2_uv.obj
+         ${_out}/offset_mobius_uv.obj --distance 0.01)
+set_tests_properties(offset.texture_coordinates PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":[0-9]+,\"edges\":[0-9]+,\"faces\":72,\"rim_faces\":24,.*\"corners_without_values\":96}")

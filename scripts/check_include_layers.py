@@ -43,7 +43,7 @@ LAYERS = [
     (r"boost/graph/([^/]+|internal/[^/]+)\.h", 2, "mesh algorithms"),
     (r"(Sharp_features|polygon_soup_to_mobius_mesh)\.h", 2, "mesh algorithms"),
     # 3: the algorithm families, each in its folder with its internal/.
-    (r"(Subdivision|Merging|Conversion|Decimation|Remeshing|IO|Geodesics|Curvature|Hole_filling|Smoothing|"
+    (r"(Subdivision|Merging|Conversion|Decimation|Remeshing|Offset|IO|Geodesics|Curvature|Hole_filling|Smoothing|"
      r"Polygon_mesh_processing)/([^/]+|internal/[^/]+)\.h", 3, "families"),
     # 4, with the top-level headers: families built on another family's
     # public entry (the limit surface refines a face's neighbourhood with
@@ -75,7 +75,8 @@ def family_of(path):
     if "/" in path:
         return path.split("/", 1)[0]
     entries = {"Mobius_mesh.h": "Mobius_mesh", "Limit_surface.h": "Limit_surface",
-               "polygon_soup_to_mobius_mesh.h": "Mobius_mesh", "Sharp_features.h": "Mobius_mesh"}
+               "polygon_soup_to_mobius_mesh.h": "Mobius_mesh", "Sharp_features.h": "Mobius_mesh",
+               "offset_mesh.h": "Offset"}
     return entries.get(path, "")
 
 

@@ -326,7 +326,7 @@ TEST(CornerChannels, MergingKeepsEachCornersValue)
   EXPECT_EQ(CGAL_ext::corner_channel_summaries(a)[0].seam_edges, 2u); // the glued edges
 }
 
-TEST(CornerChannels, RemeshingAndOffsetsRefuseThemDecimationKeepsSeams)
+TEST(CornerChannels, RemeshingRefusesThemDecimationKeepsSeams)
 {
   Mesh m;
   CGAL_ext::make_torus(m, 8, 6, 2.0, 0.5);
@@ -344,8 +344,6 @@ TEST(CornerChannels, RemeshingAndOffsetsRefuseThemDecimationKeepsSeams)
     expect_at_their_corners(m);
   };
   expect_refused([&] { CGAL_ext::isotropic_remeshing(m, 0.3); }, "isotropic_remeshing");
-  Mesh out;
-  expect_refused([&] { CGAL_ext::offset_mesh(m, 0.1, out); }, "offset_mesh");
   // Decimation carries channels and never collapses a seam: here every corner
   // has a value of its own, so every edge of the quads is one and every
   // vertex a seam vertex (the triangulation's diagonals join two, which no
@@ -362,6 +360,130 @@ TEST(CornerChannels, RemeshingAndOffsetsRefuseThemDecimationKeepsSeams)
   EXPECT_TRUE(m.remove_corner_channel("c:uv"));
   CGAL_ext::decimate(m, CGAL_ext::parameters::face_ratio(0.25));
   EXPECT_LT(m.number_of_faces(), faces);
+}
+
+// Offsets carry channels. Each corner of the offset is matched to the input
+// corner it copies by geometry alone: its point lies `distance` from the
+// input vertex, and its face's points so from an input face's vertices. That
+// corner's texture coordinates are the input corner's; its corner normal is
+// the input's where the copy faces the way the input face does, and the
+// opposite where it faces the other way (a copy on the face's back side).
+// A rim corner has no value.
+template <class K>
+void expect_offset_carries_channels(const CGAL_ext::Mobius_mesh<typename K::Point_3>& in, double distance)
+{
+  using P = typename K::Point_3;
+  using M = CGAL_ext::Mobius_mesh<P>;
+  using Normal = CGAL_ext::Corner_normal<P>;
+  M out;
+  const CGAL_ext::Offset_result r = CGAL_ext::offset_mesh(in, distance, out, CGAL_ext::parameters::solid(true));
+  const auto uv_in = *in.template corner_channel<UV>("c:uv"), uv_out = *out.template corner_channel<UV>("c:uv");
+  const auto n_in = *in.template corner_channel<Normal>("c:normal");
+  const auto n_out = *out.template corner_channel<Normal>("c:normal");
+  const auto nearest = [&](const P& q) {
+    CGAL_ext::Vertex_index best;
+    double d = HUGE_VAL;
+    for (CGAL_ext::Vertex_index v : in.vertices())
+      if (CGAL::to_double(CGAL::squared_distance(q, in.point(v))) < d) {
+        d = CGAL::to_double(CGAL::squared_distance(q, in.point(v)));
+        best = v;
+      }
+    EXPECT_NEAR(std::sqrt(d), distance, 1e-9);
+    return best;
+  };
+  const auto normal_of = [](const auto& mesh, CGAL_ext::Face_index f) {
+    const Dart d = mesh.halfedge(f);
+    return CGAL::cross_product(mesh.point(mesh.target(d)) - mesh.point(mesh.source(d)),
+                               mesh.point(mesh.target(mesh.next(d))) - mesh.point(mesh.target(d)));
+  };
+  std::size_t without = 0, matched_front = 0, matched_back = 0;
+  for (CGAL_ext::Face_index g : out.faces()) {
+    std::map<std::size_t, Dart> corner_at; // input vertex -> the output corner
+    for (Dart d : CGAL_ext::halfedges_around_face(g, out))
+      corner_at[nearest(out.point(out.target(d))).idx()] = d;
+    CGAL_ext::Face_index source;
+    for (CGAL_ext::Face_index f : in.faces()) {
+      std::map<std::size_t, Dart> at;
+      for (Dart d : CGAL_ext::halfedges_around_face(f, in))
+        at[in.target(d).idx()] = d;
+      bool same = at.size() == corner_at.size();
+      for (auto it = at.begin(), jt = corner_at.begin(); same && it != at.end(); ++it, ++jt)
+        same = it->first == jt->first;
+      if (same)
+        source = f;
+    }
+    for (Dart d : CGAL_ext::halfedges_around_face(g, out)) {
+      if (!source.is_valid()) { // a rim quad: its corners join two lifts of one border edge
+        EXPECT_FALSE(uv_out.has_value(out.corner(d)));
+        EXPECT_FALSE(n_out.has_value(out.corner(d)));
+        ++without;
+        continue;
+      }
+      Dart e;
+      for (Dart c : CGAL_ext::halfedges_around_face(source, in))
+        if (in.target(c).idx() == nearest(out.point(out.target(d))).idx())
+          e = c;
+      ASSERT_TRUE(uv_out.has_value(out.corner(d)));
+      EXPECT_EQ(uv_out[out.corner(d)], uv_in[in.corner(e)]);
+      const bool facing = CGAL::to_double(normal_of(out, g) * normal_of(in, source)) > 0;
+      EXPECT_EQ(n_out[out.corner(d)], facing ? n_in[in.corner(e)] : -n_in[in.corner(e)]);
+      ++(facing ? matched_front : matched_back);
+    }
+  }
+  EXPECT_EQ(r.corners_without_values, without);
+  EXPECT_EQ(without, 4 * r.rim_faces);
+  EXPECT_GT(matched_front, 0u); // both sides of the input's faces
+  EXPECT_EQ(matched_back, matched_front);
+}
+
+// Texture coordinates distinct at every corner, and as corner normals each
+// face's own normal, tilted differently at each corner so that no two are
+// equal.
+template <class K>
+CGAL_ext::Mobius_mesh<typename K::Point_3> with_uv_and_normals(const Mesh& shape)
+{
+  using P = typename K::Point_3;
+  CGAL_ext::Mobius_mesh<P> m;
+  std::vector<P> points;
+  for (CGAL_ext::Vertex_index v : shape.vertices())
+    points.emplace_back(shape.point(v).x(), shape.point(v).y(), shape.point(v).z());
+  std::vector<std::vector<std::size_t>> faces;
+  for (CGAL_ext::Face_index f : shape.faces()) {
+    faces.emplace_back();
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(shape.halfedge(f), shape))
+      faces.back().push_back(v.idx());
+  }
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m, CGAL_ext::parameters::keep_orientation(true));
+  auto uv = m.template add_corner_channel<UV>("c:uv").first;
+  auto normal = m.template add_corner_channel<CGAL_ext::Corner_normal<P>>("c:normal").first;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
+      uv.set_index(m.corner(d), uv.add_value({double(m.target(d).idx()), double(f.idx())}));
+      const auto n = CGAL::cross_product(m.point(m.target(d)) - m.point(m.source(d)),
+                                         m.point(m.target(m.next(d))) - m.point(m.target(d)));
+      normal.set_index(m.corner(d), normal.add_value(n + typename K::Vector_3(0, 0, 1e-3 * (d.halfedge().idx() + 1))));
+    }
+  return m;
+}
+
+TEST(CornerChannels, OffsetsCarryThemOnBothSides)
+{
+  Mesh torus, strip;
+  CGAL_ext::make_torus(torus, 8, 6, 2.0, 0.5);
+  CGAL_ext::make_mobius_strip(strip, 12, 3);
+  {
+    SCOPED_TRACE("torus, double");
+    expect_offset_carries_channels<test::Kd>(with_uv_and_normals<test::Kd>(torus), 0.1);
+  }
+  {
+    SCOPED_TRACE("Möbius strip, double");
+    expect_offset_carries_channels<test::Kd>(with_uv_and_normals<test::Kd>(strip), 0.05);
+  }
+  {
+    SCOPED_TRACE("Möbius strip, EPECK");
+    expect_offset_carries_channels<CGAL::Exact_predicates_exact_constructions_kernel>(
+      with_uv_and_normals<CGAL::Exact_predicates_exact_constructions_kernel>(strip), 0.05);
+  }
 }
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV

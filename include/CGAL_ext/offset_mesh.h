@@ -15,6 +15,7 @@
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/internal/Coordinate_checks.h>
 #include <CGAL_ext/Named_parameters.h>
+#include <CGAL_ext/Offset/internal/Offset_corner_channels.h>
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 
@@ -35,6 +36,9 @@ struct Offset_result
 {
   std::size_t vertices = 0, edges = 0, faces = 0;
   std::size_t rim_faces = 0;       ///< faces joining the two sides along the input's border
+  /// corners of the rim faces, which have no value in the input's corner
+  /// channels (0 without channels): each channel leaves them without one
+  std::size_t corners_without_values = 0;
   std::size_t components = 0;      ///< connected components of the output
   long long euler_characteristic = 0;
   bool closed = false, orientable = false;
@@ -100,10 +104,13 @@ Vector scaled_unit(const Vector& n, double distance)
               typename CGAL::Kernel_traits<Vector>::Kernel::FT(length));
 }
 
-// Builds `out` from the polygons, with only the points they use.
+// Builds `out` from the polygons, with only the points they use, and the
+// corner channels of `input` carried as `corners` says (see
+// Offset_corner_sources); returns the corners left without values.
 template <class P>
-void build_from_used_points(const std::vector<P>& points, std::vector<std::vector<std::size_t>>& polygons,
-                            Mobius_mesh<P>& out)
+std::size_t build_from_used_points(const std::vector<P>& points, std::vector<std::vector<std::size_t>>& polygons,
+                                   const Mobius_mesh<P>& input, const Offset_corner_sources& corners,
+                                   Mobius_mesh<P>& out)
 {
   constexpr std::size_t unused = std::size_t(-1);
   std::vector<std::size_t> renumbered(points.size(), unused);
@@ -116,7 +123,10 @@ void build_from_used_points(const std::vector<P>& points, std::vector<std::vecto
       }
       i = renumbered[i];
     }
-  polygon_soup_to_mobius_mesh(used, polygons, out);
+  std::size_t without = 0;
+  soup_to_mobius_mesh(used, polygons, out, parameters::default_values(),
+                      [&](Mobius_mesh<P>& built) { without = corners.carry(input, built); });
+  return without;
 }
 
 // The offset of vertex v to the side of the walk of its side dart `r`: the
@@ -162,7 +172,12 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 ///
 /// The output is oriented outward: the copy of a face on the side its normal
 /// points to keeps its orientation, the copy on the other side is reversed,
-/// and the rims follow; so a closed output bounds a positive volume. Normals are those of
+/// and the rims follow; so a closed output bounds a positive volume. Corner
+/// channels are carried: each corner of a copy of a face keeps the value of
+/// the corner it copies (corner normals, `corner_normal_name`, turned on the
+/// copy on the face's back side, as they are seen from its front); the rim
+/// faces' corners have none (`Offset_result::corners_without_values`).
+/// Normals are those of
 /// `vertex_normal()` with the weighting given (area by default), each taken on
 /// the side of a face dart into its vertex; the corners of the double cover
 /// follow that side across Möbius edges. The offset points are those
@@ -182,8 +197,7 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 ///   exact, e.g. with δ the area-weighted normals of `compute_vertex_normals()`).
 /// \throws Parameter_error if `distance` is not positive and finite (and,
 ///   without `vertex_displacement_map`, at most 1e60), the
-///   mesh has removed elements or a corner channel (the offset has corners
-///   that the input has not: offset a copy without the channels), a point is not finite, a displacement is zero
+///   mesh has removed elements, a point is not finite, a displacement is zero
 ///   or tangent to the surface, or (without `vertex_displacement_map`) a point
 ///   has a coordinate beyond +-1e60 or the mesh is less than 1e-60 across,
 ///   where unit normals in double overflow or underflow; `out` is then unchanged.
@@ -205,9 +219,6 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
   }
   CGAL_ext::internal::require_no_garbage(mesh, "offset_mesh");
   CGAL_ext::internal::refuse_non_manifold_joins(mesh, "offset_mesh");
-  CGAL_ext::internal::refuse_corner_channels(mesh, "offset_mesh",
-                                             "the rims have no corners in the input, and a corner normal would "
-                                             "have to turn on the inner side");
   if constexpr (unit_normals)
     CGAL_ext::internal::require_coordinates_in_range(mesh, "offset_mesh");
   else
@@ -245,6 +256,7 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
   // Each face twice (once reversed), or once on an orientable component
   // without `solid`; a rim quad along each border edge where both sides are kept.
   std::vector<std::vector<std::size_t>> polygons;
+  internal::Offset_corner_sources corners(!m.corner_channels().empty());
   auto lift = [&](Halfedge_index corner, bool upper) {
     const Vertex_index v = m.target(Dart(corner, false));
     return 2 * std::size_t(v.idx()) + ((agrees[corner.idx()] != 0) == upper ? 0 : 1);
@@ -252,14 +264,19 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
   auto both_sides = [&](Face_index f) { return solid || !orientable[face_component[f.idx()]]; };
   for (Face_index f : m.faces()) {
     std::vector<std::size_t> upper, lower;
+    std::vector<std::uint32_t> slots;
     for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
       upper.push_back(lift(d.halfedge(), true));
       lower.push_back(lift(d.halfedge(), false));
+      slots.push_back(d.halfedge().idx());
     }
     polygons.push_back(upper);
+    corners.add_polygon(slots, false);
     if (both_sides(f)) {
       std::reverse(lower.begin(), lower.end());
       polygons.push_back(lower);
+      std::reverse(slots.begin(), slots.end());
+      corners.add_polygon(slots, true);
     }
   }
   std::size_t rim_faces = 0;
@@ -275,17 +292,19 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
     // The upper copy runs source -> target along the edge: the rim runs back.
     polygons.push_back({lift(at_target, true), lift(at_source, true), lift(at_source, false),
                         lift(at_target, false)});
+    corners.add_rim(4);
     ++rim_faces;
   }
 
   Mobius_mesh<P> result;
-  internal::build_from_used_points(lifts, polygons, result);
+  const std::size_t without_values = internal::build_from_used_points(lifts, polygons, m, corners, result);
 
   Offset_result r;
   r.vertices = result.number_of_vertices();
   r.edges = result.number_of_edges();
   r.faces = result.number_of_faces();
   r.rim_faces = rim_faces;
+  r.corners_without_values = without_values;
   r.components = CGAL_ext::connected_components(result).count;
   r.euler_characteristic = CGAL_ext::euler_characteristic(result);
   r.closed = CGAL_ext::is_closed(result);

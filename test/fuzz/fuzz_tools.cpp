@@ -149,12 +149,28 @@ void merge(Mesh& m, const std::array<std::uint8_t, 4>& o)
   CGAL_ext::merge_borders(m, other, CGAL_ext::facing_borders(m, other), strategy);
 }
 
+// Every corner of `out` that names a value of the channel (as the readers
+// type it) names one it has.
+template <class T>
+void check_channel(const Mesh& out, const char* name)
+{
+  if (const auto channel = out.corner_channel<T>(name))
+    for (CGAL_ext::Halfedge_index h : out.halfedges())
+      check(!channel->has_value(h) || channel->index(h) < channel->number_of_values(),
+            "a corner names a value its channel does not have");
+}
+
 void offset(Mesh& m, const std::array<std::uint8_t, 4>& o)
 {
   Mesh out;
   const double distance = diagonal(m) * fraction(o[0]) / 4;
-  CGAL_ext::offset_mesh(m, distance, out);
+  const CGAL_ext::Offset_result r = CGAL_ext::offset_mesh(m, distance, out);
   check(out.is_valid(), "the offset is not valid");
+  check(out.corner_channels() == m.corner_channels(), "the offset lost or made a corner channel");
+  check(r.corners_without_values == (m.corner_channels().empty() ? 0 : 4 * r.rim_faces),
+        "the offset's corners without values are not the rims'");
+  check_channel<CGAL_ext::Corner_uv<Point>>(out, CGAL_ext::corner_uv_name);
+  check_channel<CGAL_ext::Corner_normal<Point>>(out, CGAL_ext::corner_normal_name);
 }
 
 void run(Mesh& m, const std::array<std::uint8_t, 4>& options)
