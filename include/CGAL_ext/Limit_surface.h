@@ -9,6 +9,7 @@
 #define CGAL_EXT_LIMIT_SURFACE_H
 
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
+#include <CGAL_ext/Limit_surface/internal/Face_cache.h>
 #include <CGAL_ext/Limit_surface/internal/Loop_patch_builder.h>
 #include <CGAL_ext/Limit_surface/internal/Patch_builder.h>
 #include <CGAL_ext/Limit_surface/internal/Parameterization.h>
@@ -216,8 +217,7 @@ public:
     for (Vertex_index v : mesh.vertices())
       base_.mesh.point(v) = get(points, v);
     copy_sharpness(mesh, np);
-    faces_.resize(mesh.number_of_faces());
-    once_.reset(new std::once_flag[mesh.number_of_faces()]);
+    faces_ = internal::Face_cache<Face_patches>(mesh.number_of_faces());
     projection_rate_ = int(std::min(options.projection_rate, 1024u));
     max_tessellation_rate_ = int(std::min(std::max(options.max_tessellation_rate, 1u), 4096u));
   }
@@ -460,7 +460,7 @@ private:
 
   const Face_patches& patches_of(Face_index f) const
   {
-    std::call_once(once_[f.idx()], [&] {
+    return faces_.get(f.idx(), [&] {
       auto patches = std::make_unique<Face_patches>();
       const Dart d = base_.mesh.next(base_.mesh.halfedge(f)); // corner 0 -> corner 1
       if constexpr (is_loop) {
@@ -473,9 +473,8 @@ private:
         std::vector<internal::Patch<FT>> unused;
         internal::Patch_tree_builder<FT, P>(options_, unused).build_sub_faces(base_, d, patches->sub_faces);
       }
-      faces_[f.idx()] = std::move(patches);
+      return patches;
     });
-    return *faces_[f.idx()];
   }
 
   // A triangle's patch is found by Bfr's descent of its patch tree; the
@@ -528,8 +527,7 @@ private:
 
   internal::Level_mesh<P> base_;
   internal::Limit_options options_;
-  mutable std::vector<std::unique_ptr<Face_patches>> faces_;
-  std::unique_ptr<std::once_flag[]> once_;
+  internal::Face_cache<Face_patches> faces_;
   int projection_rate_ = 4;
   int max_tessellation_rate_ = 64;
   mutable std::unique_ptr<internal::Limit_projection<Limit_surface>> projection_;

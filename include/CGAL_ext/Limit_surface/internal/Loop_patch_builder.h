@@ -40,7 +40,7 @@ std::array<Dart, 3> triangle_darts(const Mobius_mesh<P>& m, Dart d)
 }
 
 // The 12 points of the box-spline patch of a regular triangle (see
-// box_spline_basis() for their layout). Around each corner the six
+// Box_spline_monomials for their layout). Around each corner the six
 // neighbours, counter-clockwise from the next corner, are on the lattice
 // where `around` says (the next and previous corners first); where the
 // corner's span is bounded, the missing neighbours are reflected through
@@ -409,6 +409,7 @@ public:
       if (regular) {
         patch.type = Patch_type::box_spline;
         box_spline_points<FT>(L.mesh, d, corners, patch.points);
+        box_spline_to_monomials(patch.points);
       } else {
         patch.type = Patch_type::gregory_triangle;
         const std::array<Row, 18> rows = gregory_triangle_rows(L.mesh, d, corners);

@@ -48,10 +48,23 @@ struct Level_mesh
   std::optional<typename Mobius_mesh<P>::template Property_map<Edge_index, float>> es;
   std::optional<typename Mobius_mesh<P>::template Property_map<Vertex_index, float>> vs;
 
+  // The number of sides every face has, 0 if they differ: where it is the
+  // scheme's regular size, no corner needs to walk its faces to know.
+  unsigned face_size = 0;
+
   void bind()
   {
     es = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
     vs = mesh.template property_map<Vertex_index, float>(vertex_sharpness_name);
+    face_size = 0;
+    for (Face_index f : mesh.faces()) {
+      const unsigned n = unsigned(mesh.degree(f));
+      if (face_size != 0 && n != face_size) {
+        face_size = 0;
+        break;
+      }
+      face_size = n;
+    }
   }
   // A border edge is infinitely sharp, as OpenSubdiv makes it.
   float edge_sharpness(Dart o) const
@@ -108,6 +121,7 @@ Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt, 
   // counts faces and sharp edges; a border stops it, and the walk back
   // from o covers the rest.
   bool border = false;
+  const bool all_regular = L.face_size == face_size;
   auto count_edge = [&](Dart e) {
     const float s = L.edge_sharpness(e);
     c.infinite_edges += Crease::is_infinite(s) ? 1 : 0;
@@ -118,7 +132,7 @@ Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt, 
     do {
       count_edge(e);
       ++c.all_faces;
-      c.irregular_faces |= m.degree(m.face(e)) != face_size;
+      c.irregular_faces |= !all_regular && m.degree(m.face(e)) != face_size;
       const Dart n = m.opposite(m.prev(e));
       if (m.is_border(n)) {
         count_edge(n);
@@ -132,7 +146,7 @@ Corner analyse_corner(const Level_mesh<P>& L, Dart o, const Limit_options& opt, 
       while (!m.is_border(m.opposite(b))) {
         b = m.next(m.opposite(b));
         ++c.all_faces;
-        c.irregular_faces |= m.degree(m.face(b)) != face_size;
+        c.irregular_faces |= !all_regular && m.degree(m.face(b)) != face_size;
         count_edge(b);
       }
     }

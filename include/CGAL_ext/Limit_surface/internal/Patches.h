@@ -11,6 +11,7 @@
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_PATCHES_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_PATCHES_H
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -37,6 +38,13 @@ template <class FT, std::size_t N>
 struct Basis
 {
   std::array<FT, N> w, ds, dt, dss, dst, dtt;
+};
+
+// Position and derivatives with respect to the patch's own (s, t).
+template <class FT>
+struct Patch_value
+{
+  Coordinates<FT> p, ds, dt, dss, dst, dtt;
 };
 
 // The uniform cubic B-spline basis on [0, 1] and its two derivatives.
@@ -161,52 +169,76 @@ void clear(Basis<FT, N>& b)
 //       0 --  1 --  2
 //
 // the triangle's corners at 4 (s, t) = (0, 0), 5 (1, 0) and 8 (0, 1).
-// Derivatives are those of the polynomials, exact in an exact number type.
-template <class FT>
-void box_spline_basis(const FT& s, const FT& t, Basis<FT, 12>& b)
+// Monomials 1, s, t, s², st, t², s³, s²t, st², t³, s⁴, s³t, s²t², st³, t⁴, and
+// twelve times each point's basis function in them.
+struct Box_spline_monomials
 {
-  // Monomials 1, s, t, s², st, t², s³, s²t, st², t³, s⁴, s³t, s²t², st³, t⁴.
-  static const int exponent[15][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {3, 0}, {2, 1},
-                                      {1, 2}, {0, 3}, {4, 0}, {3, 1}, {2, 2}, {1, 3}, {0, 4}};
-  // Twelve times each basis function.
-  static const int c[12][15] = {{1, -2, -4, 0, 6, 6, 2, 0, -6, -4, -1, -2, 0, 2, 1},
-                                {1, 2, -2, 0, -6, 0, -4, 0, 6, 2, 2, 4, 0, -2, -1},
-                                {0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -1, -2, 0, 0, 0},
-                                {1, -4, -2, 6, 6, 0, -4, -6, 0, 2, 1, 2, 0, -2, -1},
-                                {6, 0, 0, -12, -12, -12, 8, 12, 12, 8, -1, -2, 0, -2, -1},
-                                {1, 4, 2, 6, 6, 0, -4, -6, -12, -4, -1, -2, 0, 4, 2},
-                                {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0},
-                                {1, -2, 2, 0, -6, 0, 2, 6, 0, -4, -1, -2, 0, 4, 2},
-                                {1, 2, 4, 0, 6, 6, -4, -12, -6, -4, 2, 4, 0, -2, -1},
-                                {0, 0, 0, 0, 0, 0, 2, 6, 6, 2, -1, -2, 0, -2, -1},
-                                {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
-                                {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1}};
-  // Each monomial and its five derivatives once, then the integer
-  // combinations: the basis is evaluated once per point, and this is most
-  // of a regular Loop patch's cost.
+  static constexpr int count = 15;
+  static constexpr int exponent[count][2] = {{0, 0}, {1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}, {3, 0}, {2, 1},
+                                             {1, 2}, {0, 3}, {4, 0}, {3, 1}, {2, 2}, {1, 3}, {0, 4}};
+  static constexpr int twelve_times[12][count] = {{1, -2, -4, 0, 6, 6, 2, 0, -6, -4, -1, -2, 0, 2, 1},
+                                                  {1, 2, -2, 0, -6, 0, -4, 0, 6, 2, 2, 4, 0, -2, -1},
+                                                  {0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -1, -2, 0, 0, 0},
+                                                  {1, -4, -2, 6, 6, 0, -4, -6, 0, 2, 1, 2, 0, -2, -1},
+                                                  {6, 0, 0, -12, -12, -12, 8, 12, 12, 8, -1, -2, 0, -2, -1},
+                                                  {1, 4, 2, 6, 6, 0, -4, -6, -12, -4, -1, -2, 0, 4, 2},
+                                                  {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0},
+                                                  {1, -2, 2, 0, -6, 0, 2, 6, 0, -4, -1, -2, 0, 4, 2},
+                                                  {1, 2, 4, 0, 6, 6, -4, -12, -6, -4, 2, 4, 0, -2, -1},
+                                                  {0, 0, 0, 0, 0, 0, 2, 6, 6, 2, -1, -2, 0, -2, -1},
+                                                  {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
+                                                  {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1}};
+};
+
+// Replaces the 12 points of a box-spline patch by the coefficients of its
+// polynomial in the 15 monomials (the integer weights above, over 12): done
+// once when the patch is built, it leaves each evaluation the monomials and
+// their derivatives to weight, about a tenth of the operations of weighting
+// the points by the basis functions and each of their derivatives, which
+// was most of a regular Loop patch's cost. Linear, so exact in an exact
+// number type.
+template <class FT>
+void box_spline_to_monomials(std::array<Coordinates<FT>, 20>& points)
+{
+  using M = Box_spline_monomials;
+  std::array<Coordinates<FT>, M::count> coefficient;
+  for (auto& c : coefficient)
+    c = {FT(0), FT(0), FT(0)};
+  const FT twelfth = FT(1) / FT(12);
+  for (std::size_t k = 0; k < 12; ++k)
+    for (std::size_t m = 0; m < std::size_t(M::count); ++m)
+      if (M::twelve_times[k][m] != 0)
+        add_scaled(coefficient[m], FT(M::twelve_times[k][m]) * twelfth, points[k]);
+  std::copy(coefficient.begin(), coefficient.end(), points.begin());
+}
+
+// The box spline at (s, t) with its derivatives, from the coefficients of
+// its monomials (box_spline_to_monomials()).
+template <class FT>
+Patch_value<FT> evaluate_box_spline(const std::array<Coordinates<FT>, 20>& coefficient, const FT& s, const FT& t)
+{
+  using M = Box_spline_monomials;
   const FT ps[5] = {FT(1), s, s * s, s * s * s, s * s * s * s};
   const FT pt[5] = {FT(1), t, t * t, t * t * t, t * t * t * t};
-  const auto at = [](const FT* p, int k) { return k < 0 ? FT(0) : p[k]; };
-  std::array<std::array<FT, 15>, 6> mono; // value, d/ds, d/dt, d²/ds², d²/dsdt, d²/dt²
-  for (std::size_t m = 0; m < 15; ++m) {
-    const int a = exponent[m][0], e = exponent[m][1];
-    mono[0][m] = ps[a] * pt[e];
-    mono[1][m] = FT(a) * at(ps, a - 1) * pt[e];
-    mono[2][m] = FT(e) * ps[a] * at(pt, e - 1);
-    mono[3][m] = FT(a * (a - 1)) * at(ps, a - 2) * pt[e];
-    mono[4][m] = FT(a * e) * at(ps, a - 1) * at(pt, e - 1);
-    mono[5][m] = FT(e * (e - 1)) * ps[a] * at(pt, e - 2);
+  Patch_value<FT> r;
+  for (auto* c : {&r.p, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt})
+    *c = {FT(0), FT(0), FT(0)};
+  // Adds `factor` s^a t^e times the monomial's coefficient to `sum`; nothing
+  // where a derivative has taken a power below 0 (its factor is then 0).
+  const auto add = [&](Coordinates<FT>& sum, std::size_t m, int factor, int a, int e) {
+    if (factor != 0)
+      add_scaled(sum, FT(factor) * ps[a] * pt[e], coefficient[m]);
+  };
+  for (std::size_t m = 0; m < std::size_t(M::count); ++m) {
+    const int a = M::exponent[m][0], e = M::exponent[m][1];
+    add(r.p, m, 1, a, e);
+    add(r.ds, m, a, a > 0 ? a - 1 : 0, e);
+    add(r.dt, m, e, a, e > 0 ? e - 1 : 0);
+    add(r.dss, m, a * (a - 1), a > 1 ? a - 2 : 0, e);
+    add(r.dst, m, a * e, a > 0 ? a - 1 : 0, e > 0 ? e - 1 : 0);
+    add(r.dtt, m, e * (e - 1), a, e > 1 ? e - 2 : 0);
   }
-  std::array<FT, 12>* out[6] = {&b.w, &b.ds, &b.dt, &b.dss, &b.dst, &b.dtt};
-  const FT twelfth = FT(1) / FT(12);
-  for (std::size_t q = 0; q < 6; ++q)
-    for (std::size_t k = 0; k < 12; ++k) {
-      FT sum(0);
-      for (std::size_t m = 0; m < 15; ++m)
-        if (c[k][m] != 0)
-          sum += FT(c[k][m]) * mono[q][m];
-      (*out[q])[k] = sum * twelfth;
-    }
+  return r;
 }
 
 // The quartic Bernstein polynomial 4!/(i! j! k!) u^i v^j w^k, u = s, v = t,
@@ -264,7 +296,7 @@ enum class Patch_type
 {
   bspline,          // 16 points
   gregory,          // 20 points
-  box_spline,       // 12 points
+  box_spline,       // 12 points, kept as its 15 monomials' coefficients (box_spline_to_monomials())
   gregory_triangle, // 18 points
 };
 
@@ -283,13 +315,6 @@ struct Patch
   unsigned depth = 0;
   std::uint64_t path = 0;
   std::array<Coordinates<FT>, 20> points;
-};
-
-// Position and derivatives with respect to the patch's own (s, t).
-template <class FT>
-struct Patch_value
-{
-  Coordinates<FT> p, ds, dt, dss, dst, dtt;
 };
 
 template <class FT, std::size_t N>
@@ -318,11 +343,8 @@ Patch_value<FT> evaluate_patch(const Patch<FT>& patch, const FT& s, const FT& t)
     gregory_basis(s, t, b);
     return combine(b, patch.points);
   }
-  case Patch_type::box_spline: {
-    Basis<FT, 12> b;
-    box_spline_basis(s, t, b);
-    return combine(b, patch.points);
-  }
+  case Patch_type::box_spline:
+    return evaluate_box_spline(patch.points, s, t); // its coefficients
   case Patch_type::gregory_triangle: {
     Basis<FT, 18> b;
     gregory_triangle_basis(s, t, b);
