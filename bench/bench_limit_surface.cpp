@@ -22,6 +22,18 @@
 // loop()) to about the same number of points (16 or 10 per face; points of
 // the level, not of the limit).
 //
+//   limit_surface/tessellate/...         each face tessellated at rate 4
+//                                        (16 quads a quad, 16 triangles a
+//                                        triangle): ours, Limit_surface::
+//                                        tessellate(4), a connected mesh with a
+//                                        normal per corner; Bfr, per face a
+//                                        Bfr::Tessellation at rate 4 (triangles)
+//                                        whose coordinates are evaluated with
+//                                        first derivatives, the points and
+//                                        facets kept per face (a soup: Bfr does
+//                                        not join them); the surface's
+//                                        construction included in both. The same
+//                                        density as CGAL_ext_uniform_2_levels.
 //   limit_surface/closest_point/...      ours alone: 10 000 queries near the
 //                                        surface (the search structure built
 //                                        in the first, and counted).
@@ -43,6 +55,7 @@
 #if CGAL_EXT_HAVE_OPENSUBDIV
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/bfr/tessellation.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #endif
 
@@ -306,6 +319,63 @@ void bfr(benchmark::State& state, const std::string& name, int threads)
 }
 #endif
 
+template <class Mask>
+void tessellate_ours(benchmark::State& state, const std::string& name)
+{
+  const Input& in = input(name);
+  std::size_t faces = 0;
+  for (auto _ : state) {
+    const Surface<Mask> surface(in.mesh);
+    const Mesh t = surface.tessellate(4);
+    faces = t.number_of_faces();
+    benchmark::DoNotOptimize(faces);
+  }
+  state.counters["facets"] = double(faces);
+}
+
+#if CGAL_EXT_HAVE_OPENSUBDIV
+// Per face: Bfr's tessellation at rate 4 (triangles), its coordinates
+// evaluated with first derivatives (for the normals), points and facets
+// appended to one soup.
+template <class Mask>
+void tessellate_bfr(benchmark::State& state, const std::string& name)
+{
+  const Input& in = input(name);
+  const Osd_input o = osd_input(in.mesh);
+  std::size_t facets = 0;
+  for (auto _ : state) {
+    const auto refiner = osd_refiner<Mask>(o);
+    const Bfr::RefinerSurfaceFactory<> factory(*refiner);
+    Bfr::Surface<double> surface;
+    std::vector<double> patch_points, coords, points, derivatives;
+    std::vector<int> facet_indices;
+    for (std::size_t f = 0; f < in.mesh.number_of_faces(); ++f) {
+      factory.InitVertexSurface(int(f), &surface);
+      patch_points.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
+      surface.PreparePatchPoints(o.xyz.data(), 3, patch_points.data(), 3);
+      const Bfr::Tessellation tessellation(surface.GetParameterization(), 4);
+      coords.resize(2 * std::size_t(tessellation.GetNumCoords()));
+      tessellation.GetCoords(coords.data());
+      const int first = int(points.size() / 3);
+      for (std::size_t i = 0; i < coords.size(); i += 2) {
+        double p[3], du[3], dv[3];
+        surface.Evaluate(&coords[i], patch_points.data(), 3, p, du, dv);
+        points.insert(points.end(), p, p + 3);
+        derivatives.insert(derivatives.end(), {du[0], du[1], du[2], dv[0], dv[1], dv[2]});
+      }
+      const std::size_t at = facet_indices.size();
+      facet_indices.resize(at + 3 * std::size_t(tessellation.GetNumFacets()));
+      tessellation.GetFacets(facet_indices.data() + at);
+      for (std::size_t i = at; i < facet_indices.size(); ++i)
+        facet_indices[i] += first;
+    }
+    facets = facet_indices.size() / 3;
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.counters["facets"] = double(facets);
+}
+#endif
+
 // Queries pushed off the surface along its normal by 1 % of the size, from
 // fresh parameters of random faces.
 template <class Mask>
@@ -369,6 +439,10 @@ void register_case(const std::string& name)
 #endif
 #endif
   add(group + "CGAL_ext_uniform_2_levels", refinement<Mask>, name);
+  add("limit_surface/tessellate/" + name + "/CGAL_ext_Limit_surface", tessellate_ours<Mask>, name);
+#if CGAL_EXT_HAVE_OPENSUBDIV
+  add("limit_surface/tessellate/" + name + "/OpenSubdiv_Bfr", tessellate_bfr<Mask>, name);
+#endif
   add("limit_surface/closest_point/" + name + "/CGAL_ext_Limit_surface", closest_points<Mask>, name);
 }
 
