@@ -7,14 +7,17 @@
 // surface shows both colours on one side. Borders are red, sharp edges purple.
 // With --scalar NAME the faces are coloured by the PLY vertex property NAME
 // instead (a colour ramp from its smallest value to its largest), both sides
-// alike, or each side by the value seen from it where the file gives the side
-// each vertex's value is seen from (side_nx, side_ny, side_nz). With
+// alike; a curvature the curvature tool wrote with the side each vertex's
+// value is seen from (side_nx, side_ny, side_nz) colours each side by the
+// values seen from it. With
 // --uv-checker the texture coordinates (OBJ vt) are drawn as a checker of
 // 8 x 8 squares per unit, so that seams show where the squares do not meet.
 // With --screenshot it draws the mesh once, writes the PNG and prints one
 // line of JSON:
 //   {"screenshot":"OUT.png","width":W,"height":H,"faces":F,"mobius_edges":M,"border_edges":B
-//    [,"scalar":NAME,"min":LOW,"max":HIGH][,"uv_checker_levels":L,"faces_drawn":D]}
+//    [,"scalar":NAME,"min":LOW,"max":HIGH[,"fronts":[A,B]]][,"uv_checker_levels":L,"faces_drawn":D]}
+// ("fronts": the range of the faces' fronts' means, where each side is
+// coloured by the values seen from it)
 // A bad file or option, or no display: one line on stderr, exit status 2.
 
 #include "arguments.h"
@@ -36,6 +39,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -53,11 +57,11 @@ const examples::Tool_usage usage{
   "  --scalar NAME         colour the faces by the vertex property NAME of a PLY file instead (as\n"
   "                        the geodesics and curvature tools write them): each face by the mean of\n"
   "                        its corners, on a ramp from dark violet (the smallest value) through\n"
-  "                        blue and green to yellow (the largest), both sides alike. Where the\n"
-  "                        file also has side_nx, side_ny, side_nz (as curvature writes them), NAME\n"
-  "                        is a value seen from that side of each vertex, which changes sign with\n"
-  "                        the side (as a mean curvature): each side of a face is coloured by the\n"
-  "                        values seen from it, on a ramp from -M to M (M the largest |NAME|)\n"
+  "                        blue and green to yellow (the largest), both sides alike. The signed\n"
+  "                        curvatures that curvature writes with the side they are seen from\n"
+  "                        (mean_curvature, max_curvature, min_curvature with side_nx, side_ny,\n"
+  "                        side_nz) colour each side of a face by the values seen from it (from\n"
+  "                        the other side H is -H, k1 is -k2), on a ramp over both sides\n"
   "  --uv-checker          draw the texture coordinates (OBJ vt) as a checker of 8 x 8 squares\n"
   "                        per unit, both sides alike: a seam shows where the squares do not meet\n"
   "                        (the faces are split finely enough for the squares, as far as 4 M faces;\n"
@@ -169,32 +173,44 @@ face_colours(Mesh& mesh, const std::vector<double>& values, double& low, double&
   return colours;
 }
 
+// The fields that the curvature tool writes as seen from the side whose
+// unit normal is (side_nx, side_ny, side_nz), and for each the field whose
+// opposite is its value from the other side: H becomes -H, and k1 and k2
+// become -k2 and -k1.
+const std::map<std::string, std::string> other_side_of = {
+  {"mean_curvature", "mean_curvature"}, {"max_curvature", "min_curvature"}, {"min_curvature", "max_curvature"}};
+
 // Each side's colour, by face: front then back. `values` are seen from the
-// side whose normal is `sides` at each vertex; from the side of a dart `d`
-// into `v` the value is multiplied by the sign of that normal dotted with
-// `vertex_normal(d)`. A face's front shows the mean over its corners; its
-// back, seen from the other side everywhere, the opposite. The ramp runs
-// from -M to M, M the largest finite |value|.
+// side whose normal is `sides` at each vertex, `other` (negated) from the
+// other side; a face's corner sees the side of its dart d into the vertex
+// where that normal agrees with vertex_normal(d). Each side shows the mean
+// over its corners, on a ramp over the values from both sides; `fronts`
+// receives the smallest and largest of the fronts' means.
 template <class Mesh>
 std::vector<std::array<CGAL::IO::Color, 2>> side_colours(const Mesh& mesh, const std::vector<double>& values,
+                                                         const std::vector<double>& other,
                                                          const std::array<std::vector<double>, 3>& sides,
-                                                         double& low, double& high)
+                                                         double& low, double& high, std::array<double, 2>& fronts)
 {
-  finite_range(values, low, high);
-  high = std::max(std::abs(low), std::abs(high));
-  low = -high;
+  std::vector<double> both = values;
+  for (double x : other)
+    both.push_back(-x);
+  finite_range(both, low, high);
   std::vector<std::array<CGAL::IO::Color, 2>> colours(mesh.num_faces());
+  fronts = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   for (CGAL_ext::Face_index f : mesh.faces()) {
-    double sum = 0, n = 0;
+    double front = 0, back = 0, n = 0;
     for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
       const std::size_t v = mesh.target(d).idx();
       const auto normal = CGAL_ext::vertex_normal(d, mesh);
       const double dot = CGAL::to_double(normal.x()) * sides[0][v] + CGAL::to_double(normal.y()) * sides[1][v] +
                          CGAL::to_double(normal.z()) * sides[2][v];
-      sum += dot < 0 ? -values[v] : values[v];
+      front += dot < 0 ? -other[v] : values[v];
+      back += dot < 0 ? values[v] : -other[v];
       ++n;
     }
-    colours[f.idx()] = {ramp_colour(sum / n, low, high), ramp_colour(-sum / n, low, high)};
+    colours[f.idx()] = {ramp_colour(front / n, low, high), ramp_colour(back / n, low, high)};
+    fronts = {std::min(fronts[0], front / n), std::max(fronts[1], front / n)};
   }
   return colours;
 }
@@ -304,6 +320,8 @@ int view(int argc, char** argv)
   // Without --scalar every face keeps the style's two side colours.
   const auto np = CGAL_ext::parameters::two_sided_style(style);
   double low = 0, high = 0;
+  std::array<double, 2> fronts{};
+  bool sided = false;
   int checker_levels = 0;
   // The file's counts, before --uv-checker splits the faces.
   const std::size_t faces = mesh.number_of_faces();
@@ -316,13 +334,18 @@ int view(int argc, char** argv)
     checker_levels = split_for_checker(mesh, args.positional[0]);
     show(np.face_color_map(checker_colours(mesh)));
   } else if (args.has("--scalar")) {
-    const std::vector<double> values = vertex_scalars(mesh, args.positional[0], args.value("--scalar", ""));
+    const std::string name = args.value("--scalar", "");
+    const std::vector<double> values = vertex_scalars(mesh, args.positional[0], name);
     const std::array<std::vector<double>, 3> sides{vertex_values(mesh, "side_nx"), vertex_values(mesh, "side_ny"),
                                                    vertex_values(mesh, "side_nz")};
-    if (sides[0].empty() || sides[1].empty() || sides[2].empty()) {
+    const auto other = other_side_of.find(name);
+    const std::vector<double> other_values =
+      other == other_side_of.end() ? std::vector<double>() : vertex_values(mesh, other->second);
+    if (sides[0].empty() || sides[1].empty() || sides[2].empty() || other_values.empty()) {
       show(np.face_color_map(face_colours(mesh, values, low, high)));
     } else {
-      const auto colours = side_colours(mesh, values, sides, low, high);
+      const auto colours = side_colours(mesh, values, other_values, sides, low, high, fronts);
+      sided = true;
       show(np.face_color_map(boost::make_function_property_map<CGAL_ext::Dart>(
         [&](CGAL_ext::Dart d) { return colours[mesh.face(d).idx()][d.is_flipped() ? 1 : 0]; })));
     }
@@ -340,6 +363,8 @@ int view(int argc, char** argv)
     .add("border_edges", border);
   if (args.has("--scalar"))
     line.add("scalar", args.value("--scalar", "")).add("min", low).add("max", high);
+  if (sided)
+    line.add("fronts", examples::Json_array().add(fronts[0]).add(fronts[1]));
   if (args.has("--uv-checker"))
     line.add("uv_checker_levels", checker_levels).add("faces_drawn", mesh.number_of_faces());
   examples::print_json_line(line);

@@ -1,10 +1,10 @@
 # cmake -DXVFB_RUN=<xvfb-run> -DVIEW=<view> -DCHECK=<side_colours> -DINPUT=<mesh>
-#       -DPICTURE=<png> -DSIDES=both|front|ramp|checker [-DOPTIONS=<a;b;...>] [-DEXPECT=<regex>]
+#       -DPICTURE=<png> -DSIDES=both|front|ramp|high|checker [-DOPTIONS=<a;b;...>] [-DEXPECT=<regex>]
 #       -P view_screenshot.cmake
 #
 # Takes a picture of INPUT with the view tool (and its OPTIONS) on a virtual
 # 24-bit screen and checks that it shows both sides' colours, the front's
-# only, both ends of the colour ramp of --scalar, or both colours of
+# only, both ends of the colour ramp of --scalar (or its upper end only), or both colours of
 # --uv-checker (side_colours); with EXPECT, that its JSON line matches.
 file(REMOVE ${PICTURE})
 execute_process(COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${VIEW} ${INPUT} ${OPTIONS} --screenshot ${PICTURE}

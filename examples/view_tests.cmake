@@ -86,8 +86,9 @@ set_tests_properties(view.scalar.klein_distance PROPERTIES FIXTURES_REQUIRED vie
   ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
 # A field seen from a side: the curvature tool's mean curvature, each side of
 # each face coloured by the values seen from it. On the Möbius strip, seen
-# from below, the picture shows both ends of the ramp (the sign changes once
-# round the strip). On the Klein bottle the ramp runs from -M to M, M the
+# from below, the picture shows both ends of the ramp, and the faces' fronts
+# see both signs (the side of the faces' orientation turns over once round
+# the strip). On the Klein bottle the ramp runs from -M to M, M the
 # largest mean curvature over both sides of every vertex: the largest over
 # the vertices of the bottle's orientation double cover (offset by 1e-5 to
 # either side, as for the geodesics), to the cover's offset (within 1e-4).
@@ -102,8 +103,24 @@ add_test(NAME view.scalar.mobius_mean_curvature_sides
           -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${_out}/view_mobius_curvature.ply
           "-DOPTIONS=--scalar;mean_curvature;--features-only;--direction;0,0,-1"
           -DPICTURE=${_out}/view_mobius_curvature.png -DSIDES=ramp
-          "-DEXPECT=\"scalar\":\"mean_curvature\",\"min\":-([0-9.e]+),\"max\":([0-9.e]+)}"
+          "-DEXPECT=\"scalar\":\"mean_curvature\",.*\"fronts\":\\[-[0-9.e]+,[0-9.e]+\\]}"
           -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+# On the torus, oriented outwards, the front of every face sees the mean
+# curvature of the outward normal, (R + 2 r cos θ) / (2 r (R + r cos θ)),
+# from 0.33 (inner equator) to 0.90 (outer): the faces' fronts' means lie
+# within, and the picture of the torus from outside shows the ramp's upper
+# end only (the signs of the side logic).
+add_test(NAME view.scalar.sides_setup_torus
+  COMMAND curvature ${_data}/torus_24x12_quads.obj ${_out}/view_torus_curvature.ply --triangulate)
+set_tests_properties(view.scalar.sides_setup_torus PROPERTIES FIXTURES_SETUP view_sides ENVIRONMENT "${_environment}")
+add_test(NAME view.scalar.torus_mean_curvature_fronts
+  COMMAND ${CMAKE_COMMAND} -DXVFB_RUN=${CGAL_EXT_XVFB_RUN} -DVIEW=$<TARGET_FILE:view>
+          -DCHECK=$<TARGET_FILE:side_colours> -DINPUT=${_out}/view_torus_curvature.ply
+          "-DOPTIONS=--scalar;mean_curvature" -DPICTURE=${_out}/view_torus_curvature.png -DSIDES=high
+          "-DEXPECT=\"min\":-0\\.9[0-9]*,\"max\":0\\.9[0-9]*,\"fronts\":\\[0\\.3[3-9][0-9]*,0\\.(8[5-9]|9)[0-9]*\\]}"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/view_screenshot.cmake)
+set_tests_properties(view.scalar.torus_mean_curvature_fronts PROPERTIES FIXTURES_REQUIRED view_sides
+  ENVIRONMENT "${_environment}" TIMEOUT 120 RESOURCE_LOCK xvfb)
 cgal_ext_compare_figures(view.scalar.klein_mean_curvature_equals_double_cover
   RUN ${CGAL_EXT_XVFB_RUN} -a -s "-screen 0 1280x1024x24" $<TARGET_FILE:view> ${_out}/view_klein_curvature.ply
       --scalar mean_curvature --screenshot ${_out}/view_klein_curvature.png

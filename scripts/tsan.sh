@@ -24,27 +24,35 @@ tbb=$build/onetbb
 
 # instrumented_tbb: <build>/onetbb from the source of the installed libtbb-dev.
 instrumented_tbb() {
-  local version src=$build/tbb-source
+  local package version src=$build/tbb-source
+  package=$(dpkg-query -W -f='${source:Package}' libtbb-dev)
   version=$(dpkg-query -W -f='${source:Version}' libtbb-dev)
   rm -rf "$src" && mkdir -p "$src/lists/partial"
-  # The deb-src lines of the system's own archives: each stanza of its
-  # deb822 sources (URIs x Suites, its Components), and its one-line list.
-  awk 'function flush() { if (uris != "") { n = split(uris, u, " "); m = split(suites, s, " ");
-                            for (i = 1; i <= n; ++i) for (j = 1; j <= m; ++j) print "deb-src", u[i], s[j], comps }
-                          uris = suites = comps = "" }
+  # The deb-src lines of the system's own archives: each enabled stanza of
+  # type deb of its deb822 sources (URIs x Suites, its Components, its
+  # keyring), and its one-line list.
+  awk 'function flush() { if (uris != "" && types ~ /(^| )deb( |$)/ && enabled != "no") {
+                            n = split(uris, u, " "); m = split(suites, s, " ");
+                            for (i = 1; i <= n; ++i) for (j = 1; j <= m; ++j)
+                              print "deb-src", (key != "" ? "[signed-by=" key "] " : "") u[i], s[j], comps }
+                          uris = suites = comps = types = key = enabled = "" }
        FNR == 1 { flush() }
        /^[ \t]*$/ { flush(); next }
+       /^Types:/ { sub(/^Types:[ \t]*/, ""); types = $0 }
        /^URIs:/ { sub(/^URIs:[ \t]*/, ""); uris = $0 }
        /^Suites:/ { sub(/^Suites:[ \t]*/, ""); suites = $0 }
        /^Components:/ { sub(/^Components:[ \t]*/, ""); comps = $0 }
+       /^Signed-By:[ \t]*[^ \t]/ { sub(/^Signed-By:[ \t]*/, ""); key = $0 }
+       /^Enabled:/ { sub(/^Enabled:[ \t]*/, ""); enabled = $0 }
        END { flush() }' /etc/apt/sources.list.d/*.sources /dev/null >"$src/sources.list"
   grep -h '^deb ' /etc/apt/sources.list 2>/dev/null | sed 's/^deb /deb-src /' >>"$src/sources.list" || true
   local apt=(-o Dir::Etc::SourceList="$src/sources.list" -o Dir::Etc::SourceParts=/nonexistent
              -o Dir::State::Lists="$src/lists" -o APT::Sandbox::User=root)
   apt-get "${apt[@]}" update >/dev/null
-  (cd "$src" && apt-get "${apt[@]}" source "onetbb=$version" >/dev/null)
+  (cd "$src" && apt-get "${apt[@]}" source "$package=$version" >/dev/null)
   local tree
-  tree=$(find "$src" -mindepth 1 -maxdepth 1 -type d -name 'onetbb-*' | head -1)
+  tree=$(find "$src" -mindepth 1 -maxdepth 1 -type d -name "$package-*" | head -1)
+  [ -n "$tree" ] || { echo "tsan: apt-get source $package=$version gave no source tree" >&2; exit 2; }
   # Its compiler warnings (ThreadSanitizer does not model atomic_thread_fence)
   # go to the log, which is kept only on a failure.
   { cmake -S "$tree" -B "$src/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTBB_TEST=OFF -DTBB_EXAMPLES=OFF \
@@ -53,7 +61,10 @@ instrumented_tbb() {
     { tail -30 "$build/onetbb.log" >&2; echo "tsan: building the instrumented oneTBB failed" >&2; exit 2; }
   rm -rf "$src" "$build/onetbb.log"
 }
-[ -f "$tbb/lib/cmake/TBB/TBBConfig.cmake" ] || instrumented_tbb
+# (Called in an if's body, not after ||, so that set -e stops at a failing step.)
+if [ ! -f "$tbb/lib/cmake/TBB/TBBConfig.cmake" ]; then
+  instrumented_tbb
+fi
 
 launcher=()
 if command -v ccache >/dev/null 2>&1; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi

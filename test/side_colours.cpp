@@ -1,4 +1,4 @@
-// side_colours PICTURE.png (both|front|ramp|checker)
+// side_colours PICTURE.png (both|front|ramp|high|checker)
 //
 // Counts the pixels of a picture of the view tool that show the front side's
 // colour (blue: blue well above red) and the back side's (orange: red above
@@ -10,7 +10,8 @@
 // scalar (`view --scalar`) must show both ends of the colour ramp, each on at
 // least 0.2 %: its dark violet (red and blue above green) and its yellow (red
 // and green alike, well above blue), which neither side colour nor any edge
-// colour passes for. With "checker", a picture of `view --uv-checker` must
+// colour passes for; with "high", its yellow end only (at least 0.2 %, the
+// violet on under 0.01 %: a field positive on every side in sight). With "checker", a picture of `view --uv-checker` must
 // show both colours of its squares, each on at least 1 %: the dark blue (as
 // the front's) and the cream (red and green above blue, neither orange nor
 // the ramp's yellow).
@@ -26,8 +27,8 @@
 int main(int argc, char* argv[])
 {
   const std::string expect = argc == 3 ? argv[2] : "";
-  if (expect != "both" && expect != "front" && expect != "ramp" && expect != "checker") {
-    std::cerr << "usage: side_colours PICTURE.png (both|front|ramp|checker)\n";
+  if (expect != "both" && expect != "front" && expect != "ramp" && expect != "high" && expect != "checker") {
+    std::cerr << "usage: side_colours PICTURE.png (both|front|ramp|high|checker)\n";
     return 2;
   }
   const QImage image(QString::fromLocal8Bit(argv[1]));
@@ -55,6 +56,7 @@ int main(int argc, char* argv[])
   const bool ok = expect == "both"    ? std::min(f, b) >= 0.02
                   : expect == "front" ? f >= 0.05 && b < 0.001
                   : expect == "ramp"  ? std::min(l, h) >= 0.002
+                  : expect == "high"  ? h >= 0.002 && l < 0.0001
                                       : std::min(f, c) >= 0.01;
   return ok ? 0 : 1;
 }

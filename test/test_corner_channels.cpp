@@ -39,6 +39,7 @@
 #include <opensubdiv/far/topologyDescriptor.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -438,9 +439,11 @@ void expect_offset_carries_channels(const CGAL_ext::Mobius_mesh<typename K::Poin
 
 // Texture coordinates distinct at every corner, and as corner normals each
 // face's own normal, tilted differently at each corner so that no two are
-// equal.
+// equal. With `reverse_first`, the first face is taken the other way round
+// (a Möbius edge on each of its sides, which the offset's orientation
+// removes by reversing it: its normals must turn with it).
 template <class K>
-CGAL_ext::Mobius_mesh<typename K::Point_3> with_uv_and_normals(const Mesh& shape)
+CGAL_ext::Mobius_mesh<typename K::Point_3> with_uv_and_normals(const Mesh& shape, bool reverse_first = false)
 {
   using P = typename K::Point_3;
   CGAL_ext::Mobius_mesh<P> m;
@@ -453,6 +456,8 @@ CGAL_ext::Mobius_mesh<typename K::Point_3> with_uv_and_normals(const Mesh& shape
     for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(shape.halfedge(f), shape))
       faces.back().push_back(v.idx());
   }
+  if (reverse_first)
+    std::reverse(faces[0].begin(), faces[0].end());
   CGAL_ext::polygon_soup_to_mobius_mesh(points, faces, m, CGAL_ext::parameters::keep_orientation(true));
   auto uv = m.template add_corner_channel<UV>("c:uv").first;
   auto normal = m.template add_corner_channel<CGAL_ext::Corner_normal<P>>("c:normal").first;
@@ -474,6 +479,12 @@ TEST(CornerChannels, OffsetsCarryThemOnBothSides)
   {
     SCOPED_TRACE("torus, double");
     expect_offset_carries_channels<test::Kd>(with_uv_and_normals<test::Kd>(torus), 0.1);
+  }
+  {
+    SCOPED_TRACE("torus with a face the other way round, double");
+    const auto m = with_uv_and_normals<test::Kd>(torus, true);
+    ASSERT_TRUE(CGAL_ext::has_mobius_edges(m));
+    expect_offset_carries_channels<test::Kd>(m, 0.1);
   }
   {
     SCOPED_TRACE("Möbius strip, double");

@@ -197,7 +197,9 @@ Vector vertex_offset(Vertex_index v, Dart r, const Mobius_mesh<P>& m, double dis
 ///   exact, e.g. with δ the area-weighted normals of `compute_vertex_normals()`).
 /// \throws Parameter_error if `distance` is not positive and finite (and,
 ///   without `vertex_displacement_map`, at most 1e60), the
-///   mesh has removed elements, a point is not finite, a displacement is zero
+///   mesh has removed elements or a corner channel `corner_normal_name` of a
+///   type it cannot turn (other than the kernel's `Vector_3` and `std::array`
+///   of 3 doubles or floats), a point is not finite, a displacement is zero
 ///   or tangent to the surface, or (without `vertex_displacement_map`) a point
 ///   has a coordinate beyond +-1e60 or the mesh is less than 1e-60 across,
 ///   where unit normals in double overflow or underflow; `out` is then unchanged.
@@ -219,6 +221,7 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
   }
   CGAL_ext::internal::require_no_garbage(mesh, "offset_mesh");
   CGAL_ext::internal::refuse_non_manifold_joins(mesh, "offset_mesh");
+  internal::Offset_corner_sources::require_turnable_normals(mesh);
   if constexpr (unit_normals)
     CGAL_ext::internal::require_coordinates_in_range(mesh, "offset_mesh");
   else
@@ -229,6 +232,7 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
 
   // Orientable components get consistent orientations, so that one shell is one side.
   Mobius_mesh<P> m = mesh;
+  const internal::Reversed_faces<P> before(m, !m.corner_channels().empty());
   CGAL_ext::orient(m);
   std::vector<std::uint32_t> face_component;
   std::vector<bool> orientable;
@@ -270,13 +274,14 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
       lower.push_back(lift(d.halfedge(), false));
       slots.push_back(d.halfedge().idx());
     }
+    const bool reversed = before.reversed(m, f);
     polygons.push_back(upper);
-    corners.add_polygon(slots, false);
+    corners.add_polygon(slots, reversed);
     if (both_sides(f)) {
       std::reverse(lower.begin(), lower.end());
       polygons.push_back(lower);
       std::reverse(slots.begin(), slots.end());
-      corners.add_polygon(slots, true);
+      corners.add_polygon(slots, !reversed);
     }
   }
   std::size_t rim_faces = 0;

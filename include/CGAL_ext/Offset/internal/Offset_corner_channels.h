@@ -13,18 +13,57 @@
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/exceptions.h>
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL_ext {
 namespace internal {
 
+// Which faces of `m` an orientation of it reversed: records each face's
+// first two corners before, and finds them in the other order after. A
+// reversed face keeps its corners' values at their vertices, corner normals
+// included, so those point to the face's back once it is reversed.
+template <class P>
+class Reversed_faces
+{
+public:
+  // Records nothing where `needed` is false (no channel to turn).
+  Reversed_faces(const Mobius_mesh<P>& m, bool needed) : first_(needed ? m.num_faces() : 0)
+  {
+    if (!needed)
+      return;
+    for (Face_index f : m.faces()) {
+      const Dart d = m.halfedge(f);
+      first_[f.idx()] = {m.target(d), m.target(m.next(d))};
+    }
+  }
+  // After the orientation: whether face f runs the other way round now.
+  bool reversed(const Mobius_mesh<P>& m, Face_index f) const
+  {
+    if (first_.empty())
+      return false;
+    const auto& [a, b] = first_[f.idx()];
+    for (Dart d : halfedges_around_face(m.halfedge(f), m))
+      if (m.target(d) == a)
+        return m.target(m.next(d)) != b;
+    return false;
+  }
+
+private:
+  std::vector<std::pair<Vertex_index, Vertex_index>> first_;
+};
+
 // Where each corner of the offset's polygons comes from: for polygon p, the
 // input corner slot of each of its corners in the polygon's order (none for
-// a rim corner), and whether p is the copy of its face on the face's back
-// side (the reversed copy). Kept only where the input has channels.
+// a rim corner), and whether the corner normals of the input point to the
+// other side of p than p's own (p is the copy of its face on the face's back
+// side, or the face was reversed before the copies were made, not both).
+// Kept only where the input has channels.
 class Offset_corner_sources
 {
 public:
@@ -32,12 +71,12 @@ public:
 
   explicit Offset_corner_sources(bool kept) : kept_(kept) {}
 
-  void add_polygon(const std::vector<std::uint32_t>& slots, bool back)
+  void add_polygon(const std::vector<std::uint32_t>& slots, bool normals_turned)
   {
     if (!kept_)
       return;
     slots_.push_back(slots);
-    back_.push_back(back ? 1 : 0);
+    back_.push_back(normals_turned ? 1 : 0);
   }
   void add_rim(std::size_t corners) { add_polygon(std::vector<std::uint32_t>(corners, none), false); }
 
@@ -76,11 +115,25 @@ public:
 private:
   // A corner normal is seen from its face's front: on the copy of a face on
   // its back side it points the other way. The turned values are appended;
-  // those no corner names any longer are dropped.
+  // those no corner names any longer are dropped. (offset_mesh() refuses a
+  // "c:normal" channel of a type not turned here, before any work.)
   template <class P>
   static void turn_back_normals(Mobius_mesh<P>& built, const std::vector<std::uint8_t>& on_back)
   {
-    auto normals = built.template corner_channel<Corner_normal<P>>(corner_normal_name);
+    turn_back<Corner_normal<P>>(built, on_back, [](const auto& n) { return -n; });
+    const auto negate = [](auto a) {
+      for (auto& x : a)
+        x = -x;
+      return a;
+    };
+    turn_back<std::array<double, 3>>(built, on_back, negate);
+    turn_back<std::array<float, 3>>(built, on_back, negate);
+  }
+
+  template <class T, class P, class Negate>
+  static void turn_back(Mobius_mesh<P>& built, const std::vector<std::uint8_t>& on_back, const Negate& negate)
+  {
+    auto normals = built.template corner_channel<T>(corner_normal_name);
     if (!normals)
       return;
     const std::size_t n = normals->number_of_values();
@@ -89,13 +142,30 @@ private:
                          " values, more than the mesh's 32-bit indices hold",
                        "corner normal values", 2 * n, none - 1);
     for (std::size_t i = 0; i < n; ++i)
-      normals->values().push_back(-normals->values()[i]);
+      normals->values().push_back(negate(normals->values()[i]));
     for (Halfedge_index h : built.halfedges())
       if (on_back[h.idx()] && normals->has_value(h))
         normals->set_index(h, normals->index(h) + std::uint32_t(n));
     normals->array()->remove_unused_values();
   }
 
+public:
+  // Refuses a "c:normal" channel whose values the offset could not turn.
+  template <class P>
+  static void require_turnable_normals(const Mobius_mesh<P>& mesh)
+  {
+    const auto& names = mesh.corner_channels();
+    if (std::find(names.begin(), names.end(), corner_normal_name) == names.end() ||
+        mesh.template corner_channel<Corner_normal<P>>(corner_normal_name) ||
+        mesh.template corner_channel<std::array<double, 3>>(corner_normal_name) ||
+        mesh.template corner_channel<std::array<float, 3>>(corner_normal_name))
+      return;
+    throw Parameter_error(std::string("offset_mesh: the corner channel \"") + corner_normal_name +
+                          "\" has values of a type the offset cannot turn to the back side (the kernel's Vector_3 "
+                          "or std::array of 3 doubles or floats)");
+  }
+
+private:
   bool kept_;
   std::vector<std::vector<std::uint32_t>> slots_;
   std::vector<std::uint8_t> back_;
