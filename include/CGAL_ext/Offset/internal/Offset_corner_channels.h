@@ -97,8 +97,11 @@ public:
       std::size_t k = 1;
       for (Dart d : halfedges_around_face(built.halfedge(Face_index(std::uint32_t(p))), built)) {
         const std::uint32_t slot = slots[k++ % slots.size()];
-        source_of[built.corner(d).idx()] = slot == none ? Transfer_sources::no_source : slot;
-        on_back[built.corner(d).idx()] = back_[p];
+        const std::size_t h = built.corner(d).idx();
+        if (h >= on_back.size())
+          continue; // never (a face's corner is a halfedge): GCC 12 at -O3 warns of a write past the end
+        source_of[h] = slot == none ? Transfer_sources::no_source : slot;
+        on_back[h] = back_[p];
         without += slot == none ? 1 : 0;
       }
     }
