@@ -232,7 +232,10 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
 
   // Orientable components get consistent orientations, so that one shell is one side.
   Mobius_mesh<P> m = mesh;
-  const internal::Reversed_faces<P> before(m, !m.corner_channels().empty());
+  // Where the corners of the input carry values (and only there), the
+  // offset's corners are traced back to them.
+  const bool carries_channels = !m.corner_channels().empty();
+  const internal::Reversed_faces<P> before(m, carries_channels);
   CGAL_ext::orient(m);
   std::vector<std::uint32_t> face_component;
   std::vector<bool> orientable;
@@ -260,7 +263,7 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
   // Each face twice (once reversed), or once on an orientable component
   // without `solid`; a rim quad along each border edge where both sides are kept.
   std::vector<std::vector<std::size_t>> polygons;
-  internal::Offset_corner_sources corners(!m.corner_channels().empty());
+  internal::Offset_corner_sources corners(carries_channels);
   auto lift = [&](Halfedge_index corner, bool upper) {
     const Vertex_index v = m.target(Dart(corner, false));
     return 2 * std::size_t(v.idx()) + ((agrees[corner.idx()] != 0) == upper ? 0 : 1);
@@ -272,7 +275,8 @@ Offset_result offset_mesh(const Mobius_mesh<P>& mesh, double distance, Mobius_me
     for (Dart d : CGAL_ext::halfedges_around_face(f, m)) {
       upper.push_back(lift(d.halfedge(), true));
       lower.push_back(lift(d.halfedge(), false));
-      slots.push_back(d.halfedge().idx());
+      if (carries_channels)
+        slots.push_back(d.halfedge().idx());
     }
     const bool reversed = before.reversed(m, f);
     polygons.push_back(upper);
