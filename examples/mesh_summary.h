@@ -42,6 +42,21 @@ Json_array corner_channels_json(const CGAL_ext::Mobius_mesh<P>& mesh)
 // asked to go on without them; what is dropped is named in the JSON line.
 inline const char* const drop_corner_data_flag = "--drop-corner-data";
 
+// --fvar-interpolation: how a tool that follows the limit surface carries
+// corner channels (OpenSubdiv's FVarLinearInterpolation), corners-plus1 by
+// default, as OpenSubdiv's.
+inline CGAL_ext::Face_varying_interpolation face_varying_argument(const Arguments& args)
+{
+  static const Choices<CGAL_ext::Face_varying_interpolation> modes = {
+    {"none", CGAL_ext::Face_varying_interpolation::none},
+    {"corners-only", CGAL_ext::Face_varying_interpolation::corners_only},
+    {"corners-plus1", CGAL_ext::Face_varying_interpolation::corners_plus1},
+    {"corners-plus2", CGAL_ext::Face_varying_interpolation::corners_plus2},
+    {"boundaries", CGAL_ext::Face_varying_interpolation::boundaries},
+    {"all", CGAL_ext::Face_varying_interpolation::all}};
+  return choice_argument("--fvar-interpolation", args.value("--fvar-interpolation", "corners-plus1"), modes);
+}
+
 // --no-tags: a tool that writes a mesh leaves OpenSubdiv's tag lines out of
 // an OBJ output, which CGAL's OBJ reader then takes (it refuses a 't' line);
 // the sharpness and the subdivision options are lost.

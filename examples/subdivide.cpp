@@ -82,13 +82,6 @@ const examples::Choices<CGAL_ext::Crease_method> crease_methods = {
   {"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}};
 const examples::Choices<CGAL_ext::Triangle_subdivision> triangle_rules = {
   {"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}};
-const examples::Choices<CGAL_ext::Face_varying_interpolation> fvar_modes = {
-  {"none", CGAL_ext::Face_varying_interpolation::none},
-  {"corners-only", CGAL_ext::Face_varying_interpolation::corners_only},
-  {"corners-plus1", CGAL_ext::Face_varying_interpolation::corners_plus1},
-  {"corners-plus2", CGAL_ext::Face_varying_interpolation::corners_plus2},
-  {"boundaries", CGAL_ext::Face_varying_interpolation::boundaries},
-  {"all", CGAL_ext::Face_varying_interpolation::all}};
 
 struct Settings
 {
@@ -126,8 +119,7 @@ Settings parse(int argc, char** argv)
   s.boundary = examples::choice_option(args, "--boundary", boundaries);
   s.crease_method = examples::choice_option(args, "--crease-method", crease_methods);
   s.triangles = examples::choice_option(args, "--triangles", triangle_rules);
-  s.fvar = examples::choice_argument("--fvar-interpolation", args.value("--fvar-interpolation", "corners-plus1"),
-                                     fvar_modes);
+  s.fvar = examples::face_varying_argument(args);
   s.write_tags = !args.has(examples::no_tags_flag);
   s.drop_corner_data = args.has(examples::drop_corner_data_flag);
   if (args.has("--max-memory")) {

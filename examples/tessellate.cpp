@@ -1,14 +1,17 @@
 // tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]
+//   [--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]
 //
 // Samples the Catmull–Clark (or Loop) limit surface of a polygon (or
 // triangle) mesh (.obj, .off, .ply) uniformly, N segments along every base
 // edge, or with each edge's rate chosen from a tolerance T, with
 // OpenSubdiv's Bfr::Tessellation samples, and writes the result: watertight (faces share
 // the samples of their common edges), borders kept, a one-sided surface
-// one-sided. Prints one line of JSON, the counts of mesh_info and the time:
+// one-sided. Texture coordinates and corner normals are carried, each on its
+// own limit surface at the same samples, seams kept. Prints one line of
+// JSON, the counts of mesh_info, the channels and the time:
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"mobius_edges":M,
 //    "orientable":...,"closed":...,"components":C,"euler_characteristic":X,
-//    "valid":true,"seconds":S}
+//    "valid":true,"corner_channels":[...],"seconds":S}
 // A bad file or option: one line on stderr, exit status 2.
 
 #include "arguments.h"
@@ -29,7 +32,8 @@ namespace {
 
 const examples::Tool_usage usage{
   "tessellate",
-  "tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]",
+  "tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner] "
+  "[--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]",
   "Reads a polygon mesh (.obj, .off, .ply) and writes a mesh of its limit surface, each face\n"
   "sampled as OpenSubdiv's Bfr::Tessellation samples it:\n"
   "  --rate      segments along every base edge, 1 to 64 (a quad becomes N x N quads, a\n"
@@ -41,6 +45,11 @@ const examples::Tool_usage usage{
   "              off by a few tolerances: their two directions add up).\n"
   "  --scheme    catmull-clark (default) or loop (every face a triangle).\n"
   "  --boundary  border rule: edge-only (default) or edge-and-corner.\n"
+  "  --fvar-interpolation  which texture coordinates and normals stay linear (OpenSubdiv's\n"
+  "              FVarLinearInterpolation): none, corners-only, corners-plus1 (the default),\n"
+  "              corners-plus2, boundaries or all (bilinear in each face).\n"
+  "  --drop-corner-data  go on without the input's texture coordinates and normals where\n"
+  "              OUT's format cannot hold them (named in the JSON line).\n"
   "Shared vertex and edge samples are computed once, so the result is watertight, with the\n"
   "input's borders, Euler characteristic and orientability. Prints its counts and the time\n"
   "taken as one line of JSON.\n"};
@@ -59,7 +68,8 @@ int tessellate(int argc, char** argv)
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   namespace S = CGAL_ext::Subdivision;
   const examples::Arguments args =
-    examples::parse_arguments(argc, argv, {"--rate", "--tolerance", "--scheme", "--boundary"}, {});
+    examples::parse_arguments(argc, argv, {"--rate", "--tolerance", "--scheme", "--boundary", "--fvar-interpolation"},
+                              {examples::drop_corner_data_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
   if (args.has("--rate") == args.has("--tolerance"))
@@ -70,12 +80,16 @@ int tessellate(int argc, char** argv)
     throw examples::Usage_error("--tolerance must be positive and finite");
   const auto boundary = examples::choice_argument("--boundary", args.value("--boundary", "edge-only"), boundaries);
   const Scheme scheme = examples::choice_argument("--scheme", args.value("--scheme", "catmull-clark"), schemes);
+  const CGAL_ext::Face_varying_interpolation fvar = examples::face_varying_argument(args);
 
   Mesh mesh;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  // Whether OUT's format holds the corner channels is known now.
+  const examples::Json_array dropped = examples::drop_corner_channels_if(
+    mesh, examples::why_output_cannot_hold_corner_data(args.positional[1], mesh), args.has(examples::drop_corner_data_flag));
   const auto start = std::chrono::steady_clock::now();
-  const auto np = CGAL_ext::parameters::boundary_interpolation(boundary);
+  const auto np = CGAL_ext::parameters::boundary_interpolation(boundary).face_varying_interpolation(fvar);
   const auto run = [&](auto mask) {
     using Mask = decltype(mask);
     return rate > 0 ? S::tessellate<Mask>(mesh, rate, np) : S::tessellate_to_tolerance<Mask>(mesh, tolerance, np);
@@ -84,6 +98,9 @@ int tessellate(int argc, char** argv)
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], out);
   examples::Json_object line = examples::mesh_summary(out);
+  line.add("corner_channels", examples::corner_channels_json(out));
+  if (args.has(examples::drop_corner_data_flag))
+    line.add("corner_channels_dropped", dropped);
   line.add("seconds", seconds);
   examples::print_json_line(line);
   return 0;

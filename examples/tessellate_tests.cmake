@@ -17,7 +17,7 @@ foreach(_file ${_files})
   cgal_ext_stated_topology(${_file})
   add_test(NAME tessellate.${_name} COMMAND tessellate ${_file} ${_out}/tessellate_${_name}.obj --rate 3)
   set_tests_properties(tessellate.${_name} PROPERTIES PASS_REGULAR_EXPRESSION
-    "\"border_loops\":${_border_loops},.*\"orientable\":${_orientable},.*\"euler_characteristic\":${_chi},\"valid\":true,\"seconds\":")
+    "\"border_loops\":${_border_loops},.*\"orientable\":${_orientable},.*\"euler_characteristic\":${_chi},\"valid\":true,\"corner_channels\":\\[\\],\"seconds\":")
 endforeach()
 
 # The Möbius strip of 100 vertices, 180 edges and 80 quads at rate 3:
@@ -63,3 +63,31 @@ cgal_ext_tool_fails(tessellate.fails.rate_and_tolerance tessellate
 cgal_ext_tool_fails(tessellate.fails.tolerance tessellate
   "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--tolerance;0"
   "^tessellate: --tolerance must be positive and finite; usage: [^\n]+\n$")
+
+# Texture coordinates and normals (OBJ vt/vn) are carried, each on its own
+# limit surface: the cube's uv net is a disc of 14 values, 6 quads and 19
+# edges (7 seams cut open); at rate 2 every edge gains a sample and every
+# quad one inside, 14 + 19 + 6 = 39 values, each seam two seam edges (14).
+# Its normals are 6 quads apart: 6 x (4 + 4 + 1) = 54 values, the 12 edges'
+# halves seams (24). mesh_info reads them back from the file.
+set(_cube_data ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube.obj)
+set(_tessellated_channels "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":39,\"seam_edges\":14,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\},\\{\"name\":\"c:normal\",\"values\":54,\"seam_edges\":24,\"corners_without_value\":0,\"mobius_edges_continuous\":0,\"mobius_edges_seamed\":0\\}\\]")
+add_test(NAME tessellate.corner_data_obj_to_obj
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:tessellate> -DMESH_INFO=$<TARGET_FILE:mesh_info>
+                 "-DARGS=${_cube_data};${_out}/tessellate_cube_uv.obj;--rate;2;--fvar-interpolation;corners-plus2"
+                 -DOUT=${_out}/tessellate_cube_uv.obj "-DEXPECT=${_tessellated_channels}"
+                 "-DEXPECT_INFO=\"faces\":24,.*${_tessellated_channels}" -DVT=39
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/corner_data_tool.cmake)
+# PLY holds a value per vertex: the cube's seams are refused before the
+# work, or left out with --drop-corner-data, which the line reports; a mode
+# that is none of OpenSubdiv's is refused.
+cgal_ext_tool_fails(tessellate.fails.corner_data_seams_not_in_ply tessellate
+  "${_cube_data};${_out}/tessellate_cube_uv.ply;--rate;2"
+  "^tessellate: the input's corner channels \\(c:uv, c:normal\\) cannot be carried: [^\n]*--drop-corner-data goes on without them\n$")
+add_test(NAME tessellate.corner_data_dropped COMMAND tessellate ${_cube_data} ${_out}/tessellate_cube_uv.ply --rate 2
+         --drop-corner-data)
+set_tests_properties(tessellate.corner_data_dropped PROPERTIES PASS_REGULAR_EXPRESSION
+  "\"corner_channels\":\\[\\],\"corner_channels_dropped\":\\[\"c:uv\",\"c:normal\"\\],")
+cgal_ext_tool_fails(tessellate.fails.fvar_mode tessellate
+  "${_cube_data};${_out}/x.obj;--rate;2;--fvar-interpolation;smooth"
+  "^tessellate: --fvar-interpolation 'smooth' is not [^\n]+\n$")

@@ -9,6 +9,7 @@
 #define CGAL_EXT_LIMIT_SURFACE_H
 
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
+#include <CGAL_ext/Limit_surface/internal/Channel_cage.h>
 #include <CGAL_ext/Limit_surface/internal/Face_cache.h>
 #include <CGAL_ext/Limit_surface/internal/Loop_patch_builder.h>
 #include <CGAL_ext/Limit_surface/internal/Patch_builder.h>
@@ -17,6 +18,7 @@
 #include <CGAL_ext/Limit_surface/internal/Projection.h>
 #include <CGAL_ext/Limit_surface/internal/Tessellation.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Linear_values.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Masks.h>
@@ -97,6 +99,9 @@ struct Limit_surface_location
   typename Kernel::Vector_3 normal;     ///< the unit normal there, seen from `face`'s orientation
   typename Kernel::FT squared_distance; ///< from the query to `point`
 };
+
+template <class Mask, class P, class T>
+class Corner_channel_limit_surface;
 
 /// \ingroup PkgSubdivision
 /// \brief The limit surface of a mesh under `Mask` (`Catmull_clark_mask` or
@@ -184,6 +189,10 @@ public:
   ///   \cgalParamNBegin{vertex_point_map}
   ///     \cgalParamDefault{`mesh.points()`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_varying_interpolation}
+  ///     \cgalParamDescription{how `tessellate()` and `tessellate_to_tolerance()` carry the mesh's corner channels (see `Corner_channel_limit_surface`)}
+  ///     \cgalParamDefault{`Face_varying_interpolation::corners_plus1`, as OpenSubdiv's}
+  ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// \throws Parameter_error if `mesh` has removed elements, a sharpness is
   /// NaN or negative, the boundary interpolation is `none`, an approximation
@@ -212,6 +221,9 @@ public:
         if (mesh.degree(f) != 3)
           throw Parameter_error("Limit_surface: face f" + std::to_string(f.idx()) +
                                 " is not a triangle, which Loop's limit surface needs");
+    fvar_mode_ = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation),
+                                      Face_varying_interpolation::corners_plus1);
+    surface_options_ = options;
     base_.mesh = mesh;
     const auto points = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
     for (Vertex_index v : mesh.vertices())
@@ -237,15 +249,10 @@ public:
     std::size_t list = 0;
     FT su = u, sv = v, scale = FT(1);
     if (patches.sub_faces.size() > 1) { // Bfr's quad sub-faces
-      const int n = int(patches.sub_faces.size()), row = internal::sub_face_row(n);
-      int ut = int(CGAL::to_double(u) + 0.25), vt = int(CGAL::to_double(v) + 0.25);
-      ut = std::max(0, std::min(ut, row - 1));
-      vt = std::max(0, vt);
-      if (vt * row + ut >= n)
-        vt = n / row - 1 + (ut < n % row ? 1 : 0);
-      list = std::size_t(vt * row + ut);
-      su = FT(2) * (u - FT(ut));
-      sv = FT(2) * (v - FT(vt));
+      const internal::Sub_face_point<FT> at = internal::locate_sub_face(int(patches.sub_faces.size()), u, v);
+      list = std::size_t(at.k);
+      su = at.su;
+      sv = at.sv;
       scale = FT(2);
     }
     // Half-open squares, as Bfr's quadtree descends (a parameter on the
@@ -337,8 +344,8 @@ public:
   /// triangle).
   ///
   /// Shared samples are computed once: the limit point of each base vertex
-  /// (`limit_point()` where all faces around it are quads, or under
-  /// `Loop_mask` where no semi-sharpness is left at it, else the
+  /// (`limit_point()` where no semi-sharp edge or sharpness is at it and,
+  /// under `Catmull_clark_mask`, all faces around it are quads, else the
   /// evaluation at the corner of the first face that reaches it), the
   /// `rate` − 1 samples inside each base edge (evaluated from the first face
   /// that reaches it, reused in reverse order by the face across, in the
@@ -413,15 +420,14 @@ private:
     // limit there, else the corner evaluation (Bfr's limit point):
     // limit_point() reads quad rings only (Catmull–Clark), and takes a
     // semi-sharp vertex's crease or corner rule at once where the surface
-    // reaches it only after the sharpness has decayed (Loop).
+    // reaches it only after the sharpness has decayed (both schemes).
     const auto limit_point_is_the_limit = [&](Vertex_index v) {
-      if constexpr (is_loop) {
-        if (Crease::is_semi_sharp(base_.vertex_sharpness(v)))
+      if (Crease::is_semi_sharp(base_.vertex_sharpness(v)))
+        return false;
+      for (Dart d : CGAL_ext::halfedges_around_target(m.halfedge(v), m))
+        if (Crease::is_semi_sharp(base_.edge_sharpness(d)))
           return false;
-        for (Dart d : CGAL_ext::halfedges_around_target(m.halfedge(v), m))
-          if (Crease::is_semi_sharp(base_.edge_sharpness(d)))
-            return false;
-      } else {
+      if constexpr (!is_loop) {
         for (Face_index g : CGAL_ext::faces_around_target(m.halfedge(v), m))
           if (g != Face_index() && m.degree(g) != 4)
             return false;
@@ -431,8 +437,47 @@ private:
     const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
       return limit_point_is_the_limit(v) ? P(limit_point<Mask>(v, m, np)) : evaluated;
     };
-    return internal::Limit_tessellator<Limit_surface, P, decltype(corner_point)>(*this, m, rates, corner_point, is_loop)
-      .run();
+    CGAL_ext::internal::require_interpolated_channels<FT>(m, "Limit_surface::tessellate");
+    internal::Limit_tessellator<Limit_surface, P, decltype(corner_point)> tessellator(*this, m, rates, corner_point,
+                                                                                     is_loop);
+    Mobius_mesh<P> out = tessellator.run();
+    carry_corner_channels(rates, tessellator.facets(), out);
+    return out;
+  }
+
+  // Each corner channel of the mesh on the tessellation: its limit surface
+  // sampled where the mesh's is, each facet corner taking the value its
+  // face sees there (so a seam stays a seam).
+  void carry_corner_channels(const internal::Tessellation_rates& rates,
+                             const std::vector<std::vector<std::size_t>>& facets, Mobius_mesh<P>& out) const
+  {
+    const auto& m = base_.mesh;
+    const auto np = parameters::boundary_interpolation(options_.boundary)
+                      .crease_method(options_.crease)
+                      .face_varying_interpolation(fvar_mode_);
+    for (const std::string& name : m.corner_channels()) {
+      bool carried = false;
+      CGAL_ext::internal::for_each_interpolated_channel_type<Kernel>([&](auto tag) {
+        using T = typename decltype(tag)::type;
+        if constexpr (CGAL_ext::internal::Channel_coordinates<Kernel, T>::defined) {
+          if (carried || !m.template corner_channel<T>(name))
+            return;
+          carried = true;
+          auto [indices, values] = Corner_channel_limit_surface<Mask, P, T>(m, name, np, surface_options_).tessellated(rates);
+          auto channel = out.template add_corner_channel<T>(name).first;
+          channel.values() = std::move(values);
+          for (Face_index f : out.faces()) {
+            const std::vector<std::size_t>& facet = facets[f.idx()];
+            for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out)) {
+              const std::size_t c = std::size_t(std::find(facet.begin(), facet.end(), out.target(d).idx()) - facet.begin());
+              channel.set_index(out.corner(d), std::uint32_t(indices[f.idx()][c]));
+            }
+          }
+        }
+      });
+      if (!carried)
+        throw Parameter_error("Limit_surface::tessellate: corner channel \"" + name + "\" cannot be evaluated");
+    }
   }
 
   struct Face_patches
@@ -527,6 +572,8 @@ private:
 
   internal::Level_mesh<P> base_;
   internal::Limit_options options_;
+  Limit_surface_options surface_options_;
+  Face_varying_interpolation fvar_mode_ = Face_varying_interpolation::corners_plus1;
   internal::Face_cache<Face_patches> faces_;
   int projection_rate_ = 4;
   int max_tessellation_rate_ = 64;
@@ -591,5 +638,8 @@ closest_point_on_limit(const Mobius_mesh<P>& mesh, const P& query, const NP& np 
 
 } // namespace Subdivision
 } // namespace CGAL_ext
+
+// The limit surfaces of corner channels, which tessellate() carries.
+#include <CGAL_ext/Limit_surface/Corner_channel_limit_surface.h>
 
 #endif // CGAL_EXT_LIMIT_SURFACE_H

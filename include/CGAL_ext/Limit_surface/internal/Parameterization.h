@@ -10,6 +10,9 @@
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_PARAMETERIZATION_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_PARAMETERIZATION_H
 
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -23,6 +26,29 @@ inline int sub_face_row(int n) { return n < 10 ? (2 + (n > 4 ? 1 : 0)) : (1 + in
 // The tile of sub-face k of an n-gon: the corner (u, v) of its unit tile,
 // whose lower-left quarter the sub-face covers.
 inline std::array<int, 2> sub_face_tile(int n, int k) { return {k % sub_face_row(n), k / sub_face_row(n)}; }
+
+// The sub-face of an n-gon (n != 4) that parameter (u, v) lies in, and the
+// parameter (su, sv) there: the nearest tile (a parameter on the line
+// between two sub-faces belongs to the upper one, as Bfr's quadtree
+// descends), held inside the layout; (su, sv) lies in [0, 1]² for a (u, v)
+// of the face's domain.
+template <class FT>
+struct Sub_face_point
+{
+  int k;
+  FT su, sv;
+};
+template <class FT>
+Sub_face_point<FT> locate_sub_face(int n, const FT& u, const FT& v)
+{
+  const int row = sub_face_row(n);
+  int ut = int(CGAL::to_double(u) + 0.25), vt = int(CGAL::to_double(v) + 0.25);
+  ut = std::max(0, std::min(ut, row - 1));
+  vt = std::max(0, vt);
+  if (vt * row + ut >= n)
+    vt = n / row - 1 + (ut < n % row ? 1 : 0);
+  return {vt * row + ut, FT(2) * (u - FT(ut)), FT(2) * (v - FT(vt))};
+}
 
 // Whether a face of `sides` sides is parameterised over a triangle, (0, 0),
 // (1, 0), (0, 1) (a triangle under Loop: `triangle_domain`).

@@ -86,6 +86,13 @@ public:
     return build();
   }
 
+  // After run(): the corners of each facet of the result (facet f is face f
+  // of the result), as sample ids in the order the facet was made; the same
+  // at the same rates on another mesh of the same faces (a channel's cage).
+  const std::vector<std::vector<std::size_t>>& facets() const { return facets_; }
+  // After run(): the point of each sample id.
+  const std::vector<P>& points() const { return points_; }
+
 private:
   // One face: its corners' darts and samples, and the normals of its
   // boundary samples seen from it.
