@@ -1593,15 +1593,30 @@ TEST(CornerChannels, TessellationRefusesAChannelItCannotCarry)
     if (!m.is_border(h))
       labels.set_index(h, 0);
   EXPECT_THROW(S::tessellate<S::Catmull_clark_mask>(m, 2), CGAL_ext::Parameter_error);
+  EXPECT_THROW(S::tessellate_to_tolerance<S::Catmull_clark_mask>(m, 0.01), CGAL_ext::Parameter_error);
   m.remove_corner_channel(labels);
+  // The channel surface refuses what Limit_surface refuses, in the linear mode too.
+  auto uv = m.add_corner_channel<UV>("c:uv").first;
+  uv.values() = {UV{0.0, 0.0}};
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    if (!m.is_border(h))
+      uv.set_index(h, 0);
+  using Linear = S::Corner_channel_limit_surface<S::Loop_mask, Point, UV>;
+  EXPECT_THROW(Linear(m, "c:uv", CGAL_ext::parameters::face_varying_interpolation(Face_varying_interpolation::all)),
+               CGAL_ext::Parameter_error); // quads under Loop
+  using Smooth = S::Corner_channel_limit_surface<S::Catmull_clark_mask, Point, UV>;
+  EXPECT_THROW(Smooth(m, "c:uv", CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none)),
+               CGAL_ext::Parameter_error);
+  EXPECT_THROW(Smooth(m, "c:label"), CGAL_ext::Parameter_error); // removed
+  m.remove_corner_channel(uv);
   EXPECT_EQ(S::tessellate<S::Catmull_clark_mask>(m, 2).number_of_faces(), 4u * m.number_of_faces());
 }
 
 // Exact where the surface is polynomial: on a flat grid whose channel is
 // the grid's own coordinates (i / n, j / n), every patch a bicubic
 // B-spline (borders extrapolated), the channel's limit at (u, v) of face
-// (i, j) is ((i + u) / n, (j + v) / n), exactly, in an exact kernel; the
-// same channel in double agrees to rounding.
+// (i, j) is ((i + u) / n, (j + v) / n), exactly, in an exact kernel, and
+// its derivatives the grid's steps.
 TEST(CornerChannels, LimitSurfaceIsExactWhereLinear)
 {
   using KE = CGAL::Exact_predicates_exact_constructions_kernel;
@@ -1638,6 +1653,8 @@ TEST(CornerChannels, LimitSurfaceIsExactWhereLinear)
       const KE::Point_2 expected = KE::Point_2(corner0.x() / n, corner0.y() / n) + along * fu + across * fv;
       EXPECT_EQ(e.value, expected) << "face " << f.idx() << " at (" << u << "/7, " << v << "/7)";
       EXPECT_EQ(e.du[0], along.x());
+      EXPECT_EQ(e.du[1], along.y());
+      EXPECT_EQ(e.dv[0], across.x());
       EXPECT_EQ(e.dv[1], across.y());
     }
   }

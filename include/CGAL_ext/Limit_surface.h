@@ -362,11 +362,18 @@ public:
   /// for each halfedge of a face the normal at its target seen from that
   /// face's orientation (as `compute_corner_normals()` writes them), which
   /// is what a renderer wants on a one-sided surface.
-  /// \throws Parameter_error if `rate` is not positive.
+  ///
+  /// Corner channels (texture coordinates, corner normals) are carried,
+  /// each sampled on its own limit surface (`Corner_channel_limit_surface`)
+  /// at the same samples, with the constructor's `face_varying_interpolation`:
+  /// a sample on a seam has a value per side.
+  /// \throws Parameter_error if `rate` is not positive, or a corner channel
+  /// has values without a linear combination (before any work).
   Mobius_mesh<P> tessellate(int rate) const
   {
     if (rate < 1)
       throw Parameter_error("Limit_surface::tessellate: the rate " + std::to_string(rate) + " is not positive");
+    CGAL_ext::internal::require_interpolated_channels<FT>(base_.mesh, "Limit_surface::tessellate");
     return tessellate_at(
       internal::Tessellation_rates::uniform(base_.mesh.number_of_edges(), base_.mesh.number_of_faces(), rate));
   }
@@ -402,12 +409,15 @@ public:
   /// the samples of each edge by a strip of triangles. Shared samples, the
   /// normals, and the orientation of the facets are as in `tessellate()`:
   /// the result is watertight and a one-sided surface stays one-sided.
-  /// \throws Parameter_error if `tolerance` is not positive and finite.
+  /// Corner channels are carried as by `tessellate()`.
+  /// \throws Parameter_error if `tolerance` is not positive and finite, or
+  /// a corner channel has values without a linear combination (before any work).
   Mobius_mesh<P> tessellate_to_tolerance(double tolerance) const
   {
     if (!(tolerance > 0) || !std::isfinite(tolerance))
       throw Parameter_error("Limit_surface::tessellate_to_tolerance: the tolerance " + std::to_string(tolerance) +
                             " is not positive and finite");
+    CGAL_ext::internal::require_interpolated_channels<FT>(base_.mesh, "Limit_surface::tessellate_to_tolerance");
     return tessellate_at(internal::tolerance_rates(*this, base_.mesh, tolerance, max_tessellation_rate_, is_loop));
   }
 
@@ -437,7 +447,6 @@ private:
     const auto corner_point = [&](Vertex_index v, Face_index, const P& evaluated) {
       return limit_point_is_the_limit(v) ? P(limit_point<Mask>(v, m, np)) : evaluated;
     };
-    CGAL_ext::internal::require_interpolated_channels<FT>(m, "Limit_surface::tessellate");
     internal::Limit_tessellator<Limit_surface, P, decltype(corner_point)> tessellator(*this, m, rates, corner_point,
                                                                                      is_loop);
     Mobius_mesh<P> out = tessellator.run();
@@ -476,7 +485,9 @@ private:
         }
       });
       if (!carried)
-        throw Parameter_error("Limit_surface::tessellate: corner channel \"" + name + "\" cannot be evaluated");
+        // require_interpolated_channels() refused the others before the work.
+        throw Parameter_error("Limit_surface::tessellate: internal error, corner channel \"" + name +
+                              "\" has a value type without coordinates");
     }
   }
 

@@ -18,6 +18,7 @@
 
 #include <CGAL/Kernel_traits.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -113,6 +114,7 @@ public:
     if (!channel)
       throw Parameter_error(std::string(function) + ": the mesh has no corner channel \"" + name +
                             "\" with values of the type asked for");
+    check_options(mesh, np, options);
     const std::vector<std::uint32_t> user = internal::base_corners(function, mesh, *channel);
     const Face_varying_interpolation mode = pm::choose_parameter(
       pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation), Face_varying_interpolation::corners_plus1);
@@ -165,12 +167,15 @@ private:
     Values value, du, dv;
   };
 
-  Coordinate_evaluation evaluate_coordinates(Face_index f, const FT& u, const FT& v) const
+  // The coordinates of lanes [first_lane, last_lane) (all of a linear
+  // channel's); the others are left as they are.
+  Coordinate_evaluation evaluate_coordinates(Face_index f, const FT& u, const FT& v, std::size_t first_lane = 0,
+                                             std::size_t last_lane = std::size_t(-1)) const
   {
     if (linear_)
       return evaluate_linear(f, u, v);
-    Coordinate_evaluation e;
-    for (std::size_t lane = 0; lane < lanes_.size(); ++lane) {
+    Coordinate_evaluation e{};
+    for (std::size_t lane = first_lane; lane < (std::min)(last_lane, lanes_.size()); ++lane) {
       const typename Limit_surface<Mask, P>::Evaluation r = lanes_[lane]->evaluate(f, u, v);
       const FT p[3] = {r.point.x(), r.point.y(), r.point.z()};
       const FT du[3] = {r.du.x(), r.du.y(), r.du.z()}, dv[3] = {r.dv.x(), r.dv.y(), r.dv.z()};
@@ -181,6 +186,22 @@ private:
       }
     }
     return e;
+  }
+
+  // What Limit_surface refuses, refused here too, for a linear channel as well.
+  template <class NP>
+  static void check_options(const Mobius_mesh<P>& mesh, const NP& np, const Limit_surface_options& options)
+  {
+    if (CGAL_ext::internal::boundary_interpolation_of(np) == Boundary_interpolation::none)
+      throw Parameter_error("Corner_channel_limit_surface: Boundary_interpolation::none is not supported");
+    if ((std::max)(options.approx_level_smooth, options.approx_level_sharp) > Limit_surface<Mask, P>::max_approximation_level)
+      throw Parameter_error("Corner_channel_limit_surface: an approximation level is above " +
+                            std::to_string(Limit_surface<Mask, P>::max_approximation_level));
+    if constexpr (is_loop)
+      for (Face_index f : mesh.faces())
+        if (mesh.degree(f) != 3)
+          throw Parameter_error("Corner_channel_limit_surface: face f" + std::to_string(f.idx()) +
+                                " is not a triangle, which Loop's limit surface needs");
   }
 
   // Coordinates first .. first + 2 of the channel as a surface that the
@@ -195,7 +216,7 @@ private:
 
     Evaluation evaluate(Face_index f, const FT& u, const FT& v) const
     {
-      const Values c = channel->evaluate_coordinates(f, u, v).value;
+      const Values c = channel->evaluate_coordinates(f, u, v, first / 3, first / 3 + 1).value;
       const auto at = [&](std::size_t i) { return first + i < dimension ? c[first + i] : FT(0); };
       Evaluation e;
       e.point = P(at(0), at(1), at(2));
