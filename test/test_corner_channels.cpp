@@ -588,40 +588,48 @@ struct Corner
   UV uv;
 };
 
+// OpenSubdiv's refiner of `reference` (faces, texture coordinates as
+// channel 0), with the tags and options of `s` and the mode `mode`.
+std::unique_ptr<Far::TopologyRefiner> refiner_with_uv(const Shape& reference, const Shape& s, bool loop,
+                                                      Face_varying_interpolation mode)
+{
+  std::vector<int> sizes, indices, uv_indices;
+  for (std::size_t f = 0; f < reference.faces.size(); ++f) {
+    sizes.push_back(int(reference.faces[f].size()));
+    indices.insert(indices.end(), reference.faces[f].begin(), reference.faces[f].end());
+    uv_indices.insert(uv_indices.end(), reference.uv_faces[f].begin(), reference.uv_faces[f].end());
+  }
+  Far::TopologyDescriptor desc;
+  desc.numVertices = int(reference.points.size());
+  desc.numFaces = int(reference.faces.size());
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  const std::vector<int> crease_indices = reference.crease_indices();
+  desc.numCreases = int(reference.crease_values.size());
+  desc.creaseVertexIndexPairs = crease_indices.data();
+  desc.creaseWeights = reference.crease_values.data();
+  desc.numCorners = int(reference.corners.size());
+  desc.cornerVertexIndices = reference.corners.data();
+  desc.cornerWeights = reference.corner_values.data();
+  Far::TopologyDescriptor::FVarChannel channel;
+  channel.numValues = int(reference.uvs.size());
+  channel.valueIndices = uv_indices.data();
+  desc.numFVarChannels = 1;
+  desc.fvarChannels = &channel;
+  Sdc::Options options = test::opensubdiv_options(s.boundary, s.crease_method);
+  options.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(int(mode)));
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  return std::unique_ptr<Far::TopologyRefiner>(
+    Factory::Create(desc, Factory::Options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, options)));
+}
+
 // OpenSubdiv's last level's corners after `levels` steps.
 // With `limit`, the values are their limits (PrimvarRefiner::LimitFaceVarying()
 // on the last level, which needs its full topology).
 std::vector<Corner> opensubdiv_corners(const Shape& s, Sdc::SchemeType type, int levels, Face_varying_interpolation mode,
                                        bool limit = false)
 {
-  std::vector<int> sizes, indices, uv_indices;
-  for (std::size_t f = 0; f < s.faces.size(); ++f) {
-    sizes.push_back(int(s.faces[f].size()));
-    indices.insert(indices.end(), s.faces[f].begin(), s.faces[f].end());
-    uv_indices.insert(uv_indices.end(), s.uv_faces[f].begin(), s.uv_faces[f].end());
-  }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = int(s.points.size());
-  desc.numFaces = int(s.faces.size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  desc.numCreases = int(s.crease_values.size());
-  const std::vector<int> crease_indices = s.crease_indices();
-  desc.creaseVertexIndexPairs = crease_indices.data();
-  desc.creaseWeights = s.crease_values.data();
-  desc.numCorners = int(s.corners.size());
-  desc.cornerVertexIndices = s.corners.data();
-  desc.cornerWeights = s.corner_values.data();
-  Far::TopologyDescriptor::FVarChannel channel;
-  channel.numValues = int(s.uvs.size());
-  channel.valueIndices = uv_indices.data();
-  desc.numFVarChannels = 1;
-  desc.fvarChannels = &channel;
-  Sdc::Options options = test::opensubdiv_options(s.boundary, s.crease_method);
-  // The enums list the modes in the same order.
-  options.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(int(mode)));
-  std::unique_ptr<Far::TopologyRefiner> refiner(Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(
-    desc, Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(type, options)));
+  const std::unique_ptr<Far::TopologyRefiner> refiner = refiner_with_uv(s, s, type == Sdc::SCHEME_LOOP, mode);
   Far::TopologyRefiner::UniformOptions uniform(levels);
   uniform.fullTopologyInLastLevel = limit;
   refiner->RefineUniform(uniform);
@@ -1309,41 +1317,6 @@ struct Channel_gaps
 {
   double value = 0, derivatives = 0;
 };
-
-// OpenSubdiv's refiner of `reference` (faces, texture coordinates as
-// channel 0), with the tags and options of `s` and the mode `mode`.
-std::unique_ptr<Far::TopologyRefiner> refiner_with_uv(const Shape& reference, const Shape& s, bool loop,
-                                                      Face_varying_interpolation mode)
-{
-  std::vector<int> sizes, indices, uv_indices;
-  for (std::size_t f = 0; f < reference.faces.size(); ++f) {
-    sizes.push_back(int(reference.faces[f].size()));
-    indices.insert(indices.end(), reference.faces[f].begin(), reference.faces[f].end());
-    uv_indices.insert(uv_indices.end(), reference.uv_faces[f].begin(), reference.uv_faces[f].end());
-  }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = int(reference.points.size());
-  desc.numFaces = int(reference.faces.size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  const std::vector<int> crease_indices = reference.crease_indices();
-  desc.numCreases = int(reference.crease_values.size());
-  desc.creaseVertexIndexPairs = crease_indices.data();
-  desc.creaseWeights = reference.crease_values.data();
-  desc.numCorners = int(reference.corners.size());
-  desc.cornerVertexIndices = reference.corners.data();
-  desc.cornerWeights = reference.corner_values.data();
-  Far::TopologyDescriptor::FVarChannel channel;
-  channel.numValues = int(reference.uvs.size());
-  channel.valueIndices = uv_indices.data();
-  desc.numFVarChannels = 1;
-  desc.fvarChannels = &channel;
-  Sdc::Options options = test::opensubdiv_options(s.boundary, s.crease_method);
-  options.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(int(mode)));
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  return std::unique_ptr<Far::TopologyRefiner>(
-    Factory::Create(desc, Factory::Options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, options)));
-}
 
 // Corner_channel_limit_surface of "c:uv" on `m` against Bfr's face-varying
 // surfaces (SurfaceFactory::InitFaceVaryingSurface()) on `reference`, whose
