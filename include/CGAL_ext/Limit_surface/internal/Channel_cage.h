@@ -81,25 +81,29 @@ struct Channel_coordinates<K, std::array<E, N>, std::enable_if_t<std::is_floatin
     return t;
   }
 };
+// The kernel's 2D and 3D points and vectors (is_kernel_point/_vector of
+// Linear_values.h, the types a channel interpolates).
 template <class K, class T>
-struct Channel_coordinates<K, T,
-                           std::enable_if_t<std::is_same_v<T, typename K::Point_2> || std::is_same_v<T, typename K::Vector_2>>>
+struct Channel_coordinates<K, T, std::enable_if_t<is_kernel_point<K, T> || is_kernel_vector<K, T>>>
 {
   static constexpr bool defined = true;
-  static constexpr std::size_t dimension = 2;
+  static constexpr std::size_t dimension =
+    std::is_same_v<T, typename K::Point_2> || std::is_same_v<T, typename K::Vector_2> ? 2 : 3;
   using FT = typename K::FT;
-  static std::array<FT, 2> split(const T& t) { return {t.x(), t.y()}; }
-  static T join(const std::array<FT, 2>& c) { return T(c[0], c[1]); }
-};
-template <class K, class T>
-struct Channel_coordinates<K, T,
-                           std::enable_if_t<std::is_same_v<T, typename K::Point_3> || std::is_same_v<T, typename K::Vector_3>>>
-{
-  static constexpr bool defined = true;
-  static constexpr std::size_t dimension = 3;
-  using FT = typename K::FT;
-  static std::array<FT, 3> split(const T& t) { return {t.x(), t.y(), t.z()}; }
-  static T join(const std::array<FT, 3>& c) { return T(c[0], c[1], c[2]); }
+  static std::array<FT, dimension> split(const T& t)
+  {
+    std::array<FT, dimension> c;
+    for (std::size_t i = 0; i < dimension; ++i)
+      c[i] = t.cartesian(int(i));
+    return c;
+  }
+  static T join(const std::array<FT, dimension>& c)
+  {
+    if constexpr (dimension == 2)
+      return T(c[0], c[1]);
+    else
+      return T(c[0], c[1], c[2]);
+  }
 };
 
 // The cage of a channel (see the top of this file), its points left at the
