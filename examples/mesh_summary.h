@@ -45,7 +45,7 @@ inline const char* const drop_corner_data_flag = "--drop-corner-data";
 // --fvar-interpolation: how a tool that follows the limit surface carries
 // corner channels (OpenSubdiv's FVarLinearInterpolation), corners-plus1 by
 // default, as OpenSubdiv's.
-inline CGAL_ext::Face_varying_interpolation face_varying_argument(const Arguments& args)
+inline const Choices<CGAL_ext::Face_varying_interpolation>& face_varying_modes()
 {
   static const Choices<CGAL_ext::Face_varying_interpolation> modes = {
     {"none", CGAL_ext::Face_varying_interpolation::none},
@@ -54,7 +54,12 @@ inline CGAL_ext::Face_varying_interpolation face_varying_argument(const Argument
     {"corners-plus2", CGAL_ext::Face_varying_interpolation::corners_plus2},
     {"boundaries", CGAL_ext::Face_varying_interpolation::boundaries},
     {"all", CGAL_ext::Face_varying_interpolation::all}};
-  return choice_argument("--fvar-interpolation", args.value("--fvar-interpolation", "corners-plus1"), modes);
+  return modes;
+}
+inline CGAL_ext::Face_varying_interpolation face_varying_argument(const Arguments& args)
+{
+  return choice_argument("--fvar-interpolation", args.value("--fvar-interpolation", "corners-plus1"),
+                         face_varying_modes());
 }
 
 // --no-tags: a tool that writes a mesh leaves OpenSubdiv's tag lines out of

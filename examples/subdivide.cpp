@@ -237,7 +237,7 @@ void run(const Settings& s)
   line.add("scheme", examples::choice_name(schemes, s.scheme))
     .add("kernel", examples::choice_name(kernels, s.kernel))
     .add("levels", s.levels)
-    .add("fvar_interpolation", examples::choice_name(fvar_modes, s.fvar))
+    .add("fvar_interpolation", examples::choice_name(examples::face_varying_modes(), s.fvar))
     .add("vertices", written.input_vertices) // as written: non-manifold input joined again
     .add("edges", written.input_edges)
     .add("faces", mesh.number_of_faces())
