@@ -223,7 +223,6 @@ public:
                                 " is not a triangle, which Loop's limit surface needs");
     fvar_mode_ = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation),
                                       Face_varying_interpolation::corners_plus1);
-    surface_options_ = options;
     base_.mesh = mesh;
     const auto points = pm::choose_parameter(pm::get_parameter(np, CGAL::internal_np::vertex_point), mesh.points());
     for (Vertex_index v : mesh.vertices())
@@ -472,7 +471,7 @@ private:
           if (carried || !m.template corner_channel<T>(name))
             return;
           carried = true;
-          auto [indices, values] = Corner_channel_limit_surface<Mask, P, T>(m, name, np, surface_options_).tessellated(rates);
+          auto [indices, values] = Corner_channel_limit_surface<Mask, P, T>(m, name, np, surface_options()).tessellated(rates);
           auto channel = out.template add_corner_channel<T>(name).first;
           channel.values() = std::move(values);
           for (Face_index f : out.faces()) {
@@ -581,9 +580,20 @@ private:
     return e;
   }
 
+  // The options this surface was made with, as the constructor took them
+  // (the channels' surfaces are made alike).
+  Limit_surface_options surface_options() const
+  {
+    Limit_surface_options o;
+    o.approx_level_smooth = options_.level_smooth;
+    o.approx_level_sharp = options_.level_sharp;
+    o.projection_rate = unsigned(projection_rate_);
+    o.max_tessellation_rate = unsigned(max_tessellation_rate_);
+    return o;
+  }
+
   internal::Level_mesh<P> base_;
   internal::Limit_options options_;
-  Limit_surface_options surface_options_;
   Face_varying_interpolation fvar_mode_ = Face_varying_interpolation::corners_plus1;
   internal::Face_cache<Face_patches> faces_;
   int projection_rate_ = 4;
