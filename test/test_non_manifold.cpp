@@ -104,12 +104,37 @@ TEST(NonManifold, a_pinched_vertex_splits_and_a_bare_vertex_stays)
   EXPECT_EQ(faces.size(), 32u);
 }
 
-TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_is_refused_under_either_policy)
+TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_is_refused_by_default)
 {
   const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
   const std::vector<std::vector<int>> polygons = {{0, 1, 2, 2}};
   Mesh m;
-  EXPECT_THROW(CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, split_policy), CGAL_ext::Soup_error);
+  try {
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m);
+    FAIL() << "no Soup_error";
+  } catch (const CGAL_ext::Soup_error& e) {
+    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
+  }
+  EXPECT_EQ(m.number_of_vertices(), 0u);
+}
+
+// A polygon whose two visits of a vertex lie in one fan (a triangle joins
+// the sides at both visits) is no vertex of any sheet: refused, by name.
+TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_within_one_fan_is_refused)
+{
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 1),
+                                     Point(-1, 1, 0), Point(-1, 0, 1)};
+  const std::vector<std::vector<int>> polygons = {{0, 1, 2, 0, 4, 5}, {0, 4, 1}};
+  Mesh m;
+  try {
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, split_policy);
+    FAIL() << "no Soup_error";
+  } catch (const CGAL_ext::Soup_error& e) {
+    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
+    EXPECT_EQ(e.polygons(), std::vector<std::size_t>{0});
+    EXPECT_EQ(e.vertices(), std::vector<std::size_t>{0});
+  }
+  EXPECT_EQ(m.number_of_vertices(), 0u);
 }
 
 // What cannot follow the joins refuses them, before it touches the mesh.
@@ -171,8 +196,13 @@ Shape as_oriented(const Shape& s, const Mesh& m)
     std::vector<int> vs;
     for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(CGAL_ext::Face_index(f)), m))
       vs.push_back(int(CGAL_ext::non_manifold_representative(m, v).idx()));
-    std::rotate(vs.begin(), std::find(vs.begin(), vs.end(), r.faces[f][0]), vs.end());
-    if (vs != r.faces[f])
+    // A polygon that visits a vertex twice may start at either visit.
+    bool same_way = false;
+    for (std::size_t k = 0; k < vs.size() && !same_way; ++k) {
+      std::rotate(vs.begin(), vs.begin() + 1, vs.end());
+      same_way = vs == r.faces[f];
+    }
+    if (!same_way)
       std::reverse(r.faces[f].begin() + 1, r.faces[f].end());
   }
   return r;
@@ -272,15 +302,62 @@ void expect_opensubdiv_result(Shape s, Sdc::SchemeType type, int n)
   EXPECT_EQ(our_faces, their_faces);
 }
 
-// OpenSubdiv's shape, without a polygon that visits a vertex twice (a
-// degenerate edge, which OpenSubdiv takes and the import refuses).
-Shape nonmanifold_shape(const std::string& name)
+Shape nonmanifold_shape(const std::string& name) { return read_shape(test::data("opensubdiv/" + name)); }
+
+// A 3 x 3 grid of unit quads (points 4 * j + i), cell `cell` (j * 3 + i)
+// replaced by `polygon`, on the grid's points, which visits one twice, and
+// cell `removed` left out.
+Shape grid_with(int cell, const std::vector<int>& polygon, int removed = -1)
 {
-  Shape s = read_shape(test::data("opensubdiv/" + name));
-  s.faces.erase(std::remove_if(s.faces.begin(), s.faces.end(),
-                               [](const std::vector<int>& f) { return std::set<int>(f.begin(), f.end()).size() != f.size(); }),
-                s.faces.end());
+  Shape s;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      s.points.emplace_back(i, j, 0.1 * ((i * 7 + j * 3) % 5)); // off the plane: the rules move points
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      if (3 * j + i == cell)
+        s.faces.push_back(polygon);
+      else if (3 * j + i != removed)
+        s.faces.push_back({4 * j + i, 4 * j + i + 1, 4 * j + i + 5, 4 * j + i + 4});
   return s;
+}
+
+// Each kind of repeated vertex OpenSubdiv takes: a degenerate edge (1, 1)
+// on the border; a polygon that runs along the pair (5, 6) three times; one
+// over two cells whose two visits of vertex 5 are apart, its sides all
+// distinct (its corners there in two fans). Subdivided through the sheets
+// and joined, as OpenSubdiv.
+TEST(NonManifold, polygons_that_visit_a_vertex_twice_as_opensubdiv)
+{
+  REQUIRE_OPENSUBDIV();
+  const std::vector<Shape> shapes = {grid_with(0, {0, 1, 1, 5, 4}), grid_with(4, {5, 6, 5, 6, 10, 9}),
+                                     grid_with(4, {5, 6, 10, 9, 5, 4, 0, 1}, 0)};
+  for (std::size_t k = 0; k < shapes.size(); ++k)
+    for (int n = 1; n <= 3; ++n) {
+      SCOPED_TRACE("shape " + std::to_string(k) + ", level " + std::to_string(n));
+      expect_opensubdiv_result(shapes[k], Sdc::SCHEME_CATMARK, n);
+      Shape corners = shapes[k];
+      corners.boundary = Boundary_interpolation::edge_and_corner;
+      expect_opensubdiv_result(corners, Sdc::SCHEME_CATMARK, n);
+    }
+}
+
+// A degenerate edge at an interior vertex: the vertex's polygons form one
+// fan from one end of the edge round to the other, which no sheet holds
+// (its halfedges have two ends): refused, by name.
+TEST(NonManifold, a_degenerate_edge_inside_a_fan_is_refused)
+{
+  const Shape s = grid_with(4, {5, 5, 6, 10, 9});
+  Mesh m;
+  try {
+    CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m, split_policy);
+    FAIL() << "no Soup_error";
+  } catch (const CGAL_ext::Soup_error& e) {
+    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
+    EXPECT_EQ(e.polygons(), std::vector<std::size_t>{4});
+    EXPECT_EQ(e.vertices(), std::vector<std::size_t>{5});
+  }
+  EXPECT_EQ(m.number_of_vertices(), 0u);
 }
 
 TEST(NonManifold, catmull_clark_equals_opensubdiv_on_its_non_manifold_shapes)

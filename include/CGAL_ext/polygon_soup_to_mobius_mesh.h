@@ -79,8 +79,9 @@ namespace CGAL_ext {
 ///   \cgalParamNBegin{non_manifold_policy}
 ///     \cgalParamDescription{`Non_manifold_policy::split` takes a soup that is not a
 ///                           2-manifold (an edge of three or more polygons, fans that meet
-///                           at a vertex) as manifold sheets joined by the vertex map
-///                           `non_manifold_join_name` (made only where something was split);
+///                           at a vertex, a polygon that visits a vertex twice) as manifold
+///                           sheets joined by the vertex map `non_manifold_join_name` (made
+///                           only where something was split), as OpenSubdiv takes such input;
 ///                           `refuse` throws}
 ///     \cgalParamType{`Non_manifold_policy`}
 ///     \cgalParamDefault{`Non_manifold_policy::refuse`}
@@ -96,9 +97,10 @@ namespace CGAL_ext {
 /// \returns the number of vertices added by splitting non-manifold vertices
 ///   (and edges).
 /// \throws Soup_error for an index out of range, a polygon with fewer than
-///   three vertices or a repeated vertex, an edge shared by three or more
-///   polygons (unless split), a non-manifold vertex (unless split), a
-///   non-finite coordinate.
+///   three vertices, a repeated vertex (unless split, and then where a
+///   polygon visits a vertex twice within one fan of polygons around it), an
+///   edge shared by three or more polygons (unless split), a non-manifold
+///   vertex (unless split), a non-finite coordinate.
 /// \throws Parameter_error for a negative or NaN tolerance.
 /// \throws Size_error (a `Parameter_error`) for more points, polygons or
 ///   edges than the mesh's 32-bit indices hold, before the mesh is allocated.

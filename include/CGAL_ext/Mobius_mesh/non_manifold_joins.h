@@ -73,11 +73,14 @@ Vertex_index non_manifold_representative(const Mobius_mesh<P>& mesh, Vertex_inde
 /// What the joins of a mesh of sheets stand for in the joined input.
 struct Non_manifold_counts
 {
-  /// The vertices of the input that are several vertices of the mesh: where
-  /// fans meet at a point or non-manifold edges end.
+  /// The non-manifold vertices of the input, as OpenSubdiv counts them:
+  /// those that are several vertices of the mesh (where fans meet at a point
+  /// or non-manifold edges end) and the ends of non-manifold edges.
   std::size_t vertices = 0;
-  /// The edges of the input shared by three or more polygons: several
-  /// border edges of the mesh each.
+  /// The non-manifold edges of the input, as OpenSubdiv counts them: those
+  /// shared by three or more polygons (several border edges of the mesh
+  /// each), and those of a polygon that visits a vertex twice where it runs
+  /// along a pair of vertices again or from a vertex to itself.
   std::size_t edges = 0;
   /// The vertices of the joined input: the mesh's, each input vertex once.
   std::size_t input_vertices = 0;
@@ -92,7 +95,7 @@ template <class P>
 Non_manifold_counts non_manifold_counts(const Mobius_mesh<P>& mesh)
 {
   const internal::Join_classes classes(mesh);
-  return {classes.joined_vertices(), classes.joined_edges(), classes.input_vertices(), classes.input_edges()};
+  return {classes.non_manifold_vertices(), classes.non_manifold_edges(), classes.input_vertices(), classes.input_edges()};
 }
 
 /// \ingroup PkgMobiusMeshSoup

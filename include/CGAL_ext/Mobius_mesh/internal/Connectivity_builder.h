@@ -41,6 +41,12 @@ struct Face_lists
   std::uint32_t n_faces = 0;
   const std::uint32_t* offset = nullptr; ///< n_faces + 1 entries
   const std::uint32_t* vertex = nullptr;
+  /// Corners (increasing flat indices) whose side, to the next corner, is a
+  /// border of its own whatever other side has its two ends: where the
+  /// caller knows better than the ends (the sides of a polygon that visits a
+  /// vertex twice, see Repeated_vertex_split.h).
+  const std::uint32_t* lone_side = nullptr;
+  std::size_t n_lone_sides = 0;
 };
 
 /// Faces listed one after the other, in arrays of their own (on huge pages
@@ -221,9 +227,13 @@ private:
   void pair_sides()
   {
     if constexpr (is_parallel_tag<Tag>)
-      pair_sides_in_parallel<Tag>();
-    else
-      pair_sides_serially();
+      if (faces_.n_lone_sides == 0)
+        return pair_sides_in_parallel<Tag>();
+    pair_sides_serially();
+  }
+  bool is_lone_side(u32 t) const
+  {
+    return faces_.n_lone_sides != 0 && std::binary_search(faces_.lone_side, faces_.lone_side + faces_.n_lone_sides, t);
   }
 
   // Sides are bucketed by their lower vertex; within a bucket a stamped slot
@@ -246,7 +256,9 @@ private:
     for (u32 lo = 0; lo < nv; ++lo) {
       for (u32 k = bucket_start[lo]; k < bucket_start[lo + 1]; ++k) {
         const u32 t = bucket[k], hi = side_high(t);
-        if (stamp[hi] != lo) {
+        if (is_lone_side(t)) {
+          // A border side of its own, seen by no other.
+        } else if (stamp[hi] != lo) {
           stamp[hi] = lo;
           first[hi] = t;
         } else if (first[hi] == null) {

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -43,9 +44,12 @@ public:
   }
 
   // The classes of `representative`, a representative per vertex of `mesh`,
-  // which must hold its own index.
+  // which must hold its own index; edges between the same two input
+  // vertices are one only if `edge_group` (empty: all 0) gives them the
+  // same value (a subdivided mesh's halves of two input edges stay two).
   template <class P>
-  Join_classes(const Mobius_mesh<P>& mesh, std::vector<u32> representative) : rep_(std::move(representative))
+  Join_classes(const Mobius_mesh<P>& mesh, std::vector<u32> representative, std::vector<std::uint64_t> edge_group = {})
+      : rep_(std::move(representative)), edge_group_(std::move(edge_group))
   {
     const u32 nv = u32(mesh.number_of_vertices());
     members_.assign(nv, 0);
@@ -61,10 +65,13 @@ public:
       joined_vertices_ += rep_[v] == v && members_[v] > 1 ? 1 : 0;
     }
     input_edges_ = mesh.number_of_edges();
+    non_manifold_vertices_ = joined_vertices_;
     // Without joins every edge is its own class: nothing to classify (the
     // writers build these classes for every mesh they write).
-    if (joined_vertices_ != 0)
+    if (joined_vertices_ != 0) {
+      on_non_manifold_edge_.assign(nv, false);
       classify_edges(mesh);
+    }
   }
 
   template <class P>
@@ -92,11 +99,24 @@ public:
   // Whether vertex v is one of several vertices of one input vertex.
   bool is_joined(u32 v) const { return members_[rep_[v]] > 1; }
   u32 edge_representative(u32 e) const { return edge_rep_.empty() ? e : edge_rep_[e]; }
-  // The copies of edge e's input edge (1 unless it was a non-manifold edge).
+  // The copies of edge e's input edge in the mesh.
   u32 edge_members(u32 e) const { return edge_members_.empty() ? 1 : edge_members_[edge_rep_[e]]; }
-  // The vertices and edges of the input that are several of the mesh.
+  // Whether edge e is (a copy of) a non-manifold edge of the input: one of
+  // three or more polygons, one a polygon runs along twice, or degenerate.
+  bool is_non_manifold_edge(u32 e) const { return !non_manifold_edge_.empty() && non_manifold_edge_[e]; }
+  // Whether vertex v is (a copy of) a non-manifold vertex of the input: one
+  // of several copies, or an end of a non-manifold edge.
+  bool is_non_manifold_vertex(u32 v) const
+  {
+    return is_joined(v) || (!on_non_manifold_edge_.empty() && on_non_manifold_edge_[v]);
+  }
+  // Whether edge e's ends are one vertex of the input.
+  bool is_degenerate_edge(u32 a, u32 b) const { return rep_[a] == rep_[b]; }
+  // The vertices of the input that are several of the mesh.
   std::size_t joined_vertices() const { return joined_vertices_; }
-  std::size_t joined_edges() const { return joined_edges_; }
+  // The non-manifold vertices and edges of the input (OpenSubdiv's).
+  std::size_t non_manifold_vertices() const { return non_manifold_vertices_; }
+  std::size_t non_manifold_edges() const { return non_manifold_edges_; }
   // The vertices and edges of the input: the mesh's, each class once.
   std::size_t input_vertices() const { return input_vertices_; }
   std::size_t input_edges() const { return input_edges_; }
@@ -116,33 +136,96 @@ public:
   }
 
 private:
+  // The edges of the input as OpenSubdiv's Vtr makes them from the joined
+  // polygons: the edges of the sheets whose ends are the same two input
+  // vertices are one edge, but for a polygon that runs along the pair again
+  // (its further sides each an edge of their own) and for a degenerate edge
+  // (both ends one vertex: never shared). Where the sheets hold several
+  // edges of one pair, every one of them is a non-manifold edge.
   template <class P>
   void classify_edges(const Mobius_mesh<P>& mesh)
   {
     const u32 ne = u32(mesh.number_of_edges());
     edge_rep_.resize(ne);
-    std::unordered_map<std::uint64_t, std::pair<u32, u32>> first; // (first edge, members)
+    edge_members_.assign(ne, 1);
+    non_manifold_edge_.assign(ne, false);
+    // (the ends' representatives, the edge's group) -> edges
+    std::map<std::pair<std::uint64_t, std::uint64_t>, std::vector<u32>> by_ends;
     for (u32 e = 0; e < ne; ++e) {
       edge_rep_[e] = e;
       const u32 a = mesh.vertex(Edge_index(e), 0).idx(), b = mesh.vertex(Edge_index(e), 1).idx();
-      if (!is_joined(a) || !is_joined(b))
-        continue; // only an edge between two joined vertices can have copies
-      const auto [lo, hi] = std::minmax(rep_[a], rep_[b]);
-      auto [it, added] = first.emplace(std::uint64_t(lo) << 32 | hi, std::make_pair(e, 0u));
-      edge_rep_[e] = it->second.first;
-      input_edges_ -= added ? 0 : 1;
-      if (++it->second.second == 2)
-        ++joined_edges_;
+      if (!is_joined(a) && !is_joined(b))
+        continue; // two vertices of the input joined to none: the only edge between them
+      if (rep_[a] == rep_[b])
+        mark_non_manifold(mesh, e);
+      else
+        by_ends[{std::uint64_t((std::min)(rep_[a], rep_[b])) << 32 | (std::max)(rep_[a], rep_[b]),
+                 edge_group_.empty() ? 0 : edge_group_[e]}]
+          .push_back(e);
     }
-    if (joined_edges_ != 0) {
-      edge_members_.assign(ne, 1);
-      for (const auto& entry : first)
-        edge_members_[entry.second.first] = entry.second.second;
+    for (const auto& entry : by_ends)
+      if (entry.second.size() > 1)
+        join_group(mesh, entry.second);
+    for (u32 e = 0; e < ne; ++e)
+      if (edge_rep_[e] != e)
+        --input_edges_;
+    if (non_manifold_edges_ == 0)
+      std::vector<bool>().swap(non_manifold_edge_);
+  }
+
+  // The edges of the sheets between one pair of input vertices (in index
+  // order): each polygon's first side along the pair (from its halfedge)
+  // joins the first such edge, as in OpenSubdiv's Level; the further sides
+  // of a polygon are edges of their own.
+  template <class P>
+  void join_group(const Mobius_mesh<P>& mesh, const std::vector<u32>& group)
+  {
+    std::unordered_map<u32, std::pair<u32, u32>> first_in_face; // face -> (position, edge)
+    for (u32 e : group) {
+      auto h = mesh.halfedge(Edge_index(e));
+      if (mesh.is_border(h))
+        h = mesh.opposite(h);
+      const Face_index f = mesh.face(h);
+      u32 position = 0;
+      for (auto d = mesh.halfedge(f); mesh.edge(d) != Edge_index(e); d = mesh.next(d))
+        ++position;
+      auto [it, added] = first_in_face.emplace(f.idx(), std::make_pair(position, e));
+      if (!added && position < it->second.first)
+        it->second = {position, e};
+    }
+    u32 shared = ~u32(0);
+    for (const auto& entry : first_in_face)
+      shared = (std::min)(shared, entry.second.second);
+    for (const auto& entry : first_in_face) {
+      edge_rep_[entry.second.second] = shared;
+      edge_members_[shared] += entry.second.second == shared ? 0 : 1;
+    }
+    for (u32 e : group)
+      mark_non_manifold(mesh, e);
+  }
+
+  // Edge e (its own class or its class's first edge) is non-manifold, and
+  // so are its ends.
+  template <class P>
+  void mark_non_manifold(const Mobius_mesh<P>& mesh, u32 e)
+  {
+    non_manifold_edge_[e] = true;
+    if (edge_rep_[e] == e)
+      ++non_manifold_edges_;
+    for (int i = 0; i < 2; ++i) {
+      const u32 v = mesh.vertex(Edge_index(e), i).idx();
+      if (!is_joined(v) && !on_non_manifold_edge_[v]) {
+        on_non_manifold_edge_[v] = true;
+        ++non_manifold_vertices_;
+      }
     }
   }
 
   std::vector<u32> rep_, members_, edge_rep_, edge_members_;
-  std::size_t joined_vertices_ = 0, joined_edges_ = 0, input_vertices_ = 0, input_edges_ = 0;
+  std::vector<std::uint64_t> edge_group_;
+  std::vector<bool> non_manifold_edge_, on_non_manifold_edge_;
+  std::size_t joined_vertices_ = 0, non_manifold_edges_ = 0, input_vertices_ = 0, input_edges_ = 0;
+  std::size_t non_manifold_vertices_ = 0;
 };
 
 } // namespace internal

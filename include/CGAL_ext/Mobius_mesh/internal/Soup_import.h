@@ -8,6 +8,7 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/Mobius_mesh/internal/Repeated_vertex_split.h>
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
@@ -21,6 +22,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -108,14 +110,23 @@ std::vector<std::uint32_t> merge_soup_points(std::uint32_t n_points, PointOf poi
 }
 
 // The join map of a soup split into sheets: each copy made by splitting
-// holds the vertex it was split off.
+// holds the vertex it was split off: first the copies given to the corner
+// fans of repeated vertices (`fan_copies`, numbered from `n_vertices`), then
+// the builder's (`copies`), whose originals may be the former.
 template <class P>
-void record_joins(Mobius_mesh<P>& mesh, std::uint32_t n_vertices, const std::vector<Split_vertex>& copies)
+void record_joins(Mobius_mesh<P>& mesh, std::uint32_t n_vertices, const std::vector<std::uint32_t>& fan_copies,
+                  const std::vector<Split_vertex>& copies)
 {
   auto join =
     mesh.template add_property_map<Vertex_index, std::uint32_t>(non_manifold_join_name, no_non_manifold_join).first;
-  for (std::size_t k = 0; k < copies.size(); ++k)
-    join[Vertex_index(n_vertices + std::uint32_t(k))] = copies[k].original;
+  for (std::size_t k = 0; k < fan_copies.size(); ++k)
+    join[Vertex_index(n_vertices + std::uint32_t(k))] = fan_copies[k];
+  const std::uint32_t n_named = n_vertices + std::uint32_t(fan_copies.size());
+  for (std::size_t k = 0; k < copies.size(); ++k) {
+    const std::uint32_t original = copies[k].original;
+    join[Vertex_index(n_named + std::uint32_t(k))] =
+      original < n_vertices ? original : fan_copies[original - n_vertices];
+  }
 }
 
 // Before `part` (with joins) is joined to `mesh`: `mesh` gets a join map if
@@ -188,23 +199,34 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
                                                  internal::checked_tolerance<FT>(tolerance), flat);
   const std::uint32_t n_vertices = std::uint32_t(representative.empty() ? n_points : representative.size());
 
-  // 3. Build.
+  // 3. Build: under the split policy, a vertex that a polygon visits twice
+  //    first gets a vertex per corner fan (see Repeated_vertex_split.h).
+  std::optional<internal::Repeated_vertex_split> fans;
+  if (split_edges)
+    fans.emplace(flat, n_vertices);
+  const std::vector<std::uint32_t> fan_copies = fans ? fans->original() : std::vector<std::uint32_t>();
+  const auto input_vertex = [&](std::uint32_t v) { return v < n_vertices ? v : fan_copies[v - n_vertices]; };
   Mobius_mesh<P> result;
-  const std::vector<internal::Split_vertex> copies = internal::build_mesh_from_faces(
-    flat.view(n_vertices), [&](std::uint32_t v) { return P(point_of(representative.empty() ? v : representative[v])); },
+  std::vector<internal::Split_vertex> copies = internal::build_mesh_from_faces(
+    fans ? fans->view() : flat.view(n_vertices),
+    [&](std::uint32_t v) {
+      const std::uint32_t u = input_vertex(v);
+      return P(point_of(representative.empty() ? u : representative[u]));
+    },
     split, result, split_edges);
-  if (split_edges && !copies.empty())
-    internal::record_joins(result, n_vertices, copies);
+  if (split_edges && (!copies.empty() || !fan_copies.empty()))
+    internal::record_joins(result, n_vertices, fan_copies, copies);
   // Face p is polygon p, its halfedge ending at the polygon's corner 1: what
   // the caller hangs on the corners is set now, before orientation moves them.
   before_orient(result);
   if (!choose_parameter(get_parameter(np, CGAL_ext::internal_np::keep_orientation), false))
     orient_orientable_components(result);
 
-  if (!copies.empty() && split_edges && !internal::is_pristine(mesh))
+  const std::size_t n_copies = fan_copies.size() + copies.size();
+  if (n_copies != 0 && split_edges && !internal::is_pristine(mesh))
     internal::prepare_join_append(mesh, result);
   internal::append_mesh(mesh, std::move(result));
-  return copies.size();
+  return n_copies;
 }
 
 } // namespace internal

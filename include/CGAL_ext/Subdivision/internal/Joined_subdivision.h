@@ -51,10 +51,13 @@ struct Joined_crease_vertex
   float sharpness = 0.0f;
 };
 
-// The edges of a joined vertex at one level, each edge of the input once:
-// its far end and sharpness (a border edge, of the input or split off a
-// non-manifold edge, is infinitely sharp, as OpenSubdiv makes it), and the
-// counts by which OpenSubdiv classifies the vertex.
+// The edges of a joined vertex at one level as OpenSubdiv's Level lists
+// them: each edge of the input once, a degenerate one twice (it has the
+// vertex at both ends); its far end and sharpness (a border edge, of the
+// input or split off a non-manifold edge, is infinitely sharp, as
+// OpenSubdiv makes it), and the counts by which OpenSubdiv classifies the
+// vertex: its corners, the edges of fewer than two faces, the non-manifold
+// edges.
 template <class P>
 struct Joined_ring
 {
@@ -75,11 +78,16 @@ Joined_ring<P> joined_ring(const Mobius_mesh<P>& mesh, const CGAL_ext::internal:
       const Edge_index e = mesh.edge(d);
       if (!seen.insert(classes.edge_representative(e.idx())).second)
         continue;
-      const bool border = mesh.is_border(e), non_manifold = classes.edge_members(e.idx()) > 1;
-      ring.non_manifold += non_manifold ? 1 : 0;
-      ring.borders += border && !non_manifold ? 1 : 0;
-      ring.far.push_back(mesh.point(mesh.source(d)));
-      ring.sharpness.push_back(border ? infinitely_sharp : float(edge_sharpness(e)));
+      const bool border = mesh.is_border(e), non_manifold = classes.is_non_manifold_edge(e.idx());
+      // A class of several edges has a face each (they are borders).
+      const u32 members = classes.edge_members(e.idx()), faces = members > 1 ? members : (border ? 1 : 2);
+      const int entries = classes.is_degenerate_edge(mesh.source(d).idx(), c) ? 2 : 1;
+      for (int i = 0; i < entries; ++i) {
+        ring.non_manifold += non_manifold ? 1 : 0;
+        ring.borders += faces < 2 ? 1 : 0;
+        ring.far.push_back(mesh.point(mesh.source(d)));
+        ring.sharpness.push_back(border || non_manifold ? infinitely_sharp : float(edge_sharpness(e)));
+      }
     }
   }
   return ring;
@@ -109,7 +117,7 @@ bool has_several_corner_values(const Mobius_mesh<P>& mesh, const std::vector<u32
 
 // OpenSubdiv's sharpening of the non-manifold vertices of the input
 // (Far::TopologyRefinerFactoryBase::prepareComponentTagsAndSharpness): each
-// joined vertex gets the largest sharpness of its copies (a file's tag
+// non-manifold vertex (joined, or on a non-manifold edge) gets the largest sharpness of its copies (a file's tag
 // names one) and, unless it lies on an interior non-manifold crease,
 // infinite sharpness; the crease vertices are returned.
 template <class P, class EdgeSharpness>
@@ -120,7 +128,7 @@ std::vector<Joined_crease_vertex> sharpen_joined_vertices(const Mobius_mesh<P>& 
 {
   std::vector<std::vector<u32>> copies(mesh.number_of_vertices());
   for (u32 v = 0; v < u32(mesh.number_of_vertices()); ++v)
-    if (classes.is_joined(v))
+    if (classes.is_non_manifold_vertex(v))
       copies[classes.representative(v)].push_back(v);
   std::vector<Joined_crease_vertex> creases;
   for (std::vector<u32>& c : copies) {
@@ -212,6 +220,32 @@ std::vector<u32> child_joins(const Mobius_mesh<P>& parent, const CGAL_ext::inter
   return join;
 }
 
+// The groups of the child's edges for its Join_classes: a half of a parent
+// edge is one with the halves of the same input edge at the same input
+// vertex (at the same copy for a degenerate edge, whose two halves both
+// end at its vertex and stay two edges, as in OpenSubdiv); every other
+// child edge is alone between its ends.
+template <class P>
+std::vector<std::uint64_t> child_edge_groups(const Mobius_mesh<P>& parent,
+                                             const CGAL_ext::internal::Join_classes& classes,
+                                             const Mobius_mesh<P>& child)
+{
+  const u32 nv = u32(parent.number_of_vertices()), ne = u32(parent.number_of_edges());
+  std::vector<std::uint64_t> group(child.number_of_edges(), 0);
+  for (Edge_index c : child.edges()) {
+    u32 x = child.vertex(c, 0).idx(), y = child.vertex(c, 1).idx();
+    if (x > y)
+      std::swap(x, y);
+    if (x >= nv || y < nv || y >= nv + ne)
+      continue; // not a half of a parent edge
+    const Edge_index e(y - nv);
+    const bool degenerate = classes.is_degenerate_edge(parent.vertex(e, 0).idx(), parent.vertex(e, 1).idx());
+    group[c.idx()] = std::uint64_t(classes.edge_representative(e.idx()) + 1) << 32 |
+                     (degenerate ? x : classes.representative(x));
+  }
+  return group;
+}
+
 // Subdivides sheets joined by the vertex map "v:non_manifold_join" as
 // OpenSubdiv subdivides the joined input (see the top of this file), a
 // level at a time; the result carries the joins of its level.
@@ -269,7 +303,8 @@ void subdivide_joined(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
           c.sharpness = Crease::subdivide_vertex_sharpness(c.sharpness);
         }
       }
-      classes = CGAL_ext::internal::Join_classes(next, child_joins(work, classes, next.number_of_vertices()));
+      classes = CGAL_ext::internal::Join_classes(next, child_joins(work, classes, next.number_of_vertices()),
+                                                 child_edge_groups(work, classes, next));
       work = std::move(next);
       for (float& s : given_vs)
         s = Crease::subdivide_vertex_sharpness(s);

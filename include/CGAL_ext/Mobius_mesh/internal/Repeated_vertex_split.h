@@ -1,0 +1,212 @@
+// Copyright (c) 2026 CGAL_ext contributors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Polygons that visit a vertex twice, held as manifold sheets: the step of
+// the soup import (non_manifold_policy split) that runs before the
+// connectivity builder.
+//
+// OpenSubdiv's Vtr takes such polygons: a degenerate edge (v, v) is an edge
+// of its own, never shared; a vertex pair that a polygon runs along twice
+// gets a second edge (both non-manifold); a vertex whose corners do not form
+// one fan is non-manifold. The sheets hold this once each corner fan of a
+// repeated vertex has a vertex of its own: the corners of vertex v are
+// joined across the edges OpenSubdiv makes two-sided (a pair of distinct
+// vertices run along by exactly two polygons, once each) and every further
+// fan gets a copy of v. Then no polygon visits a vertex twice, and the
+// builder pairs the sides as OpenSubdiv pairs them.
+
+#ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
+#define CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
+
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Union_find.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL_ext {
+namespace internal {
+
+class Repeated_vertex_split
+{
+public:
+  using u32 = std::uint32_t;
+
+  // Gives each further corner fan of a vertex that a polygon of `flat`
+  // visits twice a new vertex (numbered from `n_vertices` on) and renames
+  // its corners; `original()` then names the vertex each new one copies.
+  // Throws Soup_error where the sheets cannot hold the polygons as
+  // OpenSubdiv does (a polygon's two visits of a vertex in one fan).
+  Repeated_vertex_split(Face_list& flat, u32 n_vertices) : flat_(flat), n_vertices_(n_vertices)
+  {
+    find_repeated_corners();
+    if (corners_.empty())
+      return;
+    count_sides();
+    std::vector<u32> fan = corner_fans();
+    rename_fans(fan);
+    find_lone_sides();
+  }
+
+  // The vertex that new vertex `n_vertices + k` copies, for each k.
+  const std::vector<u32>& original() const { return original_; }
+
+  // `flat` for the builder, with the sides that must stay borders.
+  Face_lists view() const
+  {
+    Face_lists faces = flat_.view(n_vertices_ + u32(original_.size()));
+    faces.lone_side = lone_sides_.data();
+    faces.n_lone_sides = lone_sides_.size();
+    return faces;
+  }
+
+private:
+  struct Side_count
+  {
+    u32 count = 0;
+    u32 face = 0;           // the face of the first side
+    bool same_face = false; // a face runs along the pair twice
+  };
+
+  static std::uint64_t key(u32 a, u32 b) { return std::uint64_t((std::min)(a, b)) << 32 | (std::max)(a, b); }
+  u32 face_size(u32 f) const { return flat_.offset[f + 1] - flat_.offset[f]; }
+  // The corner after corner i of face f (i in [0, size)), as a flat index.
+  u32 next_in_face(u32 f, u32 i) const { return flat_.offset[f] + (i + 1) % face_size(f); }
+
+  // The corners of the vertices some polygon visits twice, as flat indices.
+  void find_repeated_corners()
+  {
+    std::vector<bool> repeated(n_vertices_, false);
+    std::vector<u32> seen_in(n_vertices_, ~u32(0));
+    for (u32 f = 0; f + 1 < u32(flat_.offset.size()); ++f)
+      for (u32 t = flat_.offset[f]; t < flat_.offset[f + 1]; ++t) {
+        const u32 v = flat_.vertex[t];
+        repeated[v] = repeated[v] || seen_in[v] == f;
+        seen_in[v] = f;
+      }
+    for (u32 f = 0; f + 1 < u32(flat_.offset.size()); ++f)
+      for (u32 t = flat_.offset[f]; t < flat_.offset[f + 1]; ++t)
+        if (repeated[flat_.vertex[t]]) {
+          corners_.push_back(t);
+          face_.push_back(f);
+        }
+  }
+
+  // Calls fn(face, from, to) once for each side of a polygon (from corner
+  // `from` to corner `to`, flat indices) with a repeated vertex at an end.
+  template <class Fn>
+  void for_each_side_at_repeated(Fn fn) const
+  {
+    for (std::size_t k = 0; k < corners_.size(); ++k) {
+      const u32 f = face_[k], t = corners_[k], i = t - flat_.offset[f];
+      const u32 prev = flat_.offset[f] + (i + face_size(f) - 1) % face_size(f);
+      fn(f, t, next_in_face(f, i));
+      if (!is_repeated_corner(prev)) // else met as that corner's next side
+        fn(f, prev, t);
+    }
+  }
+  bool is_repeated_corner(u32 t) const { return std::binary_search(corners_.begin(), corners_.end(), t); }
+
+  // How many polygon sides run along each pair of vertices at a repeated
+  // vertex, and whether one polygon runs along it twice.
+  void count_sides()
+  {
+    for_each_side_at_repeated([&](u32 f, u32 from, u32 to) {
+      auto [it, added] = sides_.emplace(key(flat_.vertex[from], flat_.vertex[to]), Side_count{0, f, false});
+      it->second.same_face = it->second.same_face || (!added && it->second.face == f);
+      ++it->second.count;
+    });
+  }
+
+  // Two-sided in OpenSubdiv's terms: distinct ends, two sides, two faces.
+  bool is_two_sided(u32 a, u32 b) const
+  {
+    const Side_count& c = sides_.at(key(a, b));
+    return a != b && c.count == 2 && !c.same_face;
+  }
+
+  // The fan of each repeated corner (an index in corners_ standing for its
+  // class): the corners at one vertex joined across two-sided sides.
+  std::vector<u32> corner_fans()
+  {
+    Union_find fans(u32(corners_.size()));
+    // For each two-sided pair, the first corner met at each of its ends.
+    std::unordered_map<std::uint64_t, std::array<u32, 2>> first_corner;
+    for (std::size_t k = 0; k < corners_.size(); ++k) {
+      const u32 f = face_[k], i = corners_[k] - flat_.offset[f], v = flat_.vertex[corners_[k]];
+      const u32 prev = flat_.vertex[flat_.offset[f] + (i + face_size(f) - 1) % face_size(f)];
+      const u32 next = flat_.vertex[next_in_face(f, i)];
+      for (const u32 w : {prev, next}) {
+        if (!is_two_sided(v, w))
+          continue;
+        u32& first = first_corner.emplace(key(v, w), std::array<u32, 2>{no_corner, no_corner})
+                       .first->second[v < w ? 0 : 1];
+        if (first == no_corner)
+          first = u32(k);
+        else
+          fans.unite(first, u32(k));
+      }
+    }
+    std::vector<u32> fan(corners_.size());
+    for (std::size_t k = 0; k < corners_.size(); ++k)
+      fan[k] = fans.find(u32(k));
+    return fan;
+  }
+  static constexpr u32 no_corner = ~u32(0);
+
+  // The first fan of each vertex keeps it; each further fan gets a copy. A
+  // fan that holds two corners of one polygon cannot be a vertex of a sheet.
+  void rename_fans(const std::vector<u32>& fan)
+  {
+    std::unordered_map<u32, u32> vertex_of_fan;
+    std::unordered_map<u32, u32> first_fan_of_vertex;
+    std::unordered_map<std::uint64_t, u32> corner_of_face_in_fan;
+    for (std::size_t k = 0; k < corners_.size(); ++k) {
+      const u32 v = flat_.vertex[corners_[k]];
+      auto [c, fresh] = corner_of_face_in_fan.emplace(std::uint64_t(face_[k]) << 32 | fan[k], corners_[k]);
+      if (!fresh)
+        throw Soup_error(Soup_error::Kind::repeated_vertex,
+                         "polygon " + std::to_string(face_[k]) + " visits vertex " + std::to_string(v) +
+                           " twice within one fan of polygons around it, which no sheet can hold",
+                         {face_[k]}, {v});
+      first_fan_of_vertex.emplace(v, fan[k]);
+      auto [it, added] = vertex_of_fan.emplace(fan[k], v);
+      if (added && first_fan_of_vertex.at(v) != fan[k]) {
+        it->second = n_vertices_ + u32(original_.size());
+        original_.push_back(v);
+      }
+    }
+    for (std::size_t k = 0; k < corners_.size(); ++k)
+      flat_.vertex[corners_[k]] = vertex_of_fan.at(fan[k]);
+  }
+
+  // The builder pairs two sides with the same two ends: after renaming, two
+  // sides of a pair that OpenSubdiv does not make two-sided (three or more
+  // sides, one polygon's twice, or a degenerate edge) could be the only two
+  // of their renamed pair. Such sides stay borders of their own.
+  void find_lone_sides()
+  {
+    for_each_side_at_repeated([&](u32, u32 from, u32 to) {
+      if (!is_two_sided(original_vertex(flat_.vertex[from]), original_vertex(flat_.vertex[to])))
+        lone_sides_.push_back(from);
+    });
+    std::sort(lone_sides_.begin(), lone_sides_.end());
+  }
+  u32 original_vertex(u32 v) const { return v < n_vertices_ ? v : original_[v - n_vertices_]; }
+
+  Face_list& flat_;
+  u32 n_vertices_;
+  std::vector<u32> corners_, face_, original_, lone_sides_;
+  std::unordered_map<std::uint64_t, Side_count> sides_;
+};
+
+} // namespace internal
+} // namespace CGAL_ext
+
+#endif // CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
