@@ -19,6 +19,15 @@ if(CGAL_EXT_BUILD_TESTS)
            COMMAND subdivide ${_data}/opensubdiv/catmark_val2_nonman.obj ${CMAKE_CURRENT_BINARY_DIR}/val2_nonman.obj)
   set_tests_properties(example.subdivide.non_manifold PROPERTIES PASS_REGULAR_EXPRESSION
     "\"vertices\":78,\"edges\":[0-9]+,\"faces\":55,.*\"non_manifold_vertices\":7,\"non_manifold_edges\":2}\n$")
+  # Polygons that visit a vertex twice (14 of them, 18 degenerate edges among
+  # them), as OpenSubdiv 3.5 takes them: its level 1 has 464 vertices and
+  # 339 faces; its base level, given the faces as the import orients them
+  # (OpenSubdiv makes an edge of two faces that run the same way along it
+  # non-manifold), 16 non-manifold vertices and 31 edges.
+  add_test(NAME example.subdivide.non_manifold_repeated_vertices
+           COMMAND subdivide ${_data}/opensubdiv/catmark_nonman_edges.obj ${CMAKE_CURRENT_BINARY_DIR}/nonman_edges.obj)
+  set_tests_properties(example.subdivide.non_manifold_repeated_vertices PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"vertices\":464,\"edges\":[0-9]+,\"faces\":339,.*\"non_manifold_vertices\":16,\"non_manifold_edges\":31}\n$")
   add_test(NAME example.subdivide.mobius_loop_epeck
            COMMAND subdivide ${_data}/nonorientable/mobius_20x4_tris.obj ${CMAKE_CURRENT_BINARY_DIR}/mobius2.off
                    --scheme loop --levels 2 --kernel epeck)
