@@ -246,7 +246,7 @@ void expect_opensubdiv_result(Shape s, Sdc::SchemeType type, int n)
                             Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER
                           ? Boundary_interpolation::edge_and_corner
                           : Boundary_interpolation::edge_only;
-  const auto np = PM::number_of_iterations(unsigned(n)).boundary_interpolation(boundary);
+  const auto np = PM::number_of_iterations(unsigned(n)).boundary_interpolation(boundary).crease_method(s.crease_method);
   if (type == Sdc::SCHEME_CATMARK)
     CGAL_ext::Subdivision::catmull_clark(m, np);
   else
@@ -422,9 +422,16 @@ TEST(NonManifold, an_interior_non_manifold_crease_as_opensubdiv)
   semi_sharp.crease_values = {1.5f};
   Shape triangle = spine_book(3, true);
   triangle.boundary = Boundary_interpolation::edge_and_corner;
+  // Chaikin's rule decays a semi-sharp edge by the average of those around
+  // its vertex: all the joined vertex's, in every sheet (two here).
+  Shape chaikin = spine_book(3, false);
+  chaikin.crease_pairs = {{1, 4}, {1, 7}, {0, 3}};
+  chaikin.crease_values = {1.5f, 3.25f, 2.0f};
+  chaikin.crease_method = CGAL_ext::Crease_method::chaikin;
   for (int n = 1; n <= 3; ++n) {
     expect_opensubdiv_result(semi_sharp, Sdc::SCHEME_CATMARK, n);
     expect_opensubdiv_result(triangle, Sdc::SCHEME_CATMARK, n);
+    expect_opensubdiv_result(chaikin, Sdc::SCHEME_CATMARK, n);
   }
 }
 

@@ -63,6 +63,7 @@ struct Joined_ring
 {
   std::vector<P> far;
   std::vector<float> sharpness;
+  std::vector<u32> edge; // the class (its representative edge) of each entry
   std::size_t faces = 0, borders = 0, non_manifold = 0;
 };
 
@@ -87,6 +88,7 @@ Joined_ring<P> joined_ring(const Mobius_mesh<P>& mesh, const CGAL_ext::internal:
         ring.borders += faces < 2 ? 1 : 0;
         ring.far.push_back(mesh.point(mesh.source(d)));
         ring.sharpness.push_back(border || non_manifold ? infinitely_sharp : float(edge_sharpness(e)));
+        ring.edge.push_back(classes.edge_representative(e.idx()));
       }
     }
   }
@@ -170,13 +172,12 @@ void unsharpen_joined_vertices(const Mobius_mesh<P>& mesh, const NamedParameters
   }
 }
 
-// The point of the child of a vertex at `p` with sharpness `vs` and edges
-// `ring` (at least two of them infinitely sharp: a crease or a corner,
-// blended where the rule changes), as OpenSubdiv's vertex-vertex rule.
+// The sharpness of the child of each edge of `ring` at its joined vertex
+// (Chaikin's rule averages the semi-sharp edges around the vertex: all of
+// them, whatever sheet they lie in).
 template <class P>
-P joined_crease_point(const P& p, const Joined_ring<P>& ring, float vs, Crease_method method)
+std::vector<float> joined_child_sharpness(const Joined_ring<P>& ring, Crease_method method)
 {
-  using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
   const unsigned m = unsigned(ring.far.size());
   Crease::Semi_sharp_edges around;
   for (float s : ring.sharpness)
@@ -186,6 +187,53 @@ P joined_crease_point(const P& p, const Joined_ring<P>& ring, float vs, Crease_m
     child[i] = Crease::is_sharp(ring.sharpness[i])
                  ? Crease::subdivide_edge_sharpness_at_vertex(method, ring.sharpness[i], m, around)
                  : 0.0f;
+  return child;
+}
+
+// With Chaikin's rule, a copy of a joined vertex sees only its own sheet's
+// semi-sharp edges: the halves at the copies of each joined vertex of
+// `parent` get in `child` the sharpness the joined vertex's whole ring gives.
+template <class P, class EdgeSharpness>
+void decay_at_joined_vertices(const Mobius_mesh<P>& parent, const CGAL_ext::internal::Join_classes& classes,
+                              const EdgeSharpness& edge_sharpness, Crease_method method, Mobius_mesh<P>& child)
+{
+  if (method != Crease_method::chaikin)
+    return; // the uniform rule decays each edge by itself
+  const u32 nv = u32(parent.number_of_vertices());
+  std::vector<std::vector<u32>> copies(nv);
+  for (u32 v = 0; v < nv; ++v)
+    if (classes.is_joined(v))
+      copies[classes.representative(v)].push_back(v);
+  auto child_sharpness = edge_sharpness_map(child);
+  for (const std::vector<u32>& c : copies) {
+    if (c.empty())
+      continue;
+    const Joined_ring<P> ring = joined_ring(parent, classes, c, edge_sharpness);
+    const std::vector<float> decayed = joined_child_sharpness(ring, method);
+    for (u32 v : c)
+      for (Dart d : CGAL_ext::halfedges_around_target(Vertex_index(v), parent)) {
+        const Edge_index e = parent.edge(d);
+        const float s = edge_sharpness(e);
+        if (parent.is_border(e) || !Crease::is_semi_sharp(s))
+          continue;
+        const u32 entry = u32(std::find(ring.edge.begin(), ring.edge.end(), classes.edge_representative(e.idx())) -
+                              ring.edge.begin());
+        for (Dart h : CGAL_ext::halfedges_around_target(Vertex_index(v), child))
+          if (child.source(h).idx() == nv + e.idx())
+            child_sharpness[child.edge(h)] = decayed[entry];
+      }
+  }
+}
+
+// The point of the child of a vertex at `p` with sharpness `vs` and edges
+// `ring` (at least two of them infinitely sharp: a crease or a corner,
+// blended where the rule changes), as OpenSubdiv's vertex-vertex rule.
+template <class P>
+P joined_crease_point(const P& p, const Joined_ring<P>& ring, float vs, Crease_method method)
+{
+  using FT = typename CGAL::Kernel_traits<P>::Kernel::FT;
+  const unsigned m = unsigned(ring.far.size());
+  const std::vector<float> child = joined_child_sharpness(ring, method);
   const float child_vs = Crease::subdivide_vertex_sharpness(vs);
   const Crease::Rule rule = Crease::vertex_rule(vs, m, ring.sharpness.data());
   const Crease::Rule child_rule = Crease::vertex_rule(child_vs, m, child.data());
@@ -295,6 +343,7 @@ void subdivide_joined(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
       if constexpr (Mask::creases) {
         const auto map = edge_sharpness_map(work);
         const auto sharpness = [&map](Edge_index e) { return map[e]; };
+        decay_at_joined_vertices(work, classes, sharpness, method, next);
         for (Joined_crease_vertex& c : creases) {
           const P p = joined_crease_point(work.point(Vertex_index(c.copies[0])),
                                           joined_ring(work, classes, c.copies, sharpness), c.sharpness, method);
