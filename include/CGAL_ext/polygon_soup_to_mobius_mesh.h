@@ -97,8 +97,8 @@ namespace CGAL_ext {
 /// \returns the number of vertices added by splitting non-manifold vertices
 ///   (and edges).
 /// \throws Soup_error for an index out of range, a polygon with fewer than
-///   three vertices, a repeated vertex (unless split, and then where a
-///   polygon visits a vertex twice within one fan of polygons around it), an
+///   three vertices, a repeated vertex (under `non_manifold_policy` `split`
+///   only where a polygon visits a vertex twice within one fan), an
 ///   edge shared by three or more polygons (unless split), a non-manifold
 ///   vertex (unless split), a non-finite coordinate.
 /// \throws Parameter_error for a negative or NaN tolerance.

@@ -95,7 +95,8 @@ template <class P>
 Non_manifold_counts non_manifold_counts(const Mobius_mesh<P>& mesh)
 {
   const internal::Join_classes classes(mesh);
-  return {classes.non_manifold_vertices(), classes.non_manifold_edges(), classes.input_vertices(), classes.input_edges()};
+  return {classes.non_manifold_vertices(), classes.non_manifold_edges(), classes.input_vertices(),
+          classes.input_edges()};
 }
 
 /// \ingroup PkgMobiusMeshSoup

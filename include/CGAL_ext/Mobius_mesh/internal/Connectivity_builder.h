@@ -41,7 +41,7 @@ struct Face_lists
   std::uint32_t n_faces = 0;
   const std::uint32_t* offset = nullptr; ///< n_faces + 1 entries
   const std::uint32_t* vertex = nullptr;
-  /// Corners (increasing flat indices) whose side, to the next corner, is a
+  /// Corners (flat indices) whose side, to the next corner, is a
   /// border of its own whatever other side has its two ends: where the
   /// caller knows better than the ends (the sides of a polygon that visits a
   /// vertex twice, see Repeated_vertex_split.h).
@@ -106,6 +106,11 @@ public:
     with_concurrency<ConcurrencyTag>(true, [&](auto tag) {
       using Tag = decltype(tag);
       number_corners<Tag>();
+      if (faces_.n_lone_sides != 0) {
+        lone_.assign(n_corners_, false);
+        for (std::size_t k = 0; k < faces_.n_lone_sides; ++k)
+          lone_[faces_.lone_side[k]] = true;
+      }
       check_repeated_vertices<Tag>();
       pair_sides<Tag>();
       number_edges<Tag>();
@@ -231,10 +236,7 @@ private:
         return pair_sides_in_parallel<Tag>();
     pair_sides_serially();
   }
-  bool is_lone_side(u32 t) const
-  {
-    return faces_.n_lone_sides != 0 && std::binary_search(faces_.lone_side, faces_.lone_side + faces_.n_lone_sides, t);
-  }
+  bool is_lone_side(u32 t) const { return !lone_.empty() && lone_[t]; }
 
   // Sides are bucketed by their lower vertex; within a bucket a stamped slot
   // per upper vertex finds the partner in O(1).
@@ -592,6 +594,7 @@ private:
   [[maybe_unused]] bool parallel_ = false; // read only where TBB is linked
   bool split_edges_ = false;
   u32 n_non_manifold_edges_ = 0;
+  std::vector<bool> lone_; // one bit per corner: its side stays a border
   Array partner_, corner_halfedge_, corners_at_, last_corner_, face_stamp_;
   Array incoming_start_, incoming_corner_;
 };

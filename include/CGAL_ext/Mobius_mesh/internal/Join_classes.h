@@ -15,9 +15,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <map>
 #include <string>
-#include <unordered_map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -31,7 +30,8 @@ inline constexpr std::uint32_t no_join = 0xffffffffu;
 
 // Two vertices are one in the input if the join map gives them the same
 // representative; two edges are one if their ends are (an edge of the input
-// is the pair of its ends). Without a join map every class has one member.
+// is the pair of its ends), but for the edges OpenSubdiv makes apart (see
+// classify_edges()). Without a join map every class has one member.
 class Join_classes
 {
 public:
@@ -110,7 +110,8 @@ public:
   {
     return is_joined(v) || (!on_non_manifold_edge_.empty() && on_non_manifold_edge_[v]);
   }
-  // Whether edge e's ends are one vertex of the input.
+  // Whether an edge from vertex a to vertex b is degenerate in the input
+  // (both ends one vertex).
   bool is_degenerate_edge(u32 a, u32 b) const { return rep_[a] == rep_[b]; }
   // The vertices of the input that are several of the mesh.
   std::size_t joined_vertices() const { return joined_vertices_; }
@@ -149,8 +150,9 @@ private:
     edge_rep_.resize(ne);
     edge_members_.assign(ne, 1);
     non_manifold_edge_.assign(ne, false);
-    // (the ends' representatives, the edge's group) -> edges
-    std::map<std::pair<std::uint64_t, std::uint64_t>, std::vector<u32>> by_ends;
+    // (the ends' representatives, the edge's group, the edge), sorted: the
+    // edges of one pair and group are a run, in index order.
+    std::vector<std::tuple<std::uint64_t, std::uint64_t, u32>> by_ends;
     for (u32 e = 0; e < ne; ++e) {
       edge_rep_[e] = e;
       const u32 a = mesh.vertex(Edge_index(e), 0).idx(), b = mesh.vertex(Edge_index(e), 1).idx();
@@ -159,13 +161,20 @@ private:
       if (rep_[a] == rep_[b])
         mark_non_manifold(mesh, e);
       else
-        by_ends[{std::uint64_t((std::min)(rep_[a], rep_[b])) << 32 | (std::max)(rep_[a], rep_[b]),
-                 edge_group_.empty() ? 0 : edge_group_[e]}]
-          .push_back(e);
+        by_ends.emplace_back(std::uint64_t((std::min)(rep_[a], rep_[b])) << 32 | (std::max)(rep_[a], rep_[b]),
+                             edge_group_.empty() ? 0 : edge_group_[e], e);
     }
-    for (const auto& entry : by_ends)
-      if (entry.second.size() > 1)
-        join_group(mesh, entry.second);
+    std::sort(by_ends.begin(), by_ends.end());
+    std::vector<u32> group;
+    for (std::size_t i = 0, j = 0; i < by_ends.size(); i = j) {
+      group.clear();
+      for (j = i; j < by_ends.size() && std::get<0>(by_ends[j]) == std::get<0>(by_ends[i]) &&
+                  std::get<1>(by_ends[j]) == std::get<1>(by_ends[i]);
+           ++j)
+        group.push_back(std::get<2>(by_ends[j]));
+      if (group.size() > 1)
+        join_group(mesh, group);
+    }
     for (u32 e = 0; e < ne; ++e)
       if (edge_rep_[e] != e)
         --input_edges_;
@@ -174,38 +183,48 @@ private:
   }
 
   // The edges of the sheets between one pair of input vertices (in index
-  // order): each polygon's first side along the pair (from its halfedge)
-  // joins the first such edge, as in OpenSubdiv's Level; the further sides
-  // of a polygon are edges of their own.
+  // order, each a border with one face): each polygon's first side along the
+  // pair joins the first such edge, as in OpenSubdiv's Level; the further
+  // sides of a polygon are edges of their own. "First" counts from the
+  // face's halfedge, which is OpenSubdiv's first corner only while the face
+  // keeps the polygon's orientation: which of a polygon's sides is joined
+  // can differ, never a point (all of them are infinitely sharp).
   template <class P>
   void join_group(const Mobius_mesh<P>& mesh, const std::vector<u32>& group)
   {
-    std::unordered_map<u32, std::pair<u32, u32>> first_in_face; // face -> (position, edge)
+    std::vector<std::pair<u32, u32>> by_face; // (face, edge)
     for (u32 e : group) {
       auto h = mesh.halfedge(Edge_index(e));
-      if (mesh.is_border(h))
-        h = mesh.opposite(h);
-      const Face_index f = mesh.face(h);
-      u32 position = 0;
-      for (auto d = mesh.halfedge(f); mesh.edge(d) != Edge_index(e); d = mesh.next(d))
-        ++position;
-      auto [it, added] = first_in_face.emplace(f.idx(), std::make_pair(position, e));
-      if (!added && position < it->second.first)
-        it->second = {position, e};
+      by_face.emplace_back(mesh.face(mesh.is_border(h) ? mesh.opposite(h) : h).idx(), e);
     }
-    u32 shared = ~u32(0);
-    for (const auto& entry : first_in_face)
-      shared = (std::min)(shared, entry.second.second);
-    for (const auto& entry : first_in_face) {
-      edge_rep_[entry.second.second] = shared;
-      edge_members_[shared] += entry.second.second == shared ? 0 : 1;
+    std::sort(by_face.begin(), by_face.end());
+    std::vector<u32> first; // per face
+    for (std::size_t i = 0, j = 0; i < by_face.size(); i = j) {
+      for (j = i; j < by_face.size() && by_face[j].first == by_face[i].first; ++j) {
+      }
+      first.push_back(j - i == 1 ? by_face[i].second : first_side(mesh, Face_index(by_face[i].first), group));
+    }
+    const u32 shared = *std::min_element(first.begin(), first.end());
+    for (u32 e : first) {
+      edge_rep_[e] = shared;
+      edge_members_[shared] += e == shared ? 0 : 1;
     }
     for (u32 e : group)
       mark_non_manifold(mesh, e);
   }
 
-  // Edge e (its own class or its class's first edge) is non-manifold, and
-  // so are its ends.
+  // The first edge of `group` (sorted) met walking face f from its halfedge.
+  template <class P>
+  static u32 first_side(const Mobius_mesh<P>& mesh, Face_index f, const std::vector<u32>& group)
+  {
+    auto d = mesh.halfedge(f);
+    while (!std::binary_search(group.begin(), group.end(), u32(mesh.edge(d).idx())))
+      d = mesh.next(d);
+    return mesh.edge(d).idx();
+  }
+
+  // Edge e is (a copy of) a non-manifold edge, and so are its ends; each
+  // class is counted at its representative.
   template <class P>
   void mark_non_manifold(const Mobius_mesh<P>& mesh, u32 e)
   {

@@ -51,6 +51,8 @@ public:
     count_sides();
     std::vector<u32> fan = corner_fans();
     rename_fans(fan);
+    check_mesh_size("the polygon soup with a vertex per corner fan",
+                    Mesh_size{std::size_t(n_vertices_) + original_.size(), 0, 0, 0});
     find_lone_sides();
   }
 

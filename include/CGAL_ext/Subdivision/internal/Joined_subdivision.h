@@ -14,8 +14,9 @@
 // on an interior non-manifold crease cannot be expressed by sharpness on its
 // copies (a copy sees only its own sheet's edges and faces): its point is
 // computed here, after each level, from the joined vertex's edges with the
-// rules of Crease.h. Everything else is the manifold refiner's, one level at
-// a time.
+// rules of Crease.h, and so is the Chaikin decay of the semi-sharp edges at
+// a joined vertex (an average over its whole ring). Everything else is the
+// manifold refiner's, one level at a time.
 
 #ifndef CGAL_EXT_SUBDIVISION_INTERNAL_JOINED_SUBDIVISION_H
 #define CGAL_EXT_SUBDIVISION_INTERNAL_JOINED_SUBDIVISION_H
@@ -209,6 +210,8 @@ void decay_at_joined_vertices(const Mobius_mesh<P>& parent, const CGAL_ext::inte
     if (c.empty())
       continue;
     const Joined_ring<P> ring = joined_ring(parent, classes, c, edge_sharpness);
+    if (std::none_of(ring.sharpness.begin(), ring.sharpness.end(), [](float s) { return Crease::is_semi_sharp(s); }))
+      continue;
     const std::vector<float> decayed = joined_child_sharpness(ring, method);
     for (u32 v : c)
       for (Dart d : CGAL_ext::halfedges_around_target(Vertex_index(v), parent)) {
@@ -218,6 +221,7 @@ void decay_at_joined_vertices(const Mobius_mesh<P>& parent, const CGAL_ext::inte
           continue;
         const u32 entry = u32(std::find(ring.edge.begin(), ring.edge.end(), classes.edge_representative(e.idx())) -
                               ring.edge.begin());
+        CGAL_assertion(entry < decayed.size());
         for (Dart h : CGAL_ext::halfedges_around_target(Vertex_index(v), child))
           if (child.source(h).idx() == nv + e.idx())
             child_sharpness[child.edge(h)] = decayed[entry];
@@ -271,8 +275,10 @@ std::vector<u32> child_joins(const Mobius_mesh<P>& parent, const CGAL_ext::inter
 // The groups of the child's edges for its Join_classes: a half of a parent
 // edge is one with the halves of the same input edge at the same input
 // vertex (at the same copy for a degenerate edge, whose two halves both
-// end at its vertex and stay two edges, as in OpenSubdiv); every other
-// child edge is alone between its ends.
+// end at its vertex and stay two edges, as in OpenSubdiv's next level);
+// every other child edge is alone between its ends. (A half of an edge of
+// its own class is a class of one, not tagged non-manifold as OpenSubdiv
+// tags it: a border, it is infinitely sharp all the same.)
 template <class P>
 std::vector<std::uint64_t> child_edge_groups(const Mobius_mesh<P>& parent,
                                              const CGAL_ext::internal::Join_classes& classes,
