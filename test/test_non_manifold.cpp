@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 namespace {
@@ -39,18 +40,30 @@ Shape book(int pages)
   return s;
 }
 
+// The Soup_error that importing the soup into an empty mesh with `np`
+// throws (none if it succeeds); a failed import leaves the mesh empty.
+template <class NamedParameters>
+std::optional<CGAL_ext::Soup_error> import_error(const std::vector<Point>& points,
+                                                 const std::vector<std::vector<int>>& polygons,
+                                                 const NamedParameters& np)
+{
+  Mesh m;
+  try {
+    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, np);
+  } catch (const CGAL_ext::Soup_error& e) {
+    EXPECT_EQ(m.number_of_vertices(), 0u);
+    return e;
+  }
+  return std::nullopt;
+}
+
 TEST(NonManifold, an_edge_of_three_or_more_polygons_is_refused_by_default)
 {
   const Shape s = book(3);
-  Mesh m;
-  try {
-    CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m);
-    FAIL() << "no Soup_error";
-  } catch (const CGAL_ext::Soup_error& e) {
-    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::non_manifold_edge);
-    EXPECT_EQ(e.polygons(), (std::vector<std::size_t>{0, 1, 2}));
-  }
-  EXPECT_EQ(m.number_of_vertices(), 0u);
+  const auto e = import_error(s.points, s.faces, PM::default_values());
+  ASSERT_TRUE(e) << "no Soup_error";
+  EXPECT_EQ(e->kind(), CGAL_ext::Soup_error::Kind::non_manifold_edge);
+  EXPECT_EQ(e->polygons(), (std::vector<std::size_t>{0, 1, 2}));
 }
 
 TEST(NonManifold, an_edge_of_3_4_or_100_polygons_becomes_a_border_per_polygon)
@@ -107,15 +120,9 @@ TEST(NonManifold, a_pinched_vertex_splits_and_a_bare_vertex_stays)
 TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_is_refused_by_default)
 {
   const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
-  const std::vector<std::vector<int>> polygons = {{0, 1, 2, 2}};
-  Mesh m;
-  try {
-    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m);
-    FAIL() << "no Soup_error";
-  } catch (const CGAL_ext::Soup_error& e) {
-    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
-  }
-  EXPECT_EQ(m.number_of_vertices(), 0u);
+  const auto e = import_error(points, {{0, 1, 2, 2}}, PM::default_values());
+  ASSERT_TRUE(e) << "no Soup_error";
+  EXPECT_EQ(e->kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
 }
 
 // A polygon whose two visits of a vertex lie in one fan (a triangle joins
@@ -124,17 +131,11 @@ TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_within_one_fan_is_refused
 {
   const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 1),
                                      Point(-1, 1, 0), Point(-1, 0, 1)};
-  const std::vector<std::vector<int>> polygons = {{0, 1, 2, 0, 4, 5}, {0, 4, 1}};
-  Mesh m;
-  try {
-    CGAL_ext::polygon_soup_to_mobius_mesh(points, polygons, m, split_policy);
-    FAIL() << "no Soup_error";
-  } catch (const CGAL_ext::Soup_error& e) {
-    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
-    EXPECT_EQ(e.polygons(), std::vector<std::size_t>{0});
-    EXPECT_EQ(e.vertices(), std::vector<std::size_t>{0});
-  }
-  EXPECT_EQ(m.number_of_vertices(), 0u);
+  const auto e = import_error(points, {{0, 1, 2, 0, 4, 5}, {0, 4, 1}}, split_policy);
+  ASSERT_TRUE(e) << "no Soup_error";
+  EXPECT_EQ(e->kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
+  EXPECT_EQ(e->polygons(), std::vector<std::size_t>{0});
+  EXPECT_EQ(e->vertices(), std::vector<std::size_t>{0});
 }
 
 // What cannot follow the joins refuses them, before it touches the mesh.
@@ -348,16 +349,11 @@ TEST(NonManifold, polygons_that_visit_a_vertex_twice_as_opensubdiv)
 TEST(NonManifold, a_degenerate_edge_inside_a_fan_is_refused)
 {
   const Shape s = grid_with(4, {5, 5, 6, 10, 9});
-  Mesh m;
-  try {
-    CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m, split_policy);
-    FAIL() << "no Soup_error";
-  } catch (const CGAL_ext::Soup_error& e) {
-    EXPECT_EQ(e.kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
-    EXPECT_EQ(e.polygons(), std::vector<std::size_t>{4});
-    EXPECT_EQ(e.vertices(), std::vector<std::size_t>{5});
-  }
-  EXPECT_EQ(m.number_of_vertices(), 0u);
+  const auto e = import_error(s.points, s.faces, split_policy);
+  ASSERT_TRUE(e) << "no Soup_error";
+  EXPECT_EQ(e->kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
+  EXPECT_EQ(e->polygons(), std::vector<std::size_t>{4});
+  EXPECT_EQ(e->vertices(), std::vector<std::size_t>{5});
 }
 
 TEST(NonManifold, catmull_clark_equals_opensubdiv_on_its_non_manifold_shapes)

@@ -80,6 +80,8 @@ private:
   u32 face_size(u32 f) const { return flat_.offset[f + 1] - flat_.offset[f]; }
   // The corner after corner i of face f (i in [0, size)), as a flat index.
   u32 next_in_face(u32 f, u32 i) const { return flat_.offset[f] + (i + 1) % face_size(f); }
+  // The corner before corner i of face f, as a flat index.
+  u32 prev_in_face(u32 f, u32 i) const { return flat_.offset[f] + (i + face_size(f) - 1) % face_size(f); }
 
   // The corners of the vertices some polygon visits twice, as flat indices.
   void find_repeated_corners()
@@ -107,7 +109,7 @@ private:
   {
     for (std::size_t k = 0; k < corners_.size(); ++k) {
       const u32 f = face_[k], t = corners_[k], i = t - flat_.offset[f];
-      const u32 prev = flat_.offset[f] + (i + face_size(f) - 1) % face_size(f);
+      const u32 prev = prev_in_face(f, i);
       fn(f, t, next_in_face(f, i));
       if (!is_repeated_corner(prev)) // else met as that corner's next side
         fn(f, prev, t);
@@ -142,7 +144,7 @@ private:
     std::unordered_map<std::uint64_t, std::array<u32, 2>> first_corner;
     for (std::size_t k = 0; k < corners_.size(); ++k) {
       const u32 f = face_[k], i = corners_[k] - flat_.offset[f], v = flat_.vertex[corners_[k]];
-      const u32 prev = flat_.vertex[flat_.offset[f] + (i + face_size(f) - 1) % face_size(f)];
+      const u32 prev = flat_.vertex[prev_in_face(f, i)];
       const u32 next = flat_.vertex[next_in_face(f, i)];
       for (const u32 w : {prev, next}) {
         if (!is_two_sided(v, w))

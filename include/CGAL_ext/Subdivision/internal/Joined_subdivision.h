@@ -96,6 +96,19 @@ Joined_ring<P> joined_ring(const Mobius_mesh<P>& mesh, const CGAL_ext::internal:
   return ring;
 }
 
+// The vertices v < nv for which `selected(v)` holds, grouped by input
+// vertex (at its representative's index; the other entries empty).
+template <class Selected>
+std::vector<std::vector<u32>> copies_by_input_vertex(const CGAL_ext::internal::Join_classes& classes, u32 nv,
+                                                     Selected selected)
+{
+  std::vector<std::vector<u32>> copies(nv);
+  for (u32 v = 0; v < nv; ++v)
+    if (selected(v))
+      copies[classes.representative(v)].push_back(v);
+  return copies;
+}
+
 // Whether a corner channel of `mesh` holds several values at the vertices
 // `copies` (one vertex of the input).
 template <class P>
@@ -129,12 +142,11 @@ std::vector<Joined_crease_vertex> sharpen_joined_vertices(const Mobius_mesh<P>& 
                                                           const EdgeSharpness& edge_sharpness,
                                                           std::vector<float>& vertex_sharpness)
 {
-  std::vector<std::vector<u32>> copies(mesh.number_of_vertices());
-  for (u32 v = 0; v < u32(mesh.number_of_vertices()); ++v)
-    if (classes.is_non_manifold_vertex(v))
-      copies[classes.representative(v)].push_back(v);
+  const std::vector<std::vector<u32>> copies =
+    copies_by_input_vertex(classes, u32(mesh.number_of_vertices()),
+                           [&classes](u32 v) { return classes.is_non_manifold_vertex(v); });
   std::vector<Joined_crease_vertex> creases;
-  for (std::vector<u32>& c : copies) {
+  for (const std::vector<u32>& c : copies) {
     if (c.empty())
       continue;
     float s = 0.0f;
@@ -201,10 +213,8 @@ void decay_at_joined_vertices(const Mobius_mesh<P>& parent, const CGAL_ext::inte
   if (method != Crease_method::chaikin)
     return; // the uniform rule decays each edge by itself
   const u32 nv = u32(parent.number_of_vertices());
-  std::vector<std::vector<u32>> copies(nv);
-  for (u32 v = 0; v < nv; ++v)
-    if (classes.is_joined(v))
-      copies[classes.representative(v)].push_back(v);
+  const std::vector<std::vector<u32>> copies =
+    copies_by_input_vertex(classes, nv, [&classes](u32 v) { return classes.is_joined(v); });
   auto child_sharpness = edge_sharpness_map(child);
   for (const std::vector<u32>& c : copies) {
     if (c.empty())
