@@ -1431,8 +1431,9 @@ TEST(CornerChannelsOpenSubdiv, LimitSurfaceOfTheShapes)
     {"catmark_edgecorner.obj", false},  {"catmark_nonquads.obj", false},
     {"catmark_smoothtris1.obj", false}, {"loop_tetrahedron.obj", true},      {"loop_icos_semisharp.obj", true},
     {"loop_triangle_edgeonly.obj", true}};
-  // Not catmark_chaikin1: the surface of its points differs from Bfr's near
-  // two vertices with Chaikin creases (limit_surface.md, "Not yet").
+  // Not catmark_chaikin1: Bfr's surface of its points differs from Far's
+  // refinement near two vertices with Chaikin creases (limit_surface.md,
+  // "Chaikin creases").
   for (const auto& [name, loop] : shapes) {
     SCOPED_TRACE(name);
     Shape s = read_shape(test::data(std::string("opensubdiv/") + name));

@@ -431,7 +431,7 @@ private:
   void refine_children(const Level_mesh<P>& L, Dart d, const Patch<FT>& where)
   {
     Level_mesh<P> child;
-    const Dart c = copy_neighbourhood(L, d, child);
+    const Dart c = copy_neighbourhood(L, d, child, needs_two_rings(L, opt_));
     const auto nv = child.mesh.number_of_vertices();
     Vertex_index vp[3], ep[3]; // corner k's child, and the edge point of edge k (corner k to k + 1)
     const auto ck = triangle_darts(child.mesh, c);

@@ -51,11 +51,17 @@ struct Level_mesh
   // The number of sides every face has, 0 if they differ: where it is the
   // scheme's regular size, no corner needs to walk its faces to know.
   unsigned face_size = 0;
+  // Whether an edge is semi-sharp: Chaikin's rule then needs deeper copies.
+  bool semi_sharp_edges = false;
 
   void bind()
   {
     es = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
     vs = mesh.template property_map<Vertex_index, float>(vertex_sharpness_name);
+    semi_sharp_edges = false;
+    if (es)
+      for (Edge_index e : mesh.edges())
+        semi_sharp_edges = semi_sharp_edges || Crease::is_semi_sharp((*es)[e]);
     face_size = 0;
     for (Face_index f : mesh.faces()) {
       const unsigned n = unsigned(mesh.degree(f));
@@ -556,13 +562,25 @@ std::array<Row, 20> gregory_rows(const Mobius_mesh<P>& m, Dart d, const std::arr
 }
 
 
+// Whether a copy of a face's neighbourhood must reach two rings deep.
+// Under Chaikin's rule the sharpness of a child edge at a vertex averages
+// the vertex's semi-sharp edges, and the point of an edge at a corner takes
+// its rule from both of its children: the one at the far end needs the
+// whole ring of the corner's neighbour. Uniform decay needs no ring.
+template <class P>
+bool needs_two_rings(const Level_mesh<P>& L, const Limit_options& opt)
+{
+  return opt.crease == Crease_method::chaikin && L.semi_sharp_edges;
+}
+
 // Copies the faces around the corners of face(d) (with their sharpness)
-// into `out` and returns the dart of `out` that stands for d. Faces keep
+// into `out` and returns the dart of `out` that stands for d; with
+// `two_rings`, the faces around the vertices of those faces too. Faces keep
 // their own orientation, so Möbius edges stay Möbius. A vertex that two
 // separate fans of the copy share (a small or wrapped mesh) is split for
 // the face that cannot join it: only the corners' rings must be whole.
 template <class P>
-Dart copy_neighbourhood(const Level_mesh<P>& L, Dart d, Level_mesh<P>& out)
+Dart copy_neighbourhood(const Level_mesh<P>& L, Dart d, Level_mesh<P>& out, bool two_rings = false)
 {
   const Mobius_mesh<P>& m = L.mesh;
   std::vector<Face_index> faces;
@@ -570,13 +588,20 @@ Dart copy_neighbourhood(const Level_mesh<P>& L, Dart d, Level_mesh<P>& out)
     if (std::find(faces.begin(), faces.end(), g) == faces.end())
       faces.push_back(g);
   };
-  std::vector<Vertex_index> corners;
-  for (Dart c : halfedges_around_face(d, m)) {
-    corners.push_back(m.target(c));
+  auto add_around = [&](Dart c) { // the faces around target(c)
     for (Dart a : halfedges_around_target(c, m))
       if (!m.is_border(a))
         add(m.face(a));
+  };
+  std::vector<Vertex_index> corners;
+  for (Dart c : halfedges_around_face(d, m)) {
+    corners.push_back(m.target(c));
+    add_around(c);
   }
+  if (two_rings)
+    for (std::size_t i = 0, n = faces.size(); i < n; ++i)
+      for (Dart c : halfedges_around_face(m.halfedge(faces[i]), m))
+        add_around(c);
   out.mesh.clear();
   std::vector<std::pair<Vertex_index, Vertex_index>> map; // (level vertex, copy)
   auto copy_of = [&](Vertex_index v, bool fresh) {
@@ -719,7 +744,7 @@ public:
   bool refine_around(const Level_mesh<P>& L, Dart d, Level_mesh<P>& child, std::vector<Vertex_index>& vp,
                      std::vector<Vertex_index>& ep, Vertex_index& fp) const
   {
-    const Dart c = copy_neighbourhood(L, d, child);
+    const Dart c = copy_neighbourhood(L, d, child, needs_two_rings(L, opt_));
     const auto nv = child.mesh.number_of_vertices(), ne = child.mesh.number_of_edges();
     vp.clear();
     ep.clear();
