@@ -34,6 +34,12 @@
 //                                        not join them); the surface's
 //                                        construction included in both. The same
 //                                        density as CGAL_ext_uniform_2_levels.
+//   limit_surface/tessellate_rate8/...   the same at rate 8 (64 facets a face:
+//                                        6.6 M quads of the torus, 8.4 M
+//                                        triangles of the octahedron; Bfr 13.1 M
+//                                        and 8.4 M triangles), beside uniform
+//                                        refinement by three levels (the same
+//                                        number of faces).
 //   limit_surface/closest_point/...      ours alone: 10 000 queries near the
 //                                        surface (the search structure built
 //                                        in the first, and counted).
@@ -285,7 +291,7 @@ void ours(benchmark::State& state, const std::string& name, int threads)
 }
 
 template <class Mask>
-void refinement(benchmark::State& state, const std::string& name)
+void refinement(benchmark::State& state, const std::string& name, int levels)
 {
   const Input& in = input(name);
   for (auto _ : state) {
@@ -293,12 +299,12 @@ void refinement(benchmark::State& state, const std::string& name)
     Mesh m = in.mesh;
     state.ResumeTiming();
     if constexpr (std::is_same_v<Mask, S::Loop_mask>)
-      S::loop(m, CGAL_ext::parameters::number_of_iterations(2));
+      S::loop(m, CGAL_ext::parameters::number_of_iterations(unsigned(levels)));
     else
-      S::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(2));
+      S::catmull_clark(m, CGAL_ext::parameters::number_of_iterations(unsigned(levels)));
     benchmark::DoNotOptimize(m.number_of_vertices());
   }
-  state.counters["faces"] = double(in.mesh.number_of_faces() * 16); // both schemes: 16 faces a face
+  state.counters["faces"] = double(in.mesh.number_of_faces() << (2 * levels)); // both schemes: 4 faces a face a level
 }
 
 #if CGAL_EXT_HAVE_OPENSUBDIV
@@ -320,13 +326,13 @@ void bfr(benchmark::State& state, const std::string& name, int threads)
 #endif
 
 template <class Mask>
-void tessellate_ours(benchmark::State& state, const std::string& name)
+void tessellate_ours(benchmark::State& state, const std::string& name, int rate)
 {
   const Input& in = input(name);
   std::size_t faces = 0;
   for (auto _ : state) {
     const Surface<Mask> surface(in.mesh);
-    const Mesh t = surface.tessellate(4);
+    const Mesh t = surface.tessellate(rate);
     faces = t.number_of_faces();
     benchmark::DoNotOptimize(faces);
   }
@@ -334,11 +340,11 @@ void tessellate_ours(benchmark::State& state, const std::string& name)
 }
 
 #if CGAL_EXT_HAVE_OPENSUBDIV
-// Per face: Bfr's tessellation at rate 4 (triangles), its coordinates
+// Per face: Bfr's tessellation at `rate` (triangles), its coordinates
 // evaluated with first derivatives (for the normals), points and facets
 // appended to one soup.
 template <class Mask>
-void tessellate_bfr(benchmark::State& state, const std::string& name)
+void tessellate_bfr(benchmark::State& state, const std::string& name, int rate)
 {
   const Input& in = input(name);
   const Osd_input o = osd_input(in.mesh);
@@ -353,7 +359,7 @@ void tessellate_bfr(benchmark::State& state, const std::string& name)
       factory.InitVertexSurface(int(f), &surface);
       patch_points.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
       surface.PreparePatchPoints(o.xyz.data(), 3, patch_points.data(), 3);
-      const Bfr::Tessellation tessellation(surface.GetParameterization(), 4);
+      const Bfr::Tessellation tessellation(surface.GetParameterization(), rate);
       coords.resize(2 * std::size_t(tessellation.GetNumCoords()));
       tessellation.GetCoords(coords.data());
       const int first = int(points.size() / 3);
@@ -438,12 +444,25 @@ void register_case(const std::string& name)
     add(group + "OpenSubdiv_Bfr_parallel/threads:" + std::to_string(t), bfr<Mask>, name, t);
 #endif
 #endif
-  add(group + "CGAL_ext_uniform_2_levels", refinement<Mask>, name);
-  add("limit_surface/tessellate/" + name + "/CGAL_ext_Limit_surface", tessellate_ours<Mask>, name);
+  add(group + "CGAL_ext_uniform_2_levels", refinement<Mask>, name, 2);
+  add("limit_surface/tessellate/" + name + "/CGAL_ext_Limit_surface", tessellate_ours<Mask>, name, 4);
 #if CGAL_EXT_HAVE_OPENSUBDIV
-  add("limit_surface/tessellate/" + name + "/OpenSubdiv_Bfr", tessellate_bfr<Mask>, name);
+  add("limit_surface/tessellate/" + name + "/OpenSubdiv_Bfr", tessellate_bfr<Mask>, name, 4);
 #endif
   add("limit_surface/closest_point/" + name + "/CGAL_ext_Limit_surface", closest_points<Mask>, name);
+}
+
+// Tessellations of about ten million triangles: rate 8, 64 facets a face,
+// and uniform refinement by three levels to the same density.
+template <class Mask>
+void register_large_tessellation(const std::string& name)
+{
+  const std::string group = "limit_surface/tessellate_rate8/" + name + "/";
+  add(group + "CGAL_ext_Limit_surface", tessellate_ours<Mask>, name, 8);
+#if CGAL_EXT_HAVE_OPENSUBDIV
+  add(group + "OpenSubdiv_Bfr", tessellate_bfr<Mask>, name, 8);
+#endif
+  add(group + "CGAL_ext_uniform_3_levels", refinement<Mask>, name, 3);
 }
 
 void register_all()
@@ -451,6 +470,8 @@ void register_all()
   register_case<S::Catmull_clark_mask>("torus320x320");
   register_case<S::Catmull_clark_mask>("cube_level7");
   register_case<S::Loop_mask>("octahedron_level7");
+  register_large_tessellation<S::Catmull_clark_mask>("torus320x320");
+  register_large_tessellation<S::Loop_mask>("octahedron_level7");
 }
 
 } // namespace

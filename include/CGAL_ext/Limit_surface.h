@@ -449,7 +449,8 @@ private:
     internal::Limit_tessellator<Limit_surface, P, decltype(corner_point)> tessellator(*this, m, rates, corner_point,
                                                                                      is_loop);
     Mobius_mesh<P> out = tessellator.run();
-    carry_corner_channels(rates, tessellator.facets(), out);
+    if (!m.corner_channels().empty())
+      carry_corner_channels(rates, tessellator.facets(), out);
     return out;
   }
 

@@ -13,6 +13,7 @@
 
 #include <CGAL_ext/Limit_surface/internal/Parameterization.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/Origin.h>
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -89,7 +91,13 @@ public:
   // After run(): the corners of each facet of the result (facet f is face f
   // of the result), as sample ids in the order the facet was made; the same
   // at the same rates on another mesh of the same faces (a channel's cage).
-  const std::vector<std::vector<std::size_t>>& facets() const { return facets_; }
+  std::vector<std::vector<std::size_t>> facets() const
+  {
+    std::vector<std::vector<std::size_t>> out(facets_.size());
+    for (std::uint32_t f = 0; f < facets_.size(); ++f)
+      out[f].assign(facets_.vertex.begin() + facets_.offset[f], facets_.vertex.begin() + facets_.offset[f + 1]);
+    return out;
+  }
   // After run(): the point of each sample id.
   const std::vector<P>& points() const { return points_; }
 
@@ -134,7 +142,8 @@ private:
       points_[v.idx()] = corner_point_(v, st.f, e.point);
       normals_[v.idx()] = e.normal;
     }
-    st.boundary_normals[v.idx()] = e.normal;
+    if (corner_normals_)
+      st.boundary_normals[v.idx()] = e.normal;
     return v.idx();
   }
 
@@ -158,7 +167,8 @@ private:
     const Dart owner = edge_owner_[e.idx()];
     const bool same_way = m_.source(owner) == m_.source(d); // an edge's ends differ
     const std::size_t id = edge_first_[e.idx()] + std::size_t(same_way ? i - 1 : N - i - 1);
-    st.boundary_normals[id] = same_way && !(owner == d) ? -normals_[id] : normals_[id];
+    if (corner_normals_)
+      st.boundary_normals[id] = same_way && !(owner == d) ? -normals_[id] : normals_[id];
     return id;
   }
 
@@ -366,31 +376,32 @@ private:
     }
   }
 
-  void emit(const Face_state& st, std::vector<std::size_t> facet)
+  void emit(const Face_state& st, std::initializer_list<std::size_t> facet)
   {
-    if (corner_normals_) {
-      std::vector<Vector> ns;
+    if (corner_normals_)
       for (std::size_t id : facet) {
         const auto it = st.boundary_normals.find(id);
-        ns.push_back(it != st.boundary_normals.end() ? it->second : normals_[id]);
+        facet_normals_.push_back(it != st.boundary_normals.end() ? it->second : normals_[id]);
       }
-      facet_normals_.push_back(std::move(ns));
-    }
-    facets_.push_back(std::move(facet));
+    if (points_.size() > std::size_t(std::uint32_t(-1)))
+      throw Parameter_error("Limit_surface::tessellate: more than 2^32 samples");
+    std::uint32_t ids[4]; // a facet is a triangle or a quad
+    std::size_t n = 0;
+    for (std::size_t id : facet)
+      ids[n++] = std::uint32_t(id);
+    facets_.add(ids, ids + n);
   }
 
+  // The mesh of the facets, built at once from their lists (facet f is
+  // face f, its corners in the facet's order), as the soup import builds.
   Mobius_mesh<P> build() const
   {
     Mobius_mesh<P> out;
-    for (const P& p : points_)
-      out.add_vertex(p);
-    for (const auto& facet : facets_) {
-      std::vector<Vertex_index> vs;
-      for (std::size_t id : facet)
-        vs.push_back(Vertex_index(id));
-      std::string why;
-      if (out.add_face(vs, &why) == Face_index())
-        throw Parameter_error("Limit_surface::tessellate: internal error, a facet was refused: " + why);
+    try {
+      CGAL_ext::internal::build_mesh_from_faces(
+        facets_.view(std::uint32_t(points_.size())), [&](std::uint32_t v) { return points_[v]; }, false, out);
+    } catch (const Soup_error& e) {
+      throw Parameter_error(std::string("Limit_surface::tessellate: internal error, a facet was refused: ") + e.what());
     }
     auto vn = out.template add_property_map<Vertex_index, Vector>("v:normal", Vector(CGAL::NULL_VECTOR)).first;
     for (Vertex_index v : out.vertices())
@@ -399,11 +410,11 @@ private:
       return out;
     auto hn = out.template add_property_map<Halfedge_index, Vector>("h:normal", Vector(CGAL::NULL_VECTOR)).first;
     for (Face_index f : out.faces()) {
-      const auto& facet = facets_[f.idx()];
+      const std::uint32_t first = facets_.offset[f.idx()], end = facets_.offset[f.idx() + 1];
       for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out))
-        for (std::size_t c = 0; c < facet.size(); ++c)
-          if (facet[c] == out.target(d).idx())
-            hn[d.halfedge()] = facet_normals_[f.idx()][c];
+        for (std::uint32_t c = first; c < end; ++c)
+          if (facets_.vertex[c] == out.target(d).idx())
+            hn[d.halfedge()] = facet_normals_[c];
     }
     return out;
   }
@@ -419,8 +430,8 @@ private:
   std::vector<bool> vertex_done_;
   std::vector<Dart> edge_owner_; // the dart whose face evaluated the edge's samples
   std::vector<std::size_t> edge_first_;
-  std::vector<std::vector<std::size_t>> facets_;
-  std::vector<std::vector<Vector>> facet_normals_;
+  CGAL_ext::internal::Face_list facets_;
+  std::vector<Vector> facet_normals_; // with corner normals: one per facet corner, as facets_.vertex
 };
 
 // The smallest rate in [1, max_rate] at which `within(rate)` holds (else
