@@ -137,9 +137,31 @@ namespace Far = OpenSubdiv::Far;
 namespace Bfr = OpenSubdiv::Bfr;
 namespace Sdc = OpenSubdiv::Sdc;
 
+// A surface evaluated from one chosen dart of each face (the face's frame
+// turned), for against_bfr().
+template <class Surf>
+struct From_darts
+{
+  const Surf& surface;
+  std::vector<CGAL_ext::Dart> dart; // by face
+  auto evaluate(CGAL_ext::Face_index f, double u, double v) const { return surface.evaluate(dart[f.idx()], u, v); }
+};
+
+template <class Surf>
+struct Is_loop : std::is_same<Surf, Loop_surface>
+{};
+template <class Surf>
+struct Is_loop<From_darts<Surf>> : Is_loop<Surf>
+{};
+
 struct Differences
 {
   double position = 0, first = 0, second = 0;
+  // The same off the corners of the faces and of their sub-faces (parameters
+  // that are multiples of 1/2): a Gregory patch there blends two interior
+  // points by weights 0/0, which a face seen the other way round takes the
+  // other way.
+  double second_off_corners = 0;
   // Loop: OpenSubdiv 3.5's EvaluatePatchBasis scales the second derivatives
   // of a sub-triangle turned half a turn (the middle child of a triangle) by
   // -(2^depth)² instead of (2^depth)², so Bfr's second derivatives there
@@ -155,9 +177,9 @@ template <class Surf, class FaceOf>
 Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<std::vector<int>>& faces,
                         const std::vector<Point>& points, const std::vector<std::array<int, 2>>& creases,
                         const std::vector<float>& crease_values, CGAL_ext::Boundary_interpolation boundary,
-                        CGAL_ext::Crease_method method, const FaceOf& face_of)
+                        CGAL_ext::Crease_method method, const FaceOf& face_of, int grid = 8)
 {
-  constexpr bool loop = std::is_same_v<Surf, Loop_surface>;
+  constexpr bool loop = Is_loop<Surf>::value;
   std::vector<int> sizes, indices, crease_indices, corner_indices;
   std::vector<float> corner_values;
   for (const auto& f : faces) {
@@ -197,17 +219,20 @@ Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<st
     EXPECT_TRUE(factory.InitVertexSurface(face_of(f), &bfr));
     std::vector<double> patch_points(std::size_t(bfr.GetNumPatchPoints()) * 3);
     bfr.PreparePatchPoints(xyz.data(), 3, patch_points.data(), 3);
-    for (const auto& uv : loop ? triangle_grid(8) : parameter_grid(int(m.degree(f)), 8)) {
+    for (const auto& uv : loop ? triangle_grid(grid) : parameter_grid(int(m.degree(f)), grid)) {
       double p[3], du[3], dv[3], duu[3], duv[3], dvv[3];
       bfr.Evaluate(uv.data(), patch_points.data(), 3, p, du, dv, duu, duv, dvv);
       const auto r = surface.evaluate(f, uv[0], uv[1]);
       d.position = std::max(d.position, gap(r.point - CGAL::ORIGIN, p));
       d.first = std::max({d.first, gap(r.du, du), gap(r.dv, dv)});
       d.second = std::max({d.second, gap(r.duu, duu), gap(r.duv, duv), gap(r.dvv, dvv)});
+
       const double negated[3][3] = {{-duu[0], -duu[1], -duu[2]}, {-duv[0], -duv[1], -duv[2]}, {-dvv[0], -dvv[1], -dvv[2]}};
-      d.second_up_to_sign = std::max(
-        d.second_up_to_sign, std::min(std::max({gap(r.duu, duu), gap(r.duv, duv), gap(r.dvv, dvv)}),
-                                      std::max({gap(r.duu, negated[0]), gap(r.duv, negated[1]), gap(r.dvv, negated[2])})));
+      const double second = std::min(std::max({gap(r.duu, duu), gap(r.duv, duv), gap(r.dvv, dvv)}),
+                                     std::max({gap(r.duu, negated[0]), gap(r.duv, negated[1]), gap(r.dvv, negated[2])}));
+      d.second_up_to_sign = std::max(d.second_up_to_sign, second);
+      if (2 * uv[0] != std::floor(2 * uv[0]) || 2 * uv[1] != std::floor(2 * uv[1]))
+        d.second_off_corners = std::max(d.second_off_corners, second);
     }
   }
   return d;
@@ -312,6 +337,136 @@ TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
   EXPECT_LE(d.first, 1e-10 * scale);
   RecordProperty("position", std::to_string(d.position / scale));
   RecordProperty("first_derivatives", std::to_string(d.first / scale));
+}
+
+// The dart of face f of m that runs from a to b, flipped if the face runs
+// the other way.
+CGAL_ext::Dart dart_from_to(const Mesh& m, CGAL_ext::Face_index f, CGAL_ext::Vertex_index a, CGAL_ext::Vertex_index b)
+{
+  for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
+    if (m.source(d) == a && m.target(d) == b)
+      return d;
+    if (m.source(d) == b && m.target(d) == a)
+      return d.flipped();
+  }
+  ADD_FAILURE() << "no dart from " << a << " to " << b << " in face f" << f.idx();
+  return m.halfedge(f);
+}
+
+// Bfr on the faces of m listed from another corner (f mod n), all of them
+// reversed if `reversed` (OpenSubdiv needs them oriented alike); ours
+// evaluated from the dart of each face that runs from the first corner of
+// its list to the second.
+template <class Surf>
+Differences against_bfr_on_turned_faces(const Mesh& m, const Surf& surface, CGAL_ext::Boundary_interpolation boundary,
+                                        CGAL_ext::Crease_method method, bool reversed, int grid)
+{
+  std::vector<std::vector<int>> faces;
+  From_darts<Surf> turned{surface, {}};
+  for (CGAL_ext::Face_index f : m.faces()) {
+    std::vector<int> face;
+    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+      face.push_back(int(v.idx()));
+    if (reversed)
+      std::reverse(face.begin(), face.end());
+    std::rotate(face.begin(), face.begin() + std::ptrdiff_t(f.idx() % face.size()), face.end());
+    turned.dart.push_back(dart_from_to(m, f, CGAL_ext::Vertex_index(face[0]), CGAL_ext::Vertex_index(face[1])));
+    faces.push_back(face);
+  }
+  std::vector<std::array<int, 2>> creases;
+  std::vector<float> values;
+  if (const auto es = m.property_map<CGAL_ext::Edge_index, float>("e:sharpness"))
+    for (CGAL_ext::Edge_index e : m.edges())
+      if ((*es)[e] > 0 && !m.is_border(e)) {
+        creases.push_back({int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
+        values.push_back((*es)[e]);
+      }
+  return against_bfr(m, turned, faces, m.points().data(), creases, values, boundary, method,
+                     [](CGAL_ext::Face_index f) { return int(f.idx()); }, grid);
+}
+
+// Each face of a one-sided mesh seen from its other side: evaluated from
+// the flipped dart of its first corner, against Bfr on the reversed copy of
+// the face in the orientation double cover (built as above).
+template <class Surf>
+Differences reversed_against_bfr_on_double_cover(const Mesh& m, const Surf& surface)
+{
+  std::vector<Point> points;
+  for (const Point& p : m.points().data()) {
+    points.push_back(p);
+    points.push_back(p);
+  }
+  std::vector<std::vector<std::pair<int, int>>> sheet(m.number_of_faces());
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(v, m))
+      if (!m.is_border(d))
+        sheet[m.face(d).idx()].push_back({int(v.idx()), d.is_flipped() ? 1 : 0});
+  std::vector<std::vector<int>> faces;
+  From_darts<Surf> turned{surface, {}};
+  for (CGAL_ext::Face_index f : m.faces())
+    for (int sigma : {0, 1}) {
+      std::vector<int> face;
+      for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
+        for (auto [w, s] : sheet[f.idx()])
+          if (w == int(v.idx())) {
+            face.push_back(2 * w + (sigma ^ s));
+            break;
+          }
+      if (sigma) {
+        std::reverse(face.begin(), face.end());
+        turned.dart.push_back(dart_from_to(m, f, CGAL_ext::Vertex_index(face[0] / 2), CGAL_ext::Vertex_index(face[1] / 2)));
+      }
+      faces.push_back(face);
+    }
+  return against_bfr(m, turned, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
+                     CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()) + 1; });
+}
+
+TEST(Limit_surface, EvaluatedFromAnyDartAsBfrOnTheFaceTurned)
+{
+  for (const char* name : {"catmark_nonquads", "catmark_cube_creases1", "loop_icos_semisharp"}) {
+    SCOPED_TRACE(name);
+    const Shape s = read_shape(test::data(std::string("opensubdiv/") + name + ".obj"));
+    const Mesh m = build(s);
+    const auto np = CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method);
+    for (bool reversed : {false, true}) {
+      const Differences d =
+        name[0] == 'l' ? against_bfr_on_turned_faces(m, Loop_surface(m, np), s.boundary, s.crease_method, reversed, 7)
+                       : against_bfr_on_turned_faces(m, Surface(m, np), s.boundary, s.crease_method, reversed, 7);
+      const double scale = largest_coordinate(m);
+      EXPECT_LE(d.position, 1e-10 * scale) << reversed;
+      EXPECT_LE(d.first, 1e-10 * scale) << reversed;
+      EXPECT_LE(d.second_off_corners, 1e-9 * scale) << reversed;
+      const std::string what = std::string(name) + (reversed ? "_reversed" : "_turned");
+      RecordProperty(what + "_position", sci(d.position / scale));
+      RecordProperty(what + "_first", sci(d.first / scale));
+      RecordProperty(what + "_second_off_corners", sci(d.second_off_corners / scale));
+      RecordProperty(what + "_second_at_corners_too", sci(d.second_up_to_sign / scale));
+    }
+  }
+  for (bool quads : {true, false}) {
+    SCOPED_TRACE(quads ? "Mobius strip of quads" : "Mobius strip of triangles");
+    Mesh m;
+    CGAL_ext::make_mobius_strip(m, 12, 3, 1, 1.0, 0.5, quads);
+    const Differences d = quads ? reversed_against_bfr_on_double_cover(m, Surface(m))
+                                : reversed_against_bfr_on_double_cover(m, Loop_surface(m));
+    const double scale = largest_coordinate(m);
+    EXPECT_LE(d.position, 1e-10 * scale);
+    EXPECT_LE(d.first, 1e-10 * scale);
+    RecordProperty(std::string(quads ? "mobius_quads" : "mobius_triangles") + "_first", sci(d.first / scale));
+  }
+  // From its first corner the other way round, a face's (u, v) are
+  // exchanged and its normal is turned over.
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3);
+  const Surface surface(m);
+  for (CGAL_ext::Face_index f : m.faces()) {
+    const CGAL_ext::Dart d = m.halfedge(f).flipped(); // from corner 0 to corner 3
+    const auto a = surface.evaluate(f, 0.3, 0.6), b = surface.evaluate(d, 0.6, 0.3);
+    EXPECT_LE(CGAL::squared_distance(a.point, b.point), 1e-24);
+    EXPECT_LE((a.normal + b.normal).squared_length(), 1e-24);
+  }
+  EXPECT_THROW(surface.evaluate(m.next(m.halfedge(CGAL_ext::Face_index(0))), 1.5, 0.5), CGAL_ext::Parameter_error);
 }
 
 class Tessellation_against_bfr : public ::testing::TestWithParam<const char*>
@@ -492,7 +647,15 @@ TEST(Limit_surface, RegularTorusIsExactWithRationals)
     for (const auto& uv : {std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(1, 3), CGAL::Gmpq(2, 7)},
                            std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(0), CGAL::Gmpq(1)},
                            std::array<CGAL::Gmpq, 2>{CGAL::Gmpq(5, 9), CGAL::Gmpq(1, 2)}})
+    {
       EXPECT_EQ(surface.evaluate(f, uv[0], uv[1]).point, closed_form(m, f, 5, 4, uv[0], uv[1]));
+      // From corner 2 the other way round, (u, v) is (1 - v, 1 - u): the
+      // same closed form, exactly.
+      const CGAL_ext::Dart d = m.next(m.next(m.halfedge(f))).flipped(); // corner 2 to corner 1
+      const auto e = surface.evaluate(d, CGAL::Gmpq(1) - uv[1], CGAL::Gmpq(1) - uv[0]);
+      EXPECT_EQ(e.point, closed_form(m, f, 5, 4, uv[0], uv[1]));
+      EXPECT_EQ(e.du, -surface.evaluate(f, uv[0], uv[1]).dv);
+    }
 }
 
 // At the corners of a face, the limit position of the vertex there.

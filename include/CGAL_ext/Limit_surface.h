@@ -269,6 +269,63 @@ public:
                           std::to_string(f.idx()));
   }
 
+  /// \brief the limit surface at parameter (`u`, `v`) of the face of dart
+  /// `d`, parameterised from `d`: as `evaluate()` parameterises a face whose
+  /// corners are listed from `source(d)` (corner 0) to `target(d)` (corner
+  /// 1) and on in the direction of `d`, whichever way `d` runs along its
+  /// face. The derivatives are taken in those parameters, and the normal
+  /// (du × dv) is seen from `d`'s orientation: on a one-sided surface, from
+  /// either side of a face. For `next(halfedge(f))`, it is `evaluate(f, u, v)`.
+  /// \throws Parameter_error if `d` is not a dart of a face of the mesh or
+  /// (`u`, `v`) lies outside the parameter domain.
+  Evaluation evaluate(Dart d, const FT& u, const FT& v) const
+  {
+    const Mobius_mesh<P>& m = base_.mesh;
+    if (d == Dart() || d.halfedge().idx() >= m.number_of_halfedges() || !m.is_valid(m.face(d)))
+      throw Parameter_error("Limit_surface::evaluate: the dart is not a dart of a face of the mesh");
+    const Face_index f = m.face(d);
+    const int n = int(m.degree(f));
+    // Corner k of the face's own frame is where d's halfedge starts, walked
+    // the face's way; d flipped starts at corner k + 1 and runs backwards.
+    const Dart along = d.is_flipped() ? d.flipped() : d;
+    int k = 0;
+    for (Dart x = m.next(m.halfedge(f)); x != along && k < n; x = m.next(x))
+      ++k;
+    const bool reversed = d.is_flipped();
+    const int start = reversed ? (k + 1) % n : k;
+    if (!reversed && start == 0)
+      return evaluate(f, u, v);
+    const auto corner = [&](int j) { return reversed ? (start - j % n + n) % n : (start + j) % n; };
+    const auto outside = [&] {
+      return Parameter_error("Limit_surface::evaluate: (u, v) lies outside the parameter domain of face f" +
+                             std::to_string(f.idx()) + " seen from its dart");
+    };
+    if (internal::has_own_domain(n, is_loop)) {
+      // A symmetry of the square or the triangle: affine, with integer
+      // coefficients, exact in an exact kernel.
+      const auto c0 = internal::corner_parameter<FT>(n, is_loop, corner(0));
+      const auto c1 = internal::corner_parameter<FT>(n, is_loop, corner(1));
+      const auto c2 = internal::corner_parameter<FT>(n, is_loop, corner(n - 1));
+      const std::array<FT, 4> J = {c1[0] - c0[0], c2[0] - c0[0], c1[1] - c0[1], c2[1] - c0[1]};
+      FT fu = c0[0] + J[0] * u + J[1] * v, fv = c0[1] + J[2] * u + J[3] * v;
+      if (is_loop ? outside_triangle(u, v) : (u < FT(0) || v < FT(0) || u > FT(1) || v > FT(1)))
+        throw outside();
+      // A triangle's far side, 1 - u - v, may round below 0.
+      fu = fu < FT(0) ? FT(0) : fu;
+      fv = fv < FT(0) ? FT(0) : fv;
+      return in_frame(evaluate(f, fu, fv), J);
+    }
+    const internal::Sub_face_point<FT> at = internal::locate_sub_face(n, u, v);
+    if (at.su < FT(0) || at.sv < FT(0) || at.su > FT(1) || at.sv > FT(1))
+      throw outside();
+    // Sub-face j of d's frame is the sub-face at face corner corner(j), its
+    // two local axes exchanged when d runs against the face.
+    const auto uv = internal::sub_face_parameter(n, corner(at.k), reversed ? at.sv : at.su, reversed ? at.su : at.sv);
+    const std::array<FT, 4> J = reversed ? std::array<FT, 4>{FT(0), FT(1), FT(1), FT(0)}
+                                         : std::array<FT, 4>{FT(1), FT(0), FT(0), FT(1)};
+    return in_frame(evaluate(f, uv[0], uv[1]), J);
+  }
+
   /// \brief the point of the limit surface closest to `query`: its face,
   /// parameter, position, normal and squared distance.
   ///
@@ -535,13 +592,19 @@ private:
 
   // A triangle's patch is found by Bfr's descent of its patch tree; the
   // patch's own (s, t) run against (u, v) where it is turned.
+  // Whether (u, v) lies outside the triangle (0, 0), (1, 0), (0, 1); in
+  // floating point, u + v may pass 1 by rounding (1 - t and t summed).
+  static bool outside_triangle(const FT& u, const FT& v)
+  {
+    const FT excess = u + v - FT(1);
+    const bool beyond = excess > FT(0) && !(std::is_floating_point_v<FT> && CGAL::to_double(excess) <= 4e-16);
+    return u < FT(0) || v < FT(0) || beyond;
+  }
+
   Evaluation evaluate_triangle(Face_index f, const std::vector<internal::Patch<FT>>& patches, const FT& u,
                                const FT& v) const
   {
-    // In floating point, u + v may pass 1 by rounding (1 - t and t summed).
-    const FT excess = u + v - FT(1);
-    const bool beyond = excess > FT(0) && !(std::is_floating_point_v<FT> && CGAL::to_double(excess) <= 4e-16);
-    if (u < FT(0) || v < FT(0) || beyond)
+    if (outside_triangle(u, v))
       throw Parameter_error("Limit_surface::evaluate: (u, v) lies outside the parameter domain of face f" +
                             std::to_string(f.idx()));
     unsigned depth = 0;
@@ -559,6 +622,31 @@ private:
     throw Parameter_error("Limit_surface: internal error, no patch at a parameter of face f" + std::to_string(f.idx()));
   }
 
+  // An evaluation in other parameters (s, t) of the face, related by the
+  // constant Jacobian J = [∂u/∂s, ∂u/∂t, ∂v/∂s, ∂v/∂t]: the derivatives by
+  // the chain rule, the normal that of the new ones.
+  static Evaluation in_frame(const Evaluation& e, const std::array<FT, 4>& J)
+  {
+    Evaluation r = e;
+    r.du = e.du * J[0] + e.dv * J[2];
+    r.dv = e.du * J[1] + e.dv * J[3];
+    r.duu = e.duu * (J[0] * J[0]) + e.duv * (FT(2) * J[0] * J[2]) + e.dvv * (J[2] * J[2]);
+    r.duv = e.duu * (J[0] * J[1]) + e.duv * (J[0] * J[3] + J[2] * J[1]) + e.dvv * (J[2] * J[3]);
+    r.dvv = e.duu * (J[1] * J[1]) + e.duv * (FT(2) * J[1] * J[3]) + e.dvv * (J[3] * J[3]);
+    set_normal(r);
+    return r;
+  }
+
+  // The unit normal du × dv, null where du and dv are parallel to rounding
+  // (at some corners of faces that are not quads), where its direction is noise.
+  static void set_normal(Evaluation& e)
+  {
+    const typename Kernel::Vector_3 n = CGAL::cross_product(e.du, e.dv);
+    const double length = std::sqrt(CGAL::to_double(n.squared_length()));
+    const double parallel = 1e-10 * std::sqrt(CGAL::to_double(e.du.squared_length() * e.dv.squared_length()));
+    e.normal = length > parallel && length > 0 ? n / FT(length) : CGAL::NULL_VECTOR;
+  }
+
   Evaluation finish(const internal::Patch_value<FT>& r, const FT& scale) const
   {
     auto vec = [](const internal::Coordinates<FT>& c, const FT& s) {
@@ -572,12 +660,7 @@ private:
     e.duu = vec(r.dss, s2);
     e.duv = vec(r.dst, s2);
     e.dvv = vec(r.dtt, s2);
-    const typename Kernel::Vector_3 n = CGAL::cross_product(e.du, e.dv);
-    // Where du and dv are parallel to rounding (at some corners of faces
-    // that are not quads), their cross product's direction is noise.
-    const double length = std::sqrt(CGAL::to_double(n.squared_length()));
-    const double parallel = 1e-10 * std::sqrt(CGAL::to_double(e.du.squared_length() * e.dv.squared_length()));
-    e.normal = length > parallel && length > 0 ? n / FT(length) : CGAL::NULL_VECTOR;
+    set_normal(e);
     return e;
   }
 
