@@ -137,6 +137,22 @@ namespace Far = OpenSubdiv::Far;
 namespace Bfr = OpenSubdiv::Bfr;
 namespace Sdc = OpenSubdiv::Sdc;
 
+// The descriptor of faces (`sizes`, `indices`) over `vertices` vertices
+// with creases (pairs of vertices, and values); the arrays outlive it.
+Far::TopologyDescriptor descriptor(int vertices, const std::vector<int>& sizes, const std::vector<int>& indices,
+                                   const std::vector<int>& crease_indices, const std::vector<float>& crease_values)
+{
+  Far::TopologyDescriptor desc;
+  desc.numVertices = vertices;
+  desc.numFaces = int(sizes.size());
+  desc.numVertsPerFace = sizes.data();
+  desc.vertIndicesPerFace = indices.data();
+  desc.numCreases = int(crease_values.size());
+  desc.creaseVertexIndexPairs = crease_indices.data();
+  desc.creaseWeights = crease_values.data();
+  return desc;
+}
+
 // A surface evaluated from one chosen dart of each face (the face's frame
 // turned), for against_bfr().
 template <class Surf>
@@ -194,14 +210,7 @@ Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<st
         corner_indices.push_back(int(v.idx()));
         corner_values.push_back((*vs)[v]);
       }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = int(points.size());
-  desc.numFaces = int(faces.size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  desc.numCreases = int(crease_values.size());
-  desc.creaseVertexIndexPairs = crease_indices.data();
-  desc.creaseWeights = crease_values.data();
+  Far::TopologyDescriptor desc = descriptor(int(points.size()), sizes, indices, crease_indices, crease_values);
   desc.numCorners = int(corner_values.size());
   desc.cornerVertexIndices = corner_indices.data();
   desc.cornerWeights = corner_values.data();
@@ -241,17 +250,44 @@ Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<st
 class Against_bfr : public ::testing::TestWithParam<const char*>
 {};
 
+// The dart of face f of m that runs from a to b, flipped if the face runs
+// the other way.
+CGAL_ext::Dart dart_from_to(const Mesh& m, CGAL_ext::Face_index f, CGAL_ext::Vertex_index a, CGAL_ext::Vertex_index b)
+{
+  for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
+    if (m.source(d) == a && m.target(d) == b)
+      return d;
+    if (m.source(d) == b && m.target(d) == a)
+      return d.flipped();
+  }
+  ADD_FAILURE() << "no dart from " << a << " to " << b << " in face f" << f.idx();
+  return m.halfedge(f);
+}
+
 // Bfr on the faces of `m` as the mesh walks them, with every edge's
-// sharpness from the mesh's map (so that both see the same creases).
+// sharpness from the mesh's map (so that both see the same creases). With
+// `turned`, each face is listed from another corner (f mod n), and all of
+// them reversed if `reversed` (OpenSubdiv needs them oriented alike); ours
+// is then evaluated from the dart of each face that runs from the first
+// corner of its list to the second.
 template <class Surf>
 Differences against_bfr_on_mesh(const Mesh& m, const Surf& surface, CGAL_ext::Boundary_interpolation boundary,
-                                CGAL_ext::Crease_method method)
+                                CGAL_ext::Crease_method method, bool turned = false, bool reversed = false,
+                                int grid = 8)
 {
   std::vector<std::vector<int>> faces;
+  From_darts<Surf> from_darts{surface, {}};
   for (CGAL_ext::Face_index f : m.faces()) {
-    faces.emplace_back();
+    std::vector<int> face;
     for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
-      faces.back().push_back(int(v.idx()));
+      face.push_back(int(v.idx()));
+    if (turned) {
+      if (reversed)
+        std::reverse(face.begin(), face.end());
+      std::rotate(face.begin(), face.begin() + std::ptrdiff_t(f.idx() % face.size()), face.end());
+      from_darts.dart.push_back(dart_from_to(m, f, CGAL_ext::Vertex_index(face[0]), CGAL_ext::Vertex_index(face[1])));
+    }
+    faces.push_back(face);
   }
   std::vector<std::array<int, 2>> creases;
   std::vector<float> values;
@@ -261,8 +297,10 @@ Differences against_bfr_on_mesh(const Mesh& m, const Surf& surface, CGAL_ext::Bo
         creases.push_back({int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
         values.push_back((*es)[e]);
       }
-  return against_bfr(m, surface, faces, m.points().data(), creases, values, boundary, method,
-                     [](CGAL_ext::Face_index f) { return int(f.idx()); });
+  const auto same = [](CGAL_ext::Face_index f) { return int(f.idx()); };
+  if (turned)
+    return against_bfr(m, from_darts, faces, m.points().data(), creases, values, boundary, method, same, grid);
+  return against_bfr(m, surface, faces, m.points().data(), creases, values, boundary, method, same, grid);
 }
 
 void record(const Differences& d, double scale)
@@ -296,100 +334,10 @@ INSTANTIATE_TEST_SUITE_P(Shapes, Against_bfr,
 // A one-sided mesh evaluated as Bfr evaluates its orientation double cover:
 // each face twice (once reversed), vertex v doubled into 2v and 2v + 1, the
 // copy of a face taken on the sheet its darts give each of its corners.
+// With `from_other_side`, each face is evaluated from its dart from the
+// first to the second corner of its reversed copy, against that copy.
 template <class Surf>
-Differences against_bfr_on_double_cover(const Mesh& m, const Surf& surface)
-{
-  std::vector<Point> points;
-  for (const Point& p : m.points().data()) {
-    points.push_back(p);
-    points.push_back(p);
-  }
-  std::vector<std::vector<std::pair<int, int>>> sheet(m.number_of_faces());
-  for (CGAL_ext::Vertex_index v : m.vertices())
-    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_target(v, m))
-      if (!m.is_border(d))
-        sheet[m.face(d).idx()].push_back({int(v.idx()), d.is_flipped() ? 1 : 0});
-  std::vector<std::vector<int>> faces;
-  for (CGAL_ext::Face_index f : m.faces())
-    for (int sigma : {0, 1}) {
-      std::vector<int> face;
-      for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
-        for (auto [w, s] : sheet[f.idx()])
-          if (w == int(v.idx())) {
-            face.push_back(2 * w + (sigma ^ s));
-            break;
-          }
-      if (sigma)
-        std::reverse(face.begin(), face.end());
-      faces.push_back(face);
-    }
-  return against_bfr(m, surface, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
-                     CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()); });
-}
-
-TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
-{
-  Mesh m;
-  CGAL_ext::make_mobius_strip(m, 12, 3);
-  const Differences d = against_bfr_on_double_cover(m, Surface(m));
-  const double scale = largest_coordinate(m);
-  EXPECT_LE(d.position, 1e-10 * scale);
-  EXPECT_LE(d.first, 1e-10 * scale);
-  RecordProperty("position", std::to_string(d.position / scale));
-  RecordProperty("first_derivatives", std::to_string(d.first / scale));
-}
-
-// The dart of face f of m that runs from a to b, flipped if the face runs
-// the other way.
-CGAL_ext::Dart dart_from_to(const Mesh& m, CGAL_ext::Face_index f, CGAL_ext::Vertex_index a, CGAL_ext::Vertex_index b)
-{
-  for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
-    if (m.source(d) == a && m.target(d) == b)
-      return d;
-    if (m.source(d) == b && m.target(d) == a)
-      return d.flipped();
-  }
-  ADD_FAILURE() << "no dart from " << a << " to " << b << " in face f" << f.idx();
-  return m.halfedge(f);
-}
-
-// Bfr on the faces of m listed from another corner (f mod n), all of them
-// reversed if `reversed` (OpenSubdiv needs them oriented alike); ours
-// evaluated from the dart of each face that runs from the first corner of
-// its list to the second.
-template <class Surf>
-Differences against_bfr_on_turned_faces(const Mesh& m, const Surf& surface, CGAL_ext::Boundary_interpolation boundary,
-                                        CGAL_ext::Crease_method method, bool reversed, int grid)
-{
-  std::vector<std::vector<int>> faces;
-  From_darts<Surf> turned{surface, {}};
-  for (CGAL_ext::Face_index f : m.faces()) {
-    std::vector<int> face;
-    for (CGAL_ext::Vertex_index v : CGAL_ext::vertices_around_face(m.halfedge(f), m))
-      face.push_back(int(v.idx()));
-    if (reversed)
-      std::reverse(face.begin(), face.end());
-    std::rotate(face.begin(), face.begin() + std::ptrdiff_t(f.idx() % face.size()), face.end());
-    turned.dart.push_back(dart_from_to(m, f, CGAL_ext::Vertex_index(face[0]), CGAL_ext::Vertex_index(face[1])));
-    faces.push_back(face);
-  }
-  std::vector<std::array<int, 2>> creases;
-  std::vector<float> values;
-  if (const auto es = m.property_map<CGAL_ext::Edge_index, float>("e:sharpness"))
-    for (CGAL_ext::Edge_index e : m.edges())
-      if ((*es)[e] > 0 && !m.is_border(e)) {
-        creases.push_back({int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
-        values.push_back((*es)[e]);
-      }
-  return against_bfr(m, turned, faces, m.points().data(), creases, values, boundary, method,
-                     [](CGAL_ext::Face_index f) { return int(f.idx()); }, grid);
-}
-
-// Each face of a one-sided mesh seen from its other side: evaluated from
-// the flipped dart of its first corner, against Bfr on the reversed copy of
-// the face in the orientation double cover (built as above).
-template <class Surf>
-Differences reversed_against_bfr_on_double_cover(const Mesh& m, const Surf& surface)
+Differences against_bfr_on_double_cover(const Mesh& m, const Surf& surface, bool from_other_side = false)
 {
   std::vector<Point> points;
   for (const Point& p : m.points().data()) {
@@ -418,8 +366,23 @@ Differences reversed_against_bfr_on_double_cover(const Mesh& m, const Surf& surf
       }
       faces.push_back(face);
     }
-  return against_bfr(m, turned, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
-                     CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()) + 1; });
+  if (from_other_side)
+    return against_bfr(m, turned, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
+                       CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()) + 1; });
+  return against_bfr(m, surface, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
+                     CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()); });
+}
+
+TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3);
+  const Differences d = against_bfr_on_double_cover(m, Surface(m));
+  const double scale = largest_coordinate(m);
+  EXPECT_LE(d.position, 1e-10 * scale);
+  EXPECT_LE(d.first, 1e-10 * scale);
+  RecordProperty("position", std::to_string(d.position / scale));
+  RecordProperty("first_derivatives", std::to_string(d.first / scale));
 }
 
 TEST(Limit_surface, EvaluatedFromAnyDartAsBfrOnTheFaceTurned)
@@ -431,8 +394,8 @@ TEST(Limit_surface, EvaluatedFromAnyDartAsBfrOnTheFaceTurned)
     const auto np = CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method);
     for (bool reversed : {false, true}) {
       const Differences d =
-        name[0] == 'l' ? against_bfr_on_turned_faces(m, Loop_surface(m, np), s.boundary, s.crease_method, reversed, 7)
-                       : against_bfr_on_turned_faces(m, Surface(m, np), s.boundary, s.crease_method, reversed, 7);
+        name[0] == 'l' ? against_bfr_on_mesh(m, Loop_surface(m, np), s.boundary, s.crease_method, true, reversed, 7)
+                       : against_bfr_on_mesh(m, Surface(m, np), s.boundary, s.crease_method, true, reversed, 7);
       const double scale = largest_coordinate(m);
       EXPECT_LE(d.position, 1e-10 * scale) << reversed;
       EXPECT_LE(d.first, 1e-10 * scale) << reversed;
@@ -448,8 +411,8 @@ TEST(Limit_surface, EvaluatedFromAnyDartAsBfrOnTheFaceTurned)
     SCOPED_TRACE(quads ? "Mobius strip of quads" : "Mobius strip of triangles");
     Mesh m;
     CGAL_ext::make_mobius_strip(m, 12, 3, 1, 1.0, 0.5, quads);
-    const Differences d = quads ? reversed_against_bfr_on_double_cover(m, Surface(m))
-                                : reversed_against_bfr_on_double_cover(m, Loop_surface(m));
+    const Differences d = quads ? against_bfr_on_double_cover(m, Surface(m), true)
+                                : against_bfr_on_double_cover(m, Loop_surface(m), true);
     const double scale = largest_coordinate(m);
     EXPECT_LE(d.position, 1e-10 * scale);
     EXPECT_LE(d.first, 1e-10 * scale);
@@ -1372,14 +1335,7 @@ double gap_to_far_refinement(const Mesh& m, const Surf& surface, CGAL_ext::Creas
       crease_indices.insert(crease_indices.end(), {int(m.vertex(e, 0).idx()), int(m.vertex(e, 1).idx())});
       crease_values.push_back((*es)[e]);
     }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = int(points.size());
-  desc.numFaces = int(sizes.size());
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = indices.data();
-  desc.numCreases = int(crease_values.size());
-  desc.creaseVertexIndexPairs = crease_indices.data();
-  desc.creaseWeights = crease_values.data();
+  Far::TopologyDescriptor desc = descriptor(int(points.size()), sizes, indices, crease_indices, crease_values);
   Far::TopologyDescriptor::FVarChannel channel;
   channel.numValues = int(parameters.size());
   channel.valueIndices = at_corner.data();
@@ -1432,7 +1388,7 @@ double gap_to_far_refinement(const Mesh& m, const Surf& surface, CGAL_ext::Creas
 // children: the surface over a face depends on the whole rings of its
 // corners' neighbours. Regular tori (no patch is approximated) with random
 // semi-sharp creases, against Far's refinement (Bfr's local meshes keep one
-// ring and differ from it by up to 3e-3 on such grids).
+// ring and differ from it there, see limit_surface.md).
 TEST(Limit_surface, ChaikinCreasesAsFarsRefinement)
 {
   std::mt19937 random(7);

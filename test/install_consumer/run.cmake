@@ -10,8 +10,9 @@ if(NOT rc EQUAL 0)
 endif()
 execute_process(COMMAND "${CMAKE_COMMAND}" -S "${SOURCE_DIR}/test/install_consumer" -B "${WORK_DIR}/build"
                         "-DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix"
-                        # -O0 without debug information: what is tested is the package, and
-                        # optimising CGAL's templates would triple the time of the test.
+                        # A Debug build at -O0 without debug information (CGAL's assertions
+                        # on): what is tested is the package, and optimising CGAL's
+                        # templates would triple the time of the test.
                         -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG=-O0
                         "-DEXPECT_PARALLEL=${EXPECT_PARALLEL}"
                 RESULT_VARIABLE rc)

@@ -578,7 +578,9 @@ bool needs_two_rings(const Level_mesh<P>& L, const Limit_options& opt)
 // `two_rings`, the faces around the vertices of those faces too. Faces keep
 // their own orientation, so Möbius edges stay Möbius. A vertex that two
 // separate fans of the copy share (a small or wrapped mesh) is split for
-// the face that cannot join it: only the corners' rings must be whole.
+// the face that cannot join it: only the corners' rings are kept whole
+// (with two rings, Chaikin's rule at a split neighbour of a corner then sees
+// part of its ring, as with one ring everywhere).
 template <class P>
 Dart copy_neighbourhood(const Level_mesh<P>& L, Dart d, Level_mesh<P>& out, bool two_rings = false)
 {

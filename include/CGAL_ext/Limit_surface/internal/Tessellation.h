@@ -383,8 +383,10 @@ private:
         const auto it = st.boundary_normals.find(id);
         facet_normals_.push_back(it != st.boundary_normals.end() ? it->second : normals_[id]);
       }
-    if (points_.size() > std::size_t(std::uint32_t(-1)))
-      throw Parameter_error("Limit_surface::tessellate: more than 2^32 samples");
+    // The facet lists index samples and corners in 32 bits.
+    if (points_.size() > std::size_t(std::uint32_t(-1)) ||
+        facets_.vertex.size() + facet.size() > std::size_t(std::uint32_t(-1)))
+      throw Parameter_error("Limit_surface::tessellate: the tessellation would have 2^32 samples or facet corners");
     std::uint32_t ids[4]; // a facet is a triangle or a quad
     std::size_t n = 0;
     for (std::size_t id : facet)
