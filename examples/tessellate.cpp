@@ -1,4 +1,4 @@
-// tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner]
+// tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary none|edge-only|edge-and-corner]
 //   [--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]
 //
 // Samples the Catmull–Clark (or Loop) limit surface of a polygon (or
@@ -32,7 +32,7 @@ namespace {
 
 const examples::Tool_usage usage{
   "tessellate",
-  "tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary edge-only|edge-and-corner] "
+  "tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary none|edge-only|edge-and-corner] "
   "[--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]",
   "Reads a polygon mesh (.obj, .off, .ply) and writes a mesh of its limit surface, each face\n"
   "sampled as OpenSubdiv's Bfr::Tessellation samples it:\n"
@@ -44,17 +44,19 @@ const examples::Tool_usage usage{
   "              for its inner lines' segments to lie within it too (facets' centres can lie\n"
   "              off by a few tolerances: their two directions add up).\n"
   "  --scheme    catmull-clark (default) or loop (every face a triangle).\n"
-  "  --boundary  border rule: edge-only (default) or edge-and-corner.\n"
+  "  --boundary  border rule: edge-only (default), edge-and-corner, or none (the faces with a\n"
+  "              vertex on a border are holes, left out, as OpenSubdiv leaves them).\n"
   "  --fvar-interpolation  which texture coordinates and normals stay linear (OpenSubdiv's\n"
   "              FVarLinearInterpolation): none, corners-only, corners-plus1 (the default),\n"
   "              corners-plus2, boundaries or all (bilinear in each face).\n"
   "  --drop-corner-data  go on without the input's texture coordinates and normals where\n"
   "              OUT's format cannot hold them (named in the JSON line).\n"
   "Shared vertex and edge samples are computed once, so the result is watertight, with the\n"
-  "input's borders, Euler characteristic and orientability. Prints its counts and the time\n"
-  "taken as one line of JSON.\n"};
+  "input's borders, Euler characteristic and orientability (but for the holes of --boundary\n"
+  "none). Prints its counts and the time taken as one line of JSON.\n"};
 
 const examples::Choices<CGAL_ext::Boundary_interpolation> boundaries = {
+  {"none", CGAL_ext::Boundary_interpolation::none},
   {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
   {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}};
 

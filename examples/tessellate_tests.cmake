@@ -47,8 +47,16 @@ cgal_ext_tool_fails(tessellate.fails.rate tessellate
   "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--rate;65"
   "^tessellate: --rate '65' is not an integer from 1 to 64; usage: [^\n]+\n$")
 cgal_ext_tool_fails(tessellate.fails.boundary tessellate
-  "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--rate;2;--boundary;none"
-  "^tessellate: --boundary 'none' is not edge-only or edge-and-corner; usage: [^\n]+\n$")
+  "${_data}/mobius_20x4_quads.obj;${_out}/x.obj;--rate;2;--boundary;corners"
+  "^tessellate: --boundary 'corners' is not none, edge-only or edge-and-corner; usage: [^\n]+\n$")
+
+# --boundary none: the 40 quads that touch the border are holes (OpenSubdiv's
+# rule); the 20 x 2 quads between them (60 vertices, 100 edges) are still a
+# Möbius strip, at rate 3 60 + 100 x 2 + 40 x 4 vertices and 40 x 9 quads.
+add_test(NAME tessellate.boundary_none COMMAND tessellate ${_data}/mobius_20x4_quads.obj
+         ${_out}/tessellate_boundary_none.obj --rate 3 --boundary none)
+set_tests_properties(tessellate.boundary_none PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":420,\"edges\":780,\"faces\":360,\"border_loops\":1,.*\"orientable\":false,.*\"euler_characteristic\":0,\"valid\":true,")
 
 # To a tolerance: the Möbius strip stays one watertight one-sided strip (its
 # Euler characteristic 0, one border loop). Both --rate and --tolerance, or

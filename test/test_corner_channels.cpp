@@ -1338,6 +1338,7 @@ std::vector<UV> channel_grid(const Mesh& m, CGAL_ext::Face_index f, bool loop)
 struct Channel_gaps
 {
   double value = 0, derivatives = 0;
+  std::size_t holes = 0; // faces without a surface (Boundary_interpolation::none)
 };
 
 // Corner_channel_limit_surface of "c:uv" on `m` against Bfr's face-varying
@@ -1358,7 +1359,13 @@ Channel_gaps channel_surface_against_bfr(const Mesh& m, const Shape& reference, 
   auto compare = [&](const auto& ours) {
     for (CGAL_ext::Face_index f : m.faces()) {
       OpenSubdiv::Bfr::Surface<double> bfr;
-      EXPECT_TRUE(factory.InitFaceVaryingSurface(face_of(f), &bfr, 0));
+      const bool has_surface = factory.InitFaceVaryingSurface(face_of(f), &bfr, 0);
+      EXPECT_EQ(has_surface, !ours.is_hole(f)) << "f" << f.idx();
+      if (!has_surface) { // a hole: Boundary_interpolation::none
+        EXPECT_THROW(ours.evaluate(f, 0.25, 0.25), CGAL_ext::Parameter_error);
+        ++gaps.holes;
+        continue;
+      }
       std::vector<double> patch_points(std::size_t(bfr.GetNumPatchPoints()) * 2);
       bfr.PreparePatchPoints(values.data(), 2, patch_points.data(), 2);
       for (const UV& at : channel_grid(m, f, loop)) {
@@ -1409,6 +1416,10 @@ Channel_gaps expect_channel_surfaces_as_bfr(const Shape& s, bool loop)
       channel_surface_against_bfr(m, reference, s, loop, mode, [](CGAL_ext::Face_index f) { return int(f.idx()); });
     EXPECT_LE(g.value, 1e-12);
     EXPECT_LE(g.derivatives, 1e-10);
+    if (s.boundary == CGAL_ext::Boundary_interpolation::none) { // some holes, not all
+      EXPECT_GT(g.holes, 0u);
+      EXPECT_LT(g.holes, m.number_of_faces());
+    }
     worst.value = std::max(worst.value, g.value);
     worst.derivatives = std::max(worst.derivatives, g.derivatives);
   }
@@ -1441,6 +1452,17 @@ TEST(CornerChannelsOpenSubdiv, LimitSurfaceOfTheShapes)
     for (std::size_t i = 0; i < s.uvs.size(); ++i)
       s.uvs[i] = {s.uvs[i][0] + offset_of_value(i)[0], s.uvs[i][1] + offset_of_value(i)[1]};
     report_channel_surface(name, expect_channel_surfaces_as_bfr(s, loop));
+  }
+  // Under Boundary_interpolation::none the faces with a border vertex are
+  // holes, in the channel as in the points.
+  for (const auto& [name, loop] : {std::pair<const char*, bool>{"catmark_edgecorner.obj", false},
+                                   {"catmark_nonquads.obj", false}, {"loop_triangle_edgeonly.obj", true}}) {
+    SCOPED_TRACE(std::string(name) + ", none");
+    Shape s = read_shape(test::data(std::string("opensubdiv/") + name));
+    s.boundary = CGAL_ext::Boundary_interpolation::none;
+    for (std::size_t i = 0; i < s.uvs.size(); ++i)
+      s.uvs[i] = {s.uvs[i][0] + offset_of_value(i)[0], s.uvs[i][1] + offset_of_value(i)[1]};
+    report_channel_surface(std::string(name) + " (none)", expect_channel_surfaces_as_bfr(s, loop));
   }
 #endif
 }
@@ -1518,7 +1540,10 @@ double tessellated_channel_against_bfr(const Shape& s, bool loop, Face_varying_i
       for (double& x : coords)
         x = std::round(x * rate) / rate;
     Bfr::Surface<double> position, value;
-    EXPECT_TRUE(factory.InitVertexSurface(int(f.idx()), &position));
+    if (!factory.InitVertexSurface(int(f.idx()), &position)) { // a hole: no facets
+      EXPECT_EQ(s.boundary, CGAL_ext::Boundary_interpolation::none);
+      continue;
+    }
     EXPECT_TRUE(factory.InitFaceVaryingSurface(int(f.idx()), &value, 0));
     std::vector<double> pp(3 * std::size_t(position.GetNumPatchPoints())), vp(2 * std::size_t(value.GetNumPatchPoints()));
     position.PreparePatchPoints(xyz.data(), 3, pp.data(), 3);
@@ -1567,6 +1592,13 @@ TEST(CornerChannelsOpenSubdiv, TessellationCarriesThemAsBfr)
       s.uvs[i] = {s.uvs[i][0] + offset_of_value(i)[0], s.uvs[i][1] + offset_of_value(i)[1]};
     EXPECT_LE(tessellated_channel_against_bfr(s, loop, mode, rate), 1e-12);
   }
+  // Under Boundary_interpolation::none, holes have no facets, as Bfr.
+  for (const char* name : {"catmark_edgecorner.obj", "catmark_nonquads.obj"}) {
+    SCOPED_TRACE(std::string(name) + ", none");
+    Shape s = read_shape(test::data(std::string("opensubdiv/") + name));
+    s.boundary = CGAL_ext::Boundary_interpolation::none;
+    EXPECT_LE(tessellated_channel_against_bfr(s, false, Face_varying_interpolation::corners_plus1, 3), 1e-12);
+  }
   // A seam stays a seam: a corner on each side of it keeps its side's value.
   Shape s = random_grid(2, false);
   const Mesh m = build(s);
@@ -1601,8 +1633,11 @@ TEST(CornerChannels, TessellationRefusesAChannelItCannotCarry)
   EXPECT_THROW(Linear(m, "c:uv", CGAL_ext::parameters::face_varying_interpolation(Face_varying_interpolation::all)),
                CGAL_ext::Parameter_error); // quads under Loop
   using Smooth = S::Corner_channel_limit_surface<S::Catmull_clark_mask, Point, UV>;
-  EXPECT_THROW(Smooth(m, "c:uv", CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none)),
-               CGAL_ext::Parameter_error);
+  // Under Boundary_interpolation::none every face of this strip touches
+  // its border: a hole, without a value.
+  const Smooth holes(m, "c:uv", CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none));
+  EXPECT_TRUE(holes.is_hole(CGAL_ext::Face_index(3)));
+  EXPECT_THROW(holes.evaluate(CGAL_ext::Face_index(3), 0.5, 0.5), CGAL_ext::Parameter_error);
   EXPECT_THROW(Smooth(m, "c:label"), CGAL_ext::Parameter_error); // removed
   m.remove_corner_channel(uv);
   EXPECT_EQ(S::tessellate<S::Catmull_clark_mask>(m, 2).number_of_faces(), 4u * m.number_of_faces());

@@ -31,6 +31,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -161,6 +162,7 @@ struct From_darts
   const Surf& surface;
   std::vector<CGAL_ext::Dart> dart; // by face
   auto evaluate(CGAL_ext::Face_index f, double u, double v) const { return surface.evaluate(dart[f.idx()], u, v); }
+  bool is_hole(CGAL_ext::Face_index f) const { return surface.is_hole(f); }
 };
 
 template <class Surf>
@@ -183,6 +185,7 @@ struct Differences
   // -(2^depth)² instead of (2^depth)², so Bfr's second derivatives there
   // have the wrong sign; this compares them up to sign.
   double second_up_to_sign = 0;
+  std::size_t holes = 0; // faces without a surface in both (Boundary_interpolation::none)
 };
 
 // Bfr on the faces, creases and corners of `faces` / the maps of `m`
@@ -225,7 +228,13 @@ Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<st
   Differences d;
   for (CGAL_ext::Face_index f : m.faces()) {
     Bfr::Surface<double> bfr;
-    EXPECT_TRUE(factory.InitVertexSurface(face_of(f), &bfr));
+    const bool has_surface = factory.InitVertexSurface(face_of(f), &bfr);
+    EXPECT_EQ(has_surface, !surface.is_hole(f)) << "f" << f.idx();
+    if (!has_surface) { // a hole: Boundary_interpolation::none
+      d.holes += surface.is_hole(f) ? 1 : 0;
+      EXPECT_THROW(surface.evaluate(f, 0.25, 0.25), CGAL_ext::Parameter_error) << "f" << f.idx();
+      continue;
+    }
     std::vector<double> patch_points(std::size_t(bfr.GetNumPatchPoints()) * 3);
     bfr.PreparePatchPoints(xyz.data(), 3, patch_points.data(), 3);
     for (const auto& uv : loop ? triangle_grid(grid) : parameter_grid(int(m.degree(f)), grid)) {
@@ -337,7 +346,8 @@ INSTANTIATE_TEST_SUITE_P(Shapes, Against_bfr,
 // With `from_other_side`, each face is evaluated from its dart from the
 // first to the second corner of its reversed copy, against that copy.
 template <class Surf>
-Differences against_bfr_on_double_cover(const Mesh& m, const Surf& surface, bool from_other_side = false)
+Differences against_bfr_on_double_cover(const Mesh& m, const Surf& surface, bool from_other_side = false,
+                                        CGAL_ext::Boundary_interpolation boundary = CGAL_ext::Boundary_interpolation::edge_only)
 {
   std::vector<Point> points;
   for (const Point& p : m.points().data()) {
@@ -367,10 +377,54 @@ Differences against_bfr_on_double_cover(const Mesh& m, const Surf& surface, bool
       faces.push_back(face);
     }
   if (from_other_side)
-    return against_bfr(m, turned, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
-                       CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()) + 1; });
-  return against_bfr(m, surface, faces, points, {}, {}, CGAL_ext::Boundary_interpolation::edge_only,
-                     CGAL_ext::Crease_method::uniform, [](CGAL_ext::Face_index f) { return 2 * int(f.idx()); });
+    return against_bfr(m, turned, faces, points, {}, {}, boundary, CGAL_ext::Crease_method::uniform,
+                       [](CGAL_ext::Face_index f) { return 2 * int(f.idx()) + 1; });
+  return against_bfr(m, surface, faces, points, {}, {}, boundary, CGAL_ext::Crease_method::uniform,
+                     [](CGAL_ext::Face_index f) { return 2 * int(f.idx()); });
+}
+
+// Under Boundary_interpolation::none Bfr has no surface on a face with a
+// vertex on a border: the same faces are holes here (evaluate() refuses
+// them), the others are evaluated as Bfr evaluates them; a Möbius strip as
+// its double cover. Each mesh has holes and faces that are not.
+TEST(Limit_surface, BoundaryNoneHasBfrsHoles)
+{
+  const auto none = CGAL_ext::Boundary_interpolation::none;
+  const auto check = [](const std::string& what, const Mesh& m, const Differences& d) {
+    SCOPED_TRACE(what);
+    const double scale = largest_coordinate(m);
+    EXPECT_GT(d.holes, 0u);
+    EXPECT_LT(d.holes, m.number_of_faces());
+    EXPECT_LE(d.position, 1e-10 * scale);
+    EXPECT_LE(d.first, 1e-10 * scale);
+    EXPECT_LE(d.second_off_corners, 1e-9 * scale);
+  };
+  for (const std::string name : {"catmark_edgecorner", "catmark_nonquads", "loop_triangle_edgeonly"}) {
+    Shape s = read_shape(test::data("opensubdiv/" + name + ".obj"));
+    s.boundary = none;
+    const Mesh m = build(s);
+    const auto np = CGAL_ext::parameters::boundary_interpolation(none).crease_method(s.crease_method);
+    check(name, m,
+          name[0] == 'l' ? against_bfr_on_mesh(m, Loop_surface(m, np), none, s.crease_method)
+                         : against_bfr_on_mesh(m, Surface(m, np), none, s.crease_method));
+    if (name[0] == 'l')
+      continue;
+    // The closest point lies on a face with a surface, even from a point of a hole.
+    const Surface surface(m, np);
+    for (CGAL_ext::Vertex_index v : m.vertices()) {
+      const auto at = surface.closest_point(m.point(v));
+      EXPECT_FALSE(surface.is_hole(at.face)) << name << " v" << v.idx();
+      EXPECT_EQ(at.point, surface.evaluate(at.face, at.u, at.v).point);
+    }
+  }
+  for (bool quads : {true, false}) {
+    Mesh m;
+    CGAL_ext::make_mobius_strip(m, 12, 3, 1, 1.0, 0.5, quads);
+    const auto np = CGAL_ext::parameters::boundary_interpolation(none);
+    check(quads ? "Mobius strip of quads" : "Mobius strip of triangles", m,
+          quads ? against_bfr_on_double_cover(m, Surface(m, np), false, none)
+                : against_bfr_on_double_cover(m, Loop_surface(m, np), false, none));
+  }
 }
 
 TEST(Limit_surface, MobiusStripAgainstBfrOnItsDoubleCover)
@@ -438,12 +492,16 @@ class Tessellation_against_bfr : public ::testing::TestWithParam<const char*>
 // The tessellation against Bfr::Tessellation (uniform rate, quads
 // preserved) face by face: the same number of samples and facets, each of
 // Bfr's coordinates evaluated to a sample of ours (the nearest one, within
-// 1e-10 of the size, and no two on one), and the same facets on those samples.
+// 1e-10 of the size, and no two on one), and the same facets on those
+// samples. With `boundary`, the shape's boundary rule is replaced: under
+// `none`, holes (as Bfr has them: evaluation tests) have no facets, and no
+// vertex is left without one.
 template <class Surf>
-void tessellation_against_bfr(const std::string& name)
+void tessellation_against_bfr(const std::string& name, std::optional<CGAL_ext::Boundary_interpolation> boundary = {})
 {
   constexpr bool loop = std::is_same_v<Surf, Loop_surface>;
-  const Shape s = read_shape(test::data(std::string("opensubdiv/") + name + ".obj"));
+  Shape s = read_shape(test::data(std::string("opensubdiv/") + name + ".obj"));
+  s.boundary = boundary.value_or(s.boundary);
   const Mesh m = build(s);
   const Surf surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
   const double scale = largest_coordinate(m);
@@ -451,7 +509,11 @@ void tessellation_against_bfr(const std::string& name)
     const Mesh out = surface.tessellate(rate);
     std::size_t facet = 0, coords = 0;
     double worst = 0;
+    for (CGAL_ext::Vertex_index v : out.vertices())
+      EXPECT_FALSE(out.is_isolated(v)) << name << " rate " << rate;
     for (CGAL_ext::Face_index f : m.faces()) {
+      if (surface.is_hole(f))
+        continue;
       Bfr::Tessellation::Options options;
       options.SetFacetSize(4).PreserveQuads(true);
       const Bfr::Tessellation t(Bfr::Parameterization(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, int(m.degree(f))), rate, options);
@@ -516,6 +578,13 @@ void tessellation_against_bfr(const std::string& name)
 }
 
 TEST_P(Tessellation_against_bfr, SameSamplesAndFacets) { tessellation_against_bfr<Surface>(GetParam()); }
+
+TEST(Limit_surface, TessellationLeavesOutHoles)
+{
+  for (const char* name : {"catmark_edgecorner", "catmark_nonquads"})
+    tessellation_against_bfr<Surface>(name, CGAL_ext::Boundary_interpolation::none);
+  tessellation_against_bfr<Loop_surface>("loop_triangle_edgeonly", CGAL_ext::Boundary_interpolation::none);
+}
 
 // Quads, borders and corners, n-gons, triangles.
 INSTANTIATE_TEST_SUITE_P(Shapes, Tessellation_against_bfr,
@@ -654,8 +723,12 @@ TEST(Limit_surface, RefusesWhatItCannotEvaluate)
   const Surface surface(m);
   EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(99), 0.5, 0.5), CGAL_ext::Parameter_error);
   EXPECT_THROW(surface.evaluate(CGAL_ext::Face_index(0), 1.5, 0.5), CGAL_ext::Parameter_error);
-  EXPECT_THROW(Surface(m, CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none)),
-               CGAL_ext::Parameter_error);
+  // Without a border, no face is a hole under Boundary_interpolation::none.
+  const Surface closed(m, CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none));
+  EXPECT_EQ(CGAL::squared_distance(closed.evaluate(CGAL_ext::Face_index(5), 0.25, 0.5).point,
+                                   surface.evaluate(CGAL_ext::Face_index(5), 0.25, 0.5).point),
+            0.0);
+  EXPECT_EQ(closed.tessellate(2).number_of_faces(), 4 * m.number_of_faces());
 }
 
 // Samples inside a base face of n sides at rate N, as Bfr counts them.

@@ -181,7 +181,8 @@ public:
   ///     \cgalParamDefault{the maps `"e:sharpness"` / `"v:sharpness"` of `mesh` if it has them, else all 0}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{boundary_interpolation}
-  ///     \cgalParamDefault{`Boundary_interpolation::edge_only`; `none` is refused}
+  ///     \cgalParamDescription{as subdivision's; with `none` every face with a vertex on a border is a hole (`is_hole()`), as OpenSubdiv makes it, the others' surface that of `edge_only`}
+  ///     \cgalParamDefault{`Boundary_interpolation::edge_only`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{crease_method}
   ///     \cgalParamDefault{`Crease_method::uniform`}
@@ -195,8 +196,7 @@ public:
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// \throws Parameter_error if `mesh` has removed elements, a sharpness is
-  /// NaN or negative, the boundary interpolation is `none`, an approximation
-  /// level is above `max_approximation_level` (31), or (`Loop_mask`) a face
+  /// NaN or negative, an approximation level is above `max_approximation_level` (31), or (`Loop_mask`) a face
   /// is not a triangle.
   template <class NP = parameters::Default_named_parameters>
   explicit Limit_surface(const Mobius_mesh<P>& mesh, const NP& np = parameters::default_values(),
@@ -209,8 +209,6 @@ public:
     options_.crease = CGAL_ext::internal::crease_method_of(np);
     options_.level_smooth = options.approx_level_smooth;
     options_.level_sharp = std::max(options.approx_level_sharp, options.approx_level_smooth);
-    if (options_.boundary == Boundary_interpolation::none)
-      throw Parameter_error("Limit_surface: Boundary_interpolation::none is not supported");
     // A patch's place in a Loop triangle's quadtree is two bits a level of
     // one 64-bit word (and 31 levels refine a face 2^31 times a side).
     if (options_.level_sharp > max_approximation_level)
@@ -229,19 +227,31 @@ public:
       base_.mesh.point(v) = get(points, v);
     copy_sharpness(mesh, np);
     faces_ = internal::Face_cache<Face_patches>(mesh.number_of_faces());
+    holes_ = internal::hole_faces(mesh, options_.boundary);
     projection_rate_ = int(std::min(options.projection_rate, 1024u));
     max_tessellation_rate_ = int(std::min(std::max(options.max_tessellation_rate, 1u), 4096u));
   }
 
+  /// \brief whether face `f` has no limit surface: under
+  /// `Boundary_interpolation::none`, a face with a vertex on a border (as
+  /// OpenSubdiv's `Bfr` gives it no surface, and subdivision marks its
+  /// children in `"f:hole"`). `evaluate()` refuses a hole; `tessellate()`,
+  /// `tessellate_to_tolerance()` and `closest_point()` leave it out. False
+  /// under the other boundary rules.
+  bool is_hole(Face_index f) const { return f.idx() < holes_.size() && holes_[f.idx()]; }
+
   /// \brief the limit surface at parameter (`u`, `v`) of face `f` (see the
   /// class for the parameterisation; for a Loop triangle in a floating-point
   /// kernel, u + v may pass 1 by rounding, up to 4e-16).
-  /// \throws Parameter_error if `f` is not a face of the mesh or (`u`, `v`)
-  /// lies outside its parameter domain.
+  /// \throws Parameter_error if `f` is not a face of the mesh, is a hole
+  /// (`is_hole()`) or (`u`, `v`) lies outside its parameter domain.
   Evaluation evaluate(Face_index f, const FT& u, const FT& v) const
   {
     if (!base_.mesh.is_valid(f) || f.idx() >= faces_.size())
       throw Parameter_error("Limit_surface::evaluate: f" + std::to_string(f.idx()) + " is not a face of the mesh");
+    if (is_hole(f))
+      throw Parameter_error("Limit_surface::evaluate: face f" + std::to_string(f.idx()) +
+                            " is a hole (it has a vertex on a border, and the boundary interpolation is none)");
     const Face_patches& patches = patches_of(f);
     if constexpr (is_loop)
       return evaluate_triangle(f, patches.sub_faces[0], u, v);
@@ -276,8 +286,8 @@ public:
   /// face. The derivatives are taken in those parameters, and the normal
   /// (du × dv) is seen from `d`'s orientation: on a one-sided surface, from
   /// either side of a face. For `next(halfedge(f))`, it is `evaluate(f, u, v)`.
-  /// \throws Parameter_error if `d` is not a dart of a face of the mesh or
-  /// (`u`, `v`) lies outside the parameter domain.
+  /// \throws Parameter_error if `d` is not a dart of a face of the mesh, the
+  /// face is a hole or (`u`, `v`) lies outside the parameter domain.
   Evaluation evaluate(Dart d, const FT& u, const FT& v) const
   {
     const Mobius_mesh<P>& m = base_.mesh;
@@ -407,7 +417,9 @@ public:
   /// that reaches it, reused in reverse order by the face across, in the
   /// same order across a Möbius edge), then each face's interior. Vertex i
   /// of the result, for i below the number of base vertices, is base vertex
-  /// i (an isolated vertex keeps its point). Each facet keeps the
+  /// i (an isolated vertex keeps its point); holes (`is_hole()`) have no
+  /// facets, and the base vertices that only holes reach are left out, the
+  /// others keeping their order. Each facet keeps the
   /// orientation of its base face, so a Möbius edge stays a run of Möbius
   /// edges, borders stay borders and a one-sided surface stays one-sided.
   ///
@@ -508,7 +520,20 @@ private:
     Mobius_mesh<P> out = tessellator.run();
     if (!m.corner_channels().empty())
       carry_corner_channels(rates, tessellator.facets(), out);
+    if (!holes_.empty())
+      remove_vertices_of_holes(out);
     return out;
+  }
+
+  // The base vertices of the tessellation that only holes reach: isolated
+  // there, not in the base.
+  void remove_vertices_of_holes(Mobius_mesh<P>& out) const
+  {
+    const auto& m = base_.mesh;
+    for (Vertex_index v : m.vertices())
+      if (!m.is_isolated(v) && out.is_isolated(v))
+        out.remove_vertex(v);
+    out.collect_garbage();
   }
 
   // Each corner channel of the mesh on the tessellation: its limit surface
@@ -680,6 +705,7 @@ private:
   internal::Limit_options options_;
   Face_varying_interpolation fvar_mode_ = Face_varying_interpolation::corners_plus1;
   internal::Face_cache<Face_patches> faces_;
+  std::vector<bool> holes_; // by face index; empty unless the boundary interpolation is none
   int projection_rate_ = 4;
   int max_tessellation_rate_ = 64;
   mutable std::unique_ptr<internal::Limit_projection<Limit_surface>> projection_;

@@ -114,11 +114,12 @@ public:
     if (!channel)
       throw Parameter_error(std::string(function) + ": the mesh has no corner channel \"" + name +
                             "\" with values of the type asked for");
-    check_options(mesh, np, options);
+    check_options(mesh, options);
     const std::vector<std::uint32_t> user = internal::base_corners(function, mesh, *channel);
     const Face_varying_interpolation mode = pm::choose_parameter(
       pm::get_parameter(np, CGAL_ext::internal_np::face_varying_interpolation), Face_varying_interpolation::corners_plus1);
     cage_ = CGAL_ext::internal::make_channel_cage(function, mesh, user, mode, np);
+    holes_ = internal::hole_faces(mesh, CGAL_ext::internal::boundary_interpolation_of(np));
     linear_ = cage_.linear;
     std::vector<std::array<FT, dimension>> coordinates;
     coordinates.reserve(channel->number_of_values());
@@ -147,16 +148,23 @@ public:
 
   /// \brief the channel's value at parameter (`u`, `v`) of face `f` (see
   /// `Limit_surface` for the parameterisation), with its derivatives.
-  /// \throws Parameter_error if `f` is not a face of the mesh or (`u`, `v`)
-  /// lies outside its parameter domain.
+  /// \throws Parameter_error if `f` is not a face of the mesh, is a hole
+  /// or (`u`, `v`) lies outside its parameter domain.
   Evaluation evaluate(Face_index f, const FT& u, const FT& v) const
   {
+    if (is_hole(f))
+      throw Parameter_error("Corner_channel_limit_surface::evaluate: face f" + std::to_string(f.idx()) +
+                            " is a hole (it has a vertex on a border, and the boundary interpolation is none)");
     const Coordinate_evaluation c = evaluate_coordinates(f, u, v);
     return {Coordinates::join(c.value), c.du, c.dv};
   }
 
   /// Whether the channel is linear in each face (`Face_varying_interpolation::all`).
   bool is_linear() const { return linear_; }
+
+  /// Whether face `f` is a hole, without a surface (as `Limit_surface::is_hole()`:
+  /// under `Boundary_interpolation::none`, a face with a vertex on a border).
+  bool is_hole(Face_index f) const { return f.idx() < holes_.size() && holes_[f.idx()]; }
 
 private:
   template <class, class>
@@ -189,11 +197,8 @@ private:
   }
 
   // What Limit_surface refuses, refused here too, for a linear channel as well.
-  template <class NP>
-  static void check_options(const Mobius_mesh<P>& mesh, const NP& np, const Limit_surface_options& options)
+  static void check_options(const Mobius_mesh<P>& mesh, const Limit_surface_options& options)
   {
-    if (CGAL_ext::internal::boundary_interpolation_of(np) == Boundary_interpolation::none)
-      throw Parameter_error("Corner_channel_limit_surface: Boundary_interpolation::none is not supported");
     if ((std::max)(options.approx_level_smooth, options.approx_level_sharp) > Limit_surface<Mask, P>::max_approximation_level)
       throw Parameter_error("Corner_channel_limit_surface: an approximation level is above " +
                             std::to_string(Limit_surface<Mask, P>::max_approximation_level));
@@ -214,6 +219,7 @@ private:
     const Corner_channel_limit_surface* channel;
     std::size_t first;
 
+    bool is_hole(Face_index f) const { return channel->is_hole(f); }
     Evaluation evaluate(Face_index f, const FT& u, const FT& v) const
     {
       const Values c = channel->evaluate_coordinates(f, u, v, first / 3, first / 3 + 1).value;
@@ -328,6 +334,7 @@ private:
   CGAL_ext::internal::Channel_cage<P> cage_; // the channel's topology, whose tessellation the channel's is
   std::vector<std::unique_ptr<Limit_surface<Mask, P>>> lanes_; // a surface per three coordinates
   std::vector<std::vector<Values>> corners_; // per face, its corners' values (linear channels)
+  std::vector<bool> holes_;                  // by face index, as Limit_surface's
 };
 
 } // namespace Subdivision

@@ -95,6 +95,26 @@ Dart dart_between(const Mobius_mesh<P>& m, Face_index f, Vertex_index a, Vertex_
   throw Parameter_error("Limit_surface: internal error, no dart between two corners of a face");
 }
 
+// The faces without a limit surface, by face index: under
+// Boundary_interpolation::none every face with a vertex on a border, as
+// OpenSubdiv makes them holes (and subdivision marks them, Refiner's
+// mark_border()); none under the other rules, where the surface reaches the
+// border. The other faces' surface is that of edge_only.
+template <class P>
+std::vector<bool> hole_faces(const Mobius_mesh<P>& m, Boundary_interpolation boundary)
+{
+  std::vector<bool> hole;
+  if (boundary != Boundary_interpolation::none)
+    return hole;
+  hole.assign(m.number_of_faces(), false);
+  for (Vertex_index v : m.vertices())
+    if (!m.is_isolated(v) && m.is_border(v))
+      for (Face_index f : faces_around_target(m.halfedge(v), m))
+        if (f != Face_index())
+          hole[f.idx()] = true;
+  return hole;
+}
+
 // A corner of a face as OpenSubdiv's patch builder sees it: the span of
 // faces around the vertex that contains the face (all of them, or those
 // between two infinitely sharp edges or borders), its ring of points in

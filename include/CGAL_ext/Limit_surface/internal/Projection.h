@@ -140,6 +140,8 @@ public:
   Limit_projection(const Surface& surface, const Mobius_mesh<P>& mesh, int rate, bool triangle_domain = false)
   {
     for (Face_index f : mesh.faces()) {
+      if (surface.is_hole(f))
+        continue;
       const int n = int(mesh.degree(f));
       if (triangle_domain) {
         add_tile(surface, {f, 0.0, 0.0, 1.0, true}, std::max(1, rate));

@@ -84,7 +84,8 @@ public:
     for (Vertex_index v : m_.vertices())
       points_[v.idx()] = m_.point(v); // an isolated vertex stays where it is
     for (Face_index f : m_.faces())
-      add_face(f);
+      if (!s_.is_hole(f)) // a hole's edges are sampled by its neighbours
+        add_face(f);
     return build();
   }
 
@@ -606,6 +607,8 @@ Tessellation_rates tolerance_rates(const Surface& surface, const Mobius_mesh<P>&
   Tessellation_rates rates = Tessellation_rates::uniform(m.number_of_edges(), m.number_of_faces(), 1);
   std::vector<char> edge_done(m.number_of_edges(), 0);
   for (Face_index f : m.faces()) {
+    if (surface.is_hole(f))
+      continue;
     std::vector<int> outer;
     const int n = int(m.degree(f));
     const Face_surface<Surface> face{surface, f, n, triangle_domain};
