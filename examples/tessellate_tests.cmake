@@ -99,3 +99,9 @@ set_tests_properties(tessellate.corner_data_dropped PROPERTIES PASS_REGULAR_EXPR
 cgal_ext_tool_fails(tessellate.fails.fvar_mode tessellate
   "${_cube_data};${_out}/x.obj;--rate;2;--fvar-interpolation;smooth"
   "^tessellate: --fvar-interpolation 'smooth' is not [^\n]+\n$")
+
+# OpenSubdiv's smooth rule at triangles is taken (its values: unit tests).
+add_test(NAME tessellate.smooth_triangles COMMAND tessellate
+         ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_smoothtris1.obj ${_out}/tessellate_smooth_triangles.obj
+         --rate 2 --triangles smooth)
+set_tests_properties(tessellate.smooth_triangles PROPERTIES PASS_REGULAR_EXPRESSION "\"valid\":true,")

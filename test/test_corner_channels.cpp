@@ -619,7 +619,7 @@ std::unique_ptr<Far::TopologyRefiner> refiner_with_uv(const Shape& reference, co
   channel.valueIndices = uv_indices.data();
   desc.numFVarChannels = 1;
   desc.fvarChannels = &channel;
-  Sdc::Options options = test::opensubdiv_options(s.boundary, s.crease_method);
+  Sdc::Options options = test::opensubdiv_options(s);
   options.SetFVarLinearInterpolation(Sdc::Options::FVarLinearInterpolation(int(mode)));
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   return std::unique_ptr<Far::TopologyRefiner>(
@@ -750,6 +750,7 @@ void subdivide(Mesh& m, bool loop, int levels, Face_varying_interpolation mode, 
   const auto np = CGAL_ext::parameters::number_of_iterations(levels)
                     .boundary_interpolation(s.boundary)
                     .crease_method(s.crease_method)
+                    .triangle_subdivision(s.triangles)
                     .face_varying_interpolation(mode);
   if (loop)
     S::loop<ConcurrencyTag>(m, np);
@@ -800,7 +801,8 @@ TEST(CornerChannelsOpenSubdiv, CatmullClarkShapes)
   REQUIRE_OPENSUBDIV();
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
   for (const char* name : {"catmark_cube.obj", "catmark_cube_corner4.obj", "catmark_cube_creases1.obj",
-                           "catmark_chaikin1.obj", "catmark_edgecorner.obj", "catmark_nonquads.obj"}) {
+                           "catmark_chaikin1.obj", "catmark_edgecorner.obj", "catmark_nonquads.obj",
+                           "catmark_smoothtris1.obj"}) {
     SCOPED_TRACE(name);
     report(name, compare_shape(test::data(std::string("opensubdiv/") + name), false));
   }
@@ -1354,7 +1356,10 @@ Channel_gaps channel_surface_against_bfr(const Mesh& m, const Shape& reference, 
   std::vector<double> values;
   for (const UV& t : reference.uvs)
     values.insert(values.end(), {t[0], t[1]});
-  const auto np = CGAL_ext::parameters::face_varying_interpolation(mode).boundary_interpolation(s.boundary).crease_method(s.crease_method);
+  const auto np = CGAL_ext::parameters::face_varying_interpolation(mode)
+                    .boundary_interpolation(s.boundary)
+                    .crease_method(s.crease_method)
+                    .triangle_subdivision(s.triangles);
   Channel_gaps gaps;
   auto compare = [&](const auto& ours) {
     for (CGAL_ext::Face_index f : m.faces()) {
@@ -1516,7 +1521,10 @@ double tessellated_channel_against_bfr(const Shape& s, bool loop, Face_varying_i
   const Mesh m = build(s);
   const std::unique_ptr<Far::TopologyRefiner> refiner = refiner_with_uv(walked(s, m), s, loop, mode);
   Bfr::RefinerSurfaceFactory<> factory(*refiner);
-  const auto np = CGAL_ext::parameters::face_varying_interpolation(mode).boundary_interpolation(s.boundary).crease_method(s.crease_method);
+  const auto np = CGAL_ext::parameters::face_varying_interpolation(mode)
+                    .boundary_interpolation(s.boundary)
+                    .crease_method(s.crease_method)
+                    .triangle_subdivision(s.triangles);
   const Mesh out = loop ? S::Limit_surface<S::Loop_mask, Point>(m, np).tessellate(rate)
                         : S::Limit_surface<S::Catmull_clark_mask, Point>(m, np).tessellate(rate);
   const auto uv = out.corner_channel<UV>("c:uv");

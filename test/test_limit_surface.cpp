@@ -196,7 +196,8 @@ template <class Surf, class FaceOf>
 Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<std::vector<int>>& faces,
                         const std::vector<Point>& points, const std::vector<std::array<int, 2>>& creases,
                         const std::vector<float>& crease_values, CGAL_ext::Boundary_interpolation boundary,
-                        CGAL_ext::Crease_method method, const FaceOf& face_of, int grid = 8)
+                        CGAL_ext::Crease_method method, const FaceOf& face_of, int grid = 8,
+                        CGAL_ext::Triangle_subdivision triangles = CGAL_ext::Triangle_subdivision::catmark)
 {
   constexpr bool loop = Is_loop<Surf>::value;
   std::vector<int> sizes, indices, crease_indices, corner_indices;
@@ -217,7 +218,7 @@ Differences against_bfr(const Mesh& m, const Surf& surface, const std::vector<st
   desc.numCorners = int(corner_values.size());
   desc.cornerVertexIndices = corner_indices.data();
   desc.cornerWeights = corner_values.data();
-  const Sdc::Options options = test::opensubdiv_options(boundary, method);
+  const Sdc::Options options = test::opensubdiv_options(boundary, method, triangles);
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
     Factory::Create(desc, Factory::Options(loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, options)));
@@ -282,7 +283,8 @@ CGAL_ext::Dart dart_from_to(const Mesh& m, CGAL_ext::Face_index f, CGAL_ext::Ver
 template <class Surf>
 Differences against_bfr_on_mesh(const Mesh& m, const Surf& surface, CGAL_ext::Boundary_interpolation boundary,
                                 CGAL_ext::Crease_method method, bool turned = false, bool reversed = false,
-                                int grid = 8)
+                                int grid = 8,
+                                CGAL_ext::Triangle_subdivision triangles = CGAL_ext::Triangle_subdivision::catmark)
 {
   std::vector<std::vector<int>> faces;
   From_darts<Surf> from_darts{surface, {}};
@@ -308,8 +310,8 @@ Differences against_bfr_on_mesh(const Mesh& m, const Surf& surface, CGAL_ext::Bo
       }
   const auto same = [](CGAL_ext::Face_index f) { return int(f.idx()); };
   if (turned)
-    return against_bfr(m, from_darts, faces, m.points().data(), creases, values, boundary, method, same, grid);
-  return against_bfr(m, surface, faces, m.points().data(), creases, values, boundary, method, same, grid);
+    return against_bfr(m, from_darts, faces, m.points().data(), creases, values, boundary, method, same, grid, triangles);
+  return against_bfr(m, surface, faces, m.points().data(), creases, values, boundary, method, same, grid, triangles);
 }
 
 void record(const Differences& d, double scale)
@@ -324,8 +326,9 @@ TEST_P(Against_bfr, PositionsAndDerivatives)
 {
   const Shape s = read_shape(test::data(std::string("opensubdiv/") + GetParam() + ".obj"));
   const Mesh m = build(s);
-  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method));
-  const Differences d = against_bfr_on_mesh(m, surface, s.boundary, s.crease_method);
+  const Surface surface(
+    m, CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method).triangle_subdivision(s.triangles));
+  const Differences d = against_bfr_on_mesh(m, surface, s.boundary, s.crease_method, false, false, 8, s.triangles);
   const double scale = largest_coordinate(m);
   EXPECT_LE(d.position, 1e-10 * scale) << GetParam();
   EXPECT_LE(d.first, 1e-10 * scale) << GetParam();
@@ -339,6 +342,23 @@ INSTANTIATE_TEST_SUITE_P(Shapes, Against_bfr,
                          ::testing::Values("catmark_cube", "catmark_cube_creases1", "catmark_cube_corner4",
                                            "catmark_edgecorner", "catmark_nonquads", "catmark_pole64",
                                            "catmark_torus_creases1", "catmark_smoothtris1"));
+
+// catmark_smoothtris1 carries OpenSubdiv's smooth triangle rule, which
+// Against_bfr gives both libraries: the rule moves the surface, so that
+// comparison tells the rules apart.
+TEST(Limit_surface, SmoothTriangleRuleMovesTheSurface)
+{
+  const Shape s = read_shape(test::data("opensubdiv/catmark_smoothtris1.obj"));
+  ASSERT_EQ(s.triangles, CGAL_ext::Triangle_subdivision::smooth);
+  const Mesh m = build(s);
+  const auto np = CGAL_ext::parameters::boundary_interpolation(s.boundary).crease_method(s.crease_method);
+  const Surface smooth(m, np.triangle_subdivision(CGAL_ext::Triangle_subdivision::smooth)), catmark(m, np);
+  double moved = 0;
+  for (CGAL_ext::Face_index f : m.faces())
+    moved = std::max(moved, std::sqrt(CGAL::squared_distance(smooth.evaluate(f, 0.25, 0.25).point,
+                                                              catmark.evaluate(f, 0.25, 0.25).point)));
+  EXPECT_GT(moved, 1e-3 * largest_coordinate(m));
+}
 
 // A one-sided mesh evaluated as Bfr evaluates its orientation double cover:
 // each face twice (once reversed), vertex v doubled into 2v and 2v + 1, the

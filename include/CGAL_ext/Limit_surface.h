@@ -187,6 +187,10 @@ public:
   ///   \cgalParamNBegin{crease_method}
   ///     \cgalParamDefault{`Crease_method::uniform`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{triangle_subdivision}
+  ///     \cgalParamDescription{`Catmull_clark_mask` only: OpenSubdiv's rule at triangles, as `catmull_clark()` takes it}
+  ///     \cgalParamDefault{`Triangle_subdivision::catmark`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{vertex_point_map}
   ///     \cgalParamDefault{`mesh.points()`}
   ///   \cgalParamNEnd
@@ -207,6 +211,8 @@ public:
     CGAL_ext::internal::refuse_non_manifold_joins(mesh, "Limit_surface");
     options_.boundary = CGAL_ext::internal::boundary_interpolation_of(np);
     options_.crease = CGAL_ext::internal::crease_method_of(np);
+    options_.triangles = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
+                                              Triangle_subdivision::catmark);
     options_.level_smooth = options.approx_level_smooth;
     options_.level_sharp = std::max(options.approx_level_sharp, options.approx_level_smooth);
     // A patch's place in a Loop triangle's quadtree is two bits a level of
@@ -545,6 +551,7 @@ private:
     const auto& m = base_.mesh;
     const auto np = parameters::boundary_interpolation(options_.boundary)
                       .crease_method(options_.crease)
+                      .triangle_subdivision(options_.triangles)
                       .face_varying_interpolation(fvar_mode_);
     for (const std::string& name : m.corner_channels()) {
       bool carried = false;

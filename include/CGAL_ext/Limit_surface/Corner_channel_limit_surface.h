@@ -93,7 +93,7 @@ public:
   /// whose values are of type `T`.
   ///
   /// The named parameters are those of `Limit_surface` (the sharpness
-  /// maps, `boundary_interpolation`, `crease_method`), and:
+  /// maps, `boundary_interpolation`, `crease_method`, `triangle_subdivision`), and:
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{face_varying_interpolation}
   ///     \cgalParamDefault{`Face_varying_interpolation::corners_plus1`, as OpenSubdiv's}
@@ -135,7 +135,10 @@ public:
       return;
     }
     const auto surface_np = pm::boundary_interpolation(Boundary_interpolation::edge_only)
-                              .crease_method(CGAL_ext::internal::crease_method_of(np));
+                              .crease_method(CGAL_ext::internal::crease_method_of(np))
+                              .triangle_subdivision(pm::choose_parameter(
+                                pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
+                                Triangle_subdivision::catmark));
     for (std::size_t first = 0; first < dimension; first += 3) {
       for (Vertex_index c : cage_.mesh.vertices()) {
         const std::array<FT, dimension>& x = coordinates[cage_.value_of[c.idx()]];

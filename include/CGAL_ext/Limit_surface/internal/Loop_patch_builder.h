@@ -439,7 +439,7 @@ private:
       vp[k] = child.mesh.source(ck[k]);
       ep[k] = Vertex_index(nv + child.mesh.edge(ck[k]).idx());
     }
-    loop(child.mesh, parameters::boundary_interpolation(opt_.boundary).crease_method(opt_.crease));
+    loop(child.mesh, refinement_parameters(opt_));
     child.bind();
     const Mobius_mesh<P>& m = child.mesh;
     // (first corner, second corner, third corner) of each child, in the parent's orientation.

@@ -36,6 +36,7 @@ struct Limit_options
 {
   Boundary_interpolation boundary = Boundary_interpolation::edge_only;
   Crease_method crease = Crease_method::uniform;
+  Triangle_subdivision triangles = Triangle_subdivision::catmark; // Catmull–Clark only
   unsigned level_smooth = 2; // Bfr's approxLevelSmooth
   unsigned level_sharp = 6;  // Bfr's approxLevelSharp
 };
@@ -93,6 +94,16 @@ Dart dart_between(const Mobius_mesh<P>& m, Face_index f, Vertex_index a, Vertex_
       return d.flipped();
   }
   throw Parameter_error("Limit_surface: internal error, no dart between two corners of a face");
+}
+
+// The named parameters of one refinement of a copied neighbourhood. Under
+// Boundary_interpolation::none the faces kept have edge_only's surface (and
+// a copy's own border is not the mesh's: no face of it is a hole).
+inline auto refinement_parameters(const Limit_options& opt)
+{
+  const Boundary_interpolation b =
+    opt.boundary == Boundary_interpolation::none ? Boundary_interpolation::edge_only : opt.boundary;
+  return parameters::boundary_interpolation(b).crease_method(opt.crease);
 }
 
 // The faces without a limit surface, by face index: under
@@ -775,7 +786,7 @@ public:
       ep.push_back(Vertex_index(nv + child.mesh.edge(child.mesh.next(x)).idx()));
     }
     fp = Vertex_index(nv + ne + child.mesh.face(c).idx());
-    catmull_clark(child.mesh, parameters::boundary_interpolation(opt_.boundary).crease_method(opt_.crease));
+    catmull_clark(child.mesh, refinement_parameters(opt_).triangle_subdivision(opt_.triangles));
     child.bind();
     return c.is_flipped();
   }
