@@ -359,7 +359,8 @@ TEST(NonManifold, a_degenerate_edge_inside_a_fan_is_refused)
 TEST(NonManifold, catmull_clark_equals_opensubdiv_on_its_non_manifold_shapes)
 {
   REQUIRE_OPENSUBDIV();
-  for (const char* name : {"catmark_nonman_edges.obj", "catmark_val2_nonman.obj", "catmark_fan.obj"})
+  for (const char* name :
+       {"catmark_nonman_edges.obj", "catmark_val2_nonman.obj", "catmark_fan.obj", "catmark_gregory_test4.obj"})
     for (int n = 1; n <= 3; ++n) {
       SCOPED_TRACE(std::string(name) + " level " + std::to_string(n));
       expect_opensubdiv_result(nonmanifold_shape(name), Sdc::SCHEME_CATMARK, n);
@@ -371,7 +372,10 @@ TEST(NonManifold, loop_equals_opensubdiv_on_its_non_manifold_shape)
   REQUIRE_OPENSUBDIV();
   for (int n = 1; n <= 3; ++n) {
     SCOPED_TRACE("level " + std::to_string(n));
-    expect_opensubdiv_result(nonmanifold_shape("loop_nonman_edges.obj"), Sdc::SCHEME_LOOP, n);
+    for (const char* name : {"loop_nonman_edges.obj", "loop_val2_interior.obj"}) {
+      SCOPED_TRACE(name);
+      expect_opensubdiv_result(nonmanifold_shape(name), Sdc::SCHEME_LOOP, n);
+    }
   }
 }
 

@@ -286,9 +286,13 @@ std::vector<u32> child_joins(const Mobius_mesh<P>& parent, const CGAL_ext::inter
 // edge is one with the halves of the same input edge at the same input
 // vertex (at the same copy for a degenerate edge, whose two halves both
 // end at its vertex and stay two edges, as in OpenSubdiv's next level);
-// every other child edge is alone between its ends. (A half of an edge of
-// its own class is a class of one, not tagged non-manifold as OpenSubdiv
-// tags it: a border, it is infinitely sharp all the same.)
+// every other child edge lies inside one parent face and is an edge of its
+// own, even where a child of another face has the same two input vertices
+// as ends (two faces on the same corners, as two triangles glued into a
+// pillow whose edge points are copies of one vertex): a group of its own.
+// (A half of an edge of its own class is a class of one, not tagged
+// non-manifold as OpenSubdiv tags it: a border, it is infinitely sharp all
+// the same.)
 template <class P>
 std::vector<std::uint64_t> child_edge_groups(const Mobius_mesh<P>& parent,
                                              const CGAL_ext::internal::Join_classes& classes,
@@ -300,8 +304,10 @@ std::vector<std::uint64_t> child_edge_groups(const Mobius_mesh<P>& parent,
     u32 x = child.vertex(c, 0).idx(), y = child.vertex(c, 1).idx();
     if (x > y)
       std::swap(x, y);
-    if (x >= nv || y < nv || y >= nv + ne)
-      continue; // not a half of a parent edge
+    if (x >= nv || y < nv || y >= nv + ne) { // inside a parent face
+      group[c.idx()] = c.idx(); // halves' groups are 2^32 and above
+      continue;
+    }
     const Edge_index e(y - nv);
     const bool degenerate = classes.is_degenerate_edge(parent.vertex(e, 0).idx(), parent.vertex(e, 1).idx());
     group[c.idx()] = std::uint64_t(classes.edge_representative(e.idx()) + 1) << 32 |
