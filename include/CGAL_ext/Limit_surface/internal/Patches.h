@@ -85,23 +85,35 @@ void bezier_curve(const FT& t, FT w[4], FT d[4], FT d2[4])
   d2[3] = FT(6) * t;
 }
 
-// The tensor-product B-spline basis, point (i, j) at index 4 j + i (i along s).
+// A bicubic B-spline patch (point (i, j) at index 4 j + i, i along s) at
+// (s, t), as a tensor product: each row of four points combined along s
+// (value, first and second derivative), then the rows along t; 216
+// products where the 16 weights of each of the six derivatives take 384.
 template <class FT>
-void bspline_basis(const FT& s, const FT& t, Basis<FT, 16>& b)
+Patch_value<FT> evaluate_bspline(const std::array<Coordinates<FT>, 20>& points, const FT& s, const FT& t)
 {
   FT ws[4], ds[4], d2s[4], wt[4], dt[4], d2t[4];
   bspline_curve(s, ws, ds, d2s);
   bspline_curve(t, wt, dt, d2t);
-  for (int j = 0; j < 4; ++j)
+  Patch_value<FT> r;
+  for (auto* c : {&r.p, &r.ds, &r.dt, &r.dss, &r.dst, &r.dtt})
+    *c = {FT(0), FT(0), FT(0)};
+  for (int j = 0; j < 4; ++j) {
+    Coordinates<FT> row{FT(0), FT(0), FT(0)}, row_s = row, row_ss = row;
     for (int i = 0; i < 4; ++i) {
-      const int k = 4 * j + i;
-      b.w[k] = ws[i] * wt[j];
-      b.ds[k] = ds[i] * wt[j];
-      b.dt[k] = ws[i] * dt[j];
-      b.dss[k] = d2s[i] * wt[j];
-      b.dst[k] = ds[i] * dt[j];
-      b.dtt[k] = ws[i] * d2t[j];
+      const Coordinates<FT>& x = points[std::size_t(4 * j + i)];
+      add_scaled(row, ws[i], x);
+      add_scaled(row_s, ds[i], x);
+      add_scaled(row_ss, d2s[i], x);
     }
+    add_scaled(r.p, wt[j], row);
+    add_scaled(r.dt, dt[j], row);
+    add_scaled(r.dtt, d2t[j], row);
+    add_scaled(r.ds, wt[j], row_s);
+    add_scaled(r.dst, dt[j], row_s);
+    add_scaled(r.dss, wt[j], row_ss);
+  }
+  return r;
 }
 
 // The Gregory basis in OpenSubdiv's point order (five points per corner:
@@ -350,11 +362,8 @@ Patch_value<FT> evaluate_patch(const Patch<FT>& patch, const FT& s, const FT& t)
     gregory_triangle_basis(s, t, b);
     return combine(b, patch.points);
   }
-  default: {
-    Basis<FT, 16> b;
-    bspline_basis(s, t, b);
-    return combine(b, patch.points);
-  }
+  default:
+    return evaluate_bspline(patch.points, s, t);
   }
 }
 
