@@ -988,6 +988,46 @@ TEST(Limit_surface, ClosestPointFromSeveralThreads)
   EXPECT_EQ(S::closest_point_on_limit<S::Catmull_clark_mask>(m, queries[0]).point, serial[0].point);
 }
 
+// The patches kept stay within Limit_surface_options::max_cache_bytes,
+// several threads evaluating at once; a face past the budget is built for
+// each evaluation, and the surface is the same to the bit.
+TEST(Limit_surface, CacheStaysWithinItsBudget)
+{
+  const Mesh m = build(read_shape(test::data("opensubdiv/catmark_nonquads.obj")));
+  const std::size_t per_face = 64; // samples of each face's grid (cycled through)
+  const auto evaluate_all = [&](const Surface& surface, int threads) {
+    std::vector<Point> points(m.number_of_faces() * per_face);
+    std::vector<std::thread> workers;
+    for (int t = 0; t < threads; ++t)
+      workers.emplace_back([&, t] {
+        for (std::size_t f = std::size_t(t); f < m.number_of_faces(); f += std::size_t(threads)) {
+          const auto grid = parameter_grid(int(m.degree(CGAL_ext::Face_index(f))), 3);
+          for (std::size_t k = 0; k < per_face; ++k)
+            points[f * per_face + k] =
+              surface.evaluate(CGAL_ext::Face_index(f), grid[k % grid.size()][0], grid[k % grid.size()][1]).point;
+        }
+      });
+    for (std::thread& w : workers)
+      w.join();
+    return points;
+  };
+  const Surface unbounded(m);
+  const std::vector<Point> reference = evaluate_all(unbounded, 1);
+  const std::size_t all = unbounded.cached_bytes();
+  ASSERT_GT(all, 0u);
+  for (std::size_t budget : {all / 3, std::size_t(0)}) {
+    SCOPED_TRACE("budget " + std::to_string(budget));
+    S::Limit_surface_options options;
+    options.max_cache_bytes = budget;
+    const Surface bounded(m, CGAL_ext::parameters::default_values(), options);
+    EXPECT_EQ(evaluate_all(bounded, 4), reference);
+    EXPECT_EQ(evaluate_all(bounded, 2), reference); // kept faces and rebuilt ones alike
+    EXPECT_LE(bounded.cached_bytes(), budget);
+    if (budget > 0)
+      EXPECT_GT(bounded.cached_bytes(), 0u);
+  }
+}
+
 // In an exact kernel the point found is the surface exactly at the
 // parameter found, the same parameter as in double.
 TEST(Limit_surface, ClosestPointInAnExactKernel)

@@ -69,6 +69,13 @@ struct Limit_surface_options
   /// The most segments `Limit_surface::tessellate_to_tolerance()` puts
   /// along a base edge or across a face (0 counts as 1, more than 4096 as 4096).
   unsigned max_tessellation_rate = 64;
+  /// The most bytes of patches kept for faces already evaluated (the
+  /// patches' arrays: about 600 bytes for a regular face in double, a few
+  /// kilobytes around an extraordinary vertex). Past it, a face's patches
+  /// are built for each evaluation and dropped after it: the memory stays
+  /// bounded, the evaluation of those faces slower (as Bfr without its
+  /// `SurfaceFactoryCache`). The default, 1 GiB, keeps a million regular faces.
+  std::size_t max_cache_bytes = std::size_t(1) << 30;
 };
 
 /// \ingroup PkgSubdivision
@@ -232,10 +239,11 @@ public:
     for (Vertex_index v : mesh.vertices())
       base_.mesh.point(v) = get(points, v);
     copy_sharpness(mesh, np);
-    faces_ = internal::Face_cache<Face_patches>(mesh.number_of_faces());
+    faces_ = internal::Face_cache<Face_patches>(mesh.number_of_faces(), options.max_cache_bytes);
     holes_ = internal::hole_faces(mesh, options_.boundary);
     projection_rate_ = int(std::min(options.projection_rate, 1024u));
     max_tessellation_rate_ = int(std::min(std::max(options.max_tessellation_rate, 1u), 4096u));
+    max_cache_bytes_ = options.max_cache_bytes;
   }
 
   /// \brief whether face `f` has no limit surface: under
@@ -258,7 +266,8 @@ public:
     if (is_hole(f))
       throw Parameter_error("Limit_surface::evaluate: face f" + std::to_string(f.idx()) +
                             " is a hole (it has a vertex on a border, and the boundary interpolation is none)");
-    const Face_patches& patches = patches_of(f);
+    std::unique_ptr<Face_patches> spill;
+    const Face_patches& patches = patches_of(f, spill);
     if constexpr (is_loop)
       return evaluate_triangle(f, patches.sub_faces[0], u, v);
     std::size_t list = 0;
@@ -393,11 +402,17 @@ public:
   /// The number of patches face `f` is pieced from (built if not yet).
   std::size_t number_of_patches(Face_index f) const
   {
+    std::unique_ptr<Face_patches> spill;
     std::size_t n = 0;
-    for (const auto& list : patches_of(f).sub_faces)
+    for (const auto& list : patches_of(f, spill).sub_faces)
       n += list.size();
     return n;
   }
+
+  /// The bytes of the patches kept so far (their arrays, as counted against
+  /// `Limit_surface_options::max_cache_bytes`; numbers of an exact kernel
+  /// may hold more memory of their own).
+  std::size_t cached_bytes() const { return faces_.bytes(); }
 
   /// \brief a mesh of the limit surface sampled uniformly at `rate`
   /// samples per base edge, laid out in each base face as OpenSubdiv's
@@ -603,8 +618,15 @@ private:
     base_.bind();
   }
 
-  const Face_patches& patches_of(Face_index f) const
+  // The patches of f, kept or, past the cache's budget, made into `spill`.
+  const Face_patches& patches_of(Face_index f, std::unique_ptr<Face_patches>& spill) const
   {
+    const auto size_of = [](const Face_patches& p) {
+      std::size_t bytes = sizeof(Face_patches);
+      for (const auto& list : p.sub_faces)
+        bytes += sizeof(list) + list.capacity() * sizeof(internal::Patch<FT>);
+      return bytes;
+    };
     return faces_.get(f.idx(), [&] {
       auto patches = std::make_unique<Face_patches>();
       const Dart d = base_.mesh.next(base_.mesh.halfedge(f)); // corner 0 -> corner 1
@@ -619,7 +641,7 @@ private:
         internal::Patch_tree_builder<FT, P>(options_, unused).build_sub_faces(base_, d, patches->sub_faces);
       }
       return patches;
-    });
+    }, size_of, spill);
   }
 
   // A triangle's patch is found by Bfr's descent of its patch tree; the
@@ -705,6 +727,7 @@ private:
     o.approx_level_sharp = options_.level_sharp;
     o.projection_rate = unsigned(projection_rate_);
     o.max_tessellation_rate = unsigned(max_tessellation_rate_);
+    o.max_cache_bytes = max_cache_bytes_;
     return o;
   }
 
@@ -715,6 +738,7 @@ private:
   std::vector<bool> holes_; // by face index; empty unless the boundary interpolation is none
   int projection_rate_ = 4;
   int max_tessellation_rate_ = 64;
+  std::size_t max_cache_bytes_ = std::size_t(1) << 30;
   mutable std::unique_ptr<internal::Limit_projection<Limit_surface>> projection_;
   std::unique_ptr<std::once_flag> projection_once_ = std::make_unique<std::once_flag>();
 };
