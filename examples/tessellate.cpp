@@ -1,5 +1,5 @@
 // tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary none|edge-only|edge-and-corner]
-//   [--triangles catmark|smooth] [--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]
+//   [--crease-method uniform|chaikin] [--triangles catmark|smooth] [--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]
 //
 // Samples the Catmull–Clark (or Loop) limit surface of a polygon (or
 // triangle) mesh (.obj, .off, .ply) uniformly, N segments along every base
@@ -33,7 +33,7 @@ namespace {
 const examples::Tool_usage usage{
   "tessellate",
   "tessellate IN OUT (--rate N | --tolerance T) [--scheme catmull-clark|loop] [--boundary none|edge-only|edge-and-corner] "
-  "[--triangles catmark|smooth] [--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]",
+  "[--crease-method uniform|chaikin] [--triangles catmark|smooth] [--fvar-interpolation none|corners-only|corners-plus1|corners-plus2|boundaries|all] [--drop-corner-data]",
   "Reads a polygon mesh (.obj, .off, .ply) and writes a mesh of its limit surface, each face\n"
   "sampled as OpenSubdiv's Bfr::Tessellation samples it:\n"
   "  --rate      segments along every base edge, 1 to 64 (a quad becomes N x N quads, a\n"
@@ -46,7 +46,10 @@ const examples::Tool_usage usage{
   "  --scheme    catmull-clark (default) or loop (every face a triangle).\n"
   "  --boundary  border rule: edge-only (default), edge-and-corner, or none (the faces with a\n"
   "              vertex on a border are holes, left out, as OpenSubdiv leaves them).\n"
+  "  --crease-method  uniform (default) or chaikin: how semi-sharp creases decay.\n"
   "  --triangles catmark (default) or smooth: OpenSubdiv's Catmull-Clark rule at triangles.\n"
+  "              The OBJ tags give the defaults of --boundary, --crease-method and\n"
+  "              --triangles, as for subdivide; flags override them.\n"
   "  --fvar-interpolation  which texture coordinates and normals stay linear (OpenSubdiv's\n"
   "              FVarLinearInterpolation): none, corners-only, corners-plus1 (the default),\n"
   "              corners-plus2, boundaries or all (bilinear in each face).\n"
@@ -61,6 +64,8 @@ const examples::Choices<CGAL_ext::Boundary_interpolation> boundaries = {
   {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
   {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}};
 
+const examples::Choices<CGAL_ext::Crease_method> crease_methods = {
+  {"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}};
 const examples::Choices<CGAL_ext::Triangle_subdivision> triangle_rules = {
   {"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}};
 
@@ -74,7 +79,8 @@ int tessellate(int argc, char** argv)
   using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
   namespace S = CGAL_ext::Subdivision;
   const examples::Arguments args =
-    examples::parse_arguments(argc, argv, {"--rate", "--tolerance", "--scheme", "--boundary", "--triangles", "--fvar-interpolation"},
+    examples::parse_arguments(argc, argv, {"--rate", "--tolerance", "--scheme", "--boundary", "--crease-method", "--triangles",
+                               "--fvar-interpolation"},
                               {examples::drop_corner_data_flag});
   if (args.positional.size() != 2)
     throw examples::Usage_error("expected two file names, got " + std::to_string(args.positional.size()));
@@ -84,20 +90,26 @@ int tessellate(int argc, char** argv)
   const double tolerance = args.has("--tolerance") ? examples::real_argument("--tolerance", args.value("--tolerance", "")) : 0;
   if (args.has("--tolerance") && !(tolerance > 0 && std::isfinite(tolerance)))
     throw examples::Usage_error("--tolerance must be positive and finite");
-  const auto boundary = examples::choice_argument("--boundary", args.value("--boundary", "edge-only"), boundaries);
+  const auto boundary_flag = examples::choice_option(args, "--boundary", boundaries);
+  const auto crease_flag = examples::choice_option(args, "--crease-method", crease_methods);
+  const auto triangles_flag = examples::choice_option(args, "--triangles", triangle_rules);
   const Scheme scheme = examples::choice_argument("--scheme", args.value("--scheme", "catmull-clark"), schemes);
-  const auto triangles = examples::choice_argument("--triangles", args.value("--triangles", "catmark"), triangle_rules);
   const CGAL_ext::Face_varying_interpolation fvar = examples::face_varying_argument(args);
 
   Mesh mesh;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
-  CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  const CGAL_ext::Sharp_feature_options tags = CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
+  const auto boundary =
+    boundary_flag.value_or(tags.boundary_interpolation.value_or(CGAL_ext::Boundary_interpolation::edge_only));
+  const auto crease = crease_flag.value_or(tags.crease_method.value_or(CGAL_ext::Crease_method::uniform));
+  const auto triangles =
+    triangles_flag.value_or(tags.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark));
   // Whether OUT's format holds the corner channels is known now.
   const examples::Json_array dropped = examples::drop_corner_channels_if(
     mesh, examples::why_output_cannot_hold_corner_data(args.positional[1], mesh), args.has(examples::drop_corner_data_flag));
   const auto start = std::chrono::steady_clock::now();
   const auto np =
-    CGAL_ext::parameters::boundary_interpolation(boundary).triangle_subdivision(triangles).face_varying_interpolation(fvar);
+    CGAL_ext::parameters::boundary_interpolation(boundary).crease_method(crease).triangle_subdivision(triangles).face_varying_interpolation(fvar);
   const auto run = [&](auto mask) {
     using Mask = decltype(mask);
     return rate > 0 ? S::tessellate<Mask>(mesh, rate, np) : S::tessellate_to_tolerance<Mask>(mesh, tolerance, np);

@@ -105,3 +105,17 @@ add_test(NAME tessellate.smooth_triangles COMMAND tessellate
          ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_smoothtris1.obj ${_out}/tessellate_smooth_triangles.obj
          --rate 2 --triangles smooth)
 set_tests_properties(tessellate.smooth_triangles PROPERTIES PASS_REGULAR_EXPRESSION "\"valid\":true,")
+
+# The OBJ tags give the defaults: "t interpolateboundary 1/0/0 0" is none,
+# leaving the 2 of the 4 x 3 quads without a border vertex (3 x 2 vertices,
+# 7 edges): at rate 2, 6 + 7 + 2 vertices and 8 quads; --boundary overrides
+# the tag (48 quads).
+set(_tools_data ${PROJECT_SOURCE_DIR}/test/data/tools)
+add_test(NAME tessellate.boundary_from_tags COMMAND tessellate ${_tools_data}/grid_4x3_boundary_none.obj
+         ${_out}/tessellate_boundary_from_tags.obj --rate 2)
+set_tests_properties(tessellate.boundary_from_tags PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":15,\"edges\":22,\"faces\":8,\"border_loops\":1,")
+add_test(NAME tessellate.boundary_flag_over_tags COMMAND tessellate ${_tools_data}/grid_4x3_boundary_none.obj
+         ${_out}/tessellate_boundary_flag_over_tags.obj --rate 2 --boundary edge-only)
+set_tests_properties(tessellate.boundary_flag_over_tags PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":63,\"edges\":110,\"faces\":48,\"border_loops\":1,")
