@@ -560,8 +560,8 @@ private:
   // Each corner channel of the mesh on the tessellation: its limit surface
   // sampled where the mesh's is, each facet corner taking the value its
   // face sees there (so a seam stays a seam).
-  void carry_corner_channels(const internal::Tessellation_rates& rates,
-                             const std::vector<std::vector<std::size_t>>& facets, Mobius_mesh<P>& out) const
+  void carry_corner_channels(const internal::Tessellation_rates& rates, const CGAL_ext::internal::Face_list& facets,
+                             Mobius_mesh<P>& out) const
   {
     const auto& m = base_.mesh;
     const auto np = parameters::boundary_interpolation(options_.boundary)
@@ -580,10 +580,11 @@ private:
           auto channel = out.template add_corner_channel<T>(name).first;
           channel.values() = std::move(values);
           for (Face_index f : out.faces()) {
-            const std::vector<std::size_t>& facet = facets[f.idx()];
+            const auto first = facets.vertex.begin() + facets.offset[f.idx()];
+            const auto end = facets.vertex.begin() + facets.offset[f.idx() + 1];
             for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out)) {
-              const std::size_t c = std::size_t(std::find(facet.begin(), facet.end(), out.target(d).idx()) - facet.begin());
-              channel.set_index(out.corner(d), std::uint32_t(indices[f.idx()][c]));
+              const auto c = std::find(first, end, std::uint32_t(out.target(d).idx())) - facets.vertex.begin();
+              channel.set_index(out.corner(d), indices.vertex[std::size_t(c)]);
             }
           }
         }

@@ -238,15 +238,14 @@ private:
   // Limit_surface::tessellate() makes it): the cage tessellated at the same
   // rates has the same facets, a sample per value of each sample (a seam's
   // samples twice). Returns the value index of each facet's corners, in the
-  // order the tessellator made them, and the values.
-  std::pair<std::vector<std::vector<std::size_t>>, std::vector<T>>
-  tessellated(const internal::Tessellation_rates& rates) const
+  // order the tessellator made them (the mesh's facet lists' layout), and the values.
+  std::pair<CGAL_ext::internal::Face_list, std::vector<T>> tessellated(const internal::Tessellation_rates& rates) const
   {
     internal::Tessellation_rates cage_rates;
     cage_rates.inner = rates.inner;
     for (std::uint32_t e : cage_.edge_of)
       cage_rates.edge.push_back(rates.edge[e]);
-    std::vector<std::vector<std::size_t>> facets;
+    CGAL_ext::internal::Face_list facets;
     std::vector<Values> values;
     const auto evaluated = [](Vertex_index, Face_index, const P& p) { return p; };
     for (std::size_t first = 0; first < dimension; first += 3) {

@@ -91,14 +91,8 @@ public:
 
   // After run(): the corners of each facet of the result (facet f is face f
   // of the result), as sample ids in the order the facet was made; the same
-  // at the same rates on another mesh of the same faces (a channel's cage).
-  std::vector<std::vector<std::size_t>> facets() const
-  {
-    std::vector<std::vector<std::size_t>> out(facets_.size());
-    for (std::uint32_t f = 0; f < facets_.size(); ++f)
-      out[f].assign(facets_.vertex.begin() + facets_.offset[f], facets_.vertex.begin() + facets_.offset[f + 1]);
-    return out;
-  }
+  // layout at the same rates on another mesh of the same faces (a channel's cage).
+  const CGAL_ext::internal::Face_list& facets() const { return facets_; }
   // After run(): the point of each sample id.
   const std::vector<P>& points() const { return points_; }
 
