@@ -604,6 +604,52 @@ TEST(Limit_surface, TessellationLeavesOutHoles)
   for (const char* name : {"catmark_edgecorner", "catmark_nonquads"})
     tessellation_against_bfr<Surface>(name, CGAL_ext::Boundary_interpolation::none);
   tessellation_against_bfr<Loop_surface>("loop_triangle_edgeonly", CGAL_ext::Boundary_interpolation::none);
+
+  // Faces with a surface that meet at one vertex only, between holes: a
+  // 6 x 6 grid of unit quads in the plane without the cells (1, 1) and
+  // (4, 4) keeps a surface on two blocks of 2 x 2 cells, (1..2, 3..4) and
+  // (3..4, 1..2), which meet at the point (3, 3) (the cells to its
+  // north-east and south-west reach the cut-out cells' corners). At rate 2
+  // each block is 5 x 5 samples, the point (3, 3) once per block. The
+  // texture channel (x, y) / 6 is affine in the points, and so is its limit
+  // on these regular faces: each corner keeps its point's value.
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> cells;
+  for (int j = 0; j <= 6; ++j)
+    for (int i = 0; i <= 6; ++i)
+      points.emplace_back(i, j, 0);
+  for (std::size_t j = 0; j < 6; ++j)
+    for (std::size_t i = 0; i < 6; ++i)
+      if ((i != 1 || j != 1) && (i != 4 || j != 4))
+        cells.push_back({7 * j + i, 7 * j + i + 1, 7 * j + i + 8, 7 * j + i + 7});
+  Mesh m;
+  CGAL_ext::polygon_soup_to_mobius_mesh(points, cells, m);
+  auto uv = m.add_corner_channel<std::array<double, 2>>("c:uv").first;
+  for (const Point& p : m.points().data())
+    uv.values().push_back({p.x() / 6, p.y() / 6});
+  for (CGAL_ext::Face_index f : m.faces())
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      uv.set_index(m.corner(d), std::uint32_t(m.target(d).idx()));
+  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none));
+  const Mesh out = surface.tessellate(2);
+  EXPECT_EQ(out.number_of_faces(), 32u);
+  EXPECT_EQ(out.number_of_vertices(), 50u);
+  std::size_t at_pinch = 0;
+  for (CGAL_ext::Vertex_index v : out.vertices()) {
+    EXPECT_FALSE(out.is_isolated(v));
+    at_pinch += CGAL::squared_distance(out.point(v), Point(3, 3, 0)) < 1e-20 ? 1 : 0;
+  }
+  EXPECT_EQ(at_pinch, 2u);
+  const auto out_uv = out.corner_channel<std::array<double, 2>>("c:uv");
+  ASSERT_TRUE(out_uv.has_value());
+  EXPECT_EQ(out_uv->number_of_values(), 49u); // one per point: none of the holes' samples
+  for (CGAL_ext::Face_index f : out.faces())
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out)) {
+      const Point& p = out.point(out.target(d));
+      const std::array<double, 2> w = out_uv->values()[out_uv->index(out.corner(d))];
+      EXPECT_NEAR(w[0], p.x() / 6, 1e-12);
+      EXPECT_NEAR(w[1], p.y() / 6, 1e-12);
+    }
 }
 
 // Quads, borders and corners, n-gons, triangles.
@@ -995,21 +1041,27 @@ TEST(Limit_surface, CacheStaysWithinItsBudget)
 {
   const Mesh m = build(read_shape(test::data("opensubdiv/catmark_nonquads.obj")));
   const std::size_t per_face = 64; // samples of each face's grid (cycled through)
+  // Each thread evaluates every face, from its own first face on (so that
+  // threads build some faces at once), into its own list, in face order.
   const auto evaluate_all = [&](const Surface& surface, int threads) {
-    std::vector<Point> points(m.number_of_faces() * per_face);
+    const std::size_t nf = m.number_of_faces();
+    std::vector<std::vector<Point>> points(std::size_t(threads), std::vector<Point>(nf * per_face));
     std::vector<std::thread> workers;
     for (int t = 0; t < threads; ++t)
       workers.emplace_back([&, t] {
-        for (std::size_t f = std::size_t(t); f < m.number_of_faces(); f += std::size_t(threads)) {
+        for (std::size_t i = 0; i < nf; ++i) {
+          const std::size_t f = (i + std::size_t(t) * nf / std::size_t(threads)) % nf;
           const auto grid = parameter_grid(int(m.degree(CGAL_ext::Face_index(f))), 3);
           for (std::size_t k = 0; k < per_face; ++k)
-            points[f * per_face + k] =
+            points[std::size_t(t)][f * per_face + k] =
               surface.evaluate(CGAL_ext::Face_index(f), grid[k % grid.size()][0], grid[k % grid.size()][1]).point;
         }
       });
     for (std::thread& w : workers)
       w.join();
-    return points;
+    for (std::size_t t = 1; t < points.size(); ++t)
+      EXPECT_EQ(points[t], points[0]) << "thread " << t;
+    return points[0];
   };
   const Surface unbounded(m);
   const std::vector<Point> reference = evaluate_all(unbounded, 1);

@@ -382,8 +382,8 @@ public:
           std::isfinite(CGAL::to_double(query.z()))))
       throw Parameter_error("Limit_surface::closest_point: the query has a coordinate that is not a finite number");
     if (projection_->empty())
-      throw Parameter_error("Limit_surface::closest_point: no surface to project onto (the mesh has no face, or "
-                            "every sample of its faces is degenerate)");
+      throw Parameter_error("Limit_surface::closest_point: no surface to project onto (the mesh has no face, "
+                            "every face is a hole, or every sample of its faces is degenerate)");
     const internal::Projection_result r = projection_->closest(
       *this, CGAL::Simple_cartesian<double>::Point_3(CGAL::to_double(query.x()), CGAL::to_double(query.y()), CGAL::to_double(query.z())));
     Location location;
@@ -399,9 +399,11 @@ public:
     return location;
   }
 
-  /// The number of patches face `f` is pieced from (built if not yet).
+  /// The number of patches face `f` is pieced from (built if not yet; 0 for a hole).
   std::size_t number_of_patches(Face_index f) const
   {
+    if (is_hole(f))
+      return 0;
     std::unique_ptr<Face_patches> spill;
     std::size_t n = 0;
     for (const auto& list : patches_of(f, spill).sub_faces)
@@ -438,9 +440,11 @@ public:
   /// that reaches it, reused in reverse order by the face across, in the
   /// same order across a Möbius edge), then each face's interior. Vertex i
   /// of the result, for i below the number of base vertices, is base vertex
-  /// i (an isolated vertex keeps its point); holes (`is_hole()`) have no
-  /// facets, and the base vertices that only holes reach are left out, the
-  /// others keeping their order. Each facet keeps the
+  /// i (an isolated vertex keeps its point). Holes (`is_hole()`) have no
+  /// facets: the base vertices that only holes reach are left out (the
+  /// others come first, in their order), and where faces with a surface meet
+  /// at a vertex only, between holes, the result has a copy of the vertex per
+  /// further fan, after the others. Each facet keeps the
   /// orientation of its base face, so a Möbius edge stays a run of Möbius
   /// edges, borders stay borders and a one-sided surface stays one-sided.
   ///
@@ -540,7 +544,7 @@ private:
                                                                                      is_loop);
     Mobius_mesh<P> out = tessellator.run();
     if (!m.corner_channels().empty())
-      carry_corner_channels(rates, tessellator.facets(), out);
+      carry_corner_channels(rates, tessellator.facets(), [&](Vertex_index v) { return tessellator.sample_of(v); }, out);
     if (!holes_.empty())
       remove_vertices_of_holes(out);
     return out;
@@ -560,8 +564,9 @@ private:
   // Each corner channel of the mesh on the tessellation: its limit surface
   // sampled where the mesh's is, each facet corner taking the value its
   // face sees there (so a seam stays a seam).
+  template <class SampleOf>
   void carry_corner_channels(const internal::Tessellation_rates& rates, const CGAL_ext::internal::Face_list& facets,
-                             Mobius_mesh<P>& out) const
+                             const SampleOf& sample_of, Mobius_mesh<P>& out) const
   {
     const auto& m = base_.mesh;
     const auto np = parameters::boundary_interpolation(options_.boundary)
@@ -578,13 +583,27 @@ private:
           carried = true;
           auto [indices, values] = Corner_channel_limit_surface<Mask, P, T>(m, name, np, surface_options()).tessellated(rates);
           auto channel = out.template add_corner_channel<T>(name).first;
-          channel.values() = std::move(values);
+          // With holes, the channel's samples that only holes reach (cage
+          // points, not values of its surface) are left out: the values are
+          // kept in order of first use.
+          constexpr std::uint32_t unused = std::uint32_t(-1);
+          std::vector<std::uint32_t> kept(holes_.empty() ? 0 : values.size(), unused);
+          if (holes_.empty())
+            channel.values() = std::move(values);
           for (Face_index f : out.faces()) {
             const auto first = facets.vertex.begin() + facets.offset[f.idx()];
             const auto end = facets.vertex.begin() + facets.offset[f.idx() + 1];
             for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out)) {
-              const auto c = std::find(first, end, std::uint32_t(out.target(d).idx())) - facets.vertex.begin();
-              channel.set_index(out.corner(d), indices.vertex[std::size_t(c)]);
+              const auto c = std::find(first, end, sample_of(out.target(d))) - facets.vertex.begin();
+              std::uint32_t i = indices.vertex[std::size_t(c)];
+              if (!holes_.empty()) {
+                if (kept[i] == unused) {
+                  kept[i] = std::uint32_t(channel.values().size());
+                  channel.values().push_back(values[i]);
+                }
+                i = kept[i];
+              }
+              channel.set_index(out.corner(d), i);
             }
           }
         }

@@ -50,7 +50,7 @@ public:
   ~Face_cache() { clear(); }
 
   std::size_t size() const { return size_; }
-  // The bytes of the values kept, as `size_of()` counted them.
+  // The bytes of the values kept (and of those being stored), as `size_of()` counted them.
   std::size_t bytes() const { return used_.load(std::memory_order_relaxed); }
 
   template <class Make, class SizeOf>
@@ -62,6 +62,8 @@ public:
     const std::size_t bytes = size_of(*made);
     if (used_.fetch_add(bytes, std::memory_order_relaxed) + bytes > budget_) {
       used_.fetch_sub(bytes, std::memory_order_relaxed);
+      if (const T* known = slots_[i].load(std::memory_order_acquire)) // stored meanwhile
+        return *known;
       spill = std::move(made);
       return *spill;
     }

@@ -95,6 +95,13 @@ public:
   const CGAL_ext::internal::Face_list& facets() const { return facets_; }
   // After run(): the point of each sample id.
   const std::vector<P>& points() const { return points_; }
+  // After run(): the sample id of vertex v of the result. Holes can leave
+  // faces with a surface meeting at one vertex only (their other neighbours
+  // holes): the result has a copy of that vertex per further fan, at the end.
+  std::uint32_t sample_of(Vertex_index v) const
+  {
+    return v.idx() < points_.size() ? std::uint32_t(v.idx()) : copies_[v.idx() - points_.size()].original;
+  }
 
 private:
   // One face: its corners' darts and samples, and the normals of its
@@ -391,18 +398,18 @@ private:
 
   // The mesh of the facets, built at once from their lists (facet f is
   // face f, its corners in the facet's order), as the soup import builds.
-  Mobius_mesh<P> build() const
+  Mobius_mesh<P> build()
   {
     Mobius_mesh<P> out;
     try {
-      CGAL_ext::internal::build_mesh_from_faces(
-        facets_.view(std::uint32_t(points_.size())), [&](std::uint32_t v) { return points_[v]; }, false, out);
+      copies_ = CGAL_ext::internal::build_mesh_from_faces(
+        facets_.view(std::uint32_t(points_.size())), [&](std::uint32_t v) { return points_[v]; }, true, out);
     } catch (const Soup_error& e) {
       throw Parameter_error(std::string("Limit_surface::tessellate: internal error, a facet was refused: ") + e.what());
     }
     auto vn = out.template add_property_map<Vertex_index, Vector>("v:normal", Vector(CGAL::NULL_VECTOR)).first;
     for (Vertex_index v : out.vertices())
-      vn[v] = normals_[v.idx()];
+      vn[v] = normals_[sample_of(v)];
     if (!corner_normals_)
       return out;
     auto hn = out.template add_property_map<Halfedge_index, Vector>("h:normal", Vector(CGAL::NULL_VECTOR)).first;
@@ -410,7 +417,7 @@ private:
       const std::uint32_t first = facets_.offset[f.idx()], end = facets_.offset[f.idx() + 1];
       for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out))
         for (std::uint32_t c = first; c < end; ++c)
-          if (facets_.vertex[c] == out.target(d).idx())
+          if (facets_.vertex[c] == sample_of(out.target(d)))
             hn[d.halfedge()] = facet_normals_[c];
     }
     return out;
@@ -428,6 +435,7 @@ private:
   std::vector<Dart> edge_owner_; // the dart whose face evaluated the edge's samples
   std::vector<std::size_t> edge_first_;
   CGAL_ext::internal::Face_list facets_;
+  std::vector<CGAL_ext::internal::Split_vertex> copies_; // the result's vertices past the samples
   std::vector<Vector> facet_normals_; // with corner normals: one per facet corner, as facets_.vertex
 };
 
