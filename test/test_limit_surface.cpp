@@ -1040,7 +1040,7 @@ TEST(Limit_surface, ClosestPointFromSeveralThreads)
 TEST(Limit_surface, CacheStaysWithinItsBudget)
 {
   const Mesh m = build(read_shape(test::data("opensubdiv/catmark_nonquads.obj")));
-  const std::size_t per_face = 64; // samples of each face's grid (cycled through)
+  const std::size_t per_face = 8; // samples of each face's grid (cycled through)
   // Each thread evaluates every face, from its own first face on (so that
   // threads build some faces at once), into its own list, in face order.
   const auto evaluate_all = [&](const Surface& surface, int threads) {
@@ -1072,8 +1072,7 @@ TEST(Limit_surface, CacheStaysWithinItsBudget)
     S::Limit_surface_options options;
     options.max_cache_bytes = budget;
     const Surface bounded(m, CGAL_ext::parameters::default_values(), options);
-    EXPECT_EQ(evaluate_all(bounded, 4), reference);
-    EXPECT_EQ(evaluate_all(bounded, 2), reference); // kept faces and rebuilt ones alike
+    EXPECT_EQ(evaluate_all(bounded, 4), reference); // kept faces and rebuilt ones alike
     EXPECT_LE(bounded.cached_bytes(), budget);
     if (budget > 0)
       EXPECT_GT(bounded.cached_bytes(), 0u);
