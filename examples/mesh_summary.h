@@ -62,6 +62,48 @@ inline CGAL_ext::Face_varying_interpolation face_varying_argument(const Argument
                          face_varying_modes());
 }
 
+// --boundary, --crease-method, --triangles: the subdivision rules of a tool
+// that follows a subdivision surface, as the OBJ tags hold them (unset where
+// a flag is not given).
+inline CGAL_ext::Sharp_feature_options subdivision_rule_flags(const Arguments& args)
+{
+  static const Choices<CGAL_ext::Boundary_interpolation> boundaries = {
+    {"none", CGAL_ext::Boundary_interpolation::none},
+    {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
+    {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}};
+  static const Choices<CGAL_ext::Crease_method> crease_methods = {{"uniform", CGAL_ext::Crease_method::uniform},
+                                                                   {"chaikin", CGAL_ext::Crease_method::chaikin}};
+  static const Choices<CGAL_ext::Triangle_subdivision> triangle_rules = {
+    {"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}};
+  CGAL_ext::Sharp_feature_options flags;
+  flags.boundary_interpolation = choice_option(args, "--boundary", boundaries);
+  flags.crease_method = choice_option(args, "--crease-method", crease_methods);
+  flags.triangle_subdivision = choice_option(args, "--triangles", triangle_rules);
+  return flags;
+}
+
+// The rules the file's tags give, each replaced where its flag is given.
+inline CGAL_ext::Sharp_feature_options with_flags(CGAL_ext::Sharp_feature_options tags,
+                                                  const CGAL_ext::Sharp_feature_options& flags)
+{
+  if (flags.boundary_interpolation)
+    tags.boundary_interpolation = flags.boundary_interpolation;
+  if (flags.crease_method)
+    tags.crease_method = flags.crease_method;
+  if (flags.triangle_subdivision)
+    tags.triangle_subdivision = flags.triangle_subdivision;
+  return tags;
+}
+
+// The named parameters of those rules, OpenSubdiv's defaults where unset.
+inline auto subdivision_rule_parameters(const CGAL_ext::Sharp_feature_options& rules)
+{
+  return CGAL_ext::parameters::boundary_interpolation(
+           rules.boundary_interpolation.value_or(CGAL_ext::Boundary_interpolation::edge_only))
+    .crease_method(rules.crease_method.value_or(CGAL_ext::Crease_method::uniform))
+    .triangle_subdivision(rules.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark));
+}
+
 // --no-tags: a tool that writes a mesh leaves OpenSubdiv's tag lines out of
 // an OBJ output, which CGAL's OBJ reader then takes (it refuses a 't' line);
 // the sharpness and the subdivision options are lost.

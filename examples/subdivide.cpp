@@ -20,7 +20,6 @@
 
 #include <chrono>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,14 +73,6 @@ const examples::Choices<Kernel_choice> kernels = {
   {"double", Kernel_choice::simple_cartesian}, {"epick", Kernel_choice::epick}, {"epeck", Kernel_choice::epeck}};
 const examples::Choices<S::Vertex_rule> vertex_rules = {{"standard", S::Vertex_rule::standard},
                                                         {"edge-points", S::Vertex_rule::edge_points}};
-const examples::Choices<CGAL_ext::Boundary_interpolation> boundaries = {
-  {"none", CGAL_ext::Boundary_interpolation::none},
-  {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
-  {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}};
-const examples::Choices<CGAL_ext::Crease_method> crease_methods = {
-  {"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}};
-const examples::Choices<CGAL_ext::Triangle_subdivision> triangle_rules = {
-  {"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}};
 
 struct Settings
 {
@@ -90,9 +81,7 @@ struct Settings
   Kernel_choice kernel = Kernel_choice::simple_cartesian;
   unsigned levels = 1;
   S::Vertex_rule vertex_rule = S::Vertex_rule::standard;
-  std::optional<CGAL_ext::Boundary_interpolation> boundary;
-  std::optional<CGAL_ext::Crease_method> crease_method;
-  std::optional<CGAL_ext::Triangle_subdivision> triangles;
+  CGAL_ext::Sharp_feature_options rule_flags; // --boundary, --crease-method, --triangles
   CGAL_ext::Face_varying_interpolation fvar = CGAL_ext::Face_varying_interpolation::corners_plus1; // as OpenSubdiv
   double max_memory = S::Refinement_options().maximum_memory; // the library's default
   bool drop_corner_data = false;
@@ -116,9 +105,7 @@ Settings parse(int argc, char** argv)
   if (args.has("--levels"))
     s.levels = unsigned(examples::integer_argument("--levels", args.value("--levels", ""), 0, 15));
   s.vertex_rule = examples::choice_argument("--vertex-rule", args.value("--vertex-rule", "standard"), vertex_rules);
-  s.boundary = examples::choice_option(args, "--boundary", boundaries);
-  s.crease_method = examples::choice_option(args, "--crease-method", crease_methods);
-  s.triangles = examples::choice_option(args, "--triangles", triangle_rules);
+  s.rule_flags = examples::subdivision_rule_flags(args);
   s.fvar = examples::face_varying_argument(args);
   s.write_tags = !args.has(examples::no_tags_flag);
   s.drop_corner_data = args.has(examples::drop_corner_data_flag);
@@ -190,18 +177,15 @@ void run(const Settings& s)
   const examples::Json_array dropped = examples::drop_corner_channels_if(
     mesh, carried ? examples::why_output_cannot_hold_corner_data(s.out, mesh) : "doo-sabin and sqrt3 do not carry them",
     s.drop_corner_data);
-  const auto boundary =
-    s.boundary ? *s.boundary : tags.boundary_interpolation.value_or(CGAL_ext::Boundary_interpolation::edge_only);
-  const auto crease = s.crease_method ? *s.crease_method : tags.crease_method.value_or(CGAL_ext::Crease_method::uniform);
-  const auto triangles =
-    s.triangles ? *s.triangles : tags.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark);
+  // The output carries the options the input or the flags set, and no
+  // others: a tag line makes the file unreadable to CGAL's OBJ reader, so one
+  // is written only where it tells something.
+  const CGAL_ext::Sharp_feature_options rules = examples::with_flags(tags, s.rule_flags);
   // The library refuses, before it allocates anything, a subdivision whose
   // estimated peak of memory is above the limit.
-  const auto np = CGAL_ext::parameters::number_of_iterations(s.levels)
-                    .boundary_interpolation(boundary)
-                    .crease_method(crease)
+  const auto np = examples::subdivision_rule_parameters(rules)
+                    .number_of_iterations(s.levels)
                     .vertex_rule(s.vertex_rule)
-                    .triangle_subdivision(triangles)
                     .face_varying_interpolation(s.fvar)
                     .maximum_memory(s.max_memory);
 
@@ -219,19 +203,9 @@ void run(const Settings& s)
   case Scheme::catmull_clark: S::catmull_clark(mesh, np); break;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::size_t hole_faces = boundary == CGAL_ext::Boundary_interpolation::none ? remove_hole_faces(mesh) : 0;
-
-  // The output carries the options the input or the flags set, and no
-  // others: a tag line makes the file unreadable to CGAL's OBJ reader, so one
-  // is written only where it tells something.
-  CGAL_ext::Sharp_feature_options out_tags = tags;
-  if (s.boundary)
-    out_tags.boundary_interpolation = s.boundary;
-  if (s.crease_method)
-    out_tags.crease_method = s.crease_method;
-  if (s.triangles)
-    out_tags.triangle_subdivision = s.triangles;
-  CGAL_ext::IO::write_polygon_mesh(s.out, mesh, examples::write_parameters(s.write_tags), out_tags);
+  const std::size_t hole_faces =
+    rules.boundary_interpolation == CGAL_ext::Boundary_interpolation::none ? remove_hole_faces(mesh) : 0;
+  CGAL_ext::IO::write_polygon_mesh(s.out, mesh, examples::write_parameters(s.write_tags), rules);
   const CGAL_ext::Non_manifold_counts written = CGAL_ext::non_manifold_counts(mesh);
   examples::Json_object line;
   line.add("scheme", examples::choice_name(schemes, s.scheme))

@@ -59,16 +59,6 @@ const examples::Tool_usage usage{
   "input's borders, Euler characteristic and orientability (but for the holes of --boundary\n"
   "none). Prints its counts and the time taken as one line of JSON.\n"};
 
-const examples::Choices<CGAL_ext::Boundary_interpolation> boundaries = {
-  {"none", CGAL_ext::Boundary_interpolation::none},
-  {"edge-only", CGAL_ext::Boundary_interpolation::edge_only},
-  {"edge-and-corner", CGAL_ext::Boundary_interpolation::edge_and_corner}};
-
-const examples::Choices<CGAL_ext::Crease_method> crease_methods = {
-  {"uniform", CGAL_ext::Crease_method::uniform}, {"chaikin", CGAL_ext::Crease_method::chaikin}};
-const examples::Choices<CGAL_ext::Triangle_subdivision> triangle_rules = {
-  {"catmark", CGAL_ext::Triangle_subdivision::catmark}, {"smooth", CGAL_ext::Triangle_subdivision::smooth}};
-
 enum class Scheme { catmull_clark, loop };
 
 const examples::Choices<Scheme> schemes = {{"catmull-clark", Scheme::catmull_clark}, {"loop", Scheme::loop}};
@@ -90,26 +80,19 @@ int tessellate(int argc, char** argv)
   const double tolerance = args.has("--tolerance") ? examples::real_argument("--tolerance", args.value("--tolerance", "")) : 0;
   if (args.has("--tolerance") && !(tolerance > 0 && std::isfinite(tolerance)))
     throw examples::Usage_error("--tolerance must be positive and finite");
-  const auto boundary_flag = examples::choice_option(args, "--boundary", boundaries);
-  const auto crease_flag = examples::choice_option(args, "--crease-method", crease_methods);
-  const auto triangles_flag = examples::choice_option(args, "--triangles", triangle_rules);
+  const CGAL_ext::Sharp_feature_options flags = examples::subdivision_rule_flags(args);
   const Scheme scheme = examples::choice_argument("--scheme", args.value("--scheme", "catmull-clark"), schemes);
   const CGAL_ext::Face_varying_interpolation fvar = examples::face_varying_argument(args);
 
   Mesh mesh;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
-  const CGAL_ext::Sharp_feature_options tags = CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
-  const auto boundary =
-    boundary_flag.value_or(tags.boundary_interpolation.value_or(CGAL_ext::Boundary_interpolation::edge_only));
-  const auto crease = crease_flag.value_or(tags.crease_method.value_or(CGAL_ext::Crease_method::uniform));
-  const auto triangles =
-    triangles_flag.value_or(tags.triangle_subdivision.value_or(CGAL_ext::Triangle_subdivision::catmark));
+  const CGAL_ext::Sharp_feature_options rules =
+    examples::with_flags(CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh), flags);
   // Whether OUT's format holds the corner channels is known now.
   const examples::Json_array dropped = examples::drop_corner_channels_if(
     mesh, examples::why_output_cannot_hold_corner_data(args.positional[1], mesh), args.has(examples::drop_corner_data_flag));
   const auto start = std::chrono::steady_clock::now();
-  const auto np =
-    CGAL_ext::parameters::boundary_interpolation(boundary).crease_method(crease).triangle_subdivision(triangles).face_varying_interpolation(fvar);
+  const auto np = examples::subdivision_rule_parameters(rules).face_varying_interpolation(fvar);
   const auto run = [&](auto mask) {
     using Mask = decltype(mask);
     return rate > 0 ? S::tessellate<Mask>(mesh, rate, np) : S::tessellate_to_tolerance<Mask>(mesh, tolerance, np);

@@ -218,8 +218,7 @@ public:
     CGAL_ext::internal::refuse_non_manifold_joins(mesh, "Limit_surface");
     options_.boundary = CGAL_ext::internal::boundary_interpolation_of(np);
     options_.crease = CGAL_ext::internal::crease_method_of(np);
-    options_.triangles = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
-                                              Triangle_subdivision::catmark);
+    options_.triangles = CGAL_ext::internal::triangle_subdivision_of(np);
     options_.level_smooth = options.approx_level_smooth;
     options_.level_sharp = std::max(options.approx_level_sharp, options.approx_level_smooth);
     // A patch's place in a Loop triangle's quadtree is two bits a level of
@@ -243,7 +242,6 @@ public:
     holes_ = internal::hole_faces(mesh, options_.boundary);
     projection_rate_ = int(std::min(options.projection_rate, 1024u));
     max_tessellation_rate_ = int(std::min(std::max(options.max_tessellation_rate, 1u), 4096u));
-    max_cache_bytes_ = options.max_cache_bytes;
   }
 
   /// \brief whether face `f` has no limit surface: under
@@ -747,7 +745,7 @@ private:
     o.approx_level_sharp = options_.level_sharp;
     o.projection_rate = unsigned(projection_rate_);
     o.max_tessellation_rate = unsigned(max_tessellation_rate_);
-    o.max_cache_bytes = max_cache_bytes_;
+    o.max_cache_bytes = faces_.budget();
     return o;
   }
 
@@ -758,7 +756,6 @@ private:
   std::vector<bool> holes_; // by face index; empty unless the boundary interpolation is none
   int projection_rate_ = 4;
   int max_tessellation_rate_ = 64;
-  std::size_t max_cache_bytes_ = std::size_t(1) << 30;
   mutable std::unique_ptr<internal::Limit_projection<Limit_surface>> projection_;
   std::unique_ptr<std::once_flag> projection_once_ = std::make_unique<std::once_flag>();
 };

@@ -153,8 +153,7 @@ void catmull_clark(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters:
   Catmull_clark_mask mask;
   mask.vertex_rule =
     pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::vertex_rule), Vertex_rule::standard);
-  mask.triangle_subdivision = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
-                                                   Triangle_subdivision::catmark);
+  mask.triangle_subdivision = CGAL_ext::internal::triangle_subdivision_of(np);
   internal::subdivide<ConcurrencyTag>(mesh, mask, np);
 }
 

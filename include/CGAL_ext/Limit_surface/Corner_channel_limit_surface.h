@@ -136,9 +136,7 @@ public:
     }
     const auto surface_np = pm::boundary_interpolation(Boundary_interpolation::edge_only)
                               .crease_method(CGAL_ext::internal::crease_method_of(np))
-                              .triangle_subdivision(pm::choose_parameter(
-                                pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
-                                Triangle_subdivision::catmark));
+                              .triangle_subdivision(CGAL_ext::internal::triangle_subdivision_of(np));
     for (std::size_t first = 0; first < dimension; first += 3) {
       for (Vertex_index c : cage_.mesh.vertices()) {
         const std::array<FT, dimension>& x = coordinates[cage_.value_of[c.idx()]];

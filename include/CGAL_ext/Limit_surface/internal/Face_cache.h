@@ -50,6 +50,7 @@ public:
   ~Face_cache() { clear(); }
 
   std::size_t size() const { return size_; }
+  std::size_t budget() const { return budget_; }
   // The bytes of the values kept (and of those being stored), as `size_of()` counted them.
   std::size_t bytes() const { return used_.load(std::memory_order_relaxed); }
 

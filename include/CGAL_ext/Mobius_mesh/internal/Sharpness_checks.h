@@ -51,9 +51,10 @@ auto sharpness_of(const Mobius_mesh<P>& mesh, const NP& np, Tag tag, const char*
   }
 }
 
-// The border rule and the crease method that `np` asks for, OpenSubdiv's
-// defaults (edge_only, uniform) where it does not: the one place of these
-// defaults for subdivision, limits and the limit surface.
+// The border rule, the crease method and the triangle rule that `np` asks
+// for, OpenSubdiv's defaults (edge_only, uniform, catmark) where it does
+// not: the one place of these defaults for subdivision, limits and the
+// limit surface.
 template <class NP>
 Boundary_interpolation boundary_interpolation_of(const NP& np)
 {
@@ -67,6 +68,14 @@ Crease_method crease_method_of(const NP& np)
 {
   namespace pm = CGAL_ext::parameters;
   return pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::crease_method), Crease_method::uniform);
+}
+
+template <class NP>
+Triangle_subdivision triangle_subdivision_of(const NP& np)
+{
+  namespace pm = CGAL_ext::parameters;
+  return pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::triangle_subdivision),
+                              Triangle_subdivision::catmark);
 }
 
 // The edge sharpness that `np` and `mesh` give (named parameter
