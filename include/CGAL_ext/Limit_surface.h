@@ -613,9 +613,10 @@ private:
     }
   }
 
+  // One allocation for a face whose single patch needs no refinement.
   struct Face_patches
   {
-    std::vector<std::vector<internal::Patch<FT>>> sub_faces;
+    typename internal::Patch_tree_builder<FT, P>::Sub_face_lists sub_faces;
   };
 
   template <class NP>
@@ -639,10 +640,14 @@ private:
   // The patches of f, kept or, past the cache's budget, made into `spill`.
   const Face_patches& patches_of(Face_index f, std::unique_ptr<Face_patches>& spill) const
   {
+    // The inline storage is in sizeof(); the heap's where a list outgrew it.
     const auto size_of = [](const Face_patches& p) {
       std::size_t bytes = sizeof(Face_patches);
+      if (p.sub_faces.capacity() > 1)
+        bytes += p.sub_faces.capacity() * sizeof(p.sub_faces[0]);
       for (const auto& list : p.sub_faces)
-        bytes += sizeof(list) + list.capacity() * sizeof(internal::Patch<FT>);
+        if (list.capacity() > 1)
+          bytes += list.capacity() * sizeof(internal::Patch<FT>);
       return bytes;
     };
     return faces_.get(f.idx(), [&] {
@@ -655,7 +660,7 @@ private:
         patches->sub_faces.resize(1);
         internal::Patch_tree_builder<FT, P>(options_, patches->sub_faces[0]).build(base_, d, 0, 0.0, 0.0, 1.0);
       } else {
-        std::vector<internal::Patch<FT>> unused;
+        internal::Patch_list<FT> unused;
         internal::Patch_tree_builder<FT, P>(options_, unused).build_sub_faces(base_, d, patches->sub_faces);
       }
       return patches;
@@ -673,7 +678,7 @@ private:
     return u < FT(0) || v < FT(0) || beyond;
   }
 
-  Evaluation evaluate_triangle(Face_index f, const std::vector<internal::Patch<FT>>& patches, const FT& u,
+  Evaluation evaluate_triangle(Face_index f, const internal::Patch_list<FT>& patches, const FT& u,
                                const FT& v) const
   {
     if (outside_triangle(u, v))

@@ -185,7 +185,7 @@ Limit_ring<P> fan_ring(unsigned edges, unsigned faces, bool crease)
 template <class P>
 void irregular_edge_rows(const Gregory_triangle_corner& x, Row& p, Row& ep, Row& em)
 {
-  const std::vector<Vertex_index>& ring = x.c->ring;
+  const Corner::Ring& ring = x.c->ring;
   Limit_mask<double> pm, t1, t2;
   if (!x.boundary) {
     const unsigned n = x.faces;
@@ -235,7 +235,7 @@ void gregory_triangle_edge_rows(const std::array<Gregory_triangle_corner, 3>& g,
 {
   const Gregory_triangle_corner& x = g[k];
   const Vertex_index next = g[(k + 1) % 3].v, prev = g[(k + 2) % 3].v;
-  const std::vector<Vertex_index>& r = x.c->ring;
+  const Corner::Ring& r = x.c->ring;
   if (x.regular && !x.boundary) {
     static const double w[6] = {7, 5, 1, -1, 1, 5};
     p = {{x.v, 0.5}};
@@ -294,7 +294,7 @@ inline void gregory_triangle_face_rows(const std::array<Gregory_triangle_corner,
 {
   const Gregory_triangle_corner& x = g[k];
   const int next = (k + 1) % 3, prev = (k + 2) % 3;
-  const std::vector<Vertex_index>& r = x.c->ring;
+  const Corner::Ring& r = x.c->ring;
   for (int minus = 0; minus < 2; ++minus) {
     if (!(minus ? x.fm_regular : x.fp_regular))
       continue;
@@ -392,7 +392,7 @@ template <class FT, class P>
 class Loop_patch_tree_builder
 {
 public:
-  Loop_patch_tree_builder(const Limit_options& options, std::vector<Patch<FT>>& out) : opt_(options), out_(out) {}
+  Loop_patch_tree_builder(const Limit_options& options, Patch_list<FT>& out) : opt_(options), out_(out) {}
 
   void build(const Level_mesh<P>& L, Dart d, const Patch<FT>& where)
   {
@@ -461,7 +461,7 @@ private:
   }
 
   const Limit_options& opt_;
-  std::vector<Patch<FT>>& out_;
+  Patch_list<FT>& out_;
 };
 
 // The quadrants that lead to (u, v) in a triangle's patch tree, `depth`

@@ -20,6 +20,8 @@
 #include <CGAL_ext/exceptions.h>
 #include <CGAL_ext/subdivision.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -135,7 +137,10 @@ std::vector<bool> hole_faces(const Mobius_mesh<P>& m, Boundary_interpolation bou
 // corner; a bounded span ends with its trailing edge's end.
 struct Corner
 {
-  std::vector<Vertex_index> ring; // edge end, opposite corner, edge end, ... (quads); edge ends (triangles)
+  // Inline up to valence 12 (Catmull–Clark) or 24 (Loop): analysing a face's
+  // corners allocates nothing on most meshes.
+  using Ring = boost::container::small_vector<Vertex_index, 24>;
+  Ring ring; // edge end, opposite corner, edge end, ... (quads); edge ends (triangles)
   unsigned faces = 0;             // faces in the span
   unsigned face_in_ring = 0;
   unsigned all_faces = 0;
@@ -476,7 +481,7 @@ inline void gregory_face_rows(const Vertex_index cv[4], const std::array<Corner,
       add_row(f, rows[5 * k], c_far / 3.0);
       add_row(f, e_near, (3.0 - 2.0 * c_near - c_far) / 3.0);
       add_row(f, e_far, 2.0 * c_near / 3.0);
-      const std::vector<Vertex_index>& r = corners[k].ring;
+      const Corner::Ring& r = corners[k].ring;
       const unsigned n = i.valence, before = (ring_edge + n - 1) % n, after = (ring_edge + 1) % n;
       f.push_back({r[2 * before], -sign / 9.0});
       f.push_back({r[2 * before + 1], -sign / 18.0});
@@ -545,7 +550,7 @@ std::array<Row, 20> gregory_rows(const Mobius_mesh<P>& m, Dart d, const std::arr
   for (int k = 0; k < 4; ++k) {
     const Corner& c = corners[k];
     const Gregory_corner& i = info[k];
-    const std::vector<Vertex_index>& r = c.ring;
+    const Corner::Ring& r = c.ring;
     Row &p = rows[5 * k], &ep = rows[5 * k + 1], &em = rows[5 * k + 2];
     const Vertex_index v = cv[k], next = cv[(k + 1) % 4], prev = cv[(k + 3) % 4];
     if (i.regular && !c.boundary) {
@@ -729,7 +734,10 @@ template <class FT, class P>
 class Patch_tree_builder
 {
 public:
-  Patch_tree_builder(const Limit_options& options, std::vector<Patch<FT>>& out) : opt_(options), out_(out) {}
+  // A face's patch lists, one per sub-face (one for a quad).
+  using Sub_face_lists = boost::container::small_vector<Patch_list<FT>, 1>;
+
+  Patch_tree_builder(const Limit_options& options, Patch_list<FT>& out) : opt_(options), out_(out) {}
 
   void build(const Level_mesh<P>& L, Dart d, unsigned level, double u0, double v0, double size)
   {
@@ -793,7 +801,7 @@ public:
 
   // A face that is not a quad: its n quads, each a sub-face of Bfr's
   // parameterisation, built into `lists[k]`.
-  void build_sub_faces(const Level_mesh<P>& L, Dart d, std::vector<std::vector<Patch<FT>>>& lists)
+  void build_sub_faces(const Level_mesh<P>& L, Dart d, Sub_face_lists& lists)
   {
     Level_mesh<P> child;
     std::vector<Vertex_index> vp, ep;
@@ -808,7 +816,7 @@ public:
 
 private:
   const Limit_options& opt_;
-  std::vector<Patch<FT>>& out_;
+  Patch_list<FT>& out_;
 };
 
 } // namespace internal

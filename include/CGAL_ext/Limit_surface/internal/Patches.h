@@ -11,6 +11,8 @@
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_PATCHES_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_PATCHES_H
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -328,6 +330,11 @@ struct Patch
   std::uint64_t path = 0;
   std::array<Coordinates<FT>, 20> points;
 };
+
+// The patches of a face or sub-face: one, kept inline, wherever the face is
+// regular or needs no refinement; more where adaptive refinement splits it.
+template <class FT>
+using Patch_list = boost::container::small_vector<Patch<FT>, 1>;
 
 template <class FT, std::size_t N>
 Patch_value<FT> combine(const Basis<FT, N>& b, const std::array<Coordinates<FT>, 20>& points)
