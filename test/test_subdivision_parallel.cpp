@@ -197,6 +197,9 @@ void check_schemes_on(const std::string& name, const Mesh& m, unsigned n, bool a
     const Built b = generated(m, sharp);
     for (Crease_method c : methods)
       for (Boundary_interpolation bi : rules) {
+        if (!sharp && c == Crease_method::chaikin)
+          continue; // the crease methods differ only at semi-sharp edges
+
         S::Refinement_options options;
         options.crease_method = c;
         options.boundary_interpolation = bi;

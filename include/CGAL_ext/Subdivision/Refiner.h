@@ -385,9 +385,12 @@ public:
   /// that `refine<CGAL::Parallel_tag>()` prepared is interpolated in
   /// parallel, bit for bit as the serial result. `interpolate()` is const and
   /// writes only into its arguments: threads may share one refiner.
-  template <class ConcurrencyTag = CGAL::Sequential_tag, class Value>
-  void interpolate(const std::vector<Value>& base, std::vector<Value>& result, std::vector<Value>& scratch) const
+  /// `Values` is `std::vector<Value>` or another vector of `Value`s (the
+  /// library passes arrays that spare large levels their zero-fill).
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Values>
+  void interpolate(const Values& base, Values& result, Values& scratch) const
   {
+    using Value = typename Values::value_type;
     const unsigned n = number_of_levels();
     if (n == 0) {
       result = base;
@@ -407,10 +410,10 @@ public:
     }
   }
   /// As the three-argument `interpolate()`, with a scratch buffer of its own.
-  template <class ConcurrencyTag = CGAL::Sequential_tag, class Value>
-  void interpolate(const std::vector<Value>& base, std::vector<Value>& result) const
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Values>
+  void interpolate(const Values& base, Values& result) const
   {
-    std::vector<Value> scratch;
+    Values scratch;
     interpolate<ConcurrencyTag>(base, result, scratch);
   }
 
@@ -427,9 +430,11 @@ public:
   /// With `CGAL::Parallel_tag` (TBB needed) the levels that
   /// `refine<CGAL::Parallel_tag>()` ran with threads run with threads,
   /// bit for bit as the serial result.
-  template <class ConcurrencyTag = CGAL::Sequential_tag, class Value>
-  void interpolate_face_varying(Face_varying_interpolation mode, std::vector<u32>& corners,
-                                std::vector<Value>& values) const
+  /// `Corners` is `std::vector<std::uint32_t>` and `Values` `std::vector<Value>`,
+  /// or other vectors of those elements (the library passes arrays that
+  /// spare large levels their zero-fill).
+  template <class ConcurrencyTag = CGAL::Sequential_tag, class Corners, class Values>
+  void interpolate_face_varying(Face_varying_interpolation mode, Corners& corners, Values& values) const
   {
     static_assert(!uses_stencils, "the dual and sqrt(3) splits have no face-varying rules");
     internal::interpolate_face_varying<ConcurrencyTag>(*this, mode, corners, values,

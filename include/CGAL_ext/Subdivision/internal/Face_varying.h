@@ -36,11 +36,13 @@ struct Fvar_level
 {
   enum Edge_tag : std::uint8_t { mismatch = 1, linear = 2 };
   enum Value_tag : std::uint8_t { differs = 1, crease = 2, semi_sharp = 4, dependent = 8 };
-  std::vector<u32> corner;             // per halfedge (null on the border)
-  std::vector<std::uint8_t> edge_tag;  // per edge
-  std::vector<u32> v_offset;           // per vertex, and one past the last
-  std::vector<u32> value_of;           // per vertex value: its index in the values (base level only)
-  std::vector<std::uint8_t> value_tag; // per vertex value; 0: matches the vertex topology
+  // The level's arrays (Level.h's Array: large ones on huge pages, whose
+  // first touches cost most of a channel's time at fine levels).
+  Array<u32> corner;             // per halfedge (null on the border)
+  Array<std::uint8_t> edge_tag;  // per edge
+  Array<u32> v_offset;           // per vertex, and one past the last
+  Array<u32> value_of;           // per vertex value: its index in the values (base level only)
+  Array<std::uint8_t> value_tag; // per vertex value; 0: matches the vertex topology
 
   u32 value(u32 vertex_value) const { return value_of.empty() ? vertex_value : value_of[vertex_value]; }
 };
@@ -273,7 +275,8 @@ inline void tag_values(const Level& L, Fvar_level& F, const Fvar_ring& r, const 
 // (`user`, per halfedge): its vertex values, seams and tags
 // (FVarLevel::completeTopologyFromFaceValues()). Serial: as OpenSubdiv's, a
 // vertex's boundary test sees the seams found at the vertices before it.
-inline void analyse_base(const Level& L, const std::vector<u32>& user, const Fvar_rules& rules, Fvar_level& F)
+template <class Corners>
+void analyse_base(const Level& L, const Corners& user, const Fvar_rules& rules, Fvar_level& F)
 {
   F.edge_tag.assign(L.ne, 0);
   F.v_offset.assign(std::size_t(L.nv) + 1, 0);
@@ -347,16 +350,16 @@ public:
     : r_(r), k_(k), P_(level_of(r, k)), C_(level_of(r, k + 1)), rules_(rules), linear_(linear)
   {}
 
-  template <class Tag>
-  void run(const Fvar_level& pf, const std::vector<Value>& pv, Fvar_level& cf, std::vector<Value>& cv)
+  template <class Tag, class Values>
+  void run(const Fvar_level& pf, const Values& pv, Fvar_level& cf, Values& cv)
   {
     pf_ = &pf;
     cf_ = &cf;
-    pv_ = &pv;
-    cv_ = &cv;
+    pv_ = pv.data();
     const u32 nv = P_.nv, ne = P_.ne;
     cf.value_of.clear();
-    cf.v_offset.assign(std::size_t(C_.nv) + 1, 0);
+    cf.v_offset.resize(std::size_t(C_.nv) + 1); // each written below
+    cf.v_offset[0] = 0;
     for_each_index<Tag>(C_.nv, [&](u32 c) {
       cf.v_offset[c + 1] = c < nv ? pf.v_offset[c + 1] - pf.v_offset[c]
                            : c < nv + ne ? ((pf.edge_tag[c - nv] & Fvar_level::mismatch) ? 2u : 1u)
@@ -365,7 +368,8 @@ public:
     prefix_sum<Tag>(cf.v_offset.data(), C_.nv);
     const u32 n = cf.v_offset[C_.nv];
     cf.value_tag.assign(n, 0);
-    cv.resize(n);
+    cv.resize(n); // each written below: vertex, edge and face points
+    cv_ = cv.data();
     cf.edge_tag.assign(C_.ne, 0);
     for_each_index<Tag>(ne, [&](u32 e) { cf.edge_tag[2 * e] = cf.edge_tag[2 * e + 1] = pf.edge_tag[e]; });
     cf.corner.assign(2 * std::size_t(C_.ne), null_u32);
@@ -381,7 +385,7 @@ public:
 private:
   using T = Fvar_level;
 
-  const Value& parent_value(u32 vertex_value) const { return (*pv_)[pf_->value(vertex_value)]; }
+  const Value& parent_value(u32 vertex_value) const { return pv_[pf_->value(vertex_value)]; }
   const Value& parent_corner(u32 h) const { return parent_value(pf_->corner[h]); }
   u32 edge_point_value(u32 h) const // the child value of the edge of h on h's side
   {
@@ -398,7 +402,7 @@ private:
   void split_corners(u32 f)
   {
     namespace de = dart_encoding;
-    std::vector<u32>& c = cf_->corner;
+    Array<u32>& c = cf_->corner;
     const u32 k0 = P_.f_offset[f], k1 = P_.f_offset[f + 1], ne = P_.ne;
     for (u32 k = k0; k < k1; ++k) {
       const u32 kn = k + 1 == k1 ? k0 : k + 1, h = P_.corner_h[k], hn = P_.corner_h[kn];
@@ -491,7 +495,7 @@ private:
     Value sum = parent_corner(P_.corner_h[k0]);
     for (u32 k = k0 + 1; k < k1; ++k)
       sum = sum + parent_corner(P_.corner_h[k]);
-    (*cv_)[cf_->v_offset[P_.nv + P_.ne + f]] = (W(1) / W(double(k1 - k0))) * sum;
+    cv_[cf_->v_offset[P_.nv + P_.ne + f]] = (W(1) / W(double(k1 - k0))) * sum;
   }
 
   // The values at the source and target of face halfedge h, in its face.
@@ -506,7 +510,7 @@ private:
     if (linear_ || (cf_->value_tag[first] & T::differs)) { // the midpoint of each side
       for (u32 s = 0; s < count; ++s) {
         const u32 h = count == 2 ? (s == 0 ? h0 : h1) : (face0 ? h0 : h1);
-        (*cv_)[first + s] = W(0.5) * parent_corner(h) + W(0.5) * at_source(h);
+        cv_[first + s] = W(0.5) * parent_corner(h) + W(0.5) * at_source(h);
       }
       return;
     }
@@ -520,11 +524,11 @@ private:
         if (f == null_u32)
           continue;
         if constexpr (quad)
-          x = x + w.face * (*cv_)[cf_->v_offset[P_.nv + P_.ne + f]];
+          x = x + w.face * cv_[cf_->v_offset[P_.nv + P_.ne + f]];
         else // the corner of the triangle across from the edge
           x = x + w.face * parent_corner(de::halfedge_of_dart(P_.h_next[g]));
       }
-    (*cv_)[first] = x;
+    cv_[first] = x;
   }
 
   void vertex_point(u32 v)
@@ -535,16 +539,16 @@ private:
     Fvar_ring r;
     if (!(cf_->value_tag[cfirst] & T::differs)) {
       if (linear_)
-        (*cv_)[cfirst] = parent_value(pfirst);
+        cv_[cfirst] = parent_value(pfirst);
       else
-        (*cv_)[cfirst] = smooth_vertex_point(v, r);
+        cv_[cfirst] = smooth_vertex_point(v, r);
       return;
     }
     for (u32 j = 0; j < values; ++j) {
       const std::uint8_t ct = cf_->value_tag[cfirst + j], pt = pf_->value_tag[pfirst + j];
       const Value& x = parent_value(pfirst + j);
       if (linear_ || !(ct & T::crease)) {
-        (*cv_)[cfirst + j] = x;
+        cv_[cfirst + j] = x;
         continue;
       }
       if (r.dart.empty())
@@ -559,7 +563,7 @@ private:
         wv = crease * W(0.75) + corner;
         we = crease * W(0.125);
       }
-      (*cv_)[cfirst + j] = we * a + we * b + wv * x;
+      cv_[cfirst + j] = we * a + we * b + wv * x;
     }
   }
 
@@ -593,12 +597,12 @@ private:
       if (w.has_edge)
         x = x + w.edge * y;
       if (w.has_edge_point)
-        x = x + w.edge_point * (*cv_)[cf_->v_offset[P_.nv + r.edge[i]]];
+        x = x + w.edge_point * cv_[cf_->v_offset[P_.nv + r.edge[i]]];
       if (w.has_crease && (far == w.crease_ends[0] || far == w.crease_ends[1]))
         x = x + w.crease * y;
       if (w.has_face && !trailing) {
         if constexpr (quad)
-          x = x + w.face * (*cv_)[cf_->v_offset[P_.nv + P_.ne + P_.h_face[dart_encoding::halfedge_of_dart(r.dart[i])]]];
+          x = x + w.face * cv_[cf_->v_offset[P_.nv + P_.ne + P_.h_face[dart_encoding::halfedge_of_dart(r.dart[i])]]];
       }
     }
     return x;
@@ -612,8 +616,8 @@ private:
   bool linear_;
   const Fvar_level* pf_ = nullptr;
   Fvar_level* cf_ = nullptr;
-  const std::vector<Value>* pv_ = nullptr;
-  std::vector<Value>* cv_ = nullptr;
+  const Value* pv_ = nullptr;
+  Value* cv_ = nullptr;
 };
 
 // A channel through every level of `r`: `corners` (the value index of each
@@ -622,16 +626,19 @@ private:
 // topology there, with the tags the levels carried down (the limit reads
 // them). Under CGAL::Parallel_tag the steps of the levels that
 // `parallel(nv)` allows run on threads, with the serial result.
-template <class Tag, class Refiner, class Value, class Parallel>
-void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode, std::vector<u32>& corners,
-                              std::vector<Value>& values, const Parallel& parallel, Fvar_level* last = nullptr)
+// `Corners` and `Values` are vectors (std::vector, or Array to spare the
+// zero-fill and first touches of large levels).
+template <class Tag, class Refiner, class Corners, class Values, class Parallel>
+void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode, Corners& corners, Values& values,
+                              const Parallel& parallel, Fvar_level* last = nullptr)
 {
+  using Value = typename Values::value_type;
   using Mask = std::decay_t<decltype(r.mask())>;
   const Fvar_rules rules(mode, r.options().boundary_interpolation);
   const bool linear = rules.linear_all || !Mask::creases;
   Fvar_level parent, child;
   analyse_base(level_of(r, 0), corners, rules, parent);
-  std::vector<Value> child_values;
+  Values child_values;
   for (unsigned k = 0; k < r.number_of_levels(); ++k) {
     Fvar_step<Refiner, Value> step(r, k, rules, linear);
     with_concurrency<Tag>(parallel(level_of(r, k).nv),
@@ -642,7 +649,10 @@ void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode,
   if (last)
     *last = parent;
   // The last level's vertex values are its values.
-  corners.swap(parent.corner);
+  if constexpr (std::is_same_v<Corners, Array<u32>>)
+    corners.swap(parent.corner);
+  else
+    corners.assign(parent.corner.begin(), parent.corner.end());
   if (r.number_of_levels() == 0) {
     for (u32& c : corners)
       if (c != null_u32)

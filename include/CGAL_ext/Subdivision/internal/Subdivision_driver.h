@@ -126,7 +126,7 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
         const auto from = mesh.template property_map<Vertex_index, T>(name);
         if (!from)
           return;
-        std::vector<typename L::Value> base, result;
+        internal::Array<typename L::Value> base, result; // written in full: no zero-fill
         const u32 n = u32(mesh.number_of_vertices());
         base.resize(n);
         for_each_vertex<ConcurrencyTag>(n, refiner.options(), [&](u32 v) { base[v] = L::from((*from)[Vertex_index(v)]); });
@@ -187,11 +187,13 @@ void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation 
         const auto from = mesh.template corner_channel<T>(name);
         if (!from)
           return;
-        std::vector<u32> corners = base_corners("subdivision", mesh, *from);
-        std::vector<typename L::Value> values;
-        values.reserve(from->number_of_values());
-        for (const T& t : from->values())
-          values.push_back(L::from(t));
+        // The base level's in a vector; the last level's come back in an
+        // Array, which spares the large levels their zero-fill.
+        const std::vector<u32> base = base_corners("subdivision", mesh, *from);
+        internal::Array<u32> corners(base.begin(), base.end());
+        internal::Array<typename L::Value> values(from->number_of_values());
+        for (std::size_t i = 0; i < values.size(); ++i)
+          values[i] = L::from(from->values()[i]);
         refiner.template interpolate_face_varying<ConcurrencyTag>(mode, corners, values);
         auto to = out.template add_corner_channel<T>(name).first;
         to.values().clear();
@@ -335,7 +337,7 @@ void subdivide_sheets(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
     }
   } else {
     // Other maps too: every level is kept, and each map interpolated through them.
-    std::vector<Value> values, result;
+    internal::Array<Value> values, result; // written in full: no zero-fill
     read_points<Tag>(mesh, vpm, options, values);
     refiner.template refine<Tag>(mesh, levels, es, vs);
     refiner.template interpolate<Tag>(values, result);
