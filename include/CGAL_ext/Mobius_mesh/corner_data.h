@@ -84,7 +84,7 @@ std::vector<Corner_channel_summary> corner_channel_summaries(const Mobius_mesh<P
     Corner_channel_summary s;
     s.name = c.name();
     s.values = c.number_of_values();
-    const std::vector<std::uint32_t>& index = c.indices();
+    const auto& index = c.indices();
     for (Face_index f : mesh.faces())
       for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh))
         s.corners_without_value += index[mesh.corner(d).idx()] == internal::Base_corner_channel::no_value ? 1 : 0;

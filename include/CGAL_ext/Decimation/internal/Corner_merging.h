@@ -165,7 +165,7 @@ public:
       if (f == plan.end() || f->x != key.x || f->y != key.y)
         continue;
       for (std::size_t i = 0; i < channels_.size(); ++i) {
-        std::vector<u32>& index = *channels_[i].index;
+        Base_corner_channel::Index_array& index = *channels_[i].index;
         index[m_.corner(h).idx()] = f->at_kept[i];
         index[m_.corner(hx).idx()] = f->at_x[i];
         index[m_.corner(hy).idx()] = f->at_y[i];
@@ -183,7 +183,7 @@ public:
 private:
   struct Channel
   {
-    std::vector<u32>* index; // by corner slot
+    Base_corner_channel::Index_array* index; // by corner slot
     std::function<u32(u32, u32, double)> mix; // appends (1 - t) a + t b, returns its index
   };
 

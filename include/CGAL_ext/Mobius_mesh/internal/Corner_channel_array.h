@@ -10,6 +10,7 @@
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_CORNER_CHANNEL_ARRAY_H
 
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
+#include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -31,6 +32,9 @@ class Base_corner_channel : public Base_property_array
 {
 public:
   static constexpr std::uint32_t no_value = (std::numeric_limits<std::uint32_t>::max)();
+  // A value index per halfedge slot: large arrays on huge pages, and the
+  // array a subdivision builds for its last level is taken as it is.
+  using Index_array = Uninitialized_array<std::uint32_t>;
 
   using Base_property_array::Base_property_array;
 
@@ -58,8 +62,8 @@ public:
     index_[hs[0]] = last;
   }
 
-  std::vector<std::uint32_t>& indices() { return index_; }
-  const std::vector<std::uint32_t>& indices() const { return index_; }
+  Index_array& indices() { return index_; }
+  const Index_array& indices() const { return index_; }
   virtual std::size_t number_of_values() const = 0;
   // Drops the values that no slot names, keeping the others in their order.
   virtual void remove_unused_values() = 0;
@@ -73,7 +77,7 @@ protected:
       index_.push_back(o.index_[i] == no_value ? no_value : o.index_[i] + offset);
   }
 
-  std::vector<std::uint32_t> index_;
+  Index_array index_;
 };
 
 template <class T>

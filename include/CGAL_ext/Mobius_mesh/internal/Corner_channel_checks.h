@@ -26,8 +26,8 @@ namespace internal {
 // Whether the channel whose corners hold the value indices `index` is cut
 // along the edge `e` of two faces: their corners at one end (or both) hold
 // different indices.
-template <class P>
-bool is_channel_cut(const Mobius_mesh<P>& mesh, const std::vector<std::uint32_t>& index, Edge_index e)
+template <class P, class Indices>
+bool is_channel_cut(const Mobius_mesh<P>& mesh, const Indices& index, Edge_index e)
 {
   // The corners at both ends, on both sides: d's face and opposite(d)'s.
   const Dart d(Mobius_mesh<P>::halfedge(e, 0), false), o = mesh.opposite(d);

@@ -13,6 +13,7 @@
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/Subdivision/Refiner.h>
+#include <CGAL_ext/internal/Huge_page_allocator.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Origin.h>
 #include <CGAL/number_utils.h>
@@ -198,10 +199,16 @@ void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation 
         auto to = out.template add_corner_channel<T>(name).first;
         to.values().clear();
         to.values().reserve(values.size());
+        CGAL_ext::internal::advise_huge_pages(to.values().data(), values.size() * sizeof(T)); // before the first touch
         for (const auto& v : values)
           to.values().push_back(L::to(v));
-        for (u32 h = 0; h < u32(corners.size()); ++h)
-          to.set_index(Halfedge_index(h), corners[h]);
+        // The last level's array is the channel's, one slot per halfedge.
+        auto& indices = to.array()->indices();
+        if (corners.size() == indices.size())
+          indices.swap(corners);
+        else
+          for (u32 h = 0; h < u32(corners.size()); ++h)
+            to.set_index(Halfedge_index(h), corners[h]);
       }
     });
   }
