@@ -640,13 +640,17 @@ private:
   // The patches of f, kept or, past the cache's budget, made into `spill`.
   const Face_patches& patches_of(Face_index f, std::unique_ptr<Face_patches>& spill) const
   {
-    // The inline storage is in sizeof(); the heap's where a list outgrew it.
+    // The inline storage is in sizeof(); the heap's where a list outgrew it
+    // (counted whole where a list might be inline but hold more than its
+    // nominal capacity: over, never under).
     const auto size_of = [](const Face_patches& p) {
+      using Lists = decltype(p.sub_faces);
+      using List = internal::Patch_list<FT>;
       std::size_t bytes = sizeof(Face_patches);
-      if (p.sub_faces.capacity() > 1)
-        bytes += p.sub_faces.capacity() * sizeof(p.sub_faces[0]);
-      for (const auto& list : p.sub_faces)
-        if (list.capacity() > 1)
+      if (p.sub_faces.capacity() > Lists::static_capacity)
+        bytes += p.sub_faces.capacity() * sizeof(List);
+      for (const List& list : p.sub_faces)
+        if (list.capacity() > List::static_capacity)
           bytes += list.capacity() * sizeof(internal::Patch<FT>);
       return bytes;
     };

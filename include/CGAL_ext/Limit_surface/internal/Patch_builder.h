@@ -137,7 +137,8 @@ std::vector<bool> hole_faces(const Mobius_mesh<P>& m, Boundary_interpolation bou
 // corner; a bounded span ends with its trailing edge's end.
 struct Corner
 {
-  // Inline up to valence 12 (Catmull–Clark) or 24 (Loop): analysing a face's
+  // 24 points inline (an inner vertex of valence 12 among quads, 24 among
+  // triangles; one less along a crease or border): analysing a face's
   // corners allocates nothing on most meshes.
   using Ring = boost::container::small_vector<Vertex_index, 24>;
   Ring ring; // edge end, opposite corner, edge end, ... (quads); edge ends (triangles)

@@ -405,6 +405,19 @@ public:
     arrays_.push_back(std::move(array));
     return {raw, true};
   }
+  // Adds `array`, built whole by its caller with one element per slot
+  // (spares a large array its fill). Null if its name is taken or its size
+  // is not the container's.
+  template <class A>
+  A* adopt_array(std::unique_ptr<A> array, std::size_t array_size)
+  {
+    if (array_size != size_ || find_by_name(array->name()))
+      return nullptr;
+    array->reserve(reserved_);
+    A* raw = array.get();
+    arrays_.push_back(std::move(array));
+    return raw;
+  }
   // The array of type `A` named `name`, or null.
   template <class A>
   A* find_array(const std::string& name) const

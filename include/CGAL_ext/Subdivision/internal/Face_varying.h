@@ -358,6 +358,7 @@ public:
     pv_ = pv.data();
     const u32 nv = P_.nv, ne = P_.ne;
     cf.value_of.clear();
+    cf.v_offset.clear(); // (a buffer of two levels before: nothing to keep if it grows)
     cf.v_offset.resize(std::size_t(C_.nv) + 1); // each written below
     cf.v_offset[0] = 0;
     for_each_index<Tag>(C_.nv, [&](u32 c) {
@@ -368,6 +369,7 @@ public:
     prefix_sum<Tag>(cf.v_offset.data(), C_.nv);
     const u32 n = cf.v_offset[C_.nv];
     cf.value_tag.assign(n, 0);
+    cv.clear();
     cv.resize(n); // each written below: vertex, edge and face points
     cv_ = cv.data();
     cf.edge_tag.assign(C_.ne, 0);
@@ -622,9 +624,9 @@ private:
 
 // A channel through every level of `r`: `corners` (the value index of each
 // halfedge's corner of the base level, null on the border) and `values` in,
-// the same of the last level out, and in `last` (if given) the channel's
-// topology there, with the tags the levels carried down (the limit reads
-// them). Under CGAL::Parallel_tag the steps of the levels that
+// the same of the last level out; or, if `last` is given, the channel's
+// topology there in `last` instead of `corners` (which is left as it was),
+// with the tags the levels carried down (the limit reads them). Under CGAL::Parallel_tag the steps of the levels that
 // `parallel(nv)` allows run on threads, with the serial result.
 // `Corners` and `Values` are vectors (std::vector, or Array to spare the
 // zero-fill and first touches of large levels).
@@ -646,8 +648,10 @@ void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode,
     std::swap(parent, child);
     values.swap(child_values);
   }
-  if (last)
-    *last = parent;
+  if (last) {
+    *last = std::move(parent);
+    return;
+  }
   // The last level's vertex values are its values.
   if constexpr (std::is_same_v<Corners, Array<u32>>)
     corners.swap(parent.corner);

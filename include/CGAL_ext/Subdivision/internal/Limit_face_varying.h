@@ -238,7 +238,7 @@ void limit_face_varying(const Refiner<Mask, W>& r, Face_varying_interpolation mo
   } else {
     values = limit_vertex_values<Mask, W>(level_of(r, r.number_of_levels()), last, values, corner_if_one_face);
   }
-  corners.assign(last.corner.begin(), last.corner.end());
+  corners.assign(last.corner.begin(), last.corner.end()); // vertex values, as the limits are numbered
 }
 
 template <class P, class T>

@@ -7,6 +7,8 @@
 #define CGAL_EXT_SUBDIVISION_INTERNAL_SUBDIVISION_DRIVER_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Connectivity_access.h>
+#include <CGAL_ext/Mobius_mesh/internal/Corner_channel_array.h>
 #include <CGAL_ext/Mobius_mesh/internal/Linear_values.h>
 #include <CGAL_ext/Mobius_mesh/transform.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -22,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -196,19 +199,20 @@ void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation 
         for (std::size_t i = 0; i < values.size(); ++i)
           values[i] = L::from(from->values()[i]);
         refiner.template interpolate_face_varying<ConcurrencyTag>(mode, corners, values);
-        auto to = out.template add_corner_channel<T>(name).first;
-        to.values().clear();
-        to.values().reserve(values.size());
-        CGAL_ext::internal::advise_huge_pages(to.values().data(), values.size() * sizeof(T)); // before the first touch
+        // The last level's index array becomes the channel's (one slot per
+        // halfedge), unfilled and uncopied.
+        auto channel = std::make_unique<CGAL_ext::internal::Corner_channel_array<T>>(name);
+        const std::size_t slots = corners.size();
+        channel->indices().swap(corners);
+        std::vector<T>& to = channel->values();
+        to.reserve(values.size());
+        CGAL_ext::internal::advise_huge_pages(to.data(), values.size() * sizeof(T)); // before the first touch
         for (const auto& v : values)
-          to.values().push_back(L::to(v));
-        // The last level's array is the channel's, one slot per halfedge.
-        auto& indices = to.array()->indices();
-        if (corners.size() == indices.size())
-          indices.swap(corners);
-        else
-          for (u32 h = 0; h < u32(corners.size()); ++h)
-            to.set_index(Halfedge_index(h), corners[h]);
+          to.push_back(L::to(v));
+        auto& halfedge_maps = CGAL_ext::internal::Connectivity_access::properties<Halfedge_index>(out);
+        if (!halfedge_maps.adopt_array(std::move(channel), slots))
+          throw Parameter_error("subdivision: internal error, the corner channel \"" + name +
+                                "\" does not fit the result's halfedges");
       }
     });
   }
