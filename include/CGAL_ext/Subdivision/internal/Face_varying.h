@@ -626,10 +626,11 @@ private:
 // halfedge's corner of the base level, null on the border) and `values` in,
 // the same of the last level out; or, if `last` is given, the channel's
 // topology there in `last` instead of `corners` (which is left as it was),
-// with the tags the levels carried down (the limit reads them). Under CGAL::Parallel_tag the steps of the levels that
-// `parallel(nv)` allows run on threads, with the serial result.
-// `Corners` and `Values` are vectors (std::vector, or Array to spare the
-// zero-fill and first touches of large levels).
+// with the tags the levels carried down (the limit reads them). Under
+// CGAL::Parallel_tag the steps of the levels that `parallel(nv)` allows run
+// on threads, with the serial result. `Corners` and `Values` are vectors
+// (std::vector, or Array to spare the zero-fill and first touches of large
+// levels).
 template <class Tag, class Refiner, class Corners, class Values, class Parallel>
 void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode, Corners& corners, Values& values,
                               const Parallel& parallel, Fvar_level* last = nullptr)
