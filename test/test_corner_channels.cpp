@@ -1843,6 +1843,94 @@ TEST(CornerChannels, LimitsRefusedAndShared)
   }
 }
 
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+// The free functions carry maps and channels through a one-pass refinement,
+// a level at a time; the refiner's own path keeps every level and
+// interpolates each afterwards (Refiner::interpolate(),
+// interpolate_face_varying(), base_faces()). Both must give the same
+// indices and values, bit for bit, and each face its base face's values:
+// on shapes with semi-sharp creases (Chaikin's rule on one), borders, seams
+// and n-gons, in every mode, under Catmull-Clark and Loop.
+TEST(CornerChannels, CarriedInOnePassAsThroughKeptLevels)
+{
+  using L = CGAL_ext::internal::Linear_value<double, test::Kd, UV>;
+  using Weight_value = CGAL_ext::internal::Linear_value<double, test::Kd, double>;
+  for (const char* name : {"catmark_chaikin1.obj", "catmark_nonquads.obj", "catmark_edgecorner.obj",
+                           "loop_icos_semisharp.obj", "loop_triangle_edgeonly.obj"}) {
+    const bool loop = name[0] == 'l';
+    const Shape s = read_shape(test::data(std::string("opensubdiv/") + name));
+    Mesh m = build(s);
+    auto weight = m.add_property_map<CGAL_ext::Vertex_index, double>("v:weight").first;
+    auto tag = m.add_property_map<CGAL_ext::Face_index, int>("f:tag").first;
+    for (CGAL_ext::Vertex_index v : m.vertices())
+      weight[v] = m.point(v).x() + 2 * m.point(v).y() + 1.0 / (1 + v.idx());
+    for (CGAL_ext::Face_index f : m.faces())
+      tag[f] = 7 * int(f.idx()) + 3;
+    const auto uv = *m.corner_channel<UV>("c:uv");
+    std::vector<float> es(m.number_of_edges()), vs;
+    if (const auto map = m.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name))
+      for (CGAL_ext::Edge_index e : m.edges())
+        es[e.idx()] = (*map)[e];
+    if (const auto map = m.property_map<CGAL_ext::Vertex_index, float>(CGAL_ext::vertex_sharpness_name))
+      for (CGAL_ext::Vertex_index v : m.vertices())
+        vs.push_back((*map)[v]);
+    for (Face_varying_interpolation mode : all_modes) {
+      SCOPED_TRACE(std::string(name) + ", " + mode_name(mode));
+      const int levels = 3;
+      Mesh one_pass = m;
+      subdivide(one_pass, loop, levels, mode, s);
+
+      S::Refinement_options options;
+      options.boundary_interpolation = s.boundary;
+      options.crease_method = s.crease_method;
+      std::vector<std::uint32_t> corners(m.number_of_halfedges());
+      for (CGAL_ext::Halfedge_index h : m.halfedges())
+        corners[h.idx()] = m.is_border(h) ? S::internal::null_u32 : uv.index(h);
+      std::vector<L::Value> values;
+      for (const UV& t : uv.values())
+        values.push_back(L::from(t));
+      std::vector<double> weights, weights_out;
+      for (CGAL_ext::Vertex_index v : m.vertices())
+        weights.push_back(Weight_value::from(weight[v]));
+      std::vector<std::uint32_t> base_faces;
+      const auto kept = [&](auto mask) {
+        S::Refiner<decltype(mask)> r(mask, options);
+        r.refine(m, levels, es, vs);
+        r.interpolate_face_varying(mode, corners, values);
+        r.interpolate(weights, weights_out);
+        base_faces = r.base_faces();
+      };
+      S::Catmull_clark_mask catmark;
+      catmark.triangle_subdivision = s.triangles;
+      if (loop)
+        kept(S::Loop_mask());
+      else
+        kept(catmark);
+
+      const auto out_uv = one_pass.corner_channel<UV>("c:uv");
+      ASSERT_TRUE(out_uv);
+      ASSERT_EQ(one_pass.number_of_halfedges(), corners.size());
+      std::size_t differing_indices = 0;
+      for (CGAL_ext::Halfedge_index h : one_pass.halfedges())
+        differing_indices += one_pass.is_border(h) ? 0 : out_uv->index(h) != corners[h.idx()];
+      EXPECT_EQ(differing_indices, 0u);
+      ASSERT_EQ(out_uv->values().size(), values.size());
+      for (std::size_t i = 0; i < values.size(); ++i)
+        ASSERT_EQ(out_uv->values()[i], L::to(values[i])) << "value " << i;
+      const auto out_weight = one_pass.property_map<CGAL_ext::Vertex_index, double>("v:weight");
+      const auto out_tag = one_pass.property_map<CGAL_ext::Face_index, int>("f:tag");
+      ASSERT_TRUE(out_weight && out_tag);
+      ASSERT_EQ(one_pass.number_of_vertices(), weights_out.size());
+      for (CGAL_ext::Vertex_index v : one_pass.vertices())
+        ASSERT_EQ((*out_weight)[v], weights_out[v.idx()]) << "v" << v.idx();
+      ASSERT_EQ(one_pass.number_of_faces(), base_faces.size());
+      for (CGAL_ext::Face_index f : one_pass.faces())
+        ASSERT_EQ((*out_tag)[f], 7 * int(base_faces[f.idx()]) + 3) << "f" << f.idx();
+    }
+  }
+}
+#endif
+
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL) && defined(CGAL_EXT_HAVE_OPENSUBDIV)
 // Texture coordinates as the refiner interpolates them.
 struct Vec2

@@ -344,6 +344,27 @@ public:
     one_pass<ConcurrencyTag, Convert>(mesh, levels, values, out, edge_sharpness, vertex_sharpness, write_sharpness);
   }
 
+  /// As `refine_and_interpolate_points()` (with `Convert`) or
+  /// `refine_and_interpolate()` (`Convert` void), with more data carried
+  /// along, one level at a time: in each step, once the weights of its parent
+  /// level are made and before the parent is split, `carried` is called as
+  /// `carried.template step<Tag>(refiner, child)`, where `Tag` is the step's
+  /// concurrency, the parent is level 0 of `refiner` (`edge_weights(0, e)`,
+  /// `interpolate_level<Tag>(0, src, dst)`), and `child`
+  /// (`internal::Child_level_view`) gives the child's vertex and edge counts
+  /// and its sharpness. Quad and triangle splits; the estimated peak of
+  /// memory checked is that of `refine()`, which keeps every level.
+  template <class Convert, class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values, class Q, class Carried>
+  void refine_and_interpolate_carrying(const Mobius_mesh<P>& mesh, unsigned levels, Values& values,
+                                       Mobius_mesh<Q>& out, Carried& carried,
+                                       const std::vector<float>& edge_sharpness = {},
+                                       const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
+  {
+    static_assert(!uses_stencils, "the dual and sqrt(3) splits carry data through refine() and interpolate()");
+    one_pass<ConcurrencyTag, Convert>(mesh, levels, values, out, edge_sharpness, vertex_sharpness, write_sharpness,
+                                      carried);
+  }
+
   /// The number of refinement steps done by the last `refine()`.
   unsigned number_of_levels() const { return levels_.empty() ? 0u : unsigned(levels_.size() - 1); }
   /// The counts of level `k` (0 is the base mesh): its vertices, edges,
@@ -456,21 +477,10 @@ public:
     internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[0].nv), [&](auto tag) {
       internal::for_each_index<decltype(tag)>(levels_[0].nf, [&](u32 f) { origin[f] = f; });
     });
-    for (unsigned k = 0; k + 1 < levels_.size(); ++k) {
-      // The split's layout (Level.h): child face c is the one at parent
-      // corner c, and the triangle split's centre triangles follow the corners.
-      const Level& p = levels_[k];
-      next.resize(levels_[k + 1].nf);
-      internal::with_concurrency<ConcurrencyTag>(parallel_level(p.nv), [&](auto tag) {
-        internal::for_each_index<decltype(tag)>(p.nf, [&](u32 f) {
-          for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
-            next[c] = origin[f];
-          if constexpr (Mask::split == Split::triangle)
-            next[p.nc + f] = origin[f];
-        });
+    for (unsigned k = 0; k + 1 < levels_.size(); ++k)
+      internal::with_concurrency<ConcurrencyTag>(parallel_level(levels_[k].nv), [&](auto tag) {
+        internal::child_face_origins<decltype(tag), Mask::split>(levels_[k], origin, next);
       });
-      origin.swap(next);
-    }
     return origin;
   }
 
@@ -587,15 +597,40 @@ private:
     }
   }
 
+  // No data carried besides the values.
+  struct Nothing_carried
+  {
+    template <class Tag>
+    void step(const Refiner&, const internal::Child_level_view&)
+    {}
+  };
+
+  // The child of slot `slot` as a channel's step sees it, after
+  // compute_weights(slot), before the split (primal schemes).
+  internal::Child_level_view child_view(unsigned slot) const
+  {
+    const Level& p = levels_[slot];
+    internal::Child_level_view c;
+    c.nv = child_vertex_count(slot);
+    c.ne = 2 * p.ne + p.nc; // two halves per edge, and one inner edge per corner (quads) or per triangle side
+    if (child_sharpness_.any) {
+      c.e_sharp = child_sharpness_.edges.data();
+      c.v_sharp = child_sharpness_.vertices.data();
+    }
+    return c;
+  }
+
   // refine_and_interpolate(), or with `Convert` (not void)
-  // refine_and_interpolate_points().
-  template <class ConcurrencyTag, class Convert, class P, class Values, class Q>
+  // refine_and_interpolate_points(); with `carried`,
+  // refine_and_interpolate_carrying().
+  template <class ConcurrencyTag, class Convert, class P, class Values, class Q, class Carried = Nothing_carried>
   void one_pass(const Mobius_mesh<P>& mesh, unsigned levels, Values& values, Mobius_mesh<Q>& out,
                 const std::vector<float>& edge_sharpness, const std::vector<float>& vertex_sharpness,
-                bool write_sharpness)
+                bool write_sharpness, Carried&& carried = Carried())
   {
-    const Mesh_size base =
-      check_size(mesh, levels, uses_stencils ? 2.0 : 1.25, double(sizeof(typename Values::value_type)));
+    constexpr bool carries = !std::is_same_v<std::decay_t<Carried>, Nothing_carried>;
+    const Mesh_size base = check_size(mesh, levels, carries ? 2.5 : uses_stencils ? 2.0 : 1.25,
+                                      double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     incidence_.clear();
     make_plan<ConcurrencyTag>(base, levels, true);
@@ -609,7 +644,7 @@ private:
       const u32 parent = levels_[0].nv;
       const bool parallel = parallel_level(parent);
       internal::with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
-        done = one_pass_step<decltype(tag), Convert>(k, k + 1 == levels, values, out, write_sharpness);
+        done = one_pass_step<decltype(tag), Convert>(k, k + 1 == levels, values, out, write_sharpness, carried);
       });
       if (int(internal::size_class(parent)) == plan_.tried)
         tuner().record(plan_threads_, parent, parallel,
@@ -634,8 +669,9 @@ private:
   // `last` (then returns true, the refiner emptied), and `values`
   // interpolated on the way (the last time into `out`'s points, if
   // `Convert` is not void).
-  template <class ConcurrencyTag, class Convert, class Values, class Q>
-  bool one_pass_step(unsigned k, bool last, Values& values, Mobius_mesh<Q>& out, bool write_sharpness)
+  template <class ConcurrencyTag, class Convert, class Values, class Q, class Carried>
+  bool one_pass_step(unsigned k, bool last, Values& values, Mobius_mesh<Q>& out, bool write_sharpness,
+                     Carried& carried)
   {
     constexpr bool into_points = !std::is_void_v<Convert>;
     if constexpr (uses_stencils) {
@@ -673,6 +709,7 @@ private:
       } else {
         advance_values<ConcurrencyTag>(values);
       }
+      carried.template step<ConcurrencyTag>(*this, child_view(0));
       weights_[0] = internal::Step_weights<W>(); // the split does not need them
       if (last) {
         incidence_.clear();

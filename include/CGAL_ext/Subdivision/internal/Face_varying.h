@@ -16,6 +16,8 @@
 #include <CGAL_ext/Subdivision/internal/Level.h>
 #include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
 
+#include <boost/container/small_vector.hpp>
+
 #include <algorithm>
 #include <cstdint>
 #include <type_traits>
@@ -72,9 +74,13 @@ struct Fvar_rules
 // border vertex starts at its border and has one edge more than faces.
 struct Fvar_ring
 {
-  std::vector<u32> dart, edge;
+  // Inline room for the rings of all but rare vertices: a ring is walked
+  // per vertex of every level, where a heap allocation would cost more than
+  // the walk.
+  using Darts = boost::container::small_vector<u32, 16>;
+  Darts dart, edge;
   bool border = false;
-  std::vector<u32> all; // the walk's darts, kept to spare an allocation per vertex
+  Darts all;
 
   void walk(const Level& L, u32 v)
   {
@@ -110,6 +116,23 @@ inline u32 corner_slot(const Level& L, u32 d)
 
 inline float sharpness_of_edge(const Level& L, u32 e) { return L.e_sharp.empty() ? 0.0f : L.e_sharp[e]; }
 inline float sharpness_of_vertex(const Level& L, u32 v) { return L.v_sharp.empty() ? 0.0f : L.v_sharp[v]; }
+
+// What a step of a channel reads of the child level: its counts and its
+// sharpness (null: all of it 0). A one-pass refinement has no child level
+// in its last step, only the sharpness its weights gave the child.
+struct Child_level_view
+{
+  u32 nv = 0, ne = 0;
+  const float* e_sharp = nullptr;
+  const float* v_sharp = nullptr;
+
+  static Child_level_view of(const Level& L)
+  {
+    return {L.nv, L.ne, L.e_sharp.empty() ? nullptr : L.e_sharp.data(), L.v_sharp.empty() ? nullptr : L.v_sharp.data()};
+  }
+};
+inline float sharpness_of_edge(const Child_level_view& C, u32 e) { return C.e_sharp ? C.e_sharp[e] : 0.0f; }
+inline float sharpness_of_vertex(const Child_level_view& C, u32 v) { return C.v_sharp ? C.v_sharp[v] : 0.0f; }
 // Border edges are infinitely sharp, as in OpenSubdiv.
 inline bool is_inf_sharp_edge(const Level& L, u32 e)
 {
@@ -346,8 +369,9 @@ public:
   using Mask = std::decay_t<decltype(std::declval<const Refiner&>().mask())>;
   static constexpr bool quad = Mask::split == Split::quad;
 
-  Fvar_step(const Refiner& r, unsigned k, const Fvar_rules& rules, bool linear)
-    : r_(r), k_(k), P_(level_of(r, k)), C_(level_of(r, k + 1)), rules_(rules), linear_(linear)
+  // Step k of `r` (a slot of a one-pass refinement), into a child seen as `child`.
+  Fvar_step(const Refiner& r, unsigned k, const Child_level_view& child, const Fvar_rules& rules, bool linear)
+    : r_(r), k_(k), P_(level_of(r, k)), C_(child), rules_(rules), linear_(linear)
   {}
 
   template <class Tag, class Values>
@@ -587,39 +611,101 @@ private:
   Value smooth_vertex_point(u32 v, Fvar_ring& r) const
   {
     const Vertex_weights<W>& w = r_.vertex_weights(k_, v);
+    const Value x = w.vertex * parent_value(pf_->v_offset[v]);
+    // An inner vertex's ring in the walk's order without building the walk
+    // (most vertices: a walk per vertex costs as much as the sums).
+    Value inner = x;
+    bool border = false;
+    P_.for_each_dart_at(v, [&](u32 d) {
+      border = border || P_.is_border_dart(d);
+      if (!border)
+        add_ring_terms(inner, w, corner_slot(P_, P_.prev(d)), P_.source(d), dart_encoding::edge_of_dart(d), d);
+    });
+    if (!border)
+      return inner;
     r.walk(P_, v);
     const u32 m = r.faces();
-    Value x = w.vertex * parent_value(pf_->v_offset[v]);
-    for (u32 i = 0; i < u32(r.edge.size()); ++i) {
-      // The far end of edge i, seen from face i (the last face for the trailing border edge).
-      const bool trailing = i == m;
-      const u32 slot = trailing ? corner_slot(P_, P_.next(r.dart[m - 1])) : corner_slot(P_, P_.prev(r.dart[i]));
-      const u32 far = trailing ? P_.target(P_.next(r.dart[m - 1])) : P_.source(r.dart[i]);
-      const Value& y = parent_corner(slot);
-      if (w.has_edge)
-        x = x + w.edge * y;
-      if (w.has_edge_point)
-        x = x + w.edge_point * cv_[cf_->v_offset[P_.nv + r.edge[i]]];
-      if (w.has_crease && (far == w.crease_ends[0] || far == w.crease_ends[1]))
-        x = x + w.crease * y;
-      if (w.has_face && !trailing) {
-        if constexpr (quad)
-          x = x + w.face * cv_[cf_->v_offset[P_.nv + P_.ne + P_.h_face[dart_encoding::halfedge_of_dart(r.dart[i])]]];
-      }
-    }
-    return x;
+    Value sum = x;
+    for (u32 i = 0; i < m; ++i)
+      add_ring_terms(sum, w, corner_slot(P_, P_.prev(r.dart[i])), P_.source(r.dart[i]), r.edge[i], r.dart[i]);
+    // The trailing border edge, seen from the last face.
+    const u32 d = P_.next(r.dart[m - 1]);
+    add_ring_terms(sum, w, corner_slot(P_, d), P_.target(d), r.edge[m], null_u32);
+    return sum;
+  }
+
+  // The terms of a vertex point from the edge of a ring to the value of the
+  // corner at its far end `far` (in corner slot `slot`) and from the face of
+  // `face_dart` (none for the trailing border edge).
+  void add_ring_terms(Value& x, const Vertex_weights<W>& w, u32 slot, u32 far, u32 edge, u32 face_dart) const
+  {
+    const Value& y = parent_corner(slot);
+    if (w.has_edge)
+      x = x + w.edge * y;
+    if (w.has_edge_point)
+      x = x + w.edge_point * cv_[cf_->v_offset[P_.nv + edge]];
+    if (w.has_crease && (far == w.crease_ends[0] || far == w.crease_ends[1]))
+      x = x + w.crease * y;
+    if constexpr (quad)
+      if (w.has_face && face_dart != null_u32)
+        x = x + w.face * cv_[cf_->v_offset[P_.nv + P_.ne + P_.h_face[dart_encoding::halfedge_of_dart(face_dart)]]];
   }
 
   const Refiner& r_;
   unsigned k_;
   const Level& P_;
-  const Level& C_;
+  Child_level_view C_;
   Fvar_rules rules_;
   bool linear_;
   const Fvar_level* pf_ = nullptr;
   Fvar_level* cf_ = nullptr;
   const Value* pv_ = nullptr;
   Value* cv_ = nullptr;
+};
+
+// A channel carried step by step: its topology on the current level (vertex
+// values, tags, the value of each corner) and its values there. start() reads
+// the base level of a refiner, each step() goes one level down from level k,
+// whose weights the refiner holds, into a child seen as `child`: level k + 1
+// of a refiner that keeps its levels, or the child of slot 0 of a one-pass
+// refinement (Refiner::refine_and_interpolate() with carried data).
+template <class Refiner, class Values>
+class Fvar_pass
+{
+public:
+  using Value = typename Values::value_type;
+
+  Fvar_pass(const Refiner& r, Face_varying_interpolation mode)
+    : rules_(mode, r.options().boundary_interpolation),
+      linear_(rules_.linear_all || !std::decay_t<decltype(r.mask())>::creases)
+  {}
+
+  // `corners`: the value index of each halfedge's corner of the base level
+  // (null on the border), into `values`.
+  template <class Corners>
+  void start(const Refiner& r, const Corners& corners, Values values)
+  {
+    analyse_base(level_of(r, 0), corners, rules_, level_);
+    values_ = std::move(values);
+  }
+
+  template <class Tag>
+  void step(const Refiner& r, unsigned k, const Child_level_view& child)
+  {
+    Fvar_step<Refiner, Value> s(r, k, child, rules_, linear_);
+    s.template run<Tag>(level_, values_, next_, next_values_);
+    std::swap(level_, next_);
+    values_.swap(next_values_);
+  }
+
+  Fvar_level& level() { return level_; }
+  Values& values() { return values_; }
+
+private:
+  Fvar_rules rules_;
+  bool linear_;
+  Fvar_level level_, next_; // next_: the buffers of two levels before
+  Values values_, next_values_;
 };
 
 // A channel through every level of `r`: `corners` (the value index of each
@@ -635,20 +721,14 @@ template <class Tag, class Refiner, class Corners, class Values, class Parallel>
 void interpolate_face_varying(const Refiner& r, Face_varying_interpolation mode, Corners& corners, Values& values,
                               const Parallel& parallel, Fvar_level* last = nullptr)
 {
-  using Value = typename Values::value_type;
-  using Mask = std::decay_t<decltype(r.mask())>;
-  const Fvar_rules rules(mode, r.options().boundary_interpolation);
-  const bool linear = rules.linear_all || !Mask::creases;
-  Fvar_level parent, child;
-  analyse_base(level_of(r, 0), corners, rules, parent);
-  Values child_values;
-  for (unsigned k = 0; k < r.number_of_levels(); ++k) {
-    Fvar_step<Refiner, Value> step(r, k, rules, linear);
-    with_concurrency<Tag>(parallel(level_of(r, k).nv),
-                          [&](auto tag) { step.template run<decltype(tag)>(parent, values, child, child_values); });
-    std::swap(parent, child);
-    values.swap(child_values);
-  }
+  Fvar_pass<Refiner, Values> pass(r, mode);
+  pass.start(r, corners, std::move(values));
+  for (unsigned k = 0; k < r.number_of_levels(); ++k)
+    with_concurrency<Tag>(parallel(level_of(r, k).nv), [&](auto tag) {
+      pass.template step<decltype(tag)>(r, k, Child_level_view::of(level_of(r, k + 1)));
+    });
+  values.swap(pass.values());
+  Fvar_level& parent = pass.level();
   if (last) {
     *last = std::move(parent);
     return;

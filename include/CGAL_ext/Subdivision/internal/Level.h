@@ -11,6 +11,7 @@
 
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Dart_encoding.h>
+#include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/internal/Parallel_loops.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
@@ -302,6 +303,24 @@ struct Mesh_writer
     f_first = a.face_halfedge;
   }
 };
+
+// `origin` (a value per face of `p`, such as the base face it lies in)
+// carried to the faces of p's child by a quad or triangle split, which
+// replaces it. The split's layout: child face c is the one at parent corner
+// c, and the triangle split's centre triangles follow the corners.
+template <class ConcurrencyTag, Split S>
+void child_face_origins(const Level& p, std::vector<u32>& origin, std::vector<u32>& scratch)
+{
+  static_assert(S == Split::quad || S == Split::triangle, "the faces of the other splits have no single parent");
+  scratch.resize(S == Split::triangle ? p.nc + p.nf : p.nc);
+  for_each_index<ConcurrencyTag>(p.nf, [&](u32 f) {
+    for (u32 c = p.f_offset[f]; c < p.f_offset[f + 1]; ++c)
+      scratch[c] = origin[f];
+    if constexpr (S == Split::triangle)
+      scratch[p.nc + f] = origin[f];
+  });
+  origin.swap(scratch);
+}
 
 // Completes a level whose connectivity is written: no sharpness, no holes,
 // corners numbered face by face from each face's first halfedge (the

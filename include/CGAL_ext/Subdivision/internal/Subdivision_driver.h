@@ -113,11 +113,11 @@ void for_each_vertex(u32 n, const Refinement_options& options, const Body& body)
   with_concurrency_for<ConcurrencyTag>(n, options, [&](auto tag) { for_each_index<decltype(tag)>(n, body); });
 }
 
-// Interpolates the vertex maps of `mesh` through the levels of `refiner`
-// into new maps of `out`, and gives each face of `out` the face maps' values
-// of the base face it lies in (quad and triangle splits).
-template <class ConcurrencyTag, class W, class Mask, class P>
-void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mobius_mesh<P>& out)
+// Calls body(name, map, tag) for each vertex map of `mesh` that a
+// subdivision interpolates: `map` of type T, tag a `Type_tag<T>`, whose
+// Linear_value<W, K, T> is defined.
+template <class W, class P, class Body>
+void for_each_carried_vertex_map(const Mobius_mesh<P>& mesh, const Body& body)
 {
   using K = typename CGAL::Kernel_traits<P>::Kernel;
   for (const std::string& name : mesh.template properties<Vertex_index>()) {
@@ -125,30 +125,47 @@ void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mob
       continue;
     for_each_interpolated_type<K>([&](auto tag) {
       using T = typename decltype(tag)::type;
-      using L = Linear_value<W, K, T>;
-      if constexpr (L::defined) {
-        const auto from = mesh.template property_map<Vertex_index, T>(name);
-        if (!from)
-          return;
-        internal::Array<typename L::Value> base, result; // written in full: no zero-fill
-        const u32 n = u32(mesh.number_of_vertices());
-        base.resize(n);
-        for_each_vertex<ConcurrencyTag>(n, refiner.options(), [&](u32 v) { base[v] = L::from((*from)[Vertex_index(v)]); });
-        refiner.template interpolate<ConcurrencyTag>(base, result);
-        auto to = out.template add_property_map<Vertex_index, T>(name, from->array()->default_value()).first;
-        const u32 m = u32(out.number_of_vertices());
-        for_each_vertex<ConcurrencyTag>(m, refiner.options(), [&](u32 v) { to[Vertex_index(v)] = L::to(result[v]); });
-      }
+      if constexpr (Linear_value<W, K, T>::defined)
+        if (const auto from = mesh.template property_map<Vertex_index, T>(name))
+          body(name, *from, tag);
     });
   }
-  if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle) {
-    const std::vector<std::uint32_t> parent = refiner.template base_faces<ConcurrencyTag>();
-    auto parent_of = [&](Face_index f) { return Face_index(parent[f.idx()]); };
-    with_concurrency_for<ConcurrencyTag>(u32(out.number_of_faces()), refiner.options(), [&](auto tag) {
-      CGAL_ext::internal::transfer_properties<Face_index, decltype(tag)>(mesh, out, 0, out.number_of_faces(),
-                                                                         parent_of, "f:hole");
-    });
-  }
+}
+
+// The values of vertex map `from` of `mesh` as interpolated values (`L`, a
+// Linear_value), and back as a new map of `out`.
+template <class ConcurrencyTag, class L, class P, class Map, class Values>
+void read_vertex_map(const Mobius_mesh<P>& mesh, const Map& from, const Refinement_options& options, Values& values)
+{
+  const u32 n = u32(mesh.number_of_vertices());
+  values.resize(n);
+  for_each_vertex<ConcurrencyTag>(n, options, [&](u32 v) { values[v] = L::from(from[Vertex_index(v)]); });
+}
+template <class ConcurrencyTag, class L, class Values, class Map, class P>
+void write_vertex_map(const Values& values, const std::string& name, const Map& from,
+                      const Refinement_options& options, Mobius_mesh<P>& out)
+{
+  using T = typename Map::value_type;
+  auto to = out.template add_property_map<Vertex_index, T>(name, from.array()->default_value()).first;
+  const u32 m = u32(out.number_of_vertices());
+  for_each_vertex<ConcurrencyTag>(m, options, [&](u32 v) { to[Vertex_index(v)] = L::to(values[v]); });
+}
+
+// Interpolates the vertex maps of `mesh` through the levels of `refiner`
+// into new maps of `out` (the dual and sqrt(3) splits, whose faces lie
+// across several parent faces: face maps are not carried).
+template <class ConcurrencyTag, class W, class Mask, class P>
+void carry_maps(const Refiner<Mask, W>& refiner, const Mobius_mesh<P>& mesh, Mobius_mesh<P>& out)
+{
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  for_each_carried_vertex_map<W>(mesh, [&](const std::string& name, const auto& from, auto tag) {
+    using T = typename decltype(tag)::type;
+    using L = Linear_value<W, K, T>;
+    internal::Array<typename L::Value> base, result; // written in full: no zero-fill
+    read_vertex_map<ConcurrencyTag, L>(mesh, from, refiner.options(), base);
+    refiner.template interpolate<ConcurrencyTag>(base, result);
+    write_vertex_map<ConcurrencyTag, L>(result, name, from, refiner.options(), out);
+  });
 }
 
 // The value index of each halfedge's corner in `channel` (null on the
@@ -175,48 +192,176 @@ std::vector<u32> base_corners(const char* function, const Mobius_mesh<P>& mesh, 
   return corners;
 }
 
-// Interpolates the corner channels of `mesh` through the levels of `refiner`
-// into channels of `out`; a channel whose values have no linear combination
-// is refused (checked by `check_channels()` before anything is refined).
-template <class ConcurrencyTag, class W, class Mask, class P>
-void carry_channels(const Refiner<Mask, W>& refiner, Face_varying_interpolation mode, const Mobius_mesh<P>& mesh,
-                    Mobius_mesh<P>& out)
+// A channel `name` of `out` (values of type T) made of the last level's
+// `corners` (a value index per halfedge), taken as the channel's index array
+// unfilled and uncopied, and `values` (interpolated, `L`).
+template <class T, class L, class Values, class P>
+void adopt_channel(const std::string& name, internal::Array<u32>& corners, const Values& values, Mobius_mesh<P>& out)
 {
-  using K = typename CGAL::Kernel_traits<P>::Kernel;
-  for (const std::string& name : mesh.corner_channels()) {
-    for_each_interpolated_channel_type<K>([&](auto tag) {
-      using T = typename decltype(tag)::type;
-      using L = Linear_value<W, K, T>;
-      if constexpr (L::defined) {
-        const auto from = mesh.template corner_channel<T>(name);
-        if (!from)
-          return;
-        // The base level's in a vector; the last level's come back in an
-        // Array, which spares the large levels their zero-fill.
-        const std::vector<u32> base = base_corners("subdivision", mesh, *from);
-        internal::Array<u32> corners(base.begin(), base.end());
-        internal::Array<typename L::Value> values(from->number_of_values());
-        for (std::size_t i = 0; i < values.size(); ++i)
-          values[i] = L::from(from->values()[i]);
-        refiner.template interpolate_face_varying<ConcurrencyTag>(mode, corners, values);
-        // The last level's index array becomes the channel's (one slot per
-        // halfedge), unfilled and uncopied.
-        auto channel = std::make_unique<CGAL_ext::internal::Corner_channel_array<T>>(name);
-        const std::size_t slots = corners.size();
-        channel->indices().swap(corners);
-        std::vector<T>& to = channel->values();
-        to.reserve(values.size());
-        CGAL_ext::internal::advise_huge_pages(to.data(), values.size() * sizeof(T)); // before the first touch
-        for (const auto& v : values)
-          to.push_back(L::to(v));
-        auto& halfedge_maps = CGAL_ext::internal::Connectivity_access::properties<Halfedge_index>(out);
-        if (!halfedge_maps.adopt_array(std::move(channel), slots))
-          throw Parameter_error("subdivision: internal error, the corner channel \"" + name +
-                                "\" does not fit the result's halfedges");
-      }
-    });
-  }
+  auto channel = std::make_unique<CGAL_ext::internal::Corner_channel_array<T>>(name);
+  const std::size_t slots = corners.size();
+  channel->indices().swap(corners);
+  std::vector<T>& to = channel->values();
+  to.reserve(values.size());
+  CGAL_ext::internal::advise_huge_pages(to.data(), values.size() * sizeof(T)); // before the first touch
+  for (const auto& v : values)
+    to.push_back(L::to(v));
+  auto& halfedge_maps = CGAL_ext::internal::Connectivity_access::properties<Halfedge_index>(out);
+  if (!halfedge_maps.adopt_array(std::move(channel), slots))
+    throw Parameter_error("subdivision: internal error, the corner channel \"" + name +
+                          "\" does not fit the result's halfedges");
 }
+
+// The maps of a mesh carried through a one-pass refinement by a quad or
+// triangle split (Refiner::refine_and_interpolate_carrying()): each vertex
+// map and each corner channel goes one level down in each step, as
+// carry_maps() and carry_channels() take them through kept levels, and the
+// face maps follow the base face of each face; finish() gives them to the
+// result. Only two levels of each are alive at a time, and the last level
+// of the mesh is split straight into the result.
+template <class ConcurrencyTag, class Refiner, class P>
+class Carried_maps
+{
+  using W = typename Refiner::Weight;
+  using K = typename CGAL::Kernel_traits<P>::Kernel;
+  using Mask = std::decay_t<decltype(std::declval<const Refiner&>().mask())>;
+
+  struct Item
+  {
+    virtual ~Item() = default;
+    virtual void step(const Refiner& r, const Child_level_view& child, bool parallel) = 0;
+    virtual void finish(const Refiner& r, Mobius_mesh<P>& out) = 0;
+  };
+
+  template <class Map>
+  struct Vertex_map : Item
+  {
+    using L = Linear_value<W, K, typename Map::value_type>;
+    std::string name;
+    Map from;
+    internal::Array<typename L::Value> values, next; // written in full: no zero-fill
+
+    Vertex_map(const Refiner& r, const Mobius_mesh<P>& mesh, const std::string& n, const Map& m) : name(n), from(m)
+    {
+      read_vertex_map<ConcurrencyTag, L>(mesh, from, r.options(), values);
+    }
+    void step(const Refiner& r, const Child_level_view& child, bool parallel) override
+    {
+      next.resize(child.nv);
+      with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
+        r.template interpolate_level<decltype(tag)>(0, values.data(), next.data());
+        normalize_values<decltype(tag)>(next.data(), child.nv);
+      });
+      values.swap(next);
+    }
+    void finish(const Refiner& r, Mobius_mesh<P>& out) override
+    {
+      write_vertex_map<ConcurrencyTag, L>(values, name, from, r.options(), out);
+    }
+  };
+
+  template <class T>
+  struct Channel : Item
+  {
+    using L = Linear_value<W, K, T>;
+    using Values = internal::Array<typename L::Value>;
+    std::string name;
+    internal::Array<u32> corners; // of the base, until the first step
+    Fvar_pass<Refiner, Values> pass;
+    bool started = false;
+
+    template <class From>
+    Channel(const Refiner& r, Face_varying_interpolation mode, const Mobius_mesh<P>& mesh, const std::string& n,
+            const From& from)
+      : name(n), pass(r, mode)
+    {
+      const std::vector<u32> base = base_corners("subdivision", mesh, from);
+      corners.assign(base.begin(), base.end());
+      pass.values().resize(from.number_of_values());
+      for (std::size_t i = 0; i < pass.values().size(); ++i)
+        pass.values()[i] = L::from(from.values()[i]);
+    }
+    void step(const Refiner& r, const Child_level_view& child, bool parallel) override
+    {
+      if (!started) { // the refiner's level 0 is the base now
+        Values values;
+        values.swap(pass.values());
+        pass.start(r, corners, std::move(values));
+        started = true;
+      }
+      with_concurrency<ConcurrencyTag>(parallel,
+                                       [&](auto tag) { pass.template step<decltype(tag)>(r, 0, child); });
+    }
+    void finish(const Refiner&, Mobius_mesh<P>& out) override
+    {
+      if (started) // the last level's vertex values are its values
+        corners.swap(pass.level().corner);
+      adopt_channel<T, L>(name, corners, pass.values(), out);
+    }
+  };
+
+  // The base face of each face of the current level, for the face maps.
+  struct Face_maps : Item
+  {
+    const Mobius_mesh<P>& mesh;
+    std::vector<u32> origin, scratch;
+
+    explicit Face_maps(const Mobius_mesh<P>& m) : mesh(m), origin(m.number_of_faces())
+    {
+      for (u32 f = 0; f < u32(origin.size()); ++f)
+        origin[f] = f;
+    }
+    void step(const Refiner& r, const Child_level_view&, bool parallel) override
+    {
+      with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
+        child_face_origins<decltype(tag), Mask::split>(level_of(r, 0), origin, scratch);
+      });
+    }
+    void finish(const Refiner& r, Mobius_mesh<P>& out) override
+    {
+      auto parent_of = [&](Face_index f) { return Face_index(origin[f.idx()]); };
+      with_concurrency_for<ConcurrencyTag>(u32(out.number_of_faces()), r.options(), [&](auto tag) {
+        CGAL_ext::internal::transfer_properties<Face_index, decltype(tag)>(mesh, out, 0, out.number_of_faces(),
+                                                                           parent_of, "f:hole");
+      });
+    }
+  };
+
+public:
+  // Reads the maps of `mesh` (which must outlive this object: its face maps
+  // are read by finish()).
+  Carried_maps(const Refiner& r, Face_varying_interpolation mode, const Mobius_mesh<P>& mesh) : refiner_(r)
+  {
+    for_each_carried_vertex_map<W>(mesh, [&](const std::string& name, const auto& from, auto) {
+      items_.push_back(std::make_unique<Vertex_map<std::decay_t<decltype(from)>>>(r, mesh, name, from));
+    });
+    items_.push_back(std::make_unique<Face_maps>(mesh));
+    for (const std::string& name : mesh.corner_channels())
+      for_each_interpolated_channel_type<K>([&](auto tag) {
+        using T = typename decltype(tag)::type;
+        if constexpr (Linear_value<W, K, T>::defined)
+          if (const auto from = mesh.template corner_channel<T>(name))
+            items_.push_back(std::make_unique<Channel<T>>(r, mode, mesh, name, *from));
+      });
+  }
+
+  template <class Tag>
+  void step(const Refiner& r, const Child_level_view& child)
+  {
+    for (auto& item : items_)
+      item->step(r, child, is_parallel_tag<Tag>);
+  }
+
+  void finish(Mobius_mesh<P>& out)
+  {
+    for (auto& item : items_)
+      item->finish(refiner_, out);
+  }
+
+private:
+  const Refiner& refiner_;
+  std::vector<std::unique_ptr<Item>> items_;
+};
 
 // Refuses, before anything is refined, a mesh with a corner channel that a
 // subdivision by `Mask` cannot carry: any channel for the dual and √3 splits,
@@ -346,8 +491,22 @@ void subdivide_sheets(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
       refiner.template refine_and_interpolate<Tag>(mesh, levels, values, out, es, vs, write_sharpness);
       write_points<Tag>(values, options, out);
     }
+  } else if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle) {
+    // Other maps too: one pass, each map carried a level at a time.
+    Carried_maps<Tag, decltype(refiner), P> carried(refiner, fvar_mode, mesh);
+    internal::Array<Value> values;
+    read_points<Tag>(mesh, vpm, options, values);
+    if constexpr (Traits::round_trips) {
+      refiner.template refine_and_interpolate_carrying<Traits, Tag>(mesh, levels, values, out, carried, es, vs,
+                                                                    write_sharpness);
+    } else {
+      refiner.template refine_and_interpolate_carrying<void, Tag>(mesh, levels, values, out, carried, es, vs,
+                                                                  write_sharpness);
+      write_points<Tag>(values, options, out);
+    }
+    carried.finish(out);
   } else {
-    // Other maps too: every level is kept, and each map interpolated through them.
+    // Doo-Sabin and sqrt(3): every level is kept, and each map interpolated through them.
     internal::Array<Value> values, result; // written in full: no zero-fill
     read_points<Tag>(mesh, vpm, options, values);
     refiner.template refine<Tag>(mesh, levels, es, vs);
@@ -355,8 +514,6 @@ void subdivide_sheets(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
     refiner.template build_mesh<Tag>(out, write_sharpness);
     write_points<Tag>(result, options, out);
     carry_maps<Tag>(refiner, mesh, out);
-    if constexpr (Mask::split == Split::quad || Mask::split == Split::triangle)
-      carry_channels<Tag>(refiner, fvar_mode, mesh, out);
   }
   mesh = std::move(out);
 }
