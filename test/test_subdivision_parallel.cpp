@@ -598,6 +598,15 @@ void expect_carried_maps_bit_identical(const std::string& what, const Mesh& base
     label[f] = int(7 * f.idx() + 1);
     name[f] = "face " + std::to_string(f.idx());
   }
+  // A channel with a seam: a value per vertex, and every corner of the
+  // faces of one band of its own value (the band's sides are seams).
+  auto uv = m.add_corner_channel<std::array<double, 2>>("c:uv").first;
+  for (auto v : m.vertices())
+    uv.add_value({std::cos(0.11 * double(v.idx())), 1e-3 * double(v.idx())});
+  for (auto f : m.faces())
+    for (auto d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      uv.set_index(m.corner(d), f.idx() % 16 == 3 ? std::uint32_t(uv.add_value({0.5, double(m.corner(d).idx())}))
+                                                  : std::uint32_t(m.target(d).idx()));
   Mesh serial = m, parallel = m;
   const auto two = CGAL_ext::parameters::number_of_iterations(2);
   S::subdivide(serial, Mask(), two);
@@ -619,6 +628,14 @@ void expect_carried_maps_bit_identical(const std::string& what, const Mesh& base
   EXPECT_TRUE(same_bytes(data(serial, Vertex_index(), c, "v:colour"), data(parallel, Vertex_index(), c, "v:colour")));
   EXPECT_EQ(data(serial, Face_index(), 0, "f:label"), data(parallel, Face_index(), 0, "f:label"));
   EXPECT_EQ(data(serial, Face_index(), std::string(), "f:name"), data(parallel, Face_index(), std::string(), "f:name"));
+  const auto su = serial.corner_channel<std::array<double, 2>>("c:uv"), pu = parallel.corner_channel<std::array<double, 2>>("c:uv");
+  ASSERT_TRUE(su && pu);
+  ASSERT_EQ(su->values().size(), pu->values().size());
+  EXPECT_TRUE(same_bytes(su->values(), pu->values()));
+  std::size_t differing = 0;
+  for (auto h : serial.halfedges())
+    differing += su->index(h) != pu->index(h);
+  EXPECT_EQ(differing, 0u);
 }
 
 TEST(SubdivisionParallel, CarriedMapsBitIdenticalToSerial)
