@@ -1927,6 +1927,19 @@ TEST(CornerChannels, CarriedInOnePassAsThroughKeptLevels)
       for (CGAL_ext::Face_index f : one_pass.faces())
         ASSERT_EQ((*out_tag)[f], 7 * int(base_faces[f.idx()]) + 3) << "f" << f.idx();
     }
+    // No level: every map as it was.
+    Mesh same = m;
+    subdivide(same, loop, 0, Face_varying_interpolation::corners_plus1, s);
+    const auto same_uv = same.corner_channel<UV>("c:uv");
+    ASSERT_TRUE(same_uv);
+    EXPECT_EQ(same_uv->values(), uv.values());
+    for (CGAL_ext::Halfedge_index h : m.halfedges())
+      ASSERT_EQ(same_uv->index(h), uv.index(h));
+    const auto same_weight = same.property_map<CGAL_ext::Vertex_index, double>("v:weight");
+    const auto same_tag = same.property_map<CGAL_ext::Face_index, int>("f:tag");
+    ASSERT_TRUE(same_weight && same_tag);
+    EXPECT_EQ(same_weight->data(), weight.data());
+    EXPECT_EQ(same_tag->data(), tag.data());
   }
 }
 #endif

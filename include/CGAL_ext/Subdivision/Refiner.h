@@ -352,8 +352,9 @@ public:
   /// concurrency, the parent is level 0 of `refiner` (`edge_weights(0, e)`,
   /// `interpolate_level<Tag>(0, src, dst)`), and `child`
   /// (`internal::Child_level_view`) gives the child's vertex and edge counts
-  /// and its sharpness. Quad and triangle splits; the estimated peak of
-  /// memory checked is that of `refine()`, which keeps every level.
+  /// and its sharpness. Quad and triangle splits. The estimated peak of
+  /// memory checked is 2.5 times the result, as `refine()`'s (the carried
+  /// data's own levels are not counted: an estimate).
   template <class Convert, class ConcurrencyTag = CGAL::Sequential_tag, class P, class Values, class Q, class Carried>
   void refine_and_interpolate_carrying(const Mobius_mesh<P>& mesh, unsigned levels, Values& values,
                                        Mobius_mesh<Q>& out, Carried& carried,
@@ -361,6 +362,10 @@ public:
                                        const std::vector<float>& vertex_sharpness = {}, bool write_sharpness = false)
   {
     static_assert(!uses_stencils, "the dual and sqrt(3) splits carry data through refine() and interpolate()");
+    if constexpr (!std::is_void_v<Convert>)
+      static_assert(std::is_same_v<typename Values::value_type, typename Convert::Value> &&
+                      !internal::Normalizes<typename Convert::Value>::value,
+                    "the values are the points as Convert::Value, which are not normalized");
     one_pass<ConcurrencyTag, Convert>(mesh, levels, values, out, edge_sharpness, vertex_sharpness, write_sharpness,
                                       carried);
   }
@@ -612,7 +617,7 @@ private:
     const Level& p = levels_[slot];
     internal::Child_level_view c;
     c.nv = child_vertex_count(slot);
-    c.ne = 2 * p.ne + p.nc; // two halves per edge, and one inner edge per corner (quads) or per triangle side
+    c.ne = 2 * p.ne + p.nc; // two halves per edge, and one inner edge per corner
     if (child_sharpness_.any) {
       c.e_sharp = child_sharpness_.edges.data();
       c.v_sharp = child_sharpness_.vertices.data();
@@ -630,7 +635,7 @@ private:
   {
     constexpr bool carries = !std::is_same_v<std::decay_t<Carried>, Nothing_carried>;
     const Mesh_size base = check_size(mesh, levels, carries ? 2.5 : uses_stencils ? 2.0 : 1.25,
-                                      double(sizeof(typename Values::value_type)));
+                                      carries ? 0.0 : double(sizeof(typename Values::value_type)));
     levels_.resize(levels == 0 ? 1 : 2);
     incidence_.clear();
     make_plan<ConcurrencyTag>(base, levels, true);

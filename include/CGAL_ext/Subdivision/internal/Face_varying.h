@@ -382,7 +382,7 @@ public:
     pv_ = pv.data();
     const u32 nv = P_.nv, ne = P_.ne;
     cf.value_of.clear();
-    cf.v_offset.clear(); // (a buffer of two levels before: nothing to keep if it grows)
+    cf.v_offset.clear(); // cleared first: growing, it then copies nothing
     cf.v_offset.resize(std::size_t(C_.nv) + 1); // each written below
     cf.v_offset[0] = 0;
     for_each_index<Tag>(C_.nv, [&](u32 c) {
@@ -668,7 +668,7 @@ private:
 // the base level of a refiner, each step() goes one level down from level k,
 // whose weights the refiner holds, into a child seen as `child`: level k + 1
 // of a refiner that keeps its levels, or the child of slot 0 of a one-pass
-// refinement (Refiner::refine_and_interpolate() with carried data).
+// refinement (Refiner::refine_and_interpolate_carrying()).
 template <class Refiner, class Values>
 class Fvar_pass
 {
@@ -696,6 +696,9 @@ public:
     s.template run<Tag>(level_, values_, next_, next_values_);
     std::swap(level_, next_);
     values_.swap(next_values_);
+    // The next level is larger: the parent's buffers would not be reused.
+    next_ = Fvar_level();
+    Values().swap(next_values_);
   }
 
   Fvar_level& level() { return level_; }
@@ -704,7 +707,7 @@ public:
 private:
   Fvar_rules rules_;
   bool linear_;
-  Fvar_level level_, next_; // next_: the buffers of two levels before
+  Fvar_level level_, next_;
   Values values_, next_values_;
 };
 

@@ -214,8 +214,7 @@ void adopt_channel(const std::string& name, internal::Array<u32>& corners, const
 
 // The maps of a mesh carried through a one-pass refinement by a quad or
 // triangle split (Refiner::refine_and_interpolate_carrying()): each vertex
-// map and each corner channel goes one level down in each step, as
-// carry_maps() and carry_channels() take them through kept levels, and the
+// map and each corner channel goes one level down in each step, and the
 // face maps follow the base face of each face; finish() gives them to the
 // result. Only two levels of each are alive at a time, and the last level
 // of the mesh is split straight into the result.
@@ -253,6 +252,7 @@ class Carried_maps
         normalize_values<decltype(tag)>(next.data(), child.nv);
       });
       values.swap(next);
+      decltype(next)().swap(next); // the next level is larger: this buffer would not be reused
     }
     void finish(const Refiner& r, Mobius_mesh<P>& out) override
     {
@@ -266,7 +266,7 @@ class Carried_maps
     using L = Linear_value<W, K, T>;
     using Values = internal::Array<typename L::Value>;
     std::string name;
-    internal::Array<u32> corners; // of the base, until the first step
+    internal::Array<u32> corners; // of the base until the first step, then of the last level at finish()
     Fvar_pass<Refiner, Values> pass;
     bool started = false;
 
@@ -287,6 +287,7 @@ class Carried_maps
         Values values;
         values.swap(pass.values());
         pass.start(r, corners, std::move(values));
+        internal::Array<u32>().swap(corners);
         started = true;
       }
       with_concurrency<ConcurrencyTag>(parallel,
@@ -335,7 +336,11 @@ public:
     for_each_carried_vertex_map<W>(mesh, [&](const std::string& name, const auto& from, auto) {
       items_.push_back(std::make_unique<Vertex_map<std::decay_t<decltype(from)>>>(r, mesh, name, from));
     });
-    items_.push_back(std::make_unique<Face_maps>(mesh));
+    for (const std::string& name : mesh.template properties<Face_index>())
+      if (name != "f:hole") { // the refiner writes the holes itself
+        items_.push_back(std::make_unique<Face_maps>(mesh));
+        break;
+      }
     for (const std::string& name : mesh.corner_channels())
       for_each_interpolated_channel_type<K>([&](auto tag) {
         using T = typename decltype(tag)::type;
