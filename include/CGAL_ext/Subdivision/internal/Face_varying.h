@@ -692,13 +692,11 @@ public:
   template <class Tag>
   void step(const Refiner& r, unsigned k, const Child_level_view& child)
   {
-    Fvar_step<Refiner, Value> s(r, k, child, rules_, linear_);
-    s.template run<Tag>(level_, values_, next_, next_values_);
-    std::swap(level_, next_);
-    values_.swap(next_values_);
-    // The next level is larger: the parent's buffers would not be reused.
-    next_ = Fvar_level();
-    Values().swap(next_values_);
+    Fvar_level next; // fresh: the parent's buffers, smaller, are not reused
+    Values next_values;
+    Fvar_step<Refiner, Value>(r, k, child, rules_, linear_).template run<Tag>(level_, values_, next, next_values);
+    level_ = std::move(next);
+    values_ = std::move(next_values);
   }
 
   Fvar_level& level() { return level_; }
@@ -707,8 +705,8 @@ public:
 private:
   Fvar_rules rules_;
   bool linear_;
-  Fvar_level level_, next_;
-  Values values_, next_values_;
+  Fvar_level level_;
+  Values values_;
 };
 
 // A channel through every level of `r`: `corners` (the value index of each

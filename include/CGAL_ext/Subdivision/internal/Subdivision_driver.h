@@ -20,6 +20,7 @@
 #include <CGAL/Origin.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/tags.h>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -82,18 +83,24 @@ using CGAL_ext::internal::for_each_interpolated_channel_type;
 // The maps of `mesh` that a subdivision carries: vertex maps of the interpolated types
 // (Linear_values.h), face maps of any type (but the points, the sharpness and the hole
 // flags, which the subdivision writes itself), corner channels.
+inline bool is_carried_vertex_map(const std::string& name)
+{
+  return name != "v:point" && name != vertex_sharpness_name;
+}
+template <class P>
+bool has_carried_face_maps(const Mobius_mesh<P>& mesh)
+{
+  const auto names = mesh.template properties<Face_index>();
+  return std::any_of(names.begin(), names.end(), [](const std::string& name) { return name != "f:hole"; });
+}
 template <class P>
 bool has_carried_maps(const Mobius_mesh<P>& mesh)
 {
-  if (!mesh.corner_channels().empty())
+  if (!mesh.corner_channels().empty() || has_carried_face_maps(mesh))
     return true;
-  for (const std::string& name : mesh.template properties<Vertex_index>())
-    if (name != "v:point" && name != vertex_sharpness_name)
-      return true; // perhaps not of an interpolated type: then the maps are merely dropped
-  for (const std::string& name : mesh.template properties<Face_index>())
-    if (name != "f:hole")
-      return true;
-  return false;
+  const auto names = mesh.template properties<Vertex_index>();
+  // A map perhaps not of an interpolated type: then it is merely dropped.
+  return std::any_of(names.begin(), names.end(), is_carried_vertex_map);
 }
 
 // Calls body(tag) for work on n elements of the maps: tag is `ConcurrencyTag`
@@ -121,7 +128,7 @@ void for_each_carried_vertex_map(const Mobius_mesh<P>& mesh, const Body& body)
 {
   using K = typename CGAL::Kernel_traits<P>::Kernel;
   for (const std::string& name : mesh.template properties<Vertex_index>()) {
-    if (name == "v:point" || name == vertex_sharpness_name)
+    if (!is_carried_vertex_map(name))
       continue;
     for_each_interpolated_type<K>([&](auto tag) {
       using T = typename decltype(tag)::type;
@@ -238,7 +245,7 @@ class Carried_maps
     using L = Linear_value<W, K, typename Map::value_type>;
     std::string name;
     Map from;
-    internal::Array<typename L::Value> values, next; // written in full: no zero-fill
+    internal::Array<typename L::Value> values; // written in full: no zero-fill
 
     Vertex_map(const Refiner& r, const Mobius_mesh<P>& mesh, const std::string& n, const Map& m) : name(n), from(m)
     {
@@ -246,13 +253,12 @@ class Carried_maps
     }
     void step(const Refiner& r, const Child_level_view& child, bool parallel) override
     {
-      next.resize(child.nv);
+      decltype(values) next(child.nv); // the parent's buffer, smaller, is not reused
       with_concurrency<ConcurrencyTag>(parallel, [&](auto tag) {
         r.template interpolate_level<decltype(tag)>(0, values.data(), next.data());
         normalize_values<decltype(tag)>(next.data(), child.nv);
       });
       values.swap(next);
-      decltype(next)().swap(next); // the next level is larger: this buffer would not be reused
     }
     void finish(const Refiner& r, Mobius_mesh<P>& out) override
     {
@@ -331,16 +337,13 @@ class Carried_maps
 public:
   // Reads the maps of `mesh` (which must outlive this object: its face maps
   // are read by finish()).
-  Carried_maps(const Refiner& r, Face_varying_interpolation mode, const Mobius_mesh<P>& mesh) : refiner_(r)
+  Carried_maps(const Refiner& r, Face_varying_interpolation mode, const Mobius_mesh<P>& mesh)
   {
     for_each_carried_vertex_map<W>(mesh, [&](const std::string& name, const auto& from, auto) {
       items_.push_back(std::make_unique<Vertex_map<std::decay_t<decltype(from)>>>(r, mesh, name, from));
     });
-    for (const std::string& name : mesh.template properties<Face_index>())
-      if (name != "f:hole") { // the refiner writes the holes itself
-        items_.push_back(std::make_unique<Face_maps>(mesh));
-        break;
-      }
+    if (has_carried_face_maps(mesh))
+      items_.push_back(std::make_unique<Face_maps>(mesh));
     for (const std::string& name : mesh.corner_channels())
       for_each_interpolated_channel_type<K>([&](auto tag) {
         using T = typename decltype(tag)::type;
@@ -357,14 +360,13 @@ public:
       item->step(r, child, is_parallel_tag<Tag>);
   }
 
-  void finish(Mobius_mesh<P>& out)
+  void finish(const Refiner& r, Mobius_mesh<P>& out)
   {
     for (auto& item : items_)
-      item->finish(refiner_, out);
+      item->finish(r, out);
   }
 
 private:
-  const Refiner& refiner_;
   std::vector<std::unique_ptr<Item>> items_;
 };
 
@@ -509,7 +511,7 @@ void subdivide_sheets(Mobius_mesh<P>& mesh, const Mask& mask, const NamedParamet
                                                                   write_sharpness);
       write_points<Tag>(values, options, out);
     }
-    carried.finish(out);
+    carried.finish(refiner, out);
   } else {
     // Doo-Sabin and sqrt(3): every level is kept, and each map interpolated through them.
     internal::Array<Value> values, result; // written in full: no zero-fill
