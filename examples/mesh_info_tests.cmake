@@ -103,6 +103,13 @@ add_test(NAME mesh_info.non_manifold.obj_repeated_vertex.obj
   COMMAND mesh_info ${_mesh_info_data}/bad/obj_repeated_vertex.obj)
 set_tests_properties(mesh_info.non_manifold.obj_repeated_vertex.obj PROPERTIES PASS_REGULAR_EXPRESSION
   "\"non_manifold_vertices\":3,\"non_manifold_edges\":4,\"input_vertices\":4,\"input_edges\":6}\n$")
+# A degenerate edge (5, 5) inside the fan of an interior vertex: a loop of
+# the sheet, one non-manifold edge and vertex (OpenSubdiv's tags, compared in
+# test_non_manifold.cpp), no vertex split; its texture seam there.
+add_test(NAME mesh_info.non_manifold.grid_degenerate_edge_uv.obj
+  COMMAND mesh_info ${_mesh_info_data}/nonmanifold/grid_degenerate_edge_uv.obj)
+set_tests_properties(mesh_info.non_manifold.grid_degenerate_edge_uv.obj PROPERTIES PASS_REGULAR_EXPRESSION
+  "^{\"vertices\":16,\"edges\":25,\"faces\":9,\"border_loops\":2,.*\"valid\":true,.*\"values\":17,\"seam_edges\":1,.*\"non_manifold_vertices\":1,\"non_manifold_edges\":1,\"input_vertices\":16,\"input_edges\":25}\n$")
 
 file(GLOB _mesh_info_bad ${_mesh_info_data}/bad/*)
 foreach(_file ${_mesh_info_bad})

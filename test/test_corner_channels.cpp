@@ -842,9 +842,12 @@ TEST(CornerChannelsOpenSubdiv, NonManifoldShape)
     CGAL_ext::IO::write_polygon_mesh(oriented, m);
   }
   // loop_val2_interior: a vertex pinched between two fans, an edge of four
-  // triangles, valence-2 vertices, seams at each.
+  // triangles, valence-2 vertices, seams at each. grid_degenerate_edge_uv:
+  // a degenerate edge inside one fan (a loop of the sheet), a seam and a
+  // semi-sharp edge at its vertex.
   for (const std::string& file :
-       {test::data("opensubdiv/catmark_fan.obj"), oriented, test::data("opensubdiv/loop_val2_interior.obj")}) {
+       {test::data("opensubdiv/catmark_fan.obj"), oriented, test::data("opensubdiv/loop_val2_interior.obj"),
+        test::data("nonmanifold/grid_degenerate_edge_uv.obj")}) {
     const std::string name = std::filesystem::path(file).filename().string();
     const bool loop = name.rfind("loop_", 0) == 0;
     const Shape s = read_shape(file);

@@ -4,6 +4,7 @@
 #include "subdivision_shapes.h"
 
 #include <CGAL_ext/IO/polygon_mesh_io.h>
+#include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Subdivision/limit.h>
 #include <CGAL_ext/isotropic_remeshing.h>
@@ -344,16 +345,75 @@ TEST(NonManifold, polygons_that_visit_a_vertex_twice_as_opensubdiv)
 }
 
 // A degenerate edge at an interior vertex: the vertex's polygons form one
-// fan from one end of the edge round to the other, which no sheet holds
-// (its halfedges have two ends): refused, by name.
-TEST(NonManifold, a_degenerate_edge_inside_a_fan_is_refused)
+// fan from one end of the edge round to the other, so the edge is a loop
+// of the sheet (a border from the vertex to itself); between two corners
+// and across the polygon's first corner.
+TEST(NonManifold, a_degenerate_edge_inside_a_fan_is_a_loop)
 {
   const Shape s = grid_with(4, {5, 5, 6, 10, 9});
-  const auto e = import_error(s.points, s.faces, split_policy);
+  Mesh m;
+  EXPECT_EQ(CGAL_ext::polygon_soup_to_mobius_mesh(s.points, s.faces, m, split_policy), 0u);
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_vertices(), 16u);
+  EXPECT_EQ(m.number_of_edges(), 25u); // the grid's 24, with the degenerate one
+  ASSERT_TRUE(CGAL_ext::non_manifold_join_map(m)); // none joined, but not a manifold
+  EXPECT_EQ(CGAL_ext::non_manifold_counts(m).vertices, 1u);
+  EXPECT_EQ(CGAL_ext::non_manifold_counts(m).edges, 1u);
+  std::vector<CGAL_ext::Edge_index> loops;
+  for (CGAL_ext::Edge_index e : m.edges())
+    if (m.vertex(e, 0) == m.vertex(e, 1))
+      loops.push_back(e);
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_EQ(m.vertex(loops[0], 0), CGAL_ext::Vertex_index(5));
+  EXPECT_TRUE(m.is_border(loops[0]));
+  EXPECT_EQ(CGAL_ext::number_of_border_cycles(m), 2u); // the grid's and the loop's own
+  // No Euler operation folds it away; the mesh stays as it was.
+  EXPECT_FALSE(CGAL_ext::Euler::does_satisfy_link_condition(m.halfedge(loops[0]), m));
+  EXPECT_THROW(CGAL_ext::Euler::collapse_edge(m.halfedge(loops[0]), m), CGAL_ext::Euler_error);
+  EXPECT_THROW(CGAL_ext::Euler::join_vertex(m.halfedge(loops[0]), m), CGAL_ext::Euler_error);
+  EXPECT_TRUE(m.is_valid(true));
+  EXPECT_EQ(m.number_of_edges(), 25u);
+  // Written joined, it is the soup again.
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  CGAL_ext::joined_polygon_soup(m, points, polygons);
+  EXPECT_EQ(points, s.points);
+  auto least_rotation = [](std::vector<std::size_t> p) {
+    std::vector<std::size_t> least = p;
+    for (std::size_t k = 1; k < p.size(); ++k) {
+      std::rotate(p.begin(), p.begin() + 1, p.end());
+      least = std::min(least, p);
+    }
+    return least;
+  };
+  std::multiset<std::vector<std::size_t>> ours, theirs;
+  for (const auto& p : polygons)
+    ours.insert(least_rotation(p));
+  for (const auto& f : s.faces)
+    theirs.insert(least_rotation({f.begin(), f.end()}));
+  EXPECT_EQ(ours, theirs);
+  // Two degenerate edges in a row: the middle corner is a fan of its own,
+  // the outer two lie in one fan with no edge between them, as no sheet
+  // holds them.
+  const Shape t = grid_with(4, {5, 5, 5, 6, 10, 9});
+  const auto e = import_error(t.points, t.faces, split_policy);
   ASSERT_TRUE(e) << "no Soup_error";
   EXPECT_EQ(e->kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
-  EXPECT_EQ(e->polygons(), std::vector<std::size_t>{4});
   EXPECT_EQ(e->vertices(), std::vector<std::size_t>{5});
+}
+
+TEST(NonManifold, a_degenerate_edge_inside_a_fan_as_opensubdiv)
+{
+  REQUIRE_OPENSUBDIV();
+  const std::vector<Shape> shapes = {grid_with(4, {5, 5, 6, 10, 9}), grid_with(4, {5, 6, 10, 9, 5})};
+  for (std::size_t k = 0; k < shapes.size(); ++k)
+    for (int n = 1; n <= 3; ++n) {
+      SCOPED_TRACE("shape " + std::to_string(k) + ", level " + std::to_string(n));
+      expect_opensubdiv_result(shapes[k], Sdc::SCHEME_CATMARK, n);
+      Shape corners = shapes[k];
+      corners.boundary = Boundary_interpolation::edge_and_corner;
+      expect_opensubdiv_result(corners, Sdc::SCHEME_CATMARK, n);
+    }
 }
 
 TEST(NonManifold, catmull_clark_equals_opensubdiv_on_its_non_manifold_shapes)

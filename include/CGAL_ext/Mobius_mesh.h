@@ -999,6 +999,15 @@ public:
   /// @}
 
 private:
+  // A loop (both ends one vertex) is a degenerate edge of non-manifold input
+  // (see `polygon_soup_to_mobius_mesh()`): a border whose border halfedge is
+  // a border loop of its own; any other loop is invalid.
+  bool is_lone_border_loop(Edge_index e) const
+  {
+    const Dart b(halfedge(e, is_border(halfedge(e, 0)) ? 0 : 1), false);
+    return is_border(b) && next(b) == b;
+  }
+
   // Subdivision writes whole arrays, copies carry property arrays of any type.
   friend struct internal::Connectivity_access;
   // Euler operations walk and edit orientable patches by halfedge index.
@@ -1885,8 +1894,8 @@ std::string Mobius_mesh<P>::check_halfedge_links() const
         return (out << "prev(next(" << d << ")) != " << d, out.str());
       if (opposite(opposite(d)) != d)
         return (out << "opposite(opposite(" << d << ")) != " << d, out.str());
-      if (source(d) == target(d))
-        return (out << d << " is a loop at " << target(d), out.str());
+      if (source(d) == target(d) && !is_lone_border_loop(edge(d)))
+        return (out << d << " is a loop at " << target(d) << " that is not a border loop of its own", out.str());
       if (target(opposite(d)) != source(d))
         return (out << "target(opposite(" << d << ")) != source(" << d << ")", out.str());
       if (source(next(d)) != target(d))

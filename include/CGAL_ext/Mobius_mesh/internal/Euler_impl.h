@@ -200,6 +200,8 @@ const char* why_not_split_face(Dart h, Dart g, const Mobius_mesh<P>& m)
 template <class P>
 const char* why_not_join_vertex(Dart d, const Mobius_mesh<P>& m)
 {
+  if (m.source(d) == m.target(d))
+    return "the edge is a loop (a degenerate edge of non-manifold input)";
   const Dart o = m.opposite(d);
   for (Dart side : {d, o})
     if (has_fewer_sides_than(side, 4, m))
@@ -420,6 +422,8 @@ bool plain_link_condition_holds(Dart d, const Mobius_mesh<P>& m)
 template <class P>
 const char* why_not_collapse_edge(Dart d, const Mobius_mesh<P>& m)
 {
+  if (m.source(d) == m.target(d))
+    return "the edge is a loop (a degenerate edge of non-manifold input)";
   if (plain_link_condition_holds(d, m))
     return nullptr;
   const Vertex_index p = m.source(d), q = m.target(d);

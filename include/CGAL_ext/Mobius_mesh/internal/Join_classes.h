@@ -66,9 +66,9 @@ public:
     }
     input_edges_ = mesh.number_of_edges();
     non_manifold_vertices_ = joined_vertices_;
-    // Without joins every edge is its own class: nothing to classify (the
-    // writers build these classes for every mesh they write).
-    if (joined_vertices_ != 0) {
+    // Without joins or loops every edge is its own class: nothing to
+    // classify (the writers build these classes for every mesh they write).
+    if (joined_vertices_ != 0 || has_loop(mesh)) {
       on_non_manifold_edge_.assign(nv, false);
       classify_edges(mesh);
     }
@@ -137,6 +137,17 @@ public:
   }
 
 private:
+  // Whether an edge of `mesh` runs from a vertex to itself (a degenerate
+  // edge of the input inside one fan, see Repeated_vertex_split.h).
+  template <class P>
+  static bool has_loop(const Mobius_mesh<P>& mesh)
+  {
+    for (Edge_index e : mesh.edges())
+      if (mesh.vertex(e, 0) == mesh.vertex(e, 1))
+        return true;
+    return false;
+  }
+
   // The edges of the input as OpenSubdiv's Vtr makes them from the joined
   // polygons: the edges of the sheets whose ends are the same two input
   // vertices are one edge, but for a polygon that runs along the pair again
@@ -156,7 +167,7 @@ private:
     for (u32 e = 0; e < ne; ++e) {
       edge_rep_[e] = e;
       const u32 a = mesh.vertex(Edge_index(e), 0).idx(), b = mesh.vertex(Edge_index(e), 1).idx();
-      if (!is_joined(a) && !is_joined(b))
+      if (a != b && !is_joined(a) && !is_joined(b))
         continue; // two vertices of the input joined to none: the only edge between them
       if (rep_[a] == rep_[b])
         mark_non_manifold(mesh, e);

@@ -12,8 +12,9 @@
 // repeated vertex has a vertex of its own: the corners of vertex v are
 // joined across the edges OpenSubdiv makes two-sided (a pair of distinct
 // vertices run along by exactly two polygons, once each) and every further
-// fan gets a copy of v. Then no polygon visits a vertex twice, and the
-// builder pairs the sides as OpenSubdiv pairs them.
+// fan gets a copy of v. Then no polygon visits a vertex twice, but at the two
+// ends of a degenerate side whose corners lie in one fan (a loop edge), and
+// the builder pairs the sides as OpenSubdiv pairs them.
 
 #ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
@@ -55,6 +56,9 @@ public:
                     Mesh_size{std::size_t(n_vertices_) + original_.size(), 0, 0, 0});
     find_lone_sides();
   }
+
+  // How many degenerate sides became loops (see rename_fans()).
+  std::size_t number_of_loops() const { return loops_; }
 
   // The vertex that new vertex `n_vertices + k` copies, for each k.
   const std::vector<u32>& original() const { return original_; }
@@ -165,19 +169,27 @@ private:
   static constexpr u32 no_corner = ~u32(0);
 
   // The first fan of each vertex keeps it; each further fan gets a copy. A
-  // fan that holds two corners of one polygon cannot be a vertex of a sheet.
+  // fan that holds two corners of one polygon cannot be a vertex of a sheet,
+  // but for the two ends of a degenerate side (v, v): that side becomes a
+  // loop, a border edge from the vertex to itself, which is what OpenSubdiv
+  // makes of it (an edge of its own, never shared).
   void rename_fans(const std::vector<u32>& fan)
   {
     std::unordered_map<u32, u32> vertex_of_fan;
     std::unordered_map<u32, u32> first_fan_of_vertex;
-    std::unordered_map<std::uint64_t, u32> corner_of_face_in_fan;
+    std::unordered_map<std::uint64_t, std::pair<u32, u32>> corners_of_face_in_fan; // (first, count)
     for (std::size_t k = 0; k < corners_.size(); ++k) {
       const u32 v = flat_.vertex[corners_[k]];
-      auto [c, fresh] = corner_of_face_in_fan.emplace(std::uint64_t(face_[k]) << 32 | fan[k], corners_[k]);
-      if (!fresh)
+      auto& [first, count] =
+        corners_of_face_in_fan.emplace(std::uint64_t(face_[k]) << 32 | fan[k], std::pair<u32, u32>{corners_[k], 0})
+          .first->second;
+      if (++count == 2 && are_ends_of_one_side(face_[k], first, corners_[k]))
+        ++loops_;
+      else if (count >= 2)
         throw Soup_error(Soup_error::Kind::repeated_vertex,
                          "polygon " + std::to_string(face_[k]) + " visits vertex " + std::to_string(v) +
-                           " twice within one fan of polygons around it, which no sheet can hold",
+                           " twice within one fan of polygons around it, apart from a degenerate edge (" +
+                           std::to_string(v) + ", " + std::to_string(v) + "), which no sheet can hold",
                          {face_[k]}, {v});
       first_fan_of_vertex.emplace(v, fan[k]);
       auto [it, added] = vertex_of_fan.emplace(fan[k], v);
@@ -188,6 +200,11 @@ private:
     }
     for (std::size_t k = 0; k < corners_.size(); ++k)
       flat_.vertex[corners_[k]] = vertex_of_fan.at(fan[k]);
+  }
+  // Whether corners a and b (flat indices) of face f follow each other.
+  bool are_ends_of_one_side(u32 f, u32 a, u32 b) const
+  {
+    return next_in_face(f, a - flat_.offset[f]) == b || next_in_face(f, b - flat_.offset[f]) == a;
   }
 
   // The builder pairs two sides with the same two ends: after renaming, two
@@ -206,6 +223,7 @@ private:
 
   Face_list& flat_;
   u32 n_vertices_;
+  std::size_t loops_ = 0;
   std::vector<u32> corners_, face_, original_, lone_sides_;
   std::unordered_map<std::uint64_t, Side_count> sides_;
 };

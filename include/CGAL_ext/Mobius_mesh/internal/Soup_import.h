@@ -214,7 +214,10 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
       return P(point_of(representative.empty() ? u : representative[u]));
     },
     split, result, split_edges);
-  if (split_edges && (!copies.empty() || !fan_copies.empty()))
+  // A loop makes its vertex non-manifold without a copy: the join map (none
+  // joined) says so, and makes the functions that cannot keep it refuse.
+  const bool joined = !copies.empty() || !fan_copies.empty() || (fans && fans->number_of_loops() != 0);
+  if (joined)
     internal::record_joins(result, n_vertices, fan_copies, copies);
   // Face p is polygon p, its halfedge ending at the polygon's corner 1: what
   // the caller hangs on the corners is set now, before orientation moves them.
@@ -223,7 +226,7 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
     orient_orientable_components(result);
 
   const std::size_t n_copies = fan_copies.size() + copies.size();
-  if (n_copies != 0 && split_edges && !internal::is_pristine(mesh))
+  if (joined && !internal::is_pristine(mesh))
     internal::prepare_join_append(mesh, result);
   internal::append_mesh(mesh, std::move(result));
   return n_copies;
