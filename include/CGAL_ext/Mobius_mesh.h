@@ -1733,12 +1733,14 @@ typename Mobius_mesh<P>::Join_offsets Mobius_mesh<P>::join(const Mobius_mesh& o)
 template <class P>
 void Mobius_mesh<P>::reverse_border_halfedge(Halfedge_index g)
 {
-  const Dart d = dart(g);
-  const Dart old_next = next(d), old_prev = prev(d);
-  // What was the dart (g, unflipped) is now (g, flipped).
+  // What was the dart (g, unflipped) is now (g, flipped), also where g is
+  // its own neighbour (the border of a loop).
+  const Dart d = dart(g), turned = d.flipped();
+  auto renamed = [&](Dart x) { return x.halfedge() != g ? x : (x == d ? turned : d); };
+  const Dart old_next = renamed(next(d)), old_prev = renamed(prev(d));
   h_target_[g.idx()] = source(d);
-  set_next(d.flipped(), old_next);
-  set_next(old_prev, d.flipped());
+  set_next(turned, old_next);
+  set_next(old_prev, turned);
 }
 
 template <class P>
@@ -1776,8 +1778,11 @@ void Mobius_mesh<P>::reverse_face_orientation(Face_index f)
     if (other.is_valid() && other != f)
       set_mobius(edge(h), !is_mobius(edge(h)));
   }
-  // A vertex dart on a turned halfedge names the same walk with the other bit.
-  for (std::size_t i = 0; i < hs.size(); ++i) {
+  // A vertex dart on a turned halfedge names the same walk with the other
+  // bit (once per vertex: a face may visit one twice).
+  std::sort(sources.begin(), sources.end());
+  sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
+  for (std::size_t i = 0; i < sources.size(); ++i) {
     Dart& vd = v_halfedge_[sources[i].idx()];
     if (std::find(reversed.begin(), reversed.end(), vd.halfedge()) != reversed.end())
       vd = vd.flipped();

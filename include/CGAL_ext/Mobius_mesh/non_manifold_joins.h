@@ -43,8 +43,8 @@ enum class Non_manifold_policy {
 /// every other vertex `no_non_manifold_join` (the map's default: a vertex
 /// added later is joined to none). Made by `polygon_soup_to_mobius_mesh()`
 /// with `non_manifold_policy(Non_manifold_policy::split)` where it split
-/// anything or held a degenerate edge as a loop (then possibly with no vertex
-/// joined), and carried by subdivision.
+/// anything or a polygon visits a vertex twice within one fan of it (then
+/// possibly with no vertex joined), and carried by subdivision.
 inline constexpr const char* non_manifold_join_name = internal::non_manifold_join_map_name;
 /// \ingroup PkgMobiusMeshSoup
 /// The value of a vertex in the join map that was split off no other.

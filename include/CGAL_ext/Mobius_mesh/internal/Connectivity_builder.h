@@ -47,6 +47,11 @@ struct Face_lists
   /// vertex twice, see Repeated_vertex_split.h).
   const std::uint32_t* lone_side = nullptr;
   std::size_t n_lone_sides = 0;
+  /// Corners (flat indices, sorted) at a vertex that their face visited
+  /// before, within the same fan: where the caller has checked that a
+  /// face may visit a vertex twice (see Repeated_vertex_split.h).
+  const std::uint32_t* folded_corner = nullptr;
+  std::size_t n_folded_corners = 0;
 };
 
 /// Faces listed one after the other, in arrays of their own (on huge pages
@@ -84,9 +89,10 @@ struct Split_vertex
 /// the constructor pairs the faces' sides into edges (so that the caller
 /// can size the output), `build()` writes the links. Two faces that share an
 /// edge are connected whichever way they run along it; running the same way
-/// makes a Möbius edge. A face may visit a vertex twice only at the two ends
-/// of a lone side (`Face_lists::lone_side`), which becomes a loop: a border
-/// edge from the vertex to itself, a border loop of its own. Input that is
+/// makes a Möbius edge. A face may visit a vertex twice only at a corner the
+/// caller names (`Face_lists::folded_corner`); a lone side between two such
+/// visits becomes a loop, a border edge from the vertex to itself and a
+/// border loop of its own. Input that is
 /// not a 2-manifold throws `Soup_error` naming the faces and vertices at
 /// fault: a repeated vertex or an edge of three faces from the constructor,
 /// before anything is written; a non-manifold vertex from `build()`, whose
@@ -215,35 +221,21 @@ private:
     check_repeated_vertices_serially();
   }
 
-  // A face may visit a vertex twice only at the two ends of a lone side:
-  // a loop, a border edge from the vertex to itself.
+  // A face may visit a vertex again only at a folded corner.
   void check_repeated_vertices_serially() const
   {
-    Array seen_in_face(faces_.n_vertices, null), loops_in_face(faces_.n_vertices, null);
+    Array seen_in_face(faces_.n_vertices, null);
+    const u32* folded_end = faces_.folded_corner + faces_.n_folded_corners;
     for (u32 f = 0; f < faces_.n_faces; ++f) {
       for (u32 t = faces_.offset[f]; t < faces_.offset[f + 1]; ++t) {
         const u32 v = corner_vertex(t);
-        if (seen_in_face[v] == f && loops_in_face[v] != f && is_loop_end(t)) {
-          loops_in_face[v] = f;
-          continue;
-        }
-        if (seen_in_face[v] == f)
+        if (seen_in_face[v] == f && !std::binary_search(faces_.folded_corner, folded_end, t))
           throw Soup_error(Soup_error::Kind::repeated_vertex,
                            "polygon " + std::to_string(f) + " visits vertex " + std::to_string(v) + " twice", {f},
                            {std::size_t(v)});
         seen_in_face[v] = f;
       }
     }
-  }
-
-  // Whether corner t is the second end of a lone side from a corner at the
-  // same vertex: the corner before it, or for a face's last corner, after.
-  bool is_loop_end(std::size_t t) const
-  {
-    if (!is_face_start(t) && is_lone_side(u32(t - 1)) && corner_vertex(t - 1) == corner_vertex(t))
-      return true;
-    const std::size_t after = next_corner(t);
-    return after < t && is_lone_side(u32(t)) && corner_vertex(after) == corner_vertex(t);
   }
 
   // Each side's partner: the other side with the same two ends.

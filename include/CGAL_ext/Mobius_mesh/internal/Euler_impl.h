@@ -192,6 +192,8 @@ const char* why_not_split_face(Dart h, Dart g, const Mobius_mesh<P>& m)
     return "the darts walk the face in opposite directions";
   if (h == g || m.next(h) == g || m.next(g) == h)
     return "the new edge would join adjacent corners";
+  if (m.target(h) == m.target(g))
+    return "the corners are one vertex, which the face visits twice";
   if (are_adjacent(m.target(h), m.target(g), m))
     return "the corners are already joined by an edge";
   return nullptr;

@@ -66,10 +66,13 @@ public:
     }
     input_edges_ = mesh.number_of_edges();
     non_manifold_vertices_ = joined_vertices_;
-    // Without joins or loops every edge is its own class: nothing to
-    // classify (the writers build these classes for every mesh they write).
-    if (joined_vertices_ != 0 || has_loop(mesh)) {
-      on_non_manifold_edge_.assign(nv, false);
+    // Without joins or folded faces every edge is its own class: nothing
+    // to classify (the writers build these classes for every mesh they write).
+    const std::vector<u32> folded = folded_vertices(mesh);
+    if (joined_vertices_ != 0 || !folded.empty()) {
+      marked_non_manifold_.assign(nv, false);
+      for (u32 v : folded)
+        mark_non_manifold_vertex(v);
       classify_edges(mesh);
     }
   }
@@ -105,10 +108,10 @@ public:
   // three or more polygons, one a polygon runs along twice, or degenerate.
   bool is_non_manifold_edge(u32 e) const { return !non_manifold_edge_.empty() && non_manifold_edge_[e]; }
   // Whether vertex v is (a copy of) a non-manifold vertex of the input: one
-  // of several copies, or an end of a non-manifold edge.
+  // of several copies, an end of a non-manifold edge, or visited twice by a face.
   bool is_non_manifold_vertex(u32 v) const
   {
-    return is_joined(v) || (!on_non_manifold_edge_.empty() && on_non_manifold_edge_[v]);
+    return is_joined(v) || (!marked_non_manifold_.empty() && marked_non_manifold_[v]);
   }
   // Whether an edge from vertex a to vertex b is degenerate in the input
   // (both ends one vertex).
@@ -137,15 +140,25 @@ public:
   }
 
 private:
-  // Whether an edge of `mesh` runs from a vertex to itself (a degenerate
-  // edge of the input inside one fan, see Repeated_vertex_split.h).
+  // The vertices that a face of `mesh` visits twice (its corners there in
+  // one fan, see Repeated_vertex_split.h; a loop's face visits its vertex
+  // twice too), which OpenSubdiv's Vtr makes non-manifold; some maybe twice.
   template <class P>
-  static bool has_loop(const Mobius_mesh<P>& mesh)
+  static std::vector<u32> folded_vertices(const Mobius_mesh<P>& mesh)
   {
-    for (Edge_index e : mesh.edges())
-      if (mesh.vertex(e, 0) == mesh.vertex(e, 1))
-        return true;
-    return false;
+    std::vector<u32> seen_in(mesh.number_of_vertices(), no_join), folded;
+    for (Face_index f : mesh.faces()) {
+      const Dart start = mesh.halfedge(f);
+      Dart d = start;
+      do {
+        const u32 v = mesh.target(d).idx();
+        if (seen_in[v] == f.idx())
+          folded.push_back(v);
+        seen_in[v] = f.idx();
+        d = mesh.next(d);
+      } while (d != start);
+    }
+    return folded;
   }
 
   // The edges of the input as OpenSubdiv's Vtr makes them from the joined
@@ -242,18 +255,21 @@ private:
     non_manifold_edge_[e] = true;
     if (edge_rep_[e] == e)
       ++non_manifold_edges_;
-    for (int i = 0; i < 2; ++i) {
-      const u32 v = mesh.vertex(Edge_index(e), i).idx();
-      if (!is_joined(v) && !on_non_manifold_edge_[v]) {
-        on_non_manifold_edge_[v] = true;
-        ++non_manifold_vertices_;
-      }
+    for (int i = 0; i < 2; ++i)
+      mark_non_manifold_vertex(mesh.vertex(Edge_index(e), i).idx());
+  }
+  // Vertex v is non-manifold (counted once, at its representative).
+  void mark_non_manifold_vertex(u32 v)
+  {
+    if (!is_joined(v) && !marked_non_manifold_[v]) {
+      marked_non_manifold_[v] = true;
+      ++non_manifold_vertices_;
     }
   }
 
   std::vector<u32> rep_, members_, edge_rep_, edge_members_;
   std::vector<std::uint64_t> edge_group_;
-  std::vector<bool> non_manifold_edge_, on_non_manifold_edge_;
+  std::vector<bool> non_manifold_edge_, marked_non_manifold_; // per edge, per vertex
   std::size_t joined_vertices_ = 0, non_manifold_edges_ = 0, input_vertices_ = 0, input_edges_ = 0;
   std::size_t non_manifold_vertices_ = 0;
 };
