@@ -15,6 +15,7 @@
 #include <CGAL_ext/Merging/internal/Facing_borders.h>
 #include <CGAL_ext/Merging/internal/Merged_mesh.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/non_manifold_joins.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Mobius_mesh/internal/Coordinate_checks.h>
 #include <CGAL_ext/Named_parameters.h>
@@ -95,7 +96,9 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
                            const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_a, "merge_borders");
   CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_b, "merge_borders");
   CGAL_ext::internal::require_finite_points(mesh_a, "merge_borders");
   CGAL_ext::internal::require_finite_points(mesh_b, "merge_borders");
   if (&mesh_a == &mesh_b) {
@@ -117,6 +120,7 @@ template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh, "merge_borders");
   CGAL_ext::internal::require_finite_points(mesh, "merge_borders");
   return internal::merge_borders_impl(mesh, mesh.number_of_vertices(), true, np);
 }
@@ -226,7 +230,9 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
                            Merge_strategy strategy, const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_a, "merge_borders");
   CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_b, "merge_borders");
   if (&mesh_a == &mesh_b) {
     const Mobius_mesh<P> copy = mesh_b;
     return merge_borders(mesh_a, copy, pairing, strategy, np);

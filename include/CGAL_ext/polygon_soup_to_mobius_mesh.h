@@ -81,8 +81,8 @@ namespace CGAL_ext {
 ///                           2-manifold (an edge of three or more polygons, fans that meet
 ///                           at a vertex, a polygon that visits a vertex twice) as manifold
 ///                           sheets joined by the vertex map `non_manifold_join_name` (made
-///                           only where something was split or a polygon visits a vertex
-///                           twice), as OpenSubdiv takes such input;
+///                           only where something was split or a degenerate edge became a
+///                           loop), as OpenSubdiv takes such input;
 ///                           `refuse` throws}
 ///     \cgalParamType{`Non_manifold_policy`}
 ///     \cgalParamDefault{`Non_manifold_policy::refuse`}
@@ -98,8 +98,9 @@ namespace CGAL_ext {
 /// \returns the number of vertices added by splitting non-manifold vertices
 ///   (and edges).
 /// \throws Soup_error for an index out of range, a polygon with fewer than
-///   three vertices, a repeated vertex (but under `non_manifold_policy`
-///   `split`), an
+///   three vertices, a repeated vertex (under `non_manifold_policy` `split`
+///   only where a polygon visits a vertex twice within one fan, but for the
+///   two ends of a degenerate edge (v, v), which is held as a loop), an
 ///   edge shared by three or more polygons (unless split), a non-manifold
 ///   vertex (unless split), a non-finite coordinate.
 /// \throws Parameter_error for a negative or NaN tolerance.

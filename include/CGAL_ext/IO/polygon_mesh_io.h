@@ -302,15 +302,16 @@ void write_polygon_mesh(const std::string& filename, const Mobius_mesh<P>& mesh,
   std::vector<internal::Ply_vertex_column> ply_columns;
   if (format == internal::Mesh_format::ply)
     ply_columns = internal::ply_columns(mesh, vertex_values, filename);
+  // The join map itself is not data of the input: the joined file has none
+  // (nor has a file of a mesh whose map joins nothing, a fold's).
+  const auto is_join_map = [](const internal::Ply_vertex_column& c) {
+    return "v:" + c.name == CGAL_ext::non_manifold_join_name;
+  };
+  ply_columns.erase(std::remove_if(ply_columns.begin(), ply_columns.end(), is_join_map), ply_columns.end());
   if (joins.has_joins()) {
     internal::keep_joined_rows(points, joins, filename, "points");
     internal::keep_joined_rows(vertex_values.uv, joins, filename, "texture coordinates");
     internal::keep_joined_rows(vertex_values.normal, joins, filename, "normals");
-    // The join map itself is not data of the input: the joined file has none.
-    const auto is_join_map = [](const internal::Ply_vertex_column& c) {
-      return "v:" + c.name == CGAL_ext::non_manifold_join_name;
-    };
-    ply_columns.erase(std::remove_if(ply_columns.begin(), ply_columns.end(), is_join_map), ply_columns.end());
     for (internal::Ply_vertex_column& c : ply_columns)
       internal::keep_joined_rows(c.values, joins, filename, "values of \"" + c.name + "\"");
   }

@@ -43,8 +43,8 @@ enum class Non_manifold_policy {
 /// every other vertex `no_non_manifold_join` (the map's default: a vertex
 /// added later is joined to none). Made by `polygon_soup_to_mobius_mesh()`
 /// with `non_manifold_policy(Non_manifold_policy::split)` where it split
-/// anything or a polygon visits a vertex twice within one fan of it (then
-/// possibly with no vertex joined), and carried by subdivision.
+/// anything or held a degenerate edge as a loop (then possibly with no
+/// vertex joined), and carried by subdivision.
 inline constexpr const char* non_manifold_join_name = internal::non_manifold_join_map_name;
 /// \ingroup PkgMobiusMeshSoup
 /// The value of a vertex in the join map that was split off no other.
@@ -76,7 +76,8 @@ struct Non_manifold_counts
 {
   /// The non-manifold vertices of the input, as OpenSubdiv counts them:
   /// those that are several vertices of the mesh (where fans meet at a point
-  /// or non-manifold edges end) and the ends of non-manifold edges.
+  /// or non-manifold edges end) and the ends of non-manifold edges (a
+  /// loop's vertex too).
   std::size_t vertices = 0;
   /// The non-manifold edges of the input, as OpenSubdiv counts them: those
   /// shared by three or more polygons (several border edges of the mesh
@@ -132,6 +133,27 @@ void refuse_non_manifold_joins(const Mobius_mesh<P>& mesh, const std::string& fu
     throw Parameter_error(function + ": the mesh holds non-manifold input as sheets (the vertex map \"" +
                           non_manifold_join_name + "\"), whose joins " + function +
                           " would not keep; remove the map to work on the sheets apart");
+}
+
+// A face that visits a vertex twice (the face of a loop, a degenerate edge
+// of non-manifold input, see polygon_soup_to_mobius_mesh()) is one that
+// `function` cannot rebuild: refused, by face and vertex. Loops come only
+// with a join map.
+template <class P>
+void refuse_folded_faces(const Mobius_mesh<P>& mesh, const std::string& function)
+{
+  if (!non_manifold_join_map(mesh))
+    return;
+  std::vector<std::uint32_t> seen_in(mesh.num_vertices(), no_non_manifold_join);
+  for (Face_index f : mesh.faces())
+    for (Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (seen_in[v.idx()] == f.idx())
+        throw Parameter_error(function + ": face " + std::to_string(f.idx()) + " visits vertex " +
+                              std::to_string(v.idx()) +
+                              " twice (the face of a loop of non-manifold input), which " + function +
+                              " cannot rebuild; subdivide the mesh first, or import it without the fold");
+      seen_in[v.idx()] = f.idx();
+    }
 }
 
 } // namespace internal

@@ -92,11 +92,10 @@ struct Split_vertex
 /// makes a Möbius edge. A face may visit a vertex twice only at a corner the
 /// caller names (`Face_lists::folded_corner`); a lone side between two such
 /// visits becomes a loop, a border edge from the vertex to itself and a
-/// border loop of its own. Input that is
-/// not a 2-manifold throws `Soup_error` naming the faces and vertices at
-/// fault: a repeated vertex or an edge of three faces from the constructor,
-/// before anything is written; a non-manifold vertex from `build()`, whose
-/// output the caller then drops.
+/// border loop of its own. Input that is not a 2-manifold throws
+/// `Soup_error` naming the faces and vertices at fault: a repeated vertex or
+/// an edge of three faces from the constructor, before anything is written;
+/// a non-manifold vertex from `build()`, whose output the caller then drops.
 class Connectivity_builder
 {
 public:

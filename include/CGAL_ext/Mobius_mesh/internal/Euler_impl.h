@@ -225,6 +225,12 @@ const char* why_not_detach_face(Dart d, const Mobius_mesh<P>& m, bool keep_edges
 {
   if (m.is_border(d))
     return "the dart is on the border";
+  std::vector<Vertex_index> corners;
+  for (Dart c : CGAL_ext::halfedges_around_face(d, m))
+    corners.push_back(m.target(c));
+  std::sort(corners.begin(), corners.end());
+  if (std::adjacent_find(corners.begin(), corners.end()) != corners.end())
+    return "the face visits a vertex twice (non-manifold input), which its removal could pinch";
   for (Dart c : CGAL_ext::halfedges_around_face(d, m)) {
     const bool in_border = m.is_border(m.opposite(c)), out_border = m.is_border(m.opposite(m.next(c)));
     if (keep_edges && in_border)

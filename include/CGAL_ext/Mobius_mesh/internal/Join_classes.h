@@ -66,13 +66,12 @@ public:
     }
     input_edges_ = mesh.number_of_edges();
     non_manifold_vertices_ = joined_vertices_;
-    // Without joins or folded faces every edge is its own class: nothing
-    // to classify (the writers build these classes for every mesh they write).
-    const std::vector<u32> folded = folded_vertices(mesh);
-    if (joined_vertices_ != 0 || !folded.empty()) {
+    // Without joins or loops every edge is its own class: nothing to
+    // classify (the writers build these classes for every mesh they write).
+    // Loops come only from the import, which then makes a join map.
+    if (joined_vertices_ != 0 ||
+        (mesh.template property_map<Vertex_index, std::uint32_t>(non_manifold_join_map_name) && has_loop(mesh))) {
       marked_non_manifold_.assign(nv, false);
-      for (u32 v : folded)
-        mark_non_manifold_vertex(v);
       classify_edges(mesh);
     }
   }
@@ -108,7 +107,7 @@ public:
   // three or more polygons, one a polygon runs along twice, or degenerate.
   bool is_non_manifold_edge(u32 e) const { return !non_manifold_edge_.empty() && non_manifold_edge_[e]; }
   // Whether vertex v is (a copy of) a non-manifold vertex of the input: one
-  // of several copies, an end of a non-manifold edge, or visited twice by a face.
+  // of several copies, or an end of a non-manifold edge (a loop's too).
   bool is_non_manifold_vertex(u32 v) const
   {
     return is_joined(v) || (!marked_non_manifold_.empty() && marked_non_manifold_[v]);
@@ -140,25 +139,15 @@ public:
   }
 
 private:
-  // The vertices that a face of `mesh` visits twice (its corners there in
-  // one fan, see Repeated_vertex_split.h; a loop's face visits its vertex
-  // twice too), which OpenSubdiv's Vtr makes non-manifold; some maybe twice.
+  // Whether an edge of `mesh` runs from a vertex to itself (a degenerate
+  // edge of the input inside one fan, see Repeated_vertex_split.h).
   template <class P>
-  static std::vector<u32> folded_vertices(const Mobius_mesh<P>& mesh)
+  static bool has_loop(const Mobius_mesh<P>& mesh)
   {
-    std::vector<u32> seen_in(mesh.number_of_vertices(), no_join), folded;
-    for (Face_index f : mesh.faces()) {
-      const Dart start = mesh.halfedge(f);
-      Dart d = start;
-      do {
-        const u32 v = mesh.target(d).idx();
-        if (seen_in[v] == f.idx())
-          folded.push_back(v);
-        seen_in[v] = f.idx();
-        d = mesh.next(d);
-      } while (d != start);
-    }
-    return folded;
+    for (Edge_index e : mesh.edges())
+      if (mesh.vertex(e, 0) == mesh.vertex(e, 1))
+        return true;
+    return false;
   }
 
   // The edges of the input as OpenSubdiv's Vtr makes them from the joined

@@ -97,7 +97,9 @@ auto newell_vector(Face_index f, const Mobius_mesh<P>& mesh, const Settings& s)
   const auto p0 = get(s.points, mesh.source(first));
   auto normal = vector(CGAL::NULL_VECTOR);
   auto previous = vector(p0, get(s.points, mesh.target(first)));
-  for (Dart d = mesh.next(first); mesh.target(d) != mesh.source(first); d = mesh.next(d)) {
+  // Up to the last corner by darts, not by vertex: a face may visit a vertex
+  // twice (non-manifold input held as a folded face).
+  for (Dart d = mesh.next(first); mesh.next(d) != first; d = mesh.next(d)) {
     const auto current = vector(p0, get(s.points, mesh.target(d)));
     normal = sum(normal, cross(previous, current));
     previous = current;

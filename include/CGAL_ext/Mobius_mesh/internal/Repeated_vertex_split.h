@@ -12,10 +12,10 @@
 // repeated vertex has a vertex of its own: the corners of vertex v are
 // joined across the edges OpenSubdiv makes two-sided (a pair of distinct
 // vertices run along by exactly two polygons, once each) and every further
-// fan gets a copy of v. Then a polygon visits a vertex twice only where its
-// corners there lie in one fan (the builder is told of these folded
-// corners; a degenerate side between two of them is a loop), and the
-// builder pairs the sides as OpenSubdiv pairs them.
+// fan gets a copy of v. Then a polygon visits a vertex twice only at the
+// two ends of a degenerate side whose corners lie in one fan (a loop; the
+// builder is told of the second, folded corner), and the builder pairs the
+// sides as OpenSubdiv pairs them.
 
 #ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
@@ -29,7 +29,6 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -44,6 +43,8 @@ public:
   // Gives each further corner fan of a vertex that a polygon of `flat`
   // visits twice a new vertex (numbered from `n_vertices` on) and renames
   // its corners; `original()` then names the vertex each new one copies.
+  // Throws Soup_error where the sheets cannot hold the polygons as
+  // OpenSubdiv does (see rename_fans()).
   Repeated_vertex_split(Face_list& flat, u32 n_vertices) : flat_(flat), n_vertices_(n_vertices)
   {
     find_repeated_corners();
@@ -57,8 +58,8 @@ public:
     find_lone_sides();
   }
 
-  // How many corners of polygons are at a vertex the polygon visited
-  // before, in the same fan (see rename_fans()).
+  // How many corners of polygons are the second end of a loop, at a vertex
+  // the polygon visited before (see rename_fans()).
   std::size_t number_of_folded_corners() const { return folded_corners_.size(); }
 
   // The vertex that new vertex `n_vertices + k` copies, for each k.
@@ -172,21 +173,31 @@ private:
   static constexpr u32 no_corner = ~u32(0);
 
   // The first fan of each vertex keeps it; each further fan gets a copy. A
-  // fan that holds several corners of one polygon stays one vertex, which
-  // the polygon visits again at its further corners there (folded corners):
-  // the halfedge structure walks such a fan as any other, and OpenSubdiv
-  // makes the vertex non-manifold. Between two such corners that follow each
-  // other, a degenerate side (v, v) becomes a loop: a border edge from the
-  // vertex to itself, a border loop of its own.
+  // fan that holds two corners of one polygon cannot be a vertex of a sheet,
+  // but for the two ends of a degenerate side (v, v): the side becomes a
+  // loop, a border edge from the vertex to itself and a border loop of its
+  // own, which is what OpenSubdiv makes of it (a non-manifold edge of its
+  // own); its second corner is folded (the builder lets the polygon visit
+  // the vertex again there). Elsewhere OpenSubdiv's rule for two visits in
+  // one fan depends on where in the fan they lie: refused.
   void rename_fans(const std::vector<u32>& fan)
   {
     std::unordered_map<u32, u32> vertex_of_fan;
     std::unordered_map<u32, u32> first_fan_of_vertex;
-    std::unordered_set<std::uint64_t> faces_in_fan;
+    std::unordered_map<std::uint64_t, std::pair<u32, u32>> corners_of_face_in_fan; // (first, count)
     for (std::size_t k = 0; k < corners_.size(); ++k) {
       const u32 v = flat_.vertex[corners_[k]];
-      if (!faces_in_fan.insert(std::uint64_t(face_[k]) << 32 | fan[k]).second)
+      auto& [first, count] =
+        corners_of_face_in_fan.emplace(std::uint64_t(face_[k]) << 32 | fan[k], std::pair<u32, u32>{corners_[k], 0})
+          .first->second;
+      if (++count == 2 && are_ends_of_one_side(face_[k], first, corners_[k]))
         folded_corners_.push_back(corners_[k]); // corners_ is in flat order
+      else if (count >= 2)
+        throw Soup_error(Soup_error::Kind::repeated_vertex,
+                         "polygon " + std::to_string(face_[k]) + " visits vertex " + std::to_string(v) +
+                           " twice within one fan of polygons around it, other than at the ends of a degenerate "
+                           "edge, which no sheet holds",
+                         {face_[k]}, {v});
       first_fan_of_vertex.emplace(v, fan[k]);
       auto [it, added] = vertex_of_fan.emplace(fan[k], v);
       if (added && first_fan_of_vertex.at(v) != fan[k]) {
@@ -196,6 +207,11 @@ private:
     }
     for (std::size_t k = 0; k < corners_.size(); ++k)
       flat_.vertex[corners_[k]] = vertex_of_fan.at(fan[k]);
+  }
+  // Whether corners a and b (flat indices) of face f follow each other.
+  bool are_ends_of_one_side(u32 f, u32 a, u32 b) const
+  {
+    return next_in_face(f, a - flat_.offset[f]) == b || next_in_face(f, b - flat_.offset[f]) == a;
   }
 
   // The builder pairs two sides with the same two ends: after renaming, two

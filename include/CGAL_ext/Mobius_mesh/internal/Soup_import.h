@@ -214,11 +214,11 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
       return P(point_of(representative.empty() ? u : representative[u]));
     },
     split, result, split_edges);
-  // A polygon that visits a vertex twice in one fan makes it non-manifold
-  // without a copy: the join map (none joined) says so, and makes the
-  // functions that cannot keep non-manifold input refuse the mesh.
+  // A loop makes its vertex non-manifold without a copy: the join map (none
+  // joined) says so, and makes the functions that cannot keep non-manifold
+  // input refuse the mesh.
   const bool joined =
-    !copies.empty() || !fan_copies.empty() || (fans && fans->number_of_folded_corners() != 0);
+    split_edges && (!copies.empty() || !fan_copies.empty() || fans->number_of_folded_corners() != 0);
   if (joined)
     internal::record_joins(result, n_vertices, fan_copies, copies);
   // Face p is polygon p, its halfedge ending at the polygon's corner 1: what
