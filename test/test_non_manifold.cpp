@@ -331,16 +331,10 @@ Shape grid_with(int cell, const std::vector<int>& polygon, int removed = -1)
   return s;
 }
 
-// Each kind of repeated vertex OpenSubdiv takes: a degenerate edge (1, 1)
-// on the border; a polygon that runs along the pair (5, 6) three times; one
-// over two cells whose two visits of vertex 5 are apart, its sides all
-// distinct (its corners there in two fans). Subdivided through the sheets
-// and joined, as OpenSubdiv.
-TEST(NonManifold, polygons_that_visit_a_vertex_twice_as_opensubdiv)
+// Catmull-Clark on each shape, levels 1-3, under both boundary rules, as
+// OpenSubdiv.
+void expect_catmull_clark_as_opensubdiv(const std::vector<Shape>& shapes)
 {
-  REQUIRE_OPENSUBDIV();
-  const std::vector<Shape> shapes = {grid_with(0, {0, 1, 1, 5, 4}), grid_with(4, {5, 6, 5, 6, 10, 9}),
-                                     grid_with(4, {5, 6, 10, 9, 5, 4, 0, 1}, 0)};
   for (std::size_t k = 0; k < shapes.size(); ++k)
     for (int n = 1; n <= 3; ++n) {
       SCOPED_TRACE("shape " + std::to_string(k) + ", level " + std::to_string(n));
@@ -349,6 +343,18 @@ TEST(NonManifold, polygons_that_visit_a_vertex_twice_as_opensubdiv)
       corners.boundary = Boundary_interpolation::edge_and_corner;
       expect_opensubdiv_result(corners, Sdc::SCHEME_CATMARK, n);
     }
+}
+
+// Each kind of repeated vertex OpenSubdiv takes: a degenerate edge (1, 1)
+// on the border; a polygon that runs along the pair (5, 6) three times; one
+// over two cells whose two visits of vertex 5 are apart, its sides all
+// distinct (its corners there in two fans). Subdivided through the sheets
+// and joined, as OpenSubdiv.
+TEST(NonManifold, polygons_that_visit_a_vertex_twice_as_opensubdiv)
+{
+  REQUIRE_OPENSUBDIV();
+  expect_catmull_clark_as_opensubdiv({grid_with(0, {0, 1, 1, 5, 4}), grid_with(4, {5, 6, 5, 6, 10, 9}),
+                                      grid_with(4, {5, 6, 10, 9, 5, 4, 0, 1}, 0)});
 }
 
 // A degenerate edge at an interior vertex: the vertex's polygons form one
@@ -442,16 +448,7 @@ TEST(NonManifold, a_degenerate_edge_inside_a_fan_as_opensubdiv)
   turned.points = {Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0.2), Point(0, 1, 0.1),
                    Point(1, 1, 0.3), Point(2, 1, 0), Point(1, 2, 0.2)};
   turned.faces = {{0, 1, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 6}, {3, 5, 4, 6, 6}};
-  const std::vector<Shape> shapes = {grid_with(4, {5, 5, 6, 10, 9}), grid_with(4, {5, 6, 10, 9, 5}),
-                                     turned};
-  for (std::size_t k = 0; k < shapes.size(); ++k)
-    for (int n = 1; n <= 3; ++n) {
-      SCOPED_TRACE("shape " + std::to_string(k) + ", level " + std::to_string(n));
-      expect_opensubdiv_result(shapes[k], Sdc::SCHEME_CATMARK, n);
-      Shape corners = shapes[k];
-      corners.boundary = Boundary_interpolation::edge_and_corner;
-      expect_opensubdiv_result(corners, Sdc::SCHEME_CATMARK, n);
-    }
+  expect_catmull_clark_as_opensubdiv({grid_with(4, {5, 5, 6, 10, 9}), grid_with(4, {5, 6, 10, 9, 5}), turned});
 }
 
 TEST(NonManifold, catmull_clark_equals_opensubdiv_on_its_non_manifold_shapes)
