@@ -135,25 +135,23 @@ void refuse_non_manifold_joins(const Mobius_mesh<P>& mesh, const std::string& fu
                           " would not keep; remove the map to work on the sheets apart");
 }
 
-// A face that visits a vertex twice (the face of a loop, a degenerate edge
-// of non-manifold input, see polygon_soup_to_mobius_mesh()) is one that
+// The face of a loop (a degenerate edge of non-manifold input, see
+// polygon_soup_to_mobius_mesh()) visits the loop's vertex twice, which
 // `function` cannot rebuild: refused, by face and vertex. Loops come only
 // with a join map.
 template <class P>
-void refuse_folded_faces(const Mobius_mesh<P>& mesh, const std::string& function)
+void refuse_loops(const Mobius_mesh<P>& mesh, const std::string& function)
 {
   if (!non_manifold_join_map(mesh))
     return;
-  std::vector<std::uint32_t> seen_in(mesh.num_vertices(), no_non_manifold_join);
-  for (Face_index f : mesh.faces())
-    for (Vertex_index v : CGAL_ext::vertices_around_face(mesh.halfedge(f), mesh)) {
-      if (seen_in[v.idx()] == f.idx())
-        throw Parameter_error(function + ": face " + std::to_string(f.idx()) + " visits vertex " +
-                              std::to_string(v.idx()) +
-                              " twice (the face of a loop of non-manifold input), which " + function +
-                              " cannot rebuild; subdivide the mesh first, or import it without the fold");
-      seen_in[v.idx()] = f.idx();
-    }
+  const Edge_index loop = first_loop(mesh);
+  if (!loop.is_valid())
+    return;
+  const Halfedge_index h = mesh.halfedge(loop, mesh.is_border(mesh.halfedge(loop, 0)) ? 1 : 0);
+  throw Parameter_error(function + ": face " + std::to_string(mesh.face(h).idx()) + " visits vertex " +
+                        std::to_string(mesh.vertex(loop, 0).idx()) +
+                        " twice (the face of a loop of non-manifold input), which " + function +
+                        " cannot rebuild; subdivide the mesh first, or import it without the loop");
 }
 
 } // namespace internal

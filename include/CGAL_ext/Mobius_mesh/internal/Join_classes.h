@@ -28,6 +28,17 @@ inline constexpr const char* non_manifold_join_map_name = "v:non_manifold_join";
 // so that a vertex added later is joined to none).
 inline constexpr std::uint32_t no_join = 0xffffffffu;
 
+// The first edge of `mesh` that runs from a vertex to itself (a degenerate
+// edge of the input inside one fan, see Repeated_vertex_split.h), or null.
+template <class P>
+Edge_index first_loop(const Mobius_mesh<P>& mesh)
+{
+  for (Edge_index e : mesh.edges())
+    if (mesh.vertex(e, 0) == mesh.vertex(e, 1))
+      return e;
+  return Edge_index();
+}
+
 // Two vertices are one in the input if the join map gives them the same
 // representative; two edges are one if their ends are (an edge of the input
 // is the pair of its ends), but for the edges OpenSubdiv makes apart (see
@@ -70,8 +81,9 @@ public:
     // classify (the writers build these classes for every mesh they write).
     // Loops come only from the import, which then makes a join map.
     if (joined_vertices_ != 0 ||
-        (mesh.template property_map<Vertex_index, std::uint32_t>(non_manifold_join_map_name) && has_loop(mesh))) {
-      marked_non_manifold_.assign(nv, false);
+        (mesh.template property_map<Vertex_index, std::uint32_t>(non_manifold_join_map_name) &&
+         first_loop(mesh).is_valid())) {
+      on_non_manifold_edge_.assign(nv, false);
       classify_edges(mesh);
     }
   }
@@ -110,7 +122,7 @@ public:
   // of several copies, or an end of a non-manifold edge (a loop's too).
   bool is_non_manifold_vertex(u32 v) const
   {
-    return is_joined(v) || (!marked_non_manifold_.empty() && marked_non_manifold_[v]);
+    return is_joined(v) || (!on_non_manifold_edge_.empty() && on_non_manifold_edge_[v]);
   }
   // Whether an edge from vertex a to vertex b is degenerate in the input
   // (both ends one vertex).
@@ -139,17 +151,6 @@ public:
   }
 
 private:
-  // Whether an edge of `mesh` runs from a vertex to itself (a degenerate
-  // edge of the input inside one fan, see Repeated_vertex_split.h).
-  template <class P>
-  static bool has_loop(const Mobius_mesh<P>& mesh)
-  {
-    for (Edge_index e : mesh.edges())
-      if (mesh.vertex(e, 0) == mesh.vertex(e, 1))
-        return true;
-    return false;
-  }
-
   // The edges of the input as OpenSubdiv's Vtr makes them from the joined
   // polygons: the edges of the sheets whose ends are the same two input
   // vertices are one edge, but for a polygon that runs along the pair again
@@ -244,21 +245,18 @@ private:
     non_manifold_edge_[e] = true;
     if (edge_rep_[e] == e)
       ++non_manifold_edges_;
-    for (int i = 0; i < 2; ++i)
-      mark_non_manifold_vertex(mesh.vertex(Edge_index(e), i).idx());
-  }
-  // Vertex v is non-manifold (counted once, at its representative).
-  void mark_non_manifold_vertex(u32 v)
-  {
-    if (!is_joined(v) && !marked_non_manifold_[v]) {
-      marked_non_manifold_[v] = true;
-      ++non_manifold_vertices_;
+    for (int i = 0; i < 2; ++i) {
+      const u32 v = mesh.vertex(Edge_index(e), i).idx();
+      if (!is_joined(v) && !on_non_manifold_edge_[v]) {
+        on_non_manifold_edge_[v] = true;
+        ++non_manifold_vertices_;
+      }
     }
   }
 
   std::vector<u32> rep_, members_, edge_rep_, edge_members_;
   std::vector<std::uint64_t> edge_group_;
-  std::vector<bool> non_manifold_edge_, marked_non_manifold_; // per edge, per vertex
+  std::vector<bool> non_manifold_edge_, on_non_manifold_edge_;
   std::size_t joined_vertices_ = 0, non_manifold_edges_ = 0, input_vertices_ = 0, input_edges_ = 0;
   std::size_t non_manifold_vertices_ = 0;
 };
