@@ -1,6 +1,6 @@
 // remesh IN OUT --edge-length L [--iterations K] [--protect-borders] [--protect-sharp]
 //        [--relax-constraints] [--max-memory BYTES] [--all-iterations] [--refuse-narrow]
-//        [--project-to-limit] [--no-tags]
+//        [--project-to-limit] [--drop-corner-data] [--no-tags]
 //
 // Remeshes a polygon mesh (.obj, .off, .ply) into triangles whose edges are
 // close to L (Botsch and Kobbelt's isotropic remeshing), on any surface: a
@@ -8,13 +8,17 @@
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"orientable":true|false,
 //    "closed":true|false,"components":C,"euler_characteristic":X,"valid":true|false,
 //    "in_band":S,"iterations":I,"stopped_early":true|false,"narrow_faces":N,
-//    "narrowest_width":W,"seconds":T[,"limit_distance":D]}
+//    "narrowest_width":W,"seconds":T[,"limit_distance":D][,"corner_values_interpolated":N]
+//    [,"corner_channels_dropped":[...]]}
 // where S is the share of edges between 4/5 L and 4/3 L, I the iterations
 // run (fewer than K where the loop settled first), N the input's faces in
 // parts of the surface narrower than any triangle with sides in the band
 // (0.44 L), W the width of the narrowest (null if none), D (with
 // --project-to-limit) the largest distance from the result's vertices and
-// face centroids to the input's Catmull–Clark limit surface.
+// face centroids to the input's Catmull–Clark limit surface, N (where the
+// output has texture coordinates or normals) the values of the output that
+// the loop interpolated: seams are protected and keep their values, and the
+// other corners take the input's values where their vertices land.
 // A bad file or option, a result larger than --max-memory, a narrow surface
 // with --refuse-narrow: one line on stderr, exit status 2.
 
@@ -58,13 +62,14 @@ const examples::Tool_usage usage{
   "  --project-to-limit   take IN as a subdivision cage: vertices go onto its Catmull-Clark\n"
   "                       limit surface (OBJ crease tags read) instead of onto its faces, and\n"
   "                       the JSON line says how far the result lies from it (limit_distance)\n"
-  "  --drop-corner-data   go on without the input's texture coordinates and normals, which\n"
-  "                       remeshing does not carry (an input with them is refused otherwise)\n"
+  "  --drop-corner-data   go on without the input's texture coordinates and normals\n"
   "  --no-tags            an OBJ OUT without OpenSubdiv's tag lines (the sharp edges), which\n"
   "                       CGAL's reader refuses\n"
   "Writes OUT and prints its counts, topology, the share of edges between 4/5 L and 4/3 L, the\n"
   "iterations run, whether the loop settled early, the input's faces in narrow parts and the\n"
-  "narrowest's width, and the time taken as one line of JSON.\n"};
+  "narrowest's width, and the time taken as one line of JSON. Texture coordinates and normals\n"
+  "are carried: their seams are protected (neither split, collapsed, flipped nor moved) and keep\n"
+  "their values; elsewhere each corner takes the input's value where its vertex lands.\n"};
 
 template <class Mesh>
 double share_in_band(const Mesh& mesh, double L)
@@ -102,8 +107,8 @@ int remesh(int argc, char** argv)
   Mesh mesh;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
   CGAL_ext::IO::read_polygon_mesh(args.positional[0], mesh);
-  const examples::Json_array dropped = examples::drop_corner_channels_if(
-    mesh, "remeshing does not carry them", args.has(examples::drop_corner_data_flag));
+  const bool drop = args.has(examples::drop_corner_data_flag);
+  const examples::Json_array dropped = examples::drop_corner_channels_if(mesh, drop ? "asked" : "", drop);
   const auto start = std::chrono::steady_clock::now();
   const auto np = CGAL_ext::parameters::number_of_iterations(unsigned(iterations))
                     .protect_borders(args.has("--protect-borders"))
@@ -137,7 +142,9 @@ int remesh(int argc, char** argv)
     .add("seconds", seconds);
   if (args.has("--project-to-limit"))
     line.add("limit_distance", examples::limit_distance(mesh, *cage));
-  if (args.has(examples::drop_corner_data_flag))
+  if (!mesh.corner_channels().empty())
+    line.add("corner_values_interpolated", result.corner_values_interpolated);
+  if (drop)
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);
   return 0;

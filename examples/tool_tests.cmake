@@ -27,28 +27,32 @@ if(CGAL_EXT_BUILD_TESTS)
   endforeach()
 endif()
 
-# The tool whose operation does not carry texture coordinates and normals
-# (remeshing) refuses an input with them before the work; it, decimate and
-# offset go on without them with --drop-corner-data, which they report.
+# Decimate, remesh and offset go on without texture coordinates and normals
+# with --drop-corner-data, which they report; remesh carries them otherwise,
+# every face of a UV-mapped Möbius strip written with its corners' values.
 if(CGAL_EXT_BUILD_TESTS)
   set(_cube ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube.obj)
   set(_corner_out ${CMAKE_CURRENT_BINARY_DIR}/tool_output)
   file(MAKE_DIRECTORY ${_corner_out})
   set(_corner_decimate "--ratio;0.5;--no-hausdorff")
   set(_corner_remesh "--edge-length;0.5")
-  set(_corner_remesh_says "remeshing does not carry them")
   set(_corner_offset "--distance;0.1")
   foreach(_tool decimate remesh offset)
-    if(_tool STREQUAL "remesh")
-      cgal_ext_tool_fails(${_tool}.corner_channels_refused ${_tool}
-        "${_cube};${_corner_out}/corner_${_tool}.obj;${_corner_${_tool}}"
-        "^${_tool}: the input's corner channels \\(c:uv, c:normal\\) cannot be carried: ${_corner_${_tool}_says}; --drop-corner-data goes on without them\n$")
-    endif()
     add_test(NAME ${_tool}.corner_channels_dropped
       COMMAND ${_tool} ${_cube} ${_corner_out}/corner_${_tool}.obj ${_corner_${_tool}} --drop-corner-data)
     set_tests_properties(${_tool}.corner_channels_dropped PROPERTIES PASS_REGULAR_EXPRESSION
       "\"corner_channels_dropped\":\\[\"c:uv\",\"c:normal\"\\]}\n$")
   endforeach()
+  set(_strip_uv ${PROJECT_SOURCE_DIR}/test/data/uv/mobius_12x2_uv.obj)
+  add_test(NAME remesh.corner_channels_carried
+    COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:remesh>
+            "-DARGS=${_strip_uv};${_corner_out}/remesh_uv.obj;--edge-length;0.2;--iterations;3"
+            -DOUT=${_corner_out}/remesh_uv.obj "-DCOUNT_REGEX=^f [0-9]+/[0-9]+ [0-9]+/[0-9]+ [0-9]+/[0-9]+$" -DMIN_COUNT=100
+            -P ${PROJECT_SOURCE_DIR}/examples/expect_output_lines.cmake)
+  add_test(NAME remesh.corner_values_interpolated
+    COMMAND remesh ${_strip_uv} ${_corner_out}/remesh_uv_json.obj --edge-length 0.2 --iterations 3)
+  set_tests_properties(remesh.corner_values_interpolated PROPERTIES PASS_REGULAR_EXPRESSION
+    "\"orientable\":false,.*\"corner_values_interpolated\":[1-9][0-9]*}\n$")
 
   # --no-tags: the tools whose output keeps the input's creases (OpenSubdiv's
   # cube with 12 creased edges) write them as 't crease' lines by default, and

@@ -28,10 +28,11 @@ LAYERS = [
     (r"internal/[^/]+\.h", 0, "core utilities"),
     (r"(exceptions|Named_parameters|Sharp_feature_options|Mobius_mesh/Vertex_normal_weighting)\.h", 0, "core"),
     # 2, ahead of the rest of Mobius_mesh/internal/: the checks of a collapse
-    # are built on the Euler operations, and serve the algorithms that collapse.
+    # are built on the Euler operations, and serve the algorithms that collapse
+    # (with the rules of the corner channels through collapses, splits and moves).
     # So are the engines of the mesh algorithms of Mobius_mesh/ that build on
     # other mesh algorithms (the Euler operations, copies, the topology).
-    (r"Mobius_mesh/internal/(Collapse_checks|Fan_triangulation|Shape_builders|Soup_import|Mesh_copy|Two_sided_geometry|Normal_transformation)\.h", 2,
+    (r"Mobius_mesh/internal/(Collapse_checks|Corner_channel_edits|Fan_triangulation|Shape_builders|Soup_import|Mesh_copy|Two_sided_geometry|Normal_transformation)\.h", 2,
      "mesh algorithms"),
     # 1: the mesh and its internals.
     (r"Mobius_mesh\.h", 1, "mesh"),

@@ -54,6 +54,9 @@ struct Isotropic_remeshing_result
   /// The width of the narrowest of them (twice its area over its longest
   /// side); infinity if there is none.
   double narrowest_width = std::numeric_limits<double>::infinity();
+  /// The values of the result's corner channels that the loop made (at
+  /// split, collapsed and moved vertices), interpolated from the input's.
+  std::size_t corner_values_interpolated = 0;
 };
 
 namespace internal {
@@ -96,6 +99,25 @@ limit_surface_to_project_on(const Mobius_mesh<P>& mesh, const NP& np)
 /// works across Möbius edges. What makes the surface what it is stays: the
 /// Euler characteristic, the number of border loops, orientability (a Möbius
 /// strip stays one non-orientable strip), the number of components.
+///
+/// Corner channels (texture coordinates, corner normals: see
+/// `Mobius_mesh::add_corner_channel()`) are carried. The seams of each
+/// channel (edges whose two faces hold different value indices at an end)
+/// are protected whatever the parameters say: neither split, collapsed nor
+/// flipped, their vertices never move (`relax_constraints` leaves them too),
+/// so every seam keeps its vertices and their values on either side. Off the
+/// seams the values are interpolated linearly on the mesh as it is: a split's
+/// new vertex takes the value halfway along the edge; a collapse into a
+/// midpoint, the value halfway between its ends, and one into a seam vertex,
+/// that vertex's value on the side of the edge; a vertex that moves, the
+/// value at its new point of the triangle of its star that holds it (the
+/// point projected onto the triangle's plane); a flip keeps each corner's
+/// value. So a channel that is linear on the input's triangles (texture
+/// coordinates of a plane's points, say) stays exact up to rounding; on a
+/// curved surface the values drift with the moves, as the positions drift
+/// on the surface. Values are appended, never changed in place; those that
+/// no corner names at the end are dropped, and the others keep their order.
+/// Channels whose values have no linear combination are refused.
 ///
 /// Faces that are not triangles are first split into triangles by
 /// `triangulate_faces()`. The mesh must have no removed elements; the
@@ -208,8 +230,8 @@ limit_surface_to_project_on(const Mobius_mesh<P>& mesh, const NP& np)
 /// and the faces of the input's narrow parts.
 /// \throws Parameter_error if L is not positive and finite, the number of
 /// iterations is out of range, `maximum_memory` is not positive, `mesh` has
-/// removed elements or a corner channel (the remeshed faces have no rule for
-/// the corners: remove the channels, or remesh a copy without them), an edge's sharpness is NaN or negative (with
+/// removed elements, a corner channel whose values have no linear combination
+/// or a corner whose value index is past its values, an edge's sharpness is NaN or negative (with
 /// `protect_sharp_edges(true)`), a point has a coordinate beyond +-1e60 (where
 /// squared lengths and normals in double overflow), the mesh is less than
 /// 1e-60 across (where they underflow), or L is under 1024 times the spacing
@@ -235,8 +257,8 @@ Isotropic_remeshing_result isotropic_remeshing(Mobius_mesh<P>& mesh, double targ
   internal::Remeshing_options options = internal::remeshing_options(target_edge_length, np);
   internal::require_no_garbage(mesh, "isotropic_remeshing");
   internal::refuse_non_manifold_joins(mesh, "isotropic_remeshing");
-  internal::refuse_corner_channels(mesh, "isotropic_remeshing",
-                                   "splits, collapses, flips and relaxation move corners off the faces they belong to");
+  internal::require_interpolated_channels<typename CGAL::Kernel_traits<P>::Kernel::FT>(mesh, "isotropic_remeshing");
+  internal::require_valid_corner_indices(mesh, "isotropic_remeshing");
   const double largest_coordinate = internal::require_coordinates_in_range(mesh, "isotropic_remeshing");
   internal::require_length_resolved(largest_coordinate, target_edge_length, "isotropic_remeshing");
   if (options.protect_sharp_edges)
@@ -269,6 +291,7 @@ Isotropic_remeshing_result isotropic_remeshing(Mobius_mesh<P>& mesh, double targ
       return internal::Remeshing_point(CGAL::to_double(on.x()), CGAL::to_double(on.y()), CGAL::to_double(on.z()));
     };
   const Mobius_mesh<P> before = mesh;
+  const std::vector<std::size_t> values_before = internal::corner_value_counts(mesh);
   try {
     triangulate_faces(mesh);
     {
@@ -287,6 +310,8 @@ Isotropic_remeshing_result isotropic_remeshing(Mobius_mesh<P>& mesh, double targ
       result.share_in_band = run.share_in_band;
     }
     mesh.collect_garbage();
+    result.corner_values_interpolated = internal::added_values_in_use(mesh, values_before);
+    internal::remove_unused_corner_values(mesh);
   } catch (...) {
     mesh = before;
     throw;

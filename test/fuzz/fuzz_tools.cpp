@@ -112,6 +112,17 @@ void subdivide(Mesh& m, const std::array<std::uint8_t, 4>& o)
   }
 }
 
+// Every corner of `out` that names a value of the channel (as the readers
+// type it) names one it has.
+template <class T>
+void check_channel(const Mesh& out, const char* name)
+{
+  if (const auto channel = out.corner_channel<T>(name))
+    for (CGAL_ext::Halfedge_index h : out.halfedges())
+      check(!channel->has_value(h) || channel->index(h) < channel->number_of_values(),
+            "a corner names a value its channel does not have");
+}
+
 void decimate(Mesh& m, const std::array<std::uint8_t, 4>& o)
 {
   const auto np = CGAL_ext::parameters::face_ratio(fraction(o[0]))
@@ -130,7 +141,11 @@ void remesh(Mesh& m, const std::array<std::uint8_t, 4>& o)
                     .protect_borders((o[2] & 1) != 0)
                     .relax_constraints((o[2] & 2) != 0)
                     .maximum_memory(memory_limit);
+  const std::vector<std::string> channels = m.corner_channels();
   CGAL_ext::isotropic_remeshing(m, length, np);
+  check(m.corner_channels() == channels, "the remeshing lost or made a corner channel");
+  check_channel<CGAL_ext::Corner_uv<Point>>(m, CGAL_ext::corner_uv_name);
+  check_channel<CGAL_ext::Corner_normal<Point>>(m, CGAL_ext::corner_normal_name);
 }
 
 void merge(Mesh& m, const std::array<std::uint8_t, 4>& o)
@@ -147,17 +162,6 @@ void merge(Mesh& m, const std::array<std::uint8_t, 4>& o)
     other.point(v) = other.point(v) + CGAL::Simple_cartesian<double>::Vector_3(shift, 0, 0);
   const auto strategy = CGAL_ext::Merge_strategy(o[3] % 4);
   CGAL_ext::merge_borders(m, other, CGAL_ext::facing_borders(m, other), strategy);
-}
-
-// Every corner of `out` that names a value of the channel (as the readers
-// type it) names one it has.
-template <class T>
-void check_channel(const Mesh& out, const char* name)
-{
-  if (const auto channel = out.corner_channel<T>(name))
-    for (CGAL_ext::Halfedge_index h : out.halfedges())
-      check(!channel->has_value(h) || channel->index(h) < channel->number_of_values(),
-            "a corner names a value its channel does not have");
 }
 
 void offset(Mesh& m, const std::array<std::uint8_t, 4>& o)

@@ -48,9 +48,9 @@
 ///   `join_face()` each corner of the merged face has the value one of the
 ///   two faces had there; after `join_vertex()` and `collapse_edge()` the
 ///   faces that were around the removed vertex keep its values at the kept
-///   vertex (a seam there unless the values agree). Decimation sets the
-///   corners round a collapse by rules of its own (`decimate()`); algorithms
-///   with no rule for the corners they edit (remeshing) refuse channels.
+///   vertex (a seam there unless the values agree). Decimation and
+///   remeshing set the corners round their edits by rules of their own
+///   (`decimate()`, `isotropic_remeshing()`).
 
 namespace CGAL_ext {
 namespace Euler {

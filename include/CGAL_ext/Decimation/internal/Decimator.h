@@ -8,7 +8,7 @@
 #define CGAL_EXT_DECIMATION_INTERNAL_DECIMATOR_H
 
 #include <CGAL_ext/Decimation/Decimation_result.h>
-#include <CGAL_ext/Decimation/internal/Corner_merging.h>
+#include <CGAL_ext/Mobius_mesh/internal/Corner_channel_edits.h>
 #include <CGAL_ext/Decimation/internal/Decimation_settings.h>
 #include <CGAL_ext/Decimation/internal/Quadric.h>
 #include <CGAL_ext/Mobius_mesh.h>
@@ -44,7 +44,7 @@ struct Collapse_candidate
 // The Garland–Heckbert state of a decimation: per-vertex quadrics and plane
 // areas, feature flags and costs per edge, CGAL's modifiable priority queue
 // of the edges by cost (one entry per edge, updated in place), and the corner
-// channels' seams and merges (Corner_merging.h).
+// channels' seams and merges (Corner_channel_edits.h).
 template <class P>
 class Decimator
 {
@@ -244,7 +244,7 @@ private:
   std::optional<typename Mobius_mesh<P>::template Property_map<Edge_index, float>> sharpness_;
   Collapse_options options_;
   CGAL::Modifiable_priority_queue<Edge_index, Cheaper, Edge_id> queue_;
-  Corner_merging<P> corners_; // after feature_, to which it adds the seams
+  Corner_channel_edits<P> corners_; // after feature_, to which it adds the seams
 };
 
 // Collapses the edge `e` to `c` if check_collapse() allows it one way or the
@@ -274,7 +274,7 @@ bool Decimator<P>::collapse(Edge_index e, const Collapse_candidate& c)
   std::vector<std::pair<char, float>> side_values; // read before the collapse removes one of each pair
   for (Edge_index s : sides)
     side_values.emplace_back(feature_[s.idx()], sharpness_ ? (*sharpness_)[s] : 0.f);
-  const typename Corner_merging<P>::Plan corner_plan = corners_.plan(d, point); // read before the collapse
+  const typename Corner_channel_edits<P>::Plan corner_plan = corners_.plan(d, point); // read before the collapse
   Euler::collapse_edge(d, m_, Euler::unchecked); // check_collapse() checked the link condition
   corners_.apply(corner_plan, q);
   corners_.merge_flags(p, q);

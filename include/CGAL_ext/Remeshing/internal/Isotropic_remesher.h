@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The loop of isotropic_remeshing(): Botsch and Kobbelt's split / collapse /
-// flip / relax / project, on darts, so that it runs across Möbius edges.
+// flip / relax / project, on darts, so that it runs across Möbius edges, with
+// the corner channels carried (Corner_channel_edits.h: seams are protected).
 
 #ifndef CGAL_EXT_REMESHING_INTERNAL_ISOTROPIC_REMESHER_H
 #define CGAL_EXT_REMESHING_INTERNAL_ISOTROPIC_REMESHER_H
@@ -10,10 +11,12 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
+#include <CGAL_ext/Mobius_mesh/internal/Corner_channel_edits.h>
 #include <CGAL_ext/Remeshing/internal/Constraint_polylines.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
 #include <CGAL_ext/Sharp_feature_options.h>
+#include <CGAL_ext/internal/Union_find.h>
 #include <CGAL_ext/exceptions.h>
 
 #include <CGAL/AABB_segment_primitive.h>
@@ -34,6 +37,7 @@
 #include <optional>
 #include <queue>
 #include <sstream>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -139,6 +143,16 @@ public:
 
   Remeshing_point closest_on_faces(const Remeshing_point& p) const { return faces_tree_.closest_point(p); }
 
+  // The input triangle closest to p (its rank among the input's faces) and
+  // the barycentric coordinates of the closest point in it.
+  std::pair<std::size_t, std::array<double, 3>> closest_triangle(const Remeshing_point& p) const
+  {
+    const auto [point, triangle] = faces_tree_.closest_point_and_primitive(p);
+    const auto d = [](const Remeshing_point& x) { return Point_d{x.x(), x.y(), x.z()}; };
+    return {std::size_t(triangle - triangles_.begin()),
+            barycentric_d(d(triangle->vertex(0)), d(triangle->vertex(1)), d(triangle->vertex(2)), d(point))};
+  }
+
   // A border vertex stays on its own border loop of the input: the closest
   // point there. The tree of all loops answers first; only where its answer
   // is on another loop is a tree of that loop alone built (once) and asked.
@@ -231,9 +245,11 @@ public:
       // Botsch and Kobbelt's band, as in CGAL: 4/5 L and 4/3 L.
       low2_(square(0.8 * options.target_edge_length)), high2_(square(4.0 / 3.0 * options.target_edge_length)),
       needle2_(square(narrowest_band_triangle() * options.target_edge_length)),
-      sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name))
+      sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name)), corners_(mesh)
   {
     collapse_options_.is_protected = [this](Edge_index e) { return is_protected(e); };
+    if (corners_.has_channels())
+      keep_input_charts();
     if (options.relax_constraints && (options.protect_borders || options.protect_sharp_edges))
       polylines_.emplace(
         mesh, [this](Edge_index e) { return is_protected(e); }, [this](Vertex_index v) { return approximate(v); });
@@ -323,11 +339,22 @@ private:
     return CGAL::to_double(CGAL::squared_distance(mesh_.point(mesh_.vertex(e, 0)), mesh_.point(mesh_.vertex(e, 1))));
   }
 
+  // Borders and sharp edges as asked; the seams of corner channels always.
   bool is_protected(Edge_index e) const
   {
     if (options_.protect_borders && mesh_.is_border(e))
       return true;
-    return options_.protect_sharp_edges && sharpness_ && (*sharpness_)[e] > 0;
+    return (options_.protect_sharp_edges && sharpness_ && (*sharpness_)[e] > 0) || corners_.is_seam(e);
+  }
+
+  // Whether v is an end of a seam of a corner channel.
+  bool is_on_seam(Vertex_index v) const
+  {
+    if (corners_.has_channels())
+      for (Edge_index e : CGAL_ext::edges_around_target(v, mesh_))
+        if (corners_.is_seam(e))
+          return true;
+    return false;
   }
 
   // A vertex on a protected edge is never removed and relax_and_project()
@@ -503,9 +530,11 @@ private:
     const Dart d = Mesh::halfedge(e);
     const Face_index sides[2] = {mesh_.face(d), mesh_.face(mesh_.opposite(d))};
     const P middle = CGAL::midpoint(mesh_.point(mesh_.source(d)), mesh_.point(mesh_.target(d)));
+    const auto corner_plan = corners_.split_plan(d); // read before the split
     const Dart n = Euler::split_edge(d, mesh_);
     const Vertex_index w = mesh_.target(n);
     mesh_.point(w) = middle;
+    corners_.apply_split(corner_plan, w); // before split_face(), which copies them
     if (sharpness_) // both halves keep the edge's sharpness
       (*sharpness_)[mesh_.edge(n)] = (*sharpness_)[e];
     // Both halves of a border edge are on its loop (the inner edges made below are on none).
@@ -518,6 +547,13 @@ private:
         continue;
       const Dart into = dart_into_in_face(w, f);
       Euler::split_face(into, mesh_.next(mesh_.next(into)), mesh_);
+    }
+    if (!chart_.empty()) { // the faces round w are on the split edge's side of the seams
+      const std::uint32_t chart = chart_[(sides[0].is_valid() ? sides[0] : sides[1]).idx()];
+      chart_.resize(mesh_.num_faces(), chart);
+      for (Dart h : CGAL_ext::halfedges_around_target(mesh_.halfedge(w), mesh_))
+        if (!mesh_.is_border(h))
+          chart_[mesh_.face(h).idx()] = chart;
     }
     check_star(w);
     return {mesh_.edge(n), w};
@@ -603,8 +639,13 @@ private:
         continue;
       }
       const auto merged = merged_edges(c);
+      const auto corner_plan = corners_.plan(c, to); // read before the collapse
+      const auto charts = charts_around(c);
       Euler::collapse_edge(c, mesh_, Euler::unchecked); // check_collapse() checked the link condition
       mesh_.point(kept) = to;
+      corners_.apply(corner_plan, kept);
+      restore_charts(charts, kept);
+      corners_.merge_flags(gone, kept);
       // Of two sides of a triangle that become one edge, collapse_edge()
       // keeps one index: it keeps the sharpness of both, and the border loop
       // of either (an inner side merged with a border one is on the border).
@@ -618,6 +659,41 @@ private:
       return kept;
     }
     return Vertex_index();
+  }
+
+  // The charts of the faces round both ends of c but the two along it, by
+  // their vertices other than the ends (which the collapse of c makes one):
+  // Euler::collapse_edge() may give a face round the kept vertex the index
+  // of a face it removes.
+  using Face_charts = std::vector<std::tuple<Vertex_index, Vertex_index, std::uint32_t>>;
+  Face_charts charts_around(Dart c) const
+  {
+    Face_charts charts;
+    if (chart_.empty())
+      return charts;
+    const Face_index along[2] = {mesh_.face(c), mesh_.face(mesh_.opposite(c))};
+    for (Dart side : {c, mesh_.opposite(c)})
+      for (Dart h : CGAL_ext::halfedges_around_target(side, mesh_))
+        if (!mesh_.is_border(h) && mesh_.face(h) != along[0] && mesh_.face(h) != along[1])
+          charts.emplace_back((std::min)(mesh_.source(h), mesh_.target(mesh_.next(h))),
+                              (std::max)(mesh_.source(h), mesh_.target(mesh_.next(h))), chart_[mesh_.face(h).idx()]);
+    std::sort(charts.begin(), charts.end());
+    return charts;
+  }
+  void restore_charts(const Face_charts& charts, Vertex_index kept)
+  {
+    if (chart_.empty())
+      return;
+    for (Dart h : CGAL_ext::halfedges_around_target(mesh_.halfedge(kept), mesh_)) {
+      if (mesh_.is_border(h))
+        continue;
+      const Vertex_index x = (std::min)(mesh_.source(h), mesh_.target(mesh_.next(h))),
+                         y = (std::max)(mesh_.source(h), mesh_.target(mesh_.next(h)));
+      const auto at = std::lower_bound(charts.begin(), charts.end(), std::make_tuple(x, y, std::uint32_t(0)));
+      CGAL_assertion(at != charts.end() && std::get<0>(*at) == x && std::get<1>(*at) == y);
+      if (at != charts.end() && std::get<0>(*at) == x && std::get<1>(*at) == y)
+        chart_[mesh_.face(h).idx()] = std::get<2>(*at);
+    }
   }
 
   int valence_deviation(Vertex_index v, int change) const
@@ -671,12 +747,20 @@ private:
 
   Remeshing_point approximate(Vertex_index v) const { return to_remeshing_point(mesh_.point(v)); }
 
-  // Triangles (a, b, c) and (b, a, x) in one orientation become (a, x, c) and (x, b, c).
+  // Triangles (a, b, c) and (b, a, x) in one orientation become (a, x, c)
+  // and (x, b, c): each must face the old pair's side and keep an area (a
+  // rounding error's normal may face either way, as where c, x and a lie on
+  // one protected line), by the collapses' measure of degeneracy.
   bool flip_keeps_side(Vertex_index a, Vertex_index b, Vertex_index c, Vertex_index x) const
   {
     const Remeshing_point pa = approximate(a), pb = approximate(b), pc = approximate(c), px = approximate(x);
     const Remeshing_vector old_side = triangle_normal(pa, pb, pc) + triangle_normal(pb, pa, px);
-    return old_side * triangle_normal(pa, px, pc) > 0 && old_side * triangle_normal(px, pb, pc) > 0;
+    const auto sound = [&](const Remeshing_point& p, const Remeshing_point& q, const Remeshing_point& r) {
+      const Remeshing_vector n = triangle_normal(p, q, r);
+      const double longest = (std::max)({(q - p).squared_length(), (r - q).squared_length(), (p - r).squared_length()});
+      return old_side * n > 0 && n.squared_length() > square(collapse_options_.min_relative_area * longest);
+    };
+    return sound(pa, px, pc) && sound(px, pb, pc);
   }
 
   // Every free vertex moves to the area-weighted centroid of its triangles,
@@ -689,11 +773,21 @@ private:
       if (mesh_.is_isolated(v) || is_fixed(v))
         continue;
       const std::optional<Remeshing_point> to = mesh_.is_border(v) ? border_position(v) : inner_position(v);
-      if (!to || !remeshing_move_keeps_sides(mesh_.halfedge(v), *to, mesh_))
-        continue;
-      mesh_.point(v) = P(to->x(), to->y(), to->z());
-      check_star(v);
+      if (to && remeshing_move_keeps_sides(mesh_.halfedge(v), *to, mesh_))
+        move_vertex(v, *to);
     }
+  }
+
+  // Moves v (off the seams, or the seams' values would not follow) to `to`,
+  // its corners taking the values there.
+  void move_vertex(Vertex_index v, const Remeshing_point& to)
+  {
+    CGAL_assertion(!corners_.is_seam_vertex(v));
+    const P point(to.x(), to.y(), to.z());
+    const std::vector<std::uint32_t> corner_plan = move_plan(v, to, point); // read before the move
+    mesh_.point(v) = point;
+    corners_.apply_move(corner_plan, v);
+    check_star(v);
   }
 
   // Moves v to `at(fraction)` for the largest of 1, 1/2, ... 1/16 that turns
@@ -705,8 +799,7 @@ private:
     for (double fraction = 1; fraction > 0.05; fraction /= 2) {
       const Remeshing_point to = at(fraction);
       if (remeshing_move_keeps_sides(mesh_.halfedge(v), to, mesh_)) {
-        mesh_.point(v) = P(to.x(), to.y(), to.z());
-        check_star(v);
+        move_vertex(v, to);
         return fraction;
       }
     }
@@ -730,9 +823,51 @@ private:
     }
   }
 
+  // The corner values of v moved to `to`: the input's there, from the
+  // input triangle nearest to it if that triangle lies in v's chart (a
+  // region of the input that no seam cuts), so that values do not drift
+  // with the moves; else, as beside a seam the nearest triangle may be on
+  // its other side, interpolated in v's star.
+  std::vector<std::uint32_t> move_plan(Vertex_index v, const Remeshing_point& to, const P& point) const
+  {
+    if (!corners_.has_channels())
+      return {};
+    const auto [triangle, weight] = input_.closest_triangle(to);
+    for (Dart h : CGAL_ext::halfedges_around_target(mesh_.halfedge(v), mesh_))
+      if (!mesh_.is_border(h)) {
+        if (input_chart_[triangle] != chart_[mesh_.face(h).idx()])
+          break;
+        const auto first = input_corners_.begin() + std::ptrdiff_t(triangle * corners_per_triangle_);
+        return corners_.move_plan(v, std::vector<std::uint32_t>(first, first + std::ptrdiff_t(corners_per_triangle_)),
+                                  weight);
+      }
+    return corners_.move_plan(v, point);
+  }
+
+  // The charts of the input (its faces joined across every edge but the
+  // seams), by face, and the corner indices of each input triangle, in the
+  // order of input_'s triangles; chart_ starts as input_chart_ and follows
+  // the faces.
+  void keep_input_charts()
+  {
+    Union_find charts(std::uint32_t(mesh_.num_faces()));
+    for (Edge_index e : mesh_.edges())
+      if (!mesh_.is_border(e) && !corners_.is_seam(e))
+        charts.unite(mesh_.face(Mesh::halfedge(e)).idx(), mesh_.face(mesh_.opposite(Mesh::halfedge(e))).idx());
+    chart_.resize(mesh_.num_faces());
+    for (Face_index f : mesh_.faces()) {
+      chart_[f.idx()] = charts.find(f.idx());
+      input_chart_.push_back(chart_[f.idx()]);
+      const std::vector<std::uint32_t> corners = corners_.triangle_corners(f);
+      corners_per_triangle_ = corners.size();
+      input_corners_.insert(input_corners_.end(), corners.begin(), corners.end());
+    }
+  }
+
   // relax_constraints: each vertex of a protected polyline but its corners
   // slides along the input's polyline (see Constraint_polylines); any part
-  // of a move stays on the polyline.
+  // of a move stays on the polyline. The vertices of seams stay: their
+  // corners on either side hold the input's values.
   void slide_along_constraints()
   {
     if (!polylines_)
@@ -740,6 +875,8 @@ private:
     for (const Polyline_move& move : polylines_->relaxation_moves()) {
       const Vertex_index v = polylines_->vertex(move);
       CGAL_assertion(!mesh_.is_removed(v) && is_fixed(v));
+      if (is_on_seam(v))
+        continue;
       const double done = move_keeping_sides(v, [&](double fraction) { return polylines_->point_after(move, fraction); });
       if (done > 0)
         polylines_->commit(move, done);
@@ -824,6 +961,11 @@ private:
   const double needle2_; // the square of the width under which a triangle is a needle (is_needle())
   std::vector<char> made_by_split_; // during split_long_edges(), by edge index: made by a split, not there before
   std::optional<Sharpness_map> sharpness_;
+  Corner_channel_edits<P> corners_; // the corner channels' rules, none without channels
+  // With corner channels (keep_input_charts()): by input triangle, its chart
+  // and its corners' value indices (corners_per_triangle_ each); by face, its chart.
+  std::vector<std::uint32_t> input_chart_, input_corners_, chart_;
+  std::size_t corners_per_triangle_ = 0;
   Collapse_options collapse_options_;
   std::optional<Constraint_polylines> polylines_; // with relax_constraints only
 };
