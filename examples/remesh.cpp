@@ -8,8 +8,8 @@
 //   {"vertices":V,"edges":E,"faces":F,"border_loops":B,"orientable":true|false,
 //    "closed":true|false,"components":C,"euler_characteristic":X,"valid":true|false,
 //    "in_band":S,"iterations":I,"stopped_early":true|false,"narrow_faces":N,
-//    "narrowest_width":W,"seconds":T[,"limit_distance":D][,"corner_values_interpolated":N]
-//    [,"corner_channels_dropped":[...]]}
+//    "narrowest_width":W,"seconds":T[,"limit_distance":D][,"corner_values_interpolated":N,
+//    "seam_edges_protected":M][,"corner_channels_dropped":[...]]}
 // where S is the share of edges between 4/5 L and 4/3 L, I the iterations
 // run (fewer than K where the loop settled first), N the input's faces in
 // parts of the surface narrower than any triangle with sides in the band
@@ -17,8 +17,9 @@
 // --project-to-limit) the largest distance from the result's vertices and
 // face centroids to the input's Catmull–Clark limit surface, N (where the
 // output has texture coordinates or normals) the values of the output that
-// the loop interpolated: seams are protected and keep their values, and the
-// other corners take the input's values where their vertices land.
+// the loop interpolated (seams are protected and keep their values, and the
+// other corners take the input's values where their vertices land), M the
+// seam edges it left as they were.
 // A bad file or option, a result larger than --max-memory, a narrow surface
 // with --refuse-narrow: one line on stderr, exit status 2.
 
@@ -143,7 +144,8 @@ int remesh(int argc, char** argv)
   if (args.has("--project-to-limit"))
     line.add("limit_distance", examples::limit_distance(mesh, *cage));
   if (!mesh.corner_channels().empty())
-    line.add("corner_values_interpolated", result.corner_values_interpolated);
+    line.add("corner_values_interpolated", result.corner_values_interpolated)
+      .add("seam_edges_protected", result.seam_edges_protected);
   if (drop)
     line.add("corner_channels_dropped", dropped);
   examples::print_json_line(line);

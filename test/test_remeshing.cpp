@@ -1208,6 +1208,7 @@ void check_affine_channel_on_a_plane()
           EXPECT_NEAR(plane_x(m.point(m.vertex(e, i))), 0.5, 1e-12);
     EXPECT_GT(r.corner_values_interpolated, 0u);
     EXPECT_LE(r.corner_values_interpolated, uv_out.number_of_values());
+    EXPECT_EQ(r.seam_edges_protected, std::size_t(n));
   }
 }
 
@@ -1236,9 +1237,10 @@ TEST(IsotropicRemeshingCornerChannels, TextureCoordinatesFollowTheClosedFormAndS
     for (const double L : lengths) {
       SCOPED_TRACE(std::string(g.torus ? "torus" : "Möbius strip") + ", L = " + std::to_string(L));
       Mesh m = input;
-      CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(5));
+      const auto r = CGAL_ext::isotropic_remeshing(m, L, np::number_of_iterations(5));
       EXPECT_TRUE(m.is_valid());
       EXPECT_EQ(shape_of(m), shape_of(input));
+      EXPECT_EQ(r.seam_edges_protected, CGAL_ext::corner_channel_summaries(input)[0].seam_edges);
       const auto summary = CGAL_ext::corner_channel_summaries(m);
       ASSERT_EQ(summary.size(), 1u);
       EXPECT_EQ(summary[0].corners_without_value, 0u);

@@ -57,6 +57,11 @@ struct Isotropic_remeshing_result
   /// The values of the result's corner channels that the loop made (at
   /// split, collapsed and moved vertices), interpolated from the input's.
   std::size_t corner_values_interpolated = 0;
+  /// The edges of the corner channels' seams (of the input once
+  /// triangulated), which the loop protects and leaves as they were: where
+  /// most edges are seams (corner normals of a flat-shaded mesh, a value per
+  /// face) the loop can do little.
+  std::size_t seam_edges_protected = 0;
 };
 
 namespace internal {
@@ -106,18 +111,23 @@ limit_surface_to_project_on(const Mobius_mesh<P>& mesh, const NP& np)
 /// are protected whatever the parameters say: neither split, collapsed nor
 /// flipped, their vertices never move (`relax_constraints` leaves them too),
 /// so every seam keeps its vertices and their values on either side. Off the
-/// seams the values are interpolated linearly on the mesh as it is: a split's
-/// new vertex takes the value halfway along the edge; a collapse into a
-/// midpoint, the value halfway between its ends, and one into a seam vertex,
-/// that vertex's value on the side of the edge; a vertex that moves, the
-/// value at its new point of the triangle of its star that holds it (the
-/// point projected onto the triangle's plane); a flip keeps each corner's
-/// value. So a channel that is linear on the input's triangles (texture
-/// coordinates of a plane's points, say) stays exact up to rounding; on a
-/// curved surface the values drift with the moves, as the positions drift
-/// on the surface. Values are appended, never changed in place; those that
-/// no corner names at the end are dropped, and the others keep their order.
-/// Channels whose values have no linear combination are refused.
+/// seams the values are interpolated linearly: a split's new vertex takes
+/// the value halfway along the edge; a collapse into a midpoint, the value
+/// halfway between its ends, and one into a seam vertex, that vertex's value
+/// on the side of the edge; a flip keeps each corner's value; a vertex that
+/// moves takes the input's value where it lands (in the input triangle
+/// closest to its new point, read before the loop began), or, where that
+/// triangle could be on a seam's other side (in another region of the input
+/// between seams, or with the point on one of its seam edges), the value of
+/// the triangle of its star that holds the point. So a channel that is
+/// linear on the input's triangles (texture coordinates of a plane's points,
+/// say) stays exact up to rounding, and elsewhere each value is the input's
+/// piecewise linear channel where its vertex lies, without drifting with the
+/// moves. Values are appended, never changed in place; those that no corner
+/// names at the end are dropped, and the others keep their order. Channels
+/// whose values have no linear combination are refused. With
+/// `project_to_limit_surface`, the seams' vertices stay on the input's faces
+/// as protected vertices do.
 ///
 /// Faces that are not triangles are first split into triangles by
 /// `triangulate_faces()`. The mesh must have no removed elements; the
@@ -294,6 +304,10 @@ Isotropic_remeshing_result isotropic_remeshing(Mobius_mesh<P>& mesh, double targ
   const std::vector<std::size_t> values_before = internal::corner_value_counts(mesh);
   try {
     triangulate_faces(mesh);
+    if (!mesh.corner_channels().empty()) {
+      const std::vector<char> seams = internal::corner_seam_edges(mesh);
+      result.seam_edges_protected = std::size_t(std::count(seams.begin(), seams.end(), char(1)));
+    }
     {
       // The remesher keeps edge indices across splits and collapses: added
       // elements must not take the slots of removed ones while it runs.

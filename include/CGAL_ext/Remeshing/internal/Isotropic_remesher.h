@@ -824,10 +824,13 @@ private:
   }
 
   // The corner values of v moved to `to`: the input's there, from the
-  // input triangle nearest to it if that triangle lies in v's chart (a
-  // region of the input that no seam cuts), so that values do not drift
-  // with the moves; else, as beside a seam the nearest triangle may be on
-  // its other side, interpolated in v's star.
+  // input triangle nearest to it, so that values do not drift with the
+  // moves; but interpolated in v's star where that triangle may hold the
+  // values of a seam's other side: where it lies in another chart (a region
+  // of the input that no seam cuts) than v's faces, or where `to` lies on a
+  // seam edge of it (on a closed surface one chart can lie on both sides of
+  // a seam; off its edges, v cannot be across it, as a move across a seam
+  // edge of v's star would turn a triangle over and is refused).
   std::vector<std::uint32_t> move_plan(Vertex_index v, const Remeshing_point& to, const P& point) const
   {
     if (!corners_.has_channels())
@@ -837,6 +840,11 @@ private:
       if (!mesh_.is_border(h)) {
         if (input_chart_[triangle] != chart_[mesh_.face(h).idx()])
           break;
+        // Edge k of the triangle runs from corner k to corner k + 1: `to` is
+        // on it where the weight of corner k + 2 vanishes.
+        for (int k = 0; k < 3; ++k)
+          if ((input_seam_sides_[triangle] >> k & 1) && weight[(k + 2) % 3] < 1e-9)
+            return corners_.move_plan(v, point);
         const auto first = input_corners_.begin() + std::ptrdiff_t(triangle * corners_per_triangle_);
         return corners_.move_plan(v, std::vector<std::uint32_t>(first, first + std::ptrdiff_t(corners_per_triangle_)),
                                   weight);
@@ -858,6 +866,12 @@ private:
     for (Face_index f : mesh_.faces()) {
       chart_[f.idx()] = charts.find(f.idx());
       input_chart_.push_back(chart_[f.idx()]);
+      // Its sides from the source of halfedge(f) on, as input_ holds its corners.
+      const Dart d = mesh_.halfedge(f);
+      std::uint8_t seam_sides = 0;
+      for (int k = 0; k < 3; ++k)
+        seam_sides |= std::uint8_t(corners_.is_seam(mesh_.edge(k == 0 ? d : k == 1 ? mesh_.next(d) : mesh_.prev(d))) << k);
+      input_seam_sides_.push_back(seam_sides);
       const std::vector<std::uint32_t> corners = corners_.triangle_corners(f);
       corners_per_triangle_ = corners.size();
       input_corners_.insert(input_corners_.end(), corners.begin(), corners.end());
@@ -965,6 +979,7 @@ private:
   // With corner channels (keep_input_charts()): by input triangle, its chart
   // and its corners' value indices (corners_per_triangle_ each); by face, its chart.
   std::vector<std::uint32_t> input_chart_, input_corners_, chart_;
+  std::vector<std::uint8_t> input_seam_sides_; // by input triangle: bit k if its side k is a seam
   std::size_t corners_per_triangle_ = 0;
   Collapse_options collapse_options_;
   std::optional<Constraint_polylines> polylines_; // with relax_constraints only

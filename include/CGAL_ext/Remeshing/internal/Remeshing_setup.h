@@ -8,6 +8,7 @@
 #define CGAL_EXT_REMESHING_INTERNAL_REMESHING_SETUP_H
 
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/internal/Corner_channel_checks.h>
 #include <CGAL_ext/Named_parameters.h>
 #include <CGAL_ext/Remeshing/internal/Isotropic_remesher.h>
 #include <CGAL_ext/Remeshing/internal/Narrow_regions.h>
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -64,14 +66,16 @@ struct Remeshing_estimate
 };
 
 // Whether the loop will leave edge e alone (Isotropic_remesher::is_protected(),
-// read before the remesher exists).
+// read before the remesher exists): the seams of corner channels too.
 template <class P>
 auto remeshing_protection(const Mobius_mesh<P>& mesh, const Remeshing_options& options)
 {
   const auto sharpness = mesh.template property_map<Edge_index, float>(edge_sharpness_name);
-  return [&mesh, options, sharpness](Edge_index e) {
+  auto seam = std::make_shared<const std::vector<char>>(
+    mesh.corner_channels().empty() ? std::vector<char>() : corner_seam_edges(mesh));
+  return [&mesh, options, sharpness, seam](Edge_index e) {
     return (options.protect_borders && mesh.is_border(e)) ||
-           (options.protect_sharp_edges && sharpness && (*sharpness)[e] > 0);
+           (options.protect_sharp_edges && sharpness && (*sharpness)[e] > 0) || (!seam->empty() && (*seam)[e.idx()]);
   };
 }
 
