@@ -295,8 +295,8 @@ public:
   }
   // The same, from a triangle of the input and the weights of `to` in it:
   // `corners` are that triangle's indices (triangle_corners(), read before
-  // the edits began).
-  std::vector<u32> move_plan(Vertex_index v, const std::vector<u32>& corners, const std::array<double, 3>& weight) const
+  // the edits began), three times the number of channels.
+  std::vector<u32> move_plan(Vertex_index v, const u32* corners, const std::array<double, 3>& weight) const
   {
     std::vector<u32> plan;
     for (Dart h : CGAL_ext::halfedges_around_target(m_.halfedge(v), m_))

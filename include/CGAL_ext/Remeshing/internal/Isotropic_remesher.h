@@ -141,15 +141,19 @@ public:
   Remeshing_input_surface(const Remeshing_input_surface&) = delete;
   Remeshing_input_surface& operator=(const Remeshing_input_surface&) = delete;
 
-  Remeshing_point closest_on_faces(const Remeshing_point& p) const { return faces_tree_.closest_point(p); }
-
-  // The input triangle closest to p (its rank among the input's faces) and
-  // the barycentric coordinates of the closest point in it.
-  std::pair<std::size_t, std::array<double, 3>> closest_triangle(const Remeshing_point& p) const
+  // The point of the input closest to p, the triangle it lies in (its rank
+  // among the input's faces) and its barycentric coordinates there.
+  struct Location
+  {
+    Remeshing_point point;
+    std::size_t triangle;
+    std::array<double, 3> weight;
+  };
+  Location closest_location(const Remeshing_point& p) const
   {
     const auto [point, triangle] = faces_tree_.closest_point_and_primitive(p);
     const auto d = [](const Remeshing_point& x) { return Point_d{x.x(), x.y(), x.z()}; };
-    return {std::size_t(triangle - triangles_.begin()),
+    return {point, std::size_t(triangle - triangles_.begin()),
             barycentric_d(d(triangle->vertex(0)), d(triangle->vertex(1)), d(triangle->vertex(2)), d(point))};
   }
 
@@ -238,6 +242,9 @@ class Isotropic_remesher
 {
   using Mesh = Mobius_mesh<P>;
   using Sharpness_map = typename Mesh::template Property_map<Edge_index, float>;
+  using Location = Remeshing_input_surface::Location;
+  // The triangle of a Location that is not on the input (the limit surface's).
+  static constexpr std::size_t no_triangle = std::size_t(-1);
 
 public:
   Isotropic_remesher(Mesh& mesh, const Remeshing_options& options)
@@ -772,19 +779,26 @@ private:
     for (Vertex_index v : mesh_.vertices()) {
       if (mesh_.is_isolated(v) || is_fixed(v))
         continue;
-      const std::optional<Remeshing_point> to = mesh_.is_border(v) ? border_position(v) : inner_position(v);
-      if (to && remeshing_move_keeps_sides(mesh_.halfedge(v), *to, mesh_))
-        move_vertex(v, *to);
+      if (mesh_.is_border(v)) {
+        const std::optional<Remeshing_point> to = border_position(v);
+        if (to && remeshing_move_keeps_sides(mesh_.halfedge(v), *to, mesh_))
+          move_vertex(v, *to);
+      } else if (const std::optional<Location> to = inner_position(v)) {
+        if (remeshing_move_keeps_sides(mesh_.halfedge(v), to->point, mesh_))
+          move_vertex(v, to->point, to->triangle == no_triangle ? nullptr : &*to);
+      }
     }
   }
 
   // Moves v (off the seams, or the seams' values would not follow) to `to`,
-  // its corners taking the values there.
-  void move_vertex(Vertex_index v, const Remeshing_point& to)
+  // its corners taking the values there; `on_input`, where known, is the
+  // closest point of the input to `to` (`to` itself, which lies on it).
+  void move_vertex(Vertex_index v, const Remeshing_point& to, const Location* on_input = nullptr)
   {
     CGAL_assertion(!corners_.is_seam_vertex(v));
     const P point(to.x(), to.y(), to.z());
-    const std::vector<std::uint32_t> corner_plan = move_plan(v, to, point); // read before the move
+    const std::vector<std::uint32_t> corner_plan =
+      move_plan(v, on_input ? *on_input : closest_if_channels(to), point); // read before the move
     mesh_.point(v) = point;
     corners_.apply_move(corner_plan, v);
     check_star(v);
@@ -831,11 +845,12 @@ private:
   // seam edge of it (on a closed surface one chart can lie on both sides of
   // a seam; off its edges, v cannot be across it, as a move across a seam
   // edge of v's star would turn a triangle over and is refused).
-  std::vector<std::uint32_t> move_plan(Vertex_index v, const Remeshing_point& to, const P& point) const
+  std::vector<std::uint32_t> move_plan(Vertex_index v, const Location& to, const P& point) const
   {
     if (!corners_.has_channels())
       return {};
-    const auto [triangle, weight] = input_.closest_triangle(to);
+    const std::size_t triangle = to.triangle;
+    const std::array<double, 3>& weight = to.weight;
     for (Dart h : CGAL_ext::halfedges_around_target(mesh_.halfedge(v), mesh_))
       if (!mesh_.is_border(h)) {
         if (input_chart_[triangle] != chart_[mesh_.face(h).idx()])
@@ -845,9 +860,7 @@ private:
         for (int k = 0; k < 3; ++k)
           if ((input_seam_sides_[triangle] >> k & 1) && weight[(k + 2) % 3] < 1e-9)
             return corners_.move_plan(v, point);
-        const auto first = input_corners_.begin() + std::ptrdiff_t(triangle * corners_per_triangle_);
-        return corners_.move_plan(v, std::vector<std::uint32_t>(first, first + std::ptrdiff_t(corners_per_triangle_)),
-                                  weight);
+        return corners_.move_plan(v, input_corners_.data() + triangle * corners_per_triangle_, weight);
       }
     return corners_.move_plan(v, point);
   }
@@ -897,7 +910,15 @@ private:
     }
   }
 
-  std::optional<Remeshing_point> inner_position(Vertex_index v) const
+  // The input's closest location to p, where the moves need it (with corner channels).
+  Location closest_if_channels(const Remeshing_point& p) const
+  {
+    return corners_.has_channels() ? input_.closest_location(p) : Location{p, no_triangle, {}};
+  }
+
+  // Where v's relaxation takes it, projected: onto the input with the
+  // triangle it lands in, or onto the limit surface (`no_triangle`).
+  std::optional<Location> inner_position(Vertex_index v) const
   {
     // The normal's sign depends on the side of the dart; the tangent plane does not.
     Remeshing_vector normal = to_remeshing_vector(CGAL_ext::vertex_normal(mesh_.halfedge(v), mesh_));
@@ -920,7 +941,9 @@ private:
       return std::nullopt;
     const Remeshing_point centroid = CGAL::ORIGIN + sum / area;
     const Remeshing_point tangent = centroid + ((p - centroid) * normal) * normal;
-    return options_.project ? options_.project(tangent) : input_.closest_on_faces(tangent);
+    if (options_.project)
+      return Location{options_.project(tangent), no_triangle, {}};
+    return input_.closest_location(tangent);
   }
 
   std::optional<Remeshing_point> border_position(Vertex_index v) const
