@@ -255,8 +255,12 @@ public:
       sharpness_(mesh.template property_map<Edge_index, float>(edge_sharpness_name)), corners_(mesh)
   {
     collapse_options_.is_protected = [this](Edge_index e) { return is_protected(e); };
-    if (corners_.has_channels())
+    if (corners_.has_channels()) {
       keep_input_charts();
+      on_seam_.resize(mesh.num_vertices(), 0);
+      for (Vertex_index v : mesh.vertices())
+        on_seam_[v.idx()] = touches_seam(v);
+    }
     if (options.relax_constraints && (options.protect_borders || options.protect_sharp_edges))
       polylines_.emplace(
         mesh, [this](Edge_index e) { return is_protected(e); }, [this](Vertex_index v) { return approximate(v); });
@@ -351,11 +355,22 @@ private:
   {
     if (options_.protect_borders && mesh_.is_border(e))
       return true;
-    return (options_.protect_sharp_edges && sharpness_ && (*sharpness_)[e] > 0) || corners_.is_seam(e);
+    if (options_.protect_sharp_edges && sharpness_ && (*sharpness_)[e] > 0)
+      return true;
+    return is_on_seam(mesh_.vertex(e, 0)) && is_on_seam(mesh_.vertex(e, 1)) && corners_.is_seam(e);
   }
 
-  // Whether v is an end of a seam of a corner channel.
-  bool is_on_seam(Vertex_index v) const
+  // Whether v is an end of a seam of a corner channel. The ends of the seams
+  // are those of the input: a seam is never split, collapsed or flipped and
+  // its ends never removed, and no edit makes a seam (a split or a flip
+  // gives the new corners the values of the old ones at the same vertex, a
+  // collapse off the seams gives the merged corners one value), nor a vertex
+  // that an edit makes an end of one; and isotropic_remeshing() turns the
+  // mesh's recycling off, so a removed vertex's index is not taken again.
+  // check_star() asserts it in debug builds.
+  bool is_on_seam(Vertex_index v) const { return v.idx() < on_seam_.size() && on_seam_[v.idx()]; }
+  // The same, from the corners: what is_on_seam() was made from.
+  bool touches_seam(Vertex_index v) const
   {
     if (corners_.has_channels())
       for (Edge_index e : CGAL_ext::edges_around_target(v, mesh_))
@@ -369,6 +384,8 @@ private:
   // so protected polylines keep their vertices, corners and shape.
   bool is_fixed(Vertex_index v) const
   {
+    if (is_on_seam(v))
+      return true;
     for (Edge_index e : CGAL_ext::edges_around_target(v, mesh_))
       if (is_protected(e))
         return true;
@@ -983,7 +1000,9 @@ private:
       CGAL_assertion(mesh_.next(mesh_.prev(c)) == c && mesh_.prev(mesh_.next(c)) == c);
       CGAL_assertion(mesh_.source(mesh_.next(c)) == v && mesh_.face(mesh_.next(c)) == mesh_.face(c));
       CGAL_assertion(mesh_.is_border(c) || (!mesh_.is_removed(mesh_.face(c)) && mesh_.degree(mesh_.face(c)) == 3));
+      CGAL_assertion(is_on_seam(mesh_.source(c)) == touches_seam(mesh_.source(c)));
     }
+    CGAL_assertion(is_on_seam(v) == touches_seam(v));
 #endif
   }
 
@@ -1002,6 +1021,7 @@ private:
   // With corner channels (keep_input_charts()): by input triangle, its chart
   // and its corners' value indices (corners_per_triangle_ each); by face, its chart.
   std::vector<std::uint32_t> input_chart_, input_corners_, chart_;
+  std::vector<char> on_seam_; // by vertex, with corner channels: is_on_seam()
   std::vector<std::uint8_t> input_seam_sides_; // by input triangle: bit k if its side k is a seam
   std::size_t corners_per_triangle_ = 0;
   Collapse_options collapse_options_;
