@@ -141,6 +141,8 @@ public:
   Remeshing_input_surface(const Remeshing_input_surface&) = delete;
   Remeshing_input_surface& operator=(const Remeshing_input_surface&) = delete;
 
+  Remeshing_point closest_on_faces(const Remeshing_point& p) const { return faces_tree_.closest_point(p); }
+
   // The point of the input closest to p, the triangle it lies in (its rank
   // among the input's faces) and its barycentric coordinates there.
   struct Location
@@ -360,14 +362,16 @@ private:
     return is_on_seam(mesh_.vertex(e, 0)) && is_on_seam(mesh_.vertex(e, 1)) && corners_.is_seam(e);
   }
 
-  // Whether v is an end of a seam of a corner channel. The ends of the seams
-  // are those of the input: a seam is never split, collapsed or flipped and
-  // its ends never removed, and no edit makes a seam (a split or a flip
-  // gives the new corners the values of the old ones at the same vertex, a
-  // collapse off the seams gives the merged corners one value), nor a vertex
-  // that an edit makes an end of one; and isotropic_remeshing() turns the
-  // mesh's recycling off, so a removed vertex's index is not taken again.
-  // check_star() asserts it in debug builds.
+  // Whether v is an end of a seam edge of a corner channel (the tip of a
+  // slit too, whose corners may all hold one value: not only the vertices
+  // that Corner_channel_edits::is_seam_vertex() names). The ends of the
+  // seams are those of the input: a seam is never split, collapsed or
+  // flipped and its ends never removed, and no edit makes a seam (a split or
+  // a flip gives the new corners the values of the old ones at the same
+  // vertex, a collapse off the seams gives the merged corners one value) nor
+  // makes a vertex the end of one; the one vertex an edit removes is off the
+  // seams, so an index taken again holds no mark. check_star() asserts it in
+  // debug builds.
   bool is_on_seam(Vertex_index v) const { return v.idx() < on_seam_.size() && on_seam_[v.idx()]; }
   // The same, from the corners: what is_on_seam() was made from.
   bool touches_seam(Vertex_index v) const
@@ -808,11 +812,12 @@ private:
   }
 
   // Moves v (off the seams, or the seams' values would not follow) to `to`,
-  // its corners taking the values there; `on_input`, where known, is the
-  // closest point of the input to `to` (`to` itself, which lies on it).
+  // its corners taking the values there; `on_input`, where known, is where
+  // `to` lies on the input (its point is `to`), found by the projection.
   void move_vertex(Vertex_index v, const Remeshing_point& to, const Location* on_input = nullptr)
   {
-    CGAL_assertion(!corners_.is_seam_vertex(v));
+    CGAL_assertion(!is_on_seam(v));
+    CGAL_assertion(!on_input || on_input->point == to);
     const P point(to.x(), to.y(), to.z());
     const std::vector<std::uint32_t> corner_plan =
       move_plan(v, on_input ? *on_input : closest_if_channels(to), point); // read before the move
@@ -866,6 +871,7 @@ private:
   {
     if (!corners_.has_channels())
       return {};
+    CGAL_assertion(to.triangle != no_triangle);
     const std::size_t triangle = to.triangle;
     const std::array<double, 3>& weight = to.weight;
     for (Dart h : CGAL_ext::halfedges_around_target(mesh_.halfedge(v), mesh_))
@@ -934,7 +940,8 @@ private:
   }
 
   // Where v's relaxation takes it, projected: onto the input with the
-  // triangle it lands in, or onto the limit surface (`no_triangle`).
+  // triangle it lands in (with corner channels), or onto the limit surface
+  // (`no_triangle`).
   std::optional<Location> inner_position(Vertex_index v) const
   {
     // The normal's sign depends on the side of the dart; the tangent plane does not.
@@ -960,6 +967,8 @@ private:
     const Remeshing_point tangent = centroid + ((p - centroid) * normal) * normal;
     if (options_.project)
       return Location{options_.project(tangent), no_triangle, {}};
+    if (!corners_.has_channels()) // no values to read: no weights to compute
+      return Location{input_.closest_on_faces(tangent), no_triangle, {}};
     return input_.closest_location(tangent);
   }
 
