@@ -78,19 +78,6 @@ void remove_unused_corner_values(Mobius_mesh<P>& mesh)
     [](Base_corner_channel& c) { c.remove_unused_values(); });
 }
 
-// The one refusal of the operations that cannot carry corner channels
-// (`why` says what they do to corners): before they touch the mesh, naming
-// the channel, so that no channel is dropped or garbled silently.
-template <class P>
-void refuse_corner_channels(const Mobius_mesh<P>& mesh, const std::string& function, const std::string& why)
-{
-  const std::vector<std::string> names = mesh.corner_channels();
-  if (!names.empty())
-    throw Parameter_error(function + ": the mesh has the corner channel \"" + names.front() + "\", which " +
-                          function + " does not carry (" + why +
-                          "); remove it first (Mobius_mesh::remove_corner_channel())");
-}
-
 } // namespace internal
 } // namespace CGAL_ext
 
