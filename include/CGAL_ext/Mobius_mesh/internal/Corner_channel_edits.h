@@ -14,6 +14,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
 #include <CGAL_ext/Mobius_mesh/internal/Corner_channel_checks.h>
 #include <CGAL_ext/Mobius_mesh/internal/Linear_values.h>
+#include <CGAL_ext/Mobius_mesh/internal/Triangles_round_collapse.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/assertions.h>
@@ -27,7 +28,6 @@
 #include <cstdint>
 #include <functional>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -152,23 +152,19 @@ public:
   // What the corners of the faces round the kept vertex will hold after the
   // collapse of `d` (source(d) removed, target(d) kept) to `point` (an end's
   // own point where the collapse keeps it), read before the collapse: for
-  // each face of either end but the two along the edge, by its two other
-  // vertices, the indices of its three corners. They are written back after
-  // the collapse whatever the Euler operations did with the faces (which
-  // face of a collapsed triangle's neighbours keeps its index, which of two
-  // corners survives), so that the rule is this class's alone.
+  // each face of either end but the two along the edge, the indices of its
+  // three corners, by channel. They are written back after the collapse
+  // whatever the Euler operations did with the faces and corners, so that
+  // the rule is this class's alone.
   struct Face_corners
   {
-    Vertex_index x, y;              // its corners other than at the kept vertex, x < y
     std::vector<u32> at_x, at_y, at_kept; // by channel
-    bool operator<(const Face_corners& o) const { return std::tie(x, y) < std::tie(o.x, o.y); }
   };
-  using Plan = std::vector<Face_corners>;
+  using Plan = Triangles_round_collapse<Face_corners>;
   Plan plan(Dart d, const P& point) const
   {
-    Plan plan;
     if (channels_.empty())
-      return plan;
+      return Plan();
     const Vertex_index p = m_.source(d), q = m_.target(d);
     const bool seam_p = is_seam_vertex(p), seam_q = is_seam_vertex(q);
     // A face along the edge and its darts that end at p and at q.
@@ -181,47 +177,23 @@ public:
       for (std::size_t k = 0; k < channels_.size(); ++k)
         moved[k] = merged(channels_[k], ip[k], moved[k], t);
     }
-    const Face_index gone[2] = {m_.face(d), m_.face(m_.opposite(d))};
-    for (Vertex_index end : {p, q})
-      for (Dart h : CGAL_ext::halfedges_around_target(m_.halfedge(end), m_)) {
-        if (m_.is_border(h) || m_.face(h) == gone[0] || m_.face(h) == gone[1])
-          continue;
-        const bool keeps = end == p ? seam_p : seam_q;
-        Dart hx = m_.next(h), hy = m_.next(hx);
-        if (m_.target(hy) < m_.target(hx))
-          std::swap(hx, hy);
-        Face_corners f{m_.target(hx), m_.target(hy), indices_at(hx), indices_at(hy), keeps ? indices_at(h) : moved};
-        plan.push_back(std::move(f));
-      }
-    std::sort(plan.begin(), plan.end());
-    return plan;
+    return Plan(m_, d, [&](const typename Plan::Darts& f) {
+      const bool keeps = m_.target(f.at_end) == p ? seam_p : seam_q;
+      return Face_corners{indices_at(f.at_x), indices_at(f.at_y), keeps ? indices_at(f.at_end) : moved};
+    });
   }
 
   // Writes the plan's indices into the faces round `kept`, after the collapse.
   void apply(const Plan& plan, Vertex_index kept)
   {
-    if (channels_.empty())
-      return;
-    for (Dart h : CGAL_ext::halfedges_around_target(m_.halfedge(kept), m_)) {
-      if (m_.is_border(h))
-        continue;
-      Dart hx = m_.next(h), hy = m_.next(hx);
-      if (m_.target(hy) < m_.target(hx))
-        std::swap(hx, hy);
-      Face_corners key;
-      key.x = m_.target(hx);
-      key.y = m_.target(hy);
-      const auto f = std::lower_bound(plan.begin(), plan.end(), key);
-      CGAL_assertion(f != plan.end() && f->x == key.x && f->y == key.y);
-      if (f == plan.end() || f->x != key.x || f->y != key.y)
-        continue;
+    plan.for_each_after(m_, kept, [&](const typename Plan::Darts& f, const Face_corners& corners) {
       for (std::size_t i = 0; i < channels_.size(); ++i) {
         Base_corner_channel::Index_array& index = *channels_[i].index;
-        index[m_.corner(h).idx()] = f->at_kept[i];
-        index[m_.corner(hx).idx()] = f->at_x[i];
-        index[m_.corner(hy).idx()] = f->at_y[i];
+        index[m_.corner(f.at_end).idx()] = corners.at_kept[i];
+        index[m_.corner(f.at_x).idx()] = corners.at_x[i];
+        index[m_.corner(f.at_y).idx()] = corners.at_y[i];
       }
-    }
+    });
   }
 
   // The corners of the new vertex that splitting an edge off the seams at

@@ -12,6 +12,7 @@
 #include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/internal/Collapse_checks.h>
 #include <CGAL_ext/Mobius_mesh/internal/Corner_channel_edits.h>
+#include <CGAL_ext/Mobius_mesh/internal/Triangles_round_collapse.h>
 #include <CGAL_ext/Remeshing/internal/Constraint_polylines.h>
 #include <CGAL_ext/Mobius_mesh/normals.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -37,7 +38,6 @@
 #include <optional>
 #include <queue>
 #include <sstream>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -689,39 +689,19 @@ private:
     return Vertex_index();
   }
 
-  // The charts of the faces round both ends of c but the two along it, by
-  // their vertices other than the ends (which the collapse of c makes one):
-  // Euler::collapse_edge() may give a face round the kept vertex the index
-  // of a face it removes.
-  using Face_charts = std::vector<std::tuple<Vertex_index, Vertex_index, std::uint32_t>>;
+  // The charts of the faces round both ends of c but the two along it, to
+  // give them back to the same faces after the collapse.
+  using Face_charts = Triangles_round_collapse<std::uint32_t>;
   Face_charts charts_around(Dart c) const
   {
-    Face_charts charts;
     if (chart_.empty())
-      return charts;
-    const Face_index along[2] = {mesh_.face(c), mesh_.face(mesh_.opposite(c))};
-    for (Dart side : {c, mesh_.opposite(c)})
-      for (Dart h : CGAL_ext::halfedges_around_target(side, mesh_))
-        if (!mesh_.is_border(h) && mesh_.face(h) != along[0] && mesh_.face(h) != along[1])
-          charts.emplace_back((std::min)(mesh_.source(h), mesh_.target(mesh_.next(h))),
-                              (std::max)(mesh_.source(h), mesh_.target(mesh_.next(h))), chart_[mesh_.face(h).idx()]);
-    std::sort(charts.begin(), charts.end());
-    return charts;
+      return Face_charts();
+    return Face_charts(mesh_, c, [&](const Face_charts::Darts& f) { return chart_[mesh_.face(f.at_end).idx()]; });
   }
   void restore_charts(const Face_charts& charts, Vertex_index kept)
   {
-    if (chart_.empty())
-      return;
-    for (Dart h : CGAL_ext::halfedges_around_target(mesh_.halfedge(kept), mesh_)) {
-      if (mesh_.is_border(h))
-        continue;
-      const Vertex_index x = (std::min)(mesh_.source(h), mesh_.target(mesh_.next(h))),
-                         y = (std::max)(mesh_.source(h), mesh_.target(mesh_.next(h)));
-      const auto at = std::lower_bound(charts.begin(), charts.end(), std::make_tuple(x, y, std::uint32_t(0)));
-      CGAL_assertion(at != charts.end() && std::get<0>(*at) == x && std::get<1>(*at) == y);
-      if (at != charts.end() && std::get<0>(*at) == x && std::get<1>(*at) == y)
-        chart_[mesh_.face(h).idx()] = std::get<2>(*at);
-    }
+    charts.for_each_after(mesh_, kept,
+                          [&](const Face_charts::Darts& f, std::uint32_t chart) { chart_[mesh_.face(f.at_end).idx()] = chart; });
   }
 
   int valence_deviation(Vertex_index v, int change) const
