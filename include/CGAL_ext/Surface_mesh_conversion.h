@@ -99,7 +99,7 @@ Conversion_result to_surface_mesh(const Mobius_mesh<P>& mesh, CGAL::Surface_mesh
                                   const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh, "to_surface_mesh");
-  CGAL_ext::internal::refuse_loops(mesh, "to_surface_mesh");
+  CGAL_ext::internal::refuse_folded_faces(mesh, "to_surface_mesh");
   // Without Möbius edges the faces are oriented alike already: orient()
   // would reverse none, and the mesh serves as its own oriented copy.
   if (CGAL_ext::number_of_mobius_edges(mesh) == 0)

@@ -96,9 +96,9 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
                            const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
-  CGAL_ext::internal::refuse_loops(mesh_a, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_a, "merge_borders");
   CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
-  CGAL_ext::internal::refuse_loops(mesh_b, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_b, "merge_borders");
   CGAL_ext::internal::require_finite_points(mesh_a, "merge_borders");
   CGAL_ext::internal::require_finite_points(mesh_b, "merge_borders");
   if (&mesh_a == &mesh_b) {
@@ -120,7 +120,7 @@ template <class P, class NamedParameters = parameters::Default_named_parameters>
 Merge_result merge_borders(Mobius_mesh<P>& mesh, const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh, "merge_borders");
-  CGAL_ext::internal::refuse_loops(mesh, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh, "merge_borders");
   CGAL_ext::internal::require_finite_points(mesh, "merge_borders");
   return internal::merge_borders_impl(mesh, mesh.number_of_vertices(), true, np);
 }
@@ -230,9 +230,9 @@ Merge_result merge_borders(Mobius_mesh<P>& mesh_a, const Mobius_mesh<P>& mesh_b,
                            Merge_strategy strategy, const NamedParameters& np = parameters::default_values())
 {
   CGAL_ext::internal::require_no_garbage(mesh_a, "merge_borders");
-  CGAL_ext::internal::refuse_loops(mesh_a, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_a, "merge_borders");
   CGAL_ext::internal::require_no_garbage(mesh_b, "merge_borders");
-  CGAL_ext::internal::refuse_loops(mesh_b, "merge_borders");
+  CGAL_ext::internal::refuse_folded_faces(mesh_b, "merge_borders");
   if (&mesh_a == &mesh_b) {
     const Mobius_mesh<P> copy = mesh_b;
     return merge_borders(mesh_a, copy, pairing, strategy, np);

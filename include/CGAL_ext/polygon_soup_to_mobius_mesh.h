@@ -99,8 +99,9 @@ namespace CGAL_ext {
 ///   (and edges).
 /// \throws Soup_error for an index out of range, a polygon with fewer than
 ///   three vertices, a repeated vertex (under `non_manifold_policy` `split`
-///   only where a polygon visits a vertex twice within one fan, but for the
-///   two ends of a degenerate edge (v, v), which is held as a loop), an
+///   only where a polygon visits a vertex twice within one fan that
+///   OpenSubdiv orders round the vertex, whose two visits it then gives one
+///   corner; see doc/subdivision.md, "Non-manifold input"), an
 ///   edge shared by three or more polygons (unless split), a non-manifold
 ///   vertex (unless split), a non-finite coordinate.
 /// \throws Parameter_error for a negative or NaN tolerance.

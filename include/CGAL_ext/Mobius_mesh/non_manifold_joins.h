@@ -135,23 +135,22 @@ void refuse_non_manifold_joins(const Mobius_mesh<P>& mesh, const std::string& fu
                           " would not keep; remove the map to work on the sheets apart");
 }
 
-// The face of a loop (a degenerate edge of non-manifold input, see
-// polygon_soup_to_mobius_mesh()) visits the loop's vertex twice, which
-// `function` cannot rebuild: refused, by face and vertex. Loops come only
-// with a join map.
+// A face of non-manifold input that visits a vertex twice (see
+// polygon_soup_to_mobius_mesh(); a loop's face is one), which `function`
+// cannot rebuild: refused, by face and vertex. Such faces come only with a
+// join map.
 template <class P>
-void refuse_loops(const Mobius_mesh<P>& mesh, const std::string& function)
+void refuse_folded_faces(const Mobius_mesh<P>& mesh, const std::string& function)
 {
   if (!non_manifold_join_map(mesh))
     return;
-  const Edge_index loop = first_loop(mesh);
-  if (!loop.is_valid())
+  const auto folded = folded_vertices(mesh);
+  if (folded.empty())
     return;
-  const Halfedge_index h = mesh.halfedge(loop, mesh.is_border(mesh.halfedge(loop, 0)) ? 1 : 0);
-  throw Parameter_error(function + ": face " + std::to_string(mesh.face(h).idx()) + " visits vertex " +
-                        std::to_string(mesh.vertex(loop, 0).idx()) +
-                        " twice (the face of a loop of non-manifold input), which " + function +
-                        " cannot rebuild; subdivide the mesh first, or import it without the loop");
+  throw Parameter_error(function + ": face " + std::to_string(folded.front().second.idx()) + " visits vertex " +
+                        std::to_string(folded.front().first.idx()) +
+                        " twice (non-manifold input), which " + function +
+                        " cannot rebuild; subdivide the mesh first, or import it without that polygon");
 }
 
 } // namespace internal

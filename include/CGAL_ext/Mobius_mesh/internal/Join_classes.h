@@ -28,15 +28,26 @@ inline constexpr const char* non_manifold_join_map_name = "v:non_manifold_join";
 // so that a vertex added later is joined to none).
 inline constexpr std::uint32_t no_join = 0xffffffffu;
 
-// The first edge of `mesh` that runs from a vertex to itself (a degenerate
-// edge of the input inside one fan, see Repeated_vertex_split.h), or null.
+// The vertices that a face of `mesh` visits twice, with the first such
+// face, by vertex: non-manifold input whose corners there lie in one fan
+// (see Repeated_vertex_split.h; a loop's face visits its vertex twice).
 template <class P>
-Edge_index first_loop(const Mobius_mesh<P>& mesh)
+std::vector<std::pair<Vertex_index, Face_index>> folded_vertices(const Mobius_mesh<P>& mesh)
 {
-  for (Edge_index e : mesh.edges())
-    if (mesh.vertex(e, 0) == mesh.vertex(e, 1))
-      return e;
-  return Edge_index();
+  std::vector<std::pair<Vertex_index, Face_index>> folded;
+  std::vector<std::uint32_t> seen_in(mesh.number_of_vertices(), no_join);
+  for (Face_index f : mesh.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(mesh.halfedge(f), mesh)) {
+      const Vertex_index v = mesh.target(d);
+      if (seen_in[v.idx()] == f.idx())
+        folded.emplace_back(v, f);
+      seen_in[v.idx()] = f.idx();
+    }
+  std::sort(folded.begin(), folded.end());
+  folded.erase(std::unique(folded.begin(), folded.end(),
+                           [](const auto& a, const auto& b) { return a.first == b.first; }),
+               folded.end());
+  return folded;
 }
 
 // Two vertices are one in the input if the join map gives them the same
@@ -77,13 +88,16 @@ public:
     }
     input_edges_ = mesh.number_of_edges();
     non_manifold_vertices_ = joined_vertices_;
-    // Without joins or loops every edge is its own class: nothing to
-    // classify (the writers build these classes for every mesh they write).
-    // Loops come only from the import, which then makes a join map.
-    if (joined_vertices_ != 0 ||
-        (mesh.template property_map<Vertex_index, std::uint32_t>(non_manifold_join_map_name) &&
-         first_loop(mesh).is_valid())) {
-      on_non_manifold_edge_.assign(nv, false);
+    // Without joins or faces that visit a vertex twice every edge is its
+    // own class: nothing to classify (the writers build these classes for
+    // every mesh they write). Such faces come only from the import, which
+    // then makes a join map; OpenSubdiv makes their vertex non-manifold.
+    const bool has_map = bool(mesh.template property_map<Vertex_index, std::uint32_t>(non_manifold_join_map_name));
+    const auto folded = has_map ? folded_vertices(mesh) : std::vector<std::pair<Vertex_index, Face_index>>();
+    if (joined_vertices_ != 0 || !folded.empty()) {
+      marked_non_manifold_.assign(nv, false);
+      for (const auto& f : folded)
+        mark_non_manifold_vertex(f.first.idx());
       classify_edges(mesh);
     }
   }
@@ -119,10 +133,11 @@ public:
   // three or more polygons, one a polygon runs along twice, or degenerate.
   bool is_non_manifold_edge(u32 e) const { return !non_manifold_edge_.empty() && non_manifold_edge_[e]; }
   // Whether vertex v is (a copy of) a non-manifold vertex of the input: one
-  // of several copies, or an end of a non-manifold edge (a loop's too).
+  // of several copies, an end of a non-manifold edge (a loop's too), or one
+  // that a face visits twice.
   bool is_non_manifold_vertex(u32 v) const
   {
-    return is_joined(v) || (!on_non_manifold_edge_.empty() && on_non_manifold_edge_[v]);
+    return is_joined(v) || (!marked_non_manifold_.empty() && marked_non_manifold_[v]);
   }
   // Whether an edge from vertex a to vertex b is degenerate in the input
   // (both ends one vertex).
@@ -245,18 +260,21 @@ private:
     non_manifold_edge_[e] = true;
     if (edge_rep_[e] == e)
       ++non_manifold_edges_;
-    for (int i = 0; i < 2; ++i) {
-      const u32 v = mesh.vertex(Edge_index(e), i).idx();
-      if (!is_joined(v) && !on_non_manifold_edge_[v]) {
-        on_non_manifold_edge_[v] = true;
-        ++non_manifold_vertices_;
-      }
+    for (int i = 0; i < 2; ++i)
+      mark_non_manifold_vertex(mesh.vertex(Edge_index(e), i).idx());
+  }
+  // Vertex v is non-manifold (counted once; a joined one is counted already).
+  void mark_non_manifold_vertex(u32 v)
+  {
+    if (!is_joined(v) && !marked_non_manifold_[v]) {
+      marked_non_manifold_[v] = true;
+      ++non_manifold_vertices_;
     }
   }
 
   std::vector<u32> rep_, members_, edge_rep_, edge_members_;
   std::vector<std::uint64_t> edge_group_;
-  std::vector<bool> non_manifold_edge_, on_non_manifold_edge_;
+  std::vector<bool> non_manifold_edge_, marked_non_manifold_; // per edge, per vertex
   std::size_t joined_vertices_ = 0, non_manifold_edges_ = 0, input_vertices_ = 0, input_edges_ = 0;
   std::size_t non_manifold_vertices_ = 0;
 };

@@ -12,10 +12,10 @@
 // repeated vertex has a vertex of its own: the corners of vertex v are
 // joined across the edges OpenSubdiv makes two-sided (a pair of distinct
 // vertices run along by exactly two polygons, once each) and every further
-// fan gets a copy of v. Then a polygon visits a vertex twice only at the
-// two ends of a degenerate side whose corners lie in one fan (a loop; the
-// builder is told of the second, folded corner), and the builder pairs the
-// sides as OpenSubdiv pairs them.
+// fan gets a copy of v. A polygon may still visit a vertex twice within one
+// fan: the builder is told of the further corners there (folded corners),
+// which it lets the polygon visit again, and pairs the sides as OpenSubdiv
+// pairs them (a degenerate side between two such visits becomes a loop).
 
 #ifndef CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
 #define CGAL_EXT_MOBIUS_MESH_INTERNAL_REPEATED_VERTEX_SPLIT_H
@@ -81,7 +81,9 @@ private:
   {
     u32 count = 0;
     u32 face = 0;           // the face of the first side
+    u32 first_from = 0;     // the vertex the first side starts at
     bool same_face = false; // a face runs along the pair twice
+    bool same_way = false;  // two sides run from the same end
   };
 
   static std::uint64_t key(u32 a, u32 b) { return std::uint64_t((std::min)(a, b)) << 32 | (std::max)(a, b); }
@@ -105,9 +107,11 @@ private:
     for (u32 f = 0; f + 1 < u32(flat_.offset.size()); ++f)
       for (u32 t = flat_.offset[f]; t < flat_.offset[f + 1]; ++t)
         if (repeated[flat_.vertex[t]]) {
+          by_vertex_.emplace_back(flat_.vertex[t], u32(corners_.size()));
           corners_.push_back(t);
           face_.push_back(f);
         }
+    std::sort(by_vertex_.begin(), by_vertex_.end());
   }
 
   // Calls fn(face, from, to) once for each side of a polygon (from corner
@@ -126,13 +130,17 @@ private:
   bool is_repeated_corner(u32 t) const { return std::binary_search(corners_.begin(), corners_.end(), t); }
 
   // How many polygon sides run along each pair of vertices at a repeated
-  // vertex, and whether one polygon runs along it twice.
+  // vertex, whether one polygon runs along it twice, and whether two run
+  // along it the same way.
   void count_sides()
   {
     for_each_side_at_repeated([&](u32 f, u32 from, u32 to) {
-      auto [it, added] = sides_.emplace(key(flat_.vertex[from], flat_.vertex[to]), Side_count{0, f, false});
-      it->second.same_face = it->second.same_face || (!added && it->second.face == f);
-      ++it->second.count;
+      const u32 a = flat_.vertex[from], b = flat_.vertex[to];
+      auto [it, added] = sides_.emplace(key(a, b), Side_count{0, f, a, false, false});
+      Side_count& c = it->second;
+      c.same_face = c.same_face || (!added && c.face == f);
+      c.same_way = c.same_way || (!added && c.first_from == a);
+      ++c.count;
     });
   }
 
@@ -173,40 +181,88 @@ private:
   static constexpr u32 no_corner = ~u32(0);
 
   // The first fan of each vertex keeps it; each further fan gets a copy. A
-  // fan that holds two corners of one polygon cannot be a vertex of a sheet,
-  // but for the two ends of a degenerate side (v, v): the side becomes a
-  // loop, a border edge from the vertex to itself and a border loop of its
-  // own, which is what OpenSubdiv makes of it (a non-manifold edge of its
-  // own); its second corner is folded (the builder lets the polygon visit
-  // the vertex again there). Elsewhere OpenSubdiv's rule for two visits in
-  // one fan depends on where in the fan they lie: refused.
+  // fan that holds two corners of one polygon stays one vertex, which the
+  // polygon visits again at its further corners there (folded corners): the
+  // two ends of a degenerate side (v, v), which becomes a loop, a border edge
+  // from the vertex to itself and a border loop of its own (what OpenSubdiv
+  // makes of it, a non-manifold edge of its own), or any two corners of a
+  // vertex that OpenSubdiv makes non-manifold (see holds_as_opensubdiv()).
   void rename_fans(const std::vector<u32>& fan)
   {
     std::unordered_map<u32, u32> vertex_of_fan;
     std::unordered_map<u32, u32> first_fan_of_vertex;
-    std::unordered_map<std::uint64_t, std::pair<u32, u32>> corners_of_face_in_fan; // (first, count)
+    std::unordered_map<std::uint64_t, u32> first_corner_of_face_in_fan;
     for (std::size_t k = 0; k < corners_.size(); ++k) {
       const u32 v = flat_.vertex[corners_[k]];
-      auto& [first, count] =
-        corners_of_face_in_fan.emplace(std::uint64_t(face_[k]) << 32 | fan[k], std::pair<u32, u32>{corners_[k], 0})
-          .first->second;
-      if (++count == 2 && are_ends_of_one_side(face_[k], first, corners_[k]))
+      const auto [first, added] =
+        first_corner_of_face_in_fan.emplace(std::uint64_t(face_[k]) << 32 | fan[k], corners_[k]);
+      if (!added) {
+        if (!are_ends_of_one_side(face_[k], first->second, corners_[k]) && !holds_as_opensubdiv(v, fan))
+          throw Soup_error(Soup_error::Kind::repeated_vertex,
+                           "polygon " + std::to_string(face_[k]) + " visits vertex " + std::to_string(v) +
+                             " twice within one fan of polygons around it, where OpenSubdiv orders the fan and "
+                             "gives both visits one corner, which no sheet holds",
+                           {face_[k]}, {v});
         folded_corners_.push_back(corners_[k]); // corners_ is in flat order
-      else if (count >= 2)
-        throw Soup_error(Soup_error::Kind::repeated_vertex,
-                         "polygon " + std::to_string(face_[k]) + " visits vertex " + std::to_string(v) +
-                           " twice within one fan of polygons around it, other than at the ends of a degenerate "
-                           "edge, which no sheet holds",
-                         {face_[k]}, {v});
+      }
       first_fan_of_vertex.emplace(v, fan[k]);
-      auto [it, added] = vertex_of_fan.emplace(fan[k], v);
-      if (added && first_fan_of_vertex.at(v) != fan[k]) {
+      auto [it, added_fan] = vertex_of_fan.emplace(fan[k], v);
+      if (added_fan && first_fan_of_vertex.at(v) != fan[k]) {
         it->second = n_vertices_ + u32(original_.size());
         original_.push_back(v);
       }
     }
     for (std::size_t k = 0; k < corners_.size(); ++k)
       flat_.vertex[corners_[k]] = vertex_of_fan.at(fan[k]);
+  }
+
+  // Whether the sheets hold, as OpenSubdiv does, a polygon's two visits of
+  // vertex v within one fan: where OpenSubdiv makes v non-manifold
+  // (infinitely sharp), as the sheets make a vertex a polygon visits twice.
+  // Where Vtr orders the polygons round v instead (Level::
+  // orderVertexFacesAndEdges() succeeds), it gives both visits the
+  // polygon's first corner at v (populateLocalIndices() runs after the
+  // ordering), so that the next level misses the polygon's face at the
+  // other visit round v and counts another twice: no sheet holds that. The
+  // ordering fails where a side at v is not a plain edge of two polygons
+  // (three or more sides, a polygon's twice, degenerate), where v has
+  // several fans, or where its one fan is open and the polygon it starts at
+  // (whose side leaving v is a border) visits v there for the second time:
+  // Vtr starts at the polygon's first corner at v. Not held either: two
+  // polygons along a side at v the same way, which Vtr makes non-manifold
+  // and the sheets a Möbius edge. Computed once per vertex.
+  bool holds_as_opensubdiv(u32 v, const std::vector<u32>& fan)
+  {
+    const auto known = holds_.find(v);
+    if (known != holds_.end())
+      return known->second;
+    bool plain_edges = true, same_way = false, several_fans = false;
+    u32 fan_of_v = no_corner, start = no_corner;
+    const auto first = std::lower_bound(by_vertex_.begin(), by_vertex_.end(), std::make_pair(v, u32(0)));
+    for (auto it = first; it != by_vertex_.end() && it->first == v; ++it) {
+      const u32 k = it->second, f = face_[k], t = corners_[k];
+      several_fans = several_fans || (fan_of_v != no_corner && fan[k] != fan_of_v);
+      fan_of_v = fan[k];
+      for (const u32 side_from : {t, prev_in_face(f, t - flat_.offset[f])}) {
+        const u32 a = flat_.vertex[side_from], b = flat_.vertex[next_in_face(f, side_from - flat_.offset[f])];
+        const Side_count& c = sides_.at(key(a, b));
+        plain_edges = plain_edges && a != b && c.count <= 2 && !c.same_face;
+        same_way = same_way || (a != b && c.count == 2 && !c.same_face && c.same_way);
+        if (c.count == 1 && side_from == t)
+          start = k; // the side leaving v is a border: Vtr's walk starts here
+      }
+    }
+    const bool ordered =
+      plain_edges && !several_fans && (start == no_corner || is_first_visit(face_[start], corners_[start]));
+    return holds_[v] = !same_way && !ordered;
+  }
+  // Whether corner t (a flat index) of face f is the face's first at its vertex.
+  bool is_first_visit(u32 f, u32 t) const
+  {
+    for (u32 s = flat_.offset[f]; s < t; ++s)
+      if (flat_.vertex[s] == flat_.vertex[t])
+        return false;
+    return true;
   }
   // Whether corners a and b (flat indices) of face f follow each other.
   bool are_ends_of_one_side(u32 f, u32 a, u32 b) const
@@ -231,6 +287,8 @@ private:
   Face_list& flat_;
   u32 n_vertices_;
   std::vector<u32> corners_, face_, original_, lone_sides_, folded_corners_;
+  std::vector<std::pair<u32, u32>> by_vertex_; // (vertex, index in corners_) of each repeated corner
+  std::unordered_map<u32, bool> holds_;         // holds_as_opensubdiv(), by vertex
   std::unordered_map<std::uint64_t, Side_count> sides_;
 };
 
