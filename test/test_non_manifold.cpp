@@ -153,16 +153,18 @@ std::vector<Point> folded_hexagon_points()
 TEST(NonManifold, a_polygon_that_visits_a_vertex_twice_within_one_fan_opensubdiv_orders_is_refused)
 {
   const std::vector<Point> points = folded_hexagon_points();
-  for (const std::vector<std::vector<int>>& polygons :
-       {std::vector<std::vector<int>>{{0, 1, 2, 0, 3, 4}, {3, 0, 4}},
-        std::vector<std::vector<int>>{{0, 1, 2, 0, 3, 4}, {1, 0, 2}, {3, 0, 4}},
-        std::vector<std::vector<int>>{{0, 1, 2, 0, 3, 4}, {0, 3, 1}}}) {
+  const std::vector<std::pair<std::vector<std::vector<int>>, std::string>> cases = {
+    {{{0, 1, 2, 0, 3, 4}, {3, 0, 4}}, "orders the fan"},
+    {{{0, 1, 2, 0, 3, 4}, {1, 0, 2}, {3, 0, 4}}, "orders the fan"},
+    {{{0, 1, 2, 0, 3, 4}, {0, 3, 1}}, "the same way"}};
+  for (const auto& [polygons, why] : cases) {
     SCOPED_TRACE(polygons.size());
     const auto e = import_error(points, polygons, split_policy);
     ASSERT_TRUE(e) << "no Soup_error";
     EXPECT_EQ(e->kind(), CGAL_ext::Soup_error::Kind::repeated_vertex);
     EXPECT_EQ(e->polygons(), std::vector<std::size_t>{0});
     EXPECT_EQ(e->vertices(), std::vector<std::size_t>{0});
+    EXPECT_NE(std::string(e->what()).find(why), std::string::npos) << e->what();
   }
 }
 

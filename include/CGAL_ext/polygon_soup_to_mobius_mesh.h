@@ -101,7 +101,8 @@ namespace CGAL_ext {
 ///   three vertices, a repeated vertex (under `non_manifold_policy` `split`
 ///   only where a polygon visits a vertex twice within one fan that
 ///   OpenSubdiv orders round the vertex, whose two visits it then gives one
-///   corner; see doc/subdivision.md, "Non-manifold input"), an
+///   corner, or where two polygons run along a side at the vertex the same
+///   way; see doc/subdivision.md, "Non-manifold input"), an
 ///   edge shared by three or more polygons (unless split), a non-manifold
 ///   vertex (unless split), a non-finite coordinate.
 /// \throws Parameter_error for a negative or NaN tolerance.

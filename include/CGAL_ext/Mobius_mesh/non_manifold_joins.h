@@ -43,8 +43,9 @@ enum class Non_manifold_policy {
 /// every other vertex `no_non_manifold_join` (the map's default: a vertex
 /// added later is joined to none). Made by `polygon_soup_to_mobius_mesh()`
 /// with `non_manifold_policy(Non_manifold_policy::split)` where it split
-/// anything or held a degenerate edge as a loop (then possibly with no
-/// vertex joined), and carried by subdivision.
+/// anything or holds a polygon that visits a vertex twice within one fan (a
+/// loop's among them; then possibly with no vertex joined), and carried by
+/// subdivision.
 inline constexpr const char* non_manifold_join_name = internal::non_manifold_join_map_name;
 /// \ingroup PkgMobiusMeshSoup
 /// The value of a vertex in the join map that was split off no other.
@@ -76,8 +77,8 @@ struct Non_manifold_counts
 {
   /// The non-manifold vertices of the input, as OpenSubdiv counts them:
   /// those that are several vertices of the mesh (where fans meet at a point
-  /// or non-manifold edges end) and the ends of non-manifold edges (a
-  /// loop's vertex too).
+  /// or non-manifold edges end), the ends of non-manifold edges (a loop's
+  /// vertex too) and the vertices a face visits twice.
   std::size_t vertices = 0;
   /// The non-manifold edges of the input, as OpenSubdiv counts them: those
   /// shared by three or more polygons (several border edges of the mesh

@@ -58,8 +58,8 @@ public:
     find_lone_sides();
   }
 
-  // How many corners of polygons are the second end of a loop, at a vertex
-  // the polygon visited before (see rename_fans()).
+  // How many corners of polygons are at a vertex the polygon visited
+  // before, in the same fan (see rename_fans()).
   std::size_t number_of_folded_corners() const { return folded_corners_.size(); }
 
   // The vertex that new vertex `n_vertices + k` copies, for each k.
@@ -186,7 +186,7 @@ private:
   // two ends of a degenerate side (v, v), which becomes a loop, a border edge
   // from the vertex to itself and a border loop of its own (what OpenSubdiv
   // makes of it, a non-manifold edge of its own), or any two corners of a
-  // vertex that OpenSubdiv makes non-manifold (see holds_as_opensubdiv()).
+  // vertex that OpenSubdiv makes non-manifold (see why_not_held()).
   void rename_fans(const std::vector<u32>& fan)
   {
     std::unordered_map<u32, u32> vertex_of_fan;
@@ -197,11 +197,12 @@ private:
       const auto [first, added] =
         first_corner_of_face_in_fan.emplace(std::uint64_t(face_[k]) << 32 | fan[k], corners_[k]);
       if (!added) {
-        if (!are_ends_of_one_side(face_[k], first->second, corners_[k]) && !holds_as_opensubdiv(v, fan))
+        const char* why =
+          are_ends_of_one_side(face_[k], first->second, corners_[k]) ? nullptr : why_not_held(v, fan);
+        if (why)
           throw Soup_error(Soup_error::Kind::repeated_vertex,
                            "polygon " + std::to_string(face_[k]) + " visits vertex " + std::to_string(v) +
-                             " twice within one fan of polygons around it, where OpenSubdiv orders the fan and "
-                             "gives both visits one corner, which no sheet holds",
+                             " twice within one fan of polygons around it, " + why + ", which no sheet holds",
                            {face_[k]}, {v});
         folded_corners_.push_back(corners_[k]); // corners_ is in flat order
       }
@@ -216,53 +217,53 @@ private:
       flat_.vertex[corners_[k]] = vertex_of_fan.at(fan[k]);
   }
 
-  // Whether the sheets hold, as OpenSubdiv does, a polygon's two visits of
-  // vertex v within one fan: where OpenSubdiv makes v non-manifold
-  // (infinitely sharp), as the sheets make a vertex a polygon visits twice.
-  // Where Vtr orders the polygons round v instead (Level::
-  // orderVertexFacesAndEdges() succeeds), it gives both visits the
-  // polygon's first corner at v (populateLocalIndices() runs after the
-  // ordering), so that the next level misses the polygon's face at the
-  // other visit round v and counts another twice: no sheet holds that. The
-  // ordering fails where a side at v is not a plain edge of two polygons
-  // (three or more sides, a polygon's twice, degenerate), where v has
-  // several fans, or where its one fan is open and the polygon it starts at
-  // (whose side leaving v is a border) visits v there for the second time:
-  // Vtr starts at the polygon's first corner at v. Not held either: two
-  // polygons along a side at v the same way, which Vtr makes non-manifold
-  // and the sheets a Möbius edge. Computed once per vertex.
-  bool holds_as_opensubdiv(u32 v, const std::vector<u32>& fan)
+  // Why the sheets cannot hold, as OpenSubdiv does, a polygon's two visits
+  // of vertex v within one fan (null where they can), on the polygons as
+  // given. They hold them where OpenSubdiv makes v non-manifold (infinitely
+  // sharp), as the sheets make a vertex a polygon visits twice. Where Vtr
+  // orders the polygons round v instead (Level::orderVertexFacesAndEdges()
+  // succeeds), it gives both visits the polygon's first corner at v
+  // (populateLocalIndices() runs after the ordering), so that its next level
+  // misses the polygon's face at the other visit round v and counts another
+  // twice. The ordering fails where v is on a non-manifold edge of Vtr's
+  // (three or more sides, a polygon's twice, a degenerate side), where v
+  // has several fans, or where its one fan is open and the polygon it starts
+  // at (whose side leaving v is a border) visits v there for the second
+  // time: Vtr starts at the polygon's first corner at v. Not held either:
+  // two polygons along a side at v the same way, which Vtr makes a
+  // non-manifold edge and the sheets a Möbius edge. Computed once per vertex.
+  const char* why_not_held(u32 v, const std::vector<u32>& fan)
   {
-    const auto known = holds_.find(v);
-    if (known != holds_.end())
+    const auto known = why_not_held_.find(v);
+    if (known != why_not_held_.end())
       return known->second;
-    bool plain_edges = true, same_way = false, several_fans = false;
+    bool non_manifold_edge = false, same_way = false, several_fans = false;
     u32 fan_of_v = no_corner, start = no_corner;
     const auto first = std::lower_bound(by_vertex_.begin(), by_vertex_.end(), std::make_pair(v, u32(0)));
-    for (auto it = first; it != by_vertex_.end() && it->first == v; ++it) {
-      const u32 k = it->second, f = face_[k], t = corners_[k];
+    auto last = first;
+    for (; last != by_vertex_.end() && last->first == v; ++last) {
+      const u32 k = last->second, f = face_[k], t = corners_[k];
       several_fans = several_fans || (fan_of_v != no_corner && fan[k] != fan_of_v);
       fan_of_v = fan[k];
       for (const u32 side_from : {t, prev_in_face(f, t - flat_.offset[f])}) {
         const u32 a = flat_.vertex[side_from], b = flat_.vertex[next_in_face(f, side_from - flat_.offset[f])];
         const Side_count& c = sides_.at(key(a, b));
-        plain_edges = plain_edges && a != b && c.count <= 2 && !c.same_face;
+        non_manifold_edge = non_manifold_edge || a == b || c.count > 2 || c.same_face;
         same_way = same_way || (a != b && c.count == 2 && !c.same_face && c.same_way);
         if (c.count == 1 && side_from == t)
           start = k; // the side leaving v is a border: Vtr's walk starts here
       }
     }
-    const bool ordered =
-      plain_edges && !several_fans && (start == no_corner || is_first_visit(face_[start], corners_[start]));
-    return holds_[v] = !same_way && !ordered;
-  }
-  // Whether corner t (a flat index) of face f is the face's first at its vertex.
-  bool is_first_visit(u32 f, u32 t) const
-  {
-    for (u32 s = flat_.offset[f]; s < t; ++s)
-      if (flat_.vertex[s] == flat_.vertex[t])
-        return false;
-    return true;
+    // The corners of v are in flat order: the face's first visit is its first among them.
+    const bool starts_at_second_visit =
+      start != no_corner && std::find_if(first, last, [&](const auto& e) { return face_[e.second] == face_[start]; })
+                                ->second != start;
+    const char* why = nullptr;
+    if (same_way)
+      why = "where two polygons run along a side the same way (OpenSubdiv: a non-manifold edge; here: a Möbius edge)";
+    else if (!non_manifold_edge && !several_fans && !starts_at_second_visit)
+      why = "where OpenSubdiv orders the fan and gives both visits one corner";
+    return why_not_held_[v] = why;
   }
   // Whether corners a and b (flat indices) of face f follow each other.
   bool are_ends_of_one_side(u32 f, u32 a, u32 b) const
@@ -288,7 +289,7 @@ private:
   u32 n_vertices_;
   std::vector<u32> corners_, face_, original_, lone_sides_, folded_corners_;
   std::vector<std::pair<u32, u32>> by_vertex_; // (vertex, index in corners_) of each repeated corner
-  std::unordered_map<u32, bool> holds_;         // holds_as_opensubdiv(), by vertex
+  std::unordered_map<u32, const char*> why_not_held_; // why_not_held(), by vertex
   std::unordered_map<std::uint64_t, Side_count> sides_;
 };
 

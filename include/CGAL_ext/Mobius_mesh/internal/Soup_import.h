@@ -214,9 +214,9 @@ std::size_t soup_to_mobius_mesh(const PointRange& points, const PolygonRange& po
       return P(point_of(representative.empty() ? u : representative[u]));
     },
     split, result, split_edges);
-  // A loop makes its vertex non-manifold without a copy: the join map (none
-  // joined) says so, and makes the functions that cannot keep non-manifold
-  // input refuse the mesh.
+  // A folded face (a loop's among them) makes its vertex non-manifold
+  // without a copy: the join map (possibly none joined) says so, and makes
+  // the functions that cannot keep non-manifold input refuse the mesh.
   const bool joined =
     split_edges && (!copies.empty() || !fan_copies.empty() || fans->number_of_folded_corners() != 0);
   if (joined)
