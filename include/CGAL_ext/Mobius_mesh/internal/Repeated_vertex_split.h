@@ -249,7 +249,7 @@ private:
         const u32 a = flat_.vertex[side_from], b = flat_.vertex[next_in_face(f, side_from - flat_.offset[f])];
         const Side_count& c = sides_.at(key(a, b));
         non_manifold_edge = non_manifold_edge || a == b || c.count > 2 || c.same_face;
-        same_way = same_way || (a != b && c.count == 2 && !c.same_face && c.same_way);
+        same_way = same_way || (is_two_sided(a, b) && c.same_way);
         if (c.count == 1 && side_from == t)
           start = k; // the side leaving v is a border: Vtr's walk starts here
       }
