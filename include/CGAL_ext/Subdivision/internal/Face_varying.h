@@ -396,10 +396,15 @@ public:
     cv.clear();
     cv.resize(n); // each written below: vertex, edge and face points
     cv_ = cv.data();
-    cf.edge_tag.assign(C_.ne, 0);
+    // The halves of the parent's edges take its tags, the edges inside its
+    // faces none; each corner is written once (the largest array of a
+    // channel: filling it first would be one more pass over it).
+    cf.edge_tag.resize(C_.ne);
     for_each_index<Tag>(ne, [&](u32 e) { cf.edge_tag[2 * e] = cf.edge_tag[2 * e + 1] = pf.edge_tag[e]; });
-    cf.corner.assign(2 * std::size_t(C_.ne), null_u32);
+    std::fill(cf.edge_tag.begin() + 2 * std::size_t(ne), cf.edge_tag.end(), std::uint8_t(0));
+    cf.corner.resize(2 * std::size_t(C_.ne));
     for_each_index<Tag>(P_.nf, [&](u32 f) { split_corners(f); });
+    for_each_index<Tag>(ne, [&](u32 e) { null_border_corners(e); });
     for_each_index<Tag>(ne, [&](u32 e) { tag_edge_point(e); });
     for_each_index<Tag>(nv, [&](u32 v) { tag_vertex_point(v); });
     if constexpr (quad)
@@ -441,6 +446,16 @@ private:
         c[de::halfedge_of_edge(2 * ne + k, 0)] = edge_point_value(h);
         c[de::halfedge_of_edge(2 * ne + k, 1)] = edge_point_value(hn);
       }
+    }
+  }
+
+  // The child slots of the border sides of edge e hold no corner.
+  void null_border_corners(u32 e)
+  {
+    for (u32 side : {0u, 1u}) {
+      const u32 h = dart_encoding::halfedge_of_edge(e, side);
+      if (P_.h_face[h] == null_u32)
+        cf_->corner[P_.first_child(h)] = cf_->corner[P_.second_child(h)] = null_u32;
     }
   }
 
