@@ -12,6 +12,7 @@
 #include <CGAL_ext/Mobius_mesh/internal/Property_container.h>
 #include <CGAL_ext/internal/Uninitialized_array.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -65,8 +66,10 @@ public:
   Index_array& indices() { return index_; }
   const Index_array& indices() const { return index_; }
   virtual std::size_t number_of_values() const = 0;
-  // Drops the values that no slot names, keeping the others in their order.
-  virtual void remove_unused_values() = 0;
+  // Drops the values that no slot names, keeping the others in their order
+  // and the first `kept_prefix` ones whether named or not (where a caller
+  // holds their indices).
+  virtual void remove_unused_values(std::size_t kept_prefix) = 0;
 
 protected:
   // Appends the indices [from, from + n) of `o`, shifted by `offset` (null stays null).
@@ -118,10 +121,11 @@ public:
   // Not T itself: a channel is found only as a channel, never as a halfedge map.
   const std::type_info& value_type() const override { return typeid(Corner_channel_array); }
   std::size_t number_of_values() const override { return values_.size(); }
-  void remove_unused_values() override
+  void remove_unused_values(std::size_t kept_prefix) override
   {
     const std::size_t n = values_.size();
     std::vector<std::uint32_t> renamed(n, no_value);
+    std::fill_n(renamed.begin(), (std::min)(kept_prefix, n), 0u);
     for (std::uint32_t i : index_)
       if (i < n) // (an index past the values names none)
         renamed[i] = 0;

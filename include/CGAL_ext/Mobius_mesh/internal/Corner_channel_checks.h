@@ -75,7 +75,7 @@ template <class P>
 void remove_unused_corner_values(Mobius_mesh<P>& mesh)
 {
   Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
-    [](Base_corner_channel& c) { c.remove_unused_values(); });
+    [](Base_corner_channel& c) { c.remove_unused_values(0); });
 }
 
 } // namespace internal

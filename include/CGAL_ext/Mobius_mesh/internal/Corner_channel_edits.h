@@ -90,7 +90,8 @@ public:
         using L = Linear_value<W, K, T>;
         if constexpr (L::defined) {
           if (const auto c = mesh.template corner_channel<T>(name))
-            channels_.push_back({&c->array()->indices(), [c = *c](const u32* index, const double* weight, std::size_t n) {
+            channels_.push_back({c->array(), c->number_of_values(),
+                                 [c = *c](const u32* index, const double* weight, std::size_t n) {
                                    // The first weight is 1 minus the others in W: they sum to 1
                                    // exactly with an exact kernel.
                                    W first(1);
@@ -121,6 +122,16 @@ public:
 
   bool has_channels() const { return !channels_.empty(); }
 
+  // Drops the values made since the start that no corner names any more, the
+  // others renumbered in their order: each move makes a value at each of its
+  // vertex's corners, and a loop of many passes would otherwise hold them all.
+  // Indices taken since the start are stale after it.
+  void remove_unused_values()
+  {
+    for (Channel& c : channels_)
+      c.array->remove_unused_values(c.values_at_start);
+  }
+
   // Whether e is a seam of some channel: the corners of its two faces at an
   // end hold different indices.
   bool is_seam(Edge_index e) const
@@ -128,7 +139,7 @@ public:
     if (channels_.empty() || m_.is_border(e))
       return false;
     for (const Channel& c : channels_)
-      if (is_channel_cut(m_, *c.index, e))
+      if (is_channel_cut(m_, c.array->indices(), e))
         return true;
     return false;
   }
@@ -188,7 +199,7 @@ public:
   {
     plan.for_each_after(m_, kept, [&](const typename Plan::Darts& f, const Face_corners& corners) {
       for (std::size_t i = 0; i < channels_.size(); ++i) {
-        Base_corner_channel::Index_array& index = *channels_[i].index;
+        Base_corner_channel::Index_array& index = channels_[i].array->indices();
         index[m_.corner(f.at_end).idx()] = corners.at_kept[i];
         index[m_.corner(f.at_x).idx()] = corners.at_x[i];
         index[m_.corner(f.at_y).idx()] = corners.at_y[i];
@@ -317,7 +328,8 @@ public:
 private:
   struct Channel
   {
-    Base_corner_channel::Index_array* index; // by corner slot
+    Base_corner_channel* array;
+    std::size_t values_at_start; // kept where they are: callers hold their indices
     // Appends the combination of the n values of `index` with weights
     // `weight` (the first one's taken as 1 minus the others), returns its index.
     std::function<u32(const u32* index, const double* weight, std::size_t n)> mix;
@@ -326,7 +338,7 @@ private:
   void set_indices(Dart h, const std::vector<u32>& by_channel)
   {
     for (std::size_t k = 0; k < channels_.size(); ++k)
-      (*channels_[k].index)[m_.corner(h).idx()] = by_channel[k];
+      channels_[k].array->indices()[m_.corner(h).idx()] = by_channel[k];
   }
 
   // The index of the combination of the values `index` with weights
@@ -359,7 +371,7 @@ private:
   {
     std::vector<u32> result;
     for (const Channel& c : channels_)
-      result.push_back((*c.index)[m_.corner(h).idx()]);
+      result.push_back(c.array->indices()[m_.corner(h).idx()]);
     return result;
   }
 
@@ -371,7 +383,7 @@ private:
       for (Dart h : CGAL_ext::halfedges_around_target(m_.halfedge(v), m_)) {
         if (m_.is_border(h))
           continue;
-        const u32 i = (*c.index)[m_.corner(h).idx()];
+        const u32 i = c.array->indices()[m_.corner(h).idx()];
         if (any && i != first)
           seam_vertex_[v.idx()] = 1;
         first = any ? first : i;

@@ -149,7 +149,7 @@ private:
     for (Halfedge_index h : built.halfedges())
       if (on_back[h.idx()] && normals->has_value(h))
         normals->set_index(h, normals->index(h) + std::uint32_t(n));
-    normals->array()->remove_unused_values();
+    normals->array()->remove_unused_values(0);
   }
 
 public:

@@ -288,6 +288,7 @@ public:
       equalize_valences();
       slide_along_constraints();
       relax_and_project();
+      corners_.remove_unused_values(); // the input's stay where input_corners_ finds them
       ++done.iterations;
       const Band_count after = band_count();
       done.share_in_band = after.share();
