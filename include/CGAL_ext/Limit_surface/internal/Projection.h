@@ -139,6 +139,7 @@ public:
   template <class P>
   Limit_projection(const Surface& surface, const Mobius_mesh<P>& mesh, int rate, bool triangle_domain = false)
   {
+    reserve(mesh, std::max(1, rate), triangle_domain);
     for (Face_index f : mesh.faces()) {
       if (surface.is_hole(f))
         continue;
@@ -158,7 +159,7 @@ public:
     }
     tree_.insert(triangles_.cbegin(), triangles_.cend());
     tree_.build();
-    tree_.accelerate_distance_queries(); // now, while one thread holds the structure, not in a query
+    accelerate_distance_queries();
   }
   Limit_projection(const Limit_projection&) = delete;
   Limit_projection& operator=(const Limit_projection&) = delete;
@@ -212,6 +213,46 @@ public:
   }
 
 private:
+  // Room for every tile and triangle (an upper bound: degenerate triangles
+  // are left out), so that the arrays are not copied as they grow.
+  template <class P>
+  void reserve(const Mobius_mesh<P>& mesh, int rate, bool triangle_domain)
+  {
+    std::size_t tiles = 0, triangles = 0;
+    for (Face_index f : mesh.faces()) {
+      const std::size_t n = mesh.degree(f), r = std::size_t(rate), half = std::size_t(std::max(1, rate / 2));
+      if (triangle_domain || n == 4) {
+        tiles += 1;
+        triangles += 2 * r * r;
+      } else {
+        tiles += n;
+        triangles += 2 * n * half * half;
+      }
+    }
+    tiles_.reserve(tiles);
+    triangles_.reserve(triangles);
+    sources_.reserve(triangles);
+  }
+
+  // The hints of the tree's distance queries: a sample point of each tile
+  // rather than one of each triangle (CGAL's default), a search structure
+  // tiles-times-triangles-per-tile smaller whose nearest point starts a
+  // query within a tile of its answer. Built now, while one thread holds the
+  // structure, not in a query.
+  void accelerate_distance_queries()
+  {
+    if (triangles_.empty())
+      return; // a tree of no points is refused; closest() says why first
+    std::vector<typename Tree::Point_and_primitive_id> hints;
+    hints.reserve(tiles_.size());
+    for (std::size_t i = 0; i < triangles_.size(); ++i)
+      if (i == 0 || sources_[i].tile != sources_[i - 1].tile) {
+        const auto id = triangles_.cbegin() + std::ptrdiff_t(i);
+        hints.emplace_back(id->vertex(0), id);
+      }
+    tree_.accelerate_distance_queries(hints.cbegin(), hints.cend());
+  }
+
   // How far the surface may lie from its sample triangles and still hold
   // the closest point: twice the largest gap measured at the cells' centres
   // on each side, and a little more than rounding.
