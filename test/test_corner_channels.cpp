@@ -125,6 +125,40 @@ TEST(CornerChannels, AddFindRemove)
   EXPECT_TRUE(m.is_valid());
 }
 
+// Dropping the values no corner names keeps the order of the others and,
+// where asked, a prefix whether named or not (an editor that holds indices
+// into it: the remesher's table of the input's corners).
+TEST(CornerChannels, UnusedValuesDroppedAfterAKeptPrefix)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 6, 2);
+  auto uv = m.add_corner_channel<UV>("c:uv").first;
+  for (int i = 0; i < 8; ++i)
+    uv.add_value({double(i), 0});
+  std::vector<CGAL_ext::Halfedge_index> corners;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      corners.push_back(m.corner(d));
+  // Values 1, 4 and 6 are named, 1 by all corners but two.
+  for (const CGAL_ext::Halfedge_index h : corners)
+    uv.set_index(h, 1);
+  uv.set_index(corners[0], 6);
+  uv.set_index(corners[1], 4);
+  uv.array()->remove_unused_values(3);
+  EXPECT_EQ(uv.values(), (std::vector<UV>{{0, 0}, {1, 0}, {2, 0}, {4, 0}, {6, 0}}));
+  EXPECT_EQ(uv[corners[0]], (UV{6, 0}));
+  EXPECT_EQ(uv[corners[1]], (UV{4, 0}));
+  EXPECT_EQ(uv.index(corners[2]), 1u);
+  uv.array()->remove_unused_values(0);
+  EXPECT_EQ(uv.values(), (std::vector<UV>{{1, 0}, {4, 0}, {6, 0}}));
+  EXPECT_EQ(uv[corners[0]], (UV{6, 0}));
+  EXPECT_EQ(uv[corners[1]], (UV{4, 0}));
+  EXPECT_EQ(uv[corners.back()], (UV{1, 0}));
+  for (CGAL_ext::Halfedge_index h : m.halfedges()) // the border's slots name none
+    if (m.is_border(h))
+      EXPECT_EQ(uv.index(h), uv.no_value());
+}
+
 TEST(CornerChannels, MeshOperationsKeepCorners)
 {
   Mesh m;

@@ -221,7 +221,10 @@ private:
     std::size_t tiles = 0, triangles = 0;
     for (Face_index f : mesh.faces()) {
       const std::size_t n = mesh.degree(f), r = std::size_t(rate), half = std::size_t(std::max(1, rate / 2));
-      if (triangle_domain || n == 4) {
+      if (triangle_domain) { // r (r + 1) / 2 cells up, r (r - 1) / 2 down
+        tiles += 1;
+        triangles += r * r;
+      } else if (n == 4) {
         tiles += 1;
         triangles += 2 * r * r;
       } else {
@@ -235,14 +238,15 @@ private:
   }
 
   // The hints of the tree's distance queries: a sample point of each tile
-  // rather than one of each triangle (CGAL's default), a search structure
-  // tiles-times-triangles-per-tile smaller whose nearest point starts a
-  // query within a tile of its answer. Built now, while one thread holds the
-  // structure, not in a query.
+  // (a corner of its first triangle, which lies on that primitive, as CGAL
+  // needs) rather than one of each triangle (CGAL's default): a search
+  // structure as many times smaller as a tile has triangles (32 a quad at
+  // rate 4), whose nearest point starts a query within a tile of its answer.
+  // Built now, while one thread holds the structure, not in a query.
   void accelerate_distance_queries()
   {
     if (triangles_.empty())
-      return; // a tree of no points is refused; closest() says why first
+      return; // nothing to search (Limit_surface::closest_point() refuses the query)
     std::vector<typename Tree::Point_and_primitive_id> hints;
     hints.reserve(tiles_.size());
     for (std::size_t i = 0; i < triangles_.size(); ++i)

@@ -400,11 +400,13 @@ public:
     // faces none; each corner is written once (the largest array of a
     // channel: filling it first would be one more pass over it).
     cf.edge_tag.resize(C_.ne);
-    for_each_index<Tag>(ne, [&](u32 e) { cf.edge_tag[2 * e] = cf.edge_tag[2 * e + 1] = pf.edge_tag[e]; });
-    std::fill(cf.edge_tag.begin() + 2 * std::size_t(ne), cf.edge_tag.end(), std::uint8_t(0));
     cf.corner.resize(2 * std::size_t(C_.ne));
+    for_each_index<Tag>(ne, [&](u32 e) {
+      cf.edge_tag[2 * e] = cf.edge_tag[2 * e + 1] = pf.edge_tag[e];
+      null_border_corners(e);
+    });
+    std::fill(cf.edge_tag.begin() + 2 * std::size_t(ne), cf.edge_tag.end(), std::uint8_t(0));
     for_each_index<Tag>(P_.nf, [&](u32 f) { split_corners(f); });
-    for_each_index<Tag>(ne, [&](u32 e) { null_border_corners(e); });
     for_each_index<Tag>(ne, [&](u32 e) { tag_edge_point(e); });
     for_each_index<Tag>(nv, [&](u32 v) { tag_vertex_point(v); });
     if constexpr (quad)
