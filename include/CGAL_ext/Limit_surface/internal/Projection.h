@@ -125,11 +125,30 @@ class Limit_projection
     double squared_distance;
   };
 
-  // A sample triangle: its tile and the local parameters (in [0, 1]²) of its corners.
+  // The triangles of cell (i, j) of a tile's grid, by the grid offsets of
+  // their corners: the two of a quad's cell (split along its diagonal), and
+  // the one pointing up and the one pointing down of a triangle's cell.
+  enum Cell_triangle : std::uint8_t { quad_lower, quad_upper, domain_up, domain_down };
+  static constexpr std::array<std::array<std::array<int, 2>, 3>, 4> cell_corners{
+    {{{{0, 0}, {1, 0}, {1, 1}}}, {{{0, 0}, {1, 1}, {0, 1}}}, {{{0, 0}, {1, 0}, {0, 1}}}, {{{1, 0}, {1, 1}, {0, 1}}}}};
+
+  // A sample triangle: its tile, its cell (i, j) of the tile's n × n grid
+  // (16 bits: Limit_surface caps projection_rate at 1024) and which of the
+  // cell's triangles it is; 12 bytes rather than its corners' parameters.
   struct Triangle_source
   {
     std::uint32_t tile;
-    std::array<std::array<double, 2>, 3> st;
+    std::uint16_t i, j, n;
+    Cell_triangle shape;
+
+    // The local parameters (in [0, 1]²) of the triangle's corners.
+    std::array<std::array<double, 2>, 3> corners() const
+    {
+      std::array<std::array<double, 2>, 3> st;
+      for (int k = 0; k < 3; ++k)
+        st[k] = {double(i + cell_corners[shape][k][0]) / n, double(j + cell_corners[shape][k][1]) / n};
+      return st;
+    }
   };
 
 public:
@@ -139,6 +158,7 @@ public:
   template <class P>
   Limit_projection(const Surface& surface, const Mobius_mesh<P>& mesh, int rate, bool triangle_domain = false)
   {
+    CGAL_precondition(rate <= 65535); // the cells' 16-bit indices
     reserve(mesh, std::max(1, rate), triangle_domain);
     for (Face_index f : mesh.faces()) {
       if (surface.is_hole(f))
@@ -299,19 +319,17 @@ private:
         grid.push_back(sample(surface, t, double(i) / n, double(j) / n));
         scale_ = std::max({scale_, std::abs(grid.back().x()), std::abs(grid.back().y()), std::abs(grid.back().z())});
       }
-    const auto at = [&](int i, int j) { return std::size_t(j * (n + 1) + i); };
-    const auto st = [&](int i, int j) { return std::array<double, 2>{double(i) / n, double(j) / n}; };
+    const Triangle_source cell{id, 0, 0, std::uint16_t(n), quad_lower};
     if (t.triangle) { // the grid's points with i + j <= n, two triangles a cell but on the long side
       for (int j = 0; j < n; ++j)
         for (int i = 0; i + j < n; ++i) {
           std::size_t before = triangles_.size();
-          add_triangle(id, grid, {at(i, j), at(i + 1, j), at(i, j + 1)}, {st(i, j), st(i + 1, j), st(i, j + 1)});
+          add_triangle(grid, at_cell(cell, i, j, domain_up));
           measure_gap(surface, t, before, (i + 1.0 / 3) / n, (j + 1.0 / 3) / n);
           if (i + j + 1 == n)
             continue;
           before = triangles_.size();
-          add_triangle(id, grid, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)},
-                       {st(i + 1, j), st(i + 1, j + 1), st(i, j + 1)});
+          add_triangle(grid, at_cell(cell, i, j, domain_down));
           measure_gap(surface, t, before, (i + 2.0 / 3) / n, (j + 2.0 / 3) / n);
         }
       return;
@@ -319,20 +337,31 @@ private:
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const std::size_t before = triangles_.size();
-        add_triangle(id, grid, {at(i, j), at(i + 1, j), at(i + 1, j + 1)}, {st(i, j), st(i + 1, j), st(i + 1, j + 1)});
-        add_triangle(id, grid, {at(i, j), at(i + 1, j + 1), at(i, j + 1)}, {st(i, j), st(i + 1, j + 1), st(i, j + 1)});
+        add_triangle(grid, at_cell(cell, i, j, quad_lower));
+        add_triangle(grid, at_cell(cell, i, j, quad_upper));
         measure_gap(surface, t, before, (i + 0.5) / n, (j + 0.5) / n);
       }
   }
 
-  void add_triangle(std::uint32_t tile, const std::vector<K::Point_3>& grid, const std::array<std::size_t, 3>& corners,
-                    const std::array<std::array<double, 2>, 3>& st)
+  static Triangle_source at_cell(Triangle_source s, int i, int j, Cell_triangle shape)
   {
-    const K::Triangle_3 triangle(grid[corners[0]], grid[corners[1]], grid[corners[2]]);
+    s.i = std::uint16_t(i);
+    s.j = std::uint16_t(j);
+    s.shape = shape;
+    return s;
+  }
+
+  // Adds sample triangle `s` of the tile whose grid of points is `grid`.
+  void add_triangle(const std::vector<K::Point_3>& grid, const Triangle_source& s)
+  {
+    std::array<K::Point_3, 3> corner;
+    for (int k = 0; k < 3; ++k)
+      corner[k] = grid[std::size_t((s.j + cell_corners[s.shape][k][1]) * (s.n + 1) + s.i + cell_corners[s.shape][k][0])];
+    const K::Triangle_3 triangle(corner[0], corner[1], corner[2]);
     if (triangle.is_degenerate()) // at a corner where the surface pinches; its neighbours hold the point
       return;
     triangles_.push_back(triangle);
-    sources_.push_back({tile, st});
+    sources_.push_back(s);
   }
 
   // The distance from the surface at a cell's centre to the cell's triangles.
@@ -359,7 +388,7 @@ private:
       b = std::clamp((d11 * d20 - d01 * d21) / denominator, 0.0, 1.0);
       g = std::clamp((d00 * d21 - d01 * d20) / denominator, 0.0, 1.0 - b);
     }
-    const auto& st = sources_[i].st;
+    const std::array<std::array<double, 2>, 3> st = sources_[i].corners();
     const double s = (1 - b - g) * st[0][0] + b * st[1][0] + g * st[2][0];
     const double r = (1 - b - g) * st[0][1] + b * st[1][1] + g * st[2][1];
     return face_parameters(tiles_[sources_[i].tile], s, r);
