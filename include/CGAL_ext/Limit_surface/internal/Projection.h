@@ -355,8 +355,10 @@ private:
   void add_triangle(const std::vector<K::Point_3>& grid, const Triangle_source& s)
   {
     std::array<K::Point_3, 3> corner;
-    for (int k = 0; k < 3; ++k)
-      corner[k] = grid[std::size_t((s.j + cell_corners[s.shape][k][1]) * (s.n + 1) + s.i + cell_corners[s.shape][k][0])];
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t i = std::size_t(s.i + cell_corners[s.shape][k][0]), j = std::size_t(s.j + cell_corners[s.shape][k][1]);
+      corner[k] = grid[j * (std::size_t(s.n) + 1) + i];
+    }
     const K::Triangle_3 triangle(corner[0], corner[1], corner[2]);
     if (triangle.is_degenerate()) // at a corner where the surface pinches; its neighbours hold the point
       return;
