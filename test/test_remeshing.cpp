@@ -1313,25 +1313,12 @@ TEST(IsotropicRemeshingCornerChannels, AVertexPlacedOnAnotherChartTakesItsValues
     EXPECT_EQ(r.seam_edges_protected, 0u);
     const auto out = *m.corner_channel<CGAL_ext::Corner_uv<Point>>(CGAL_ext::corner_uv_name);
     // The sheet of each face: the outer one reaches below z = 0.
-    std::vector<int> outer(m.num_faces(), -1);
-    for (CGAL_ext::Face_index seed : m.faces()) {
-      if (outer[seed.idx()] != -1)
-        continue;
-      std::vector<CGAL_ext::Face_index> component{seed};
-      outer[seed.idx()] = 0;
-      bool reaches_below = false;
-      for (std::size_t k = 0; k < component.size(); ++k)
-        for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(component[k]), m)) {
-          reaches_below = reaches_below || CGAL::to_double(m.point(m.target(d)).z()) < -0.1;
-          const CGAL_ext::Dart o = m.opposite(d);
-          if (!m.is_border(o) && outer[m.face(o).idx()] == -1) {
-            outer[m.face(o).idx()] = 0;
-            component.push_back(m.face(o));
-          }
-        }
-      for (CGAL_ext::Face_index f : component)
-        outer[f.idx()] = reaches_below ? 1 : 0;
-    }
+    const CGAL_ext::Mesh_components components = CGAL_ext::connected_components(m);
+    std::vector<int> outer_component(components.count, 0);
+    for (Vertex_index v : m.vertices())
+      if (CGAL::to_double(m.point(v).z()) < -0.1)
+        outer_component[components.vertex_component[v.idx()]] = 1;
+    const auto sheet_of = [&](CGAL_ext::Face_index f) { return outer_component[components.face_component[f.idx()]]; };
     // The inner sheet's vertices that lie on the outer sheet's triangles,
     // off their own: each was last placed by another chart's triangle.
     std::set<Vertex_index> placed_by_the_other_chart;
@@ -1339,7 +1326,7 @@ TEST(IsotropicRemeshingCornerChannels, AVertexPlacedOnAnotherChartTakesItsValues
     for (CGAL_ext::Face_index f : m.faces())
       for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
         const Point& p = m.point(m.target(d));
-        const int sheet = outer[f.idx()];
+        const int sheet = sheet_of(f);
         if (sheet == 0 && outer_tree.squared_distance(p) < 1e-24 && inner_tree.squared_distance(p) > 1e-20)
           placed_by_the_other_chart.insert(m.target(d));
         const double a = std::atan2(p.y(), p.x()) + (sheet ? shift : 0);
