@@ -53,6 +53,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -332,6 +333,58 @@ TEST(CornerChannels, TriangulationAndEulerOperationsKeepValuesAtTheirVertices)
     CGAL_ext::Euler::fill_hole(CGAL_ext::Euler::make_hole(m.halfedge(last), m), m);
     EXPECT_EQ(expect_vertex_values(m), 5u + valued);
     EXPECT_TRUE(m.is_valid());
+  }
+}
+
+// The Euler operations that remove edges leave their corners without a
+// value, so that they keep none alive: after joins, a collapse and a centre
+// vertex removed, the values left once unused ones are dropped are those of
+// the live corners, counted on their own.
+TEST(CornerChannels, RemovedEdgesNameNoValue)
+{
+  for (bool mobius : {false, true}) {
+    SCOPED_TRACE(mobius ? "Moebius strip" : "torus");
+    Mesh m;
+    if (mobius)
+      CGAL_ext::make_mobius_strip(m, 10, 3);
+    else
+      CGAL_ext::make_torus(m, 6, 4, 2.0, 0.5);
+    CGAL_ext::triangulate_faces(m);
+    fill_distinct(m);
+    std::size_t joins = 0, collapses = 0;
+    const std::vector<CGAL_ext::Edge_index> edges(m.edges().begin(), m.edges().end());
+    for (CGAL_ext::Edge_index e : edges) {
+      const Dart d(Mesh::halfedge(e, 0), false);
+      if (m.is_removed(e))
+        continue;
+      if (joins < 3 && CGAL_ext::Euler::can_join_face(d, m)) {
+        CGAL_ext::Euler::join_face(d, m);
+        ++joins;
+      } else if (collapses < 3 && CGAL_ext::Euler::does_satisfy_link_condition(d, m)) {
+        CGAL_ext::Euler::collapse_edge(d, m);
+        ++collapses;
+      }
+    }
+    EXPECT_EQ(joins, 3u);
+    EXPECT_EQ(collapses, 3u);
+    Dart centre;
+    for (CGAL_ext::Vertex_index v : m.vertices())
+      if (!centre.is_valid() && CGAL_ext::Euler::can_remove_center_vertex(m.halfedge(v), m))
+        centre = m.halfedge(v);
+    ASSERT_TRUE(centre.is_valid());
+    CGAL_ext::Euler::remove_center_vertex(centre, m);
+    ASSERT_TRUE(m.is_valid());
+    auto uv = *m.corner_channel<UV>("c:uv");
+    std::set<std::uint32_t> named;
+    for (CGAL_ext::Face_index f : m.faces())
+      for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+        named.insert(uv.index(m.corner(d)));
+    named.erase(uv.no_value());
+    for (std::uint32_t h = 0; h < m.num_halfedges(); ++h)
+      if (m.is_removed(CGAL_ext::Halfedge_index(h)))
+        EXPECT_EQ(uv.index(CGAL_ext::Halfedge_index(h)), uv.no_value()) << "removed halfedge " << h;
+    uv.array()->remove_unused_values(0);
+    EXPECT_EQ(uv.values().size(), named.size());
   }
 }
 

@@ -925,8 +925,15 @@ public:
 
   /// Marks `v` removed.
   void remove_vertex(Vertex_index v) { mark(vprops_, "v:removed", removed_vertices_, v.idx(), recycle_); }
-  /// Marks `e` and its two halfedges removed.
-  void remove_edge(Edge_index e) { mark(eprops_, "e:removed", removed_edges_, e.idx(), recycle_); }
+  /// Marks `e` and its two halfedges removed. Their corners lose their value
+  /// indices in every channel: a removed corner keeps no value alive (and a
+  /// recycled slot starts without one).
+  void remove_edge(Edge_index e)
+  {
+    clear_corner(halfedge(e, 0));
+    clear_corner(halfedge(e, 1));
+    mark(eprops_, "e:removed", removed_edges_, e.idx(), recycle_);
+  }
   /// Marks `f` removed.
   void remove_face(Face_index f) { mark(fprops_, "f:removed", removed_faces_, f.idx(), recycle_); }
 

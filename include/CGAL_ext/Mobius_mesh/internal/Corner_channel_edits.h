@@ -125,21 +125,14 @@ public:
   // Drops the values made since the start that no corner names any more, the
   // others renumbered in their order: most edits make a value (a move one
   // for its vertex's corners, a split one a side, a collapse one), and a loop
-  // of many passes would otherwise hold them all. The slots of removed edges
-  // (kept until the garbage is collected) and of border halfedges hold no
-  // corner: their indices are cleared first, or they would keep values alive.
-  // Indices taken since the start are stale after it.
+  // of many passes would otherwise hold them all. Removed edges and border
+  // halfedges hold no index (`Mobius_mesh::remove_edge()` and the Euler
+  // operations clear them), so they keep no value alive. Indices taken since
+  // the start are stale after it.
   void remove_unused_values()
   {
-    for (Channel& c : channels_) {
-      Base_corner_channel::Index_array& index = c.array->indices();
-      for (std::size_t i = 0; i < index.size(); ++i) {
-        const Halfedge_index h(i);
-        if (m_.is_removed(h) || m_.is_border(h))
-          index[i] = Base_corner_channel::no_value;
-      }
+    for (Channel& c : channels_)
       c.array->remove_unused_values(c.values_at_start);
-    }
   }
 
   // Whether e is a seam of some channel: the corners of its two faces at an
