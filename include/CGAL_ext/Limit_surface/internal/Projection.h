@@ -14,13 +14,15 @@
 #include <CGAL_ext/Limit_surface/internal/Parameterization.h>
 #include <CGAL_ext/Mobius_mesh.h>
 
+#include <CGAL/AABB_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Intersections_3/Bbox_3_Sphere_3.h>
 #include <CGAL/Intersections_3/Sphere_3_Triangle_3.h>
 #include <CGAL/Origin.h>
 #include <CGAL/Simple_cartesian.h>
+
+#include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
 #include <array>
@@ -113,10 +115,33 @@ template <class Surface>
 class Limit_projection
 {
   using K = CGAL::Simple_cartesian<double>;
-  using Triangles = std::vector<K::Triangle_3>;
-  using Tree =
-    CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, typename Triangles::const_iterator>>>;
   using FT = typename Surface::FT;
+
+  // The tree's primitives are the sample triangles' numbers; a triangle is
+  // made when the tree reads it, from the grid points its tile shares with
+  // its neighbours (stored, its corners would take 72 bytes, against some
+  // 15 a triangle for the points).
+  struct Triangle_map
+  {
+    using key_type = std::uint32_t;
+    using value_type = K::Triangle_3;
+    using reference = K::Triangle_3;
+    using category = boost::readable_property_map_tag;
+    const Limit_projection* projection = nullptr;
+    friend K::Triangle_3 get(const Triangle_map& m, std::uint32_t i) { return m.projection->triangle(i); }
+  };
+  // A point on each primitive, as the tree needs one: its first corner.
+  struct Corner_map
+  {
+    using key_type = std::uint32_t;
+    using value_type = K::Point_3;
+    using reference = const K::Point_3&;
+    using category = boost::readable_property_map_tag;
+    const Limit_projection* projection = nullptr;
+    friend const K::Point_3& get(const Corner_map& m, std::uint32_t i) { return m.projection->corner(i, 0); }
+  };
+  using Primitive = CGAL::AABB_primitive<std::uint32_t, Triangle_map, Corner_map, CGAL::Tag_true, CGAL::Tag_false>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
   // The surface at one parameter, as Newton's method reads it.
   struct Local
@@ -134,7 +159,8 @@ class Limit_projection
 
   // A sample triangle: its tile, its cell (i, j) of the tile's n × n grid
   // (16 bits: Limit_surface caps projection_rate at 1024) and which of the
-  // cell's triangles it is; 12 bytes rather than its corners' parameters.
+  // cell's triangles it is; 12 bytes rather than its corners' parameters
+  // and points.
   struct Triangle_source
   {
     std::uint32_t tile;
@@ -148,6 +174,12 @@ class Limit_projection
       for (int k = 0; k < 3; ++k)
         st[k] = {double(i + cell_corners[shape][k][0]) / n, double(j + cell_corners[shape][k][1]) / n};
       return st;
+    }
+    // Where corner k lies in its tile's grid of (n + 1)² points, row by row.
+    std::size_t grid_index(int k) const
+    {
+      return (std::size_t(j) + std::size_t(cell_corners[shape][k][1])) * (std::size_t(n) + 1) + i +
+             std::size_t(cell_corners[shape][k][0]);
     }
   };
 
@@ -177,15 +209,25 @@ public:
         add_tile(surface, {f, double(tile[0]), double(tile[1]), 0.5}, std::max(1, rate / 2));
       }
     }
-    tree_.insert(triangles_.cbegin(), triangles_.cend());
+    tree_.insert(boost::counting_iterator<std::uint32_t>(0),
+                 boost::counting_iterator<std::uint32_t>(std::uint32_t(sources_.size())), Triangle_map{this},
+                 Corner_map{this});
     tree_.build();
     accelerate_distance_queries();
   }
   Limit_projection(const Limit_projection&) = delete;
   Limit_projection& operator=(const Limit_projection&) = delete;
 
-  bool empty() const { return triangles_.empty(); }
+  bool empty() const { return sources_.empty(); }
   const Projection_tile& tile(std::uint32_t i) const { return tiles_[i]; }
+
+  // Corner k of sample triangle i, and the triangle.
+  const K::Point_3& corner(std::uint32_t i, int k) const
+  {
+    const Triangle_source& s = sources_[i];
+    return points_[grid_start_[s.tile] + s.grid_index(k)];
+  }
+  K::Triangle_3 triangle(std::uint32_t i) const { return K::Triangle_3(corner(i, 0), corner(i, 1), corner(i, 2)); }
 
   // A parameter found in double, as the kernel's numbers: on a triangle's
   // long side u + v may pass 1 by a rounding in double, which an exact
@@ -208,9 +250,8 @@ public:
     tree_.all_intersected_primitives(K::Sphere_3(q, reach * reach), std::back_inserter(hits));
     // The nearest sample point of each tile, nearest tiles first.
     std::unordered_map<std::uint32_t, std::pair<double, std::array<double, 2>>> starts;
-    for (const auto& id : hits) {
-      const std::size_t i = std::size_t(id - triangles_.cbegin());
-      const K::Point_3 c = K().construct_projected_point_3_object()(*id, q);
+    for (const std::uint32_t i : hits) {
+      const K::Point_3 c = K().construct_projected_point_3_object()(triangle(i), q);
       const double d2 = CGAL::squared_distance(q, c);
       auto [it, added] = starts.emplace(sources_[i].tile, std::make_pair(d2, std::array<double, 2>{}));
       if (added || d2 < it->second.first)
@@ -233,27 +274,31 @@ public:
   }
 
 private:
-  // Room for every tile and triangle (an upper bound: degenerate triangles
-  // are left out), so that the arrays are not copied as they grow.
+  // Room for every tile, grid point and triangle (an upper bound: degenerate
+  // triangles are left out), so that the arrays are not copied as they grow.
   template <class P>
   void reserve(const Mobius_mesh<P>& mesh, int rate, bool triangle_domain)
   {
-    std::size_t tiles = 0, triangles = 0;
+    std::size_t tiles = 0, points = 0, triangles = 0;
     for (Face_index f : mesh.faces()) {
       const std::size_t n = mesh.degree(f), r = std::size_t(rate), half = std::size_t(std::max(1, rate / 2));
       if (triangle_domain) { // r (r + 1) / 2 cells up, r (r - 1) / 2 down
         tiles += 1;
+        points += (r + 1) * (r + 1);
         triangles += r * r;
       } else if (n == 4) {
         tiles += 1;
+        points += (r + 1) * (r + 1);
         triangles += 2 * r * r;
       } else {
         tiles += n;
+        points += n * (half + 1) * (half + 1);
         triangles += 2 * n * half * half;
       }
     }
     tiles_.reserve(tiles);
-    triangles_.reserve(triangles);
+    grid_start_.reserve(tiles);
+    points_.reserve(points);
     sources_.reserve(triangles);
   }
 
@@ -265,15 +310,13 @@ private:
   // Built now, while one thread holds the structure, not in a query.
   void accelerate_distance_queries()
   {
-    if (triangles_.empty())
+    if (sources_.empty())
       return; // nothing to search (Limit_surface::closest_point() refuses the query)
     std::vector<typename Tree::Point_and_primitive_id> hints;
     hints.reserve(tiles_.size());
-    for (std::size_t i = 0; i < triangles_.size(); ++i)
-      if (i == 0 || sources_[i].tile != sources_[i - 1].tile) {
-        const auto id = triangles_.cbegin() + std::ptrdiff_t(i);
-        hints.emplace_back(id->vertex(0), id);
-      }
+    for (std::uint32_t i = 0; i < std::uint32_t(sources_.size()); ++i)
+      if (i == 0 || sources_[i].tile != sources_[i - 1].tile)
+        hints.emplace_back(corner(i, 0), i);
     tree_.accelerate_distance_queries(hints.cbegin(), hints.cend());
   }
 
@@ -309,36 +352,37 @@ private:
   {
     const std::uint32_t id = std::uint32_t(tiles_.size());
     tiles_.push_back(t);
-    std::vector<K::Point_3> grid;
+    grid_start_.push_back(points_.size());
     for (int j = 0; j <= n; ++j)
       for (int i = 0; i <= n; ++i) {
         if (t.triangle && i + j > n) { // outside the triangle: a place holder
-          grid.push_back(K::Point_3(CGAL::ORIGIN));
+          points_.push_back(K::Point_3(CGAL::ORIGIN));
           continue;
         }
-        grid.push_back(sample(surface, t, double(i) / n, double(j) / n));
-        scale_ = std::max({scale_, std::abs(grid.back().x()), std::abs(grid.back().y()), std::abs(grid.back().z())});
+        points_.push_back(sample(surface, t, double(i) / n, double(j) / n));
+        const K::Point_3& p = points_.back();
+        scale_ = std::max({scale_, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
       }
     const Triangle_source cell{id, 0, 0, std::uint16_t(n), quad_lower};
     if (t.triangle) { // the grid's points with i + j <= n, two triangles a cell but on the long side
       for (int j = 0; j < n; ++j)
         for (int i = 0; i + j < n; ++i) {
-          std::size_t before = triangles_.size();
-          add_triangle(grid, at_cell(cell, i, j, domain_up));
+          std::size_t before = sources_.size();
+          add_triangle(at_cell(cell, i, j, domain_up));
           measure_gap(surface, t, before, (i + 1.0 / 3) / n, (j + 1.0 / 3) / n);
           if (i + j + 1 == n)
             continue;
-          before = triangles_.size();
-          add_triangle(grid, at_cell(cell, i, j, domain_down));
+          before = sources_.size();
+          add_triangle(at_cell(cell, i, j, domain_down));
           measure_gap(surface, t, before, (i + 2.0 / 3) / n, (j + 2.0 / 3) / n);
         }
       return;
     }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const std::size_t before = triangles_.size();
-        add_triangle(grid, at_cell(cell, i, j, quad_lower));
-        add_triangle(grid, at_cell(cell, i, j, quad_upper));
+        const std::size_t before = sources_.size();
+        add_triangle(at_cell(cell, i, j, quad_lower));
+        add_triangle(at_cell(cell, i, j, quad_upper));
         measure_gap(surface, t, before, (i + 0.5) / n, (j + 0.5) / n);
       }
   }
@@ -351,37 +395,31 @@ private:
     return s;
   }
 
-  // Adds sample triangle `s` of the tile whose grid of points is `grid`.
-  void add_triangle(const std::vector<K::Point_3>& grid, const Triangle_source& s)
+  // Adds sample triangle `s` of the last tile, whose grid points are in place.
+  void add_triangle(const Triangle_source& s)
   {
-    std::array<K::Point_3, 3> corner;
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t i = std::size_t(s.i + cell_corners[s.shape][k][0]), j = std::size_t(s.j + cell_corners[s.shape][k][1]);
-      corner[k] = grid[j * (std::size_t(s.n) + 1) + i];
-    }
-    const K::Triangle_3 triangle(corner[0], corner[1], corner[2]);
-    if (triangle.is_degenerate()) // at a corner where the surface pinches; its neighbours hold the point
-      return;
-    triangles_.push_back(triangle);
     sources_.push_back(s);
+    if (triangle(std::uint32_t(sources_.size() - 1)).is_degenerate())
+      sources_.pop_back(); // at a corner where the surface pinches; its neighbours hold the point
   }
+
 
   // The distance from the surface at a cell's centre to the cell's triangles.
   void measure_gap(const Surface& surface, const Projection_tile& t, std::size_t first, double s, double r)
   {
-    if (first == triangles_.size())
+    if (first == sources_.size())
       return;
     const K::Point_3 centre = sample(surface, t, s, r);
     double d2 = std::numeric_limits<double>::infinity();
-    for (std::size_t i = first; i < triangles_.size(); ++i)
-      d2 = std::min(d2, CGAL::squared_distance(centre, triangles_[i]));
+    for (std::size_t i = first; i < sources_.size(); ++i)
+      d2 = std::min(d2, CGAL::squared_distance(centre, triangle(std::uint32_t(i))));
     gap_ = std::max(gap_, std::sqrt(d2));
   }
 
   // The face's parameters of point c of sample triangle i (barycentric).
-  std::array<double, 2> parameters_at(std::size_t i, const K::Point_3& c) const
+  std::array<double, 2> parameters_at(std::uint32_t i, const K::Point_3& c) const
   {
-    const K::Triangle_3& t = triangles_[i];
+    const K::Triangle_3 t = triangle(i);
     const K::Vector_3 e0 = t[1] - t[0], e1 = t[2] - t[0], e2 = c - t[0];
     const double d00 = e0 * e0, d01 = e0 * e1, d11 = e1 * e1, d20 = e2 * e0, d21 = e2 * e1;
     const double denominator = d00 * d11 - d01 * d01;
@@ -498,7 +536,8 @@ private:
   }
 
   std::vector<Projection_tile> tiles_;
-  Triangles triangles_;
+  std::vector<std::size_t> grid_start_; // per tile, its first point
+  std::vector<K::Point_3> points_;        // each tile's grid, row by row
   std::vector<Triangle_source> sources_;
   Tree tree_;
   double gap_ = 0, scale_ = 0;
