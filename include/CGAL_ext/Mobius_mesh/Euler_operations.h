@@ -48,7 +48,9 @@
 ///   `join_face()` each corner of the merged face has the value one of the
 ///   two faces had there; after `join_vertex()` and `collapse_edge()` the
 ///   faces that were around the removed vertex keep its values at the kept
-///   vertex (a seam there unless the values agree). Decimation and
+///   vertex (a seam there unless the values agree). The slots of a removed
+///   edge hold no value index (`Mobius_mesh::remove_edge()` clears them), so
+///   that no value stays in use for them alone. Decimation and
 ///   remeshing set the corners round their edits by rules of their own
 ///   (`decimate()`, `isotropic_remeshing()`).
 
