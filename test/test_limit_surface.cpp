@@ -1104,6 +1104,28 @@ TEST(Limit_surface, ClosestPointInAnExactKernel)
                CGAL_ext::Parameter_error);
 }
 
+// A sampling of more triangles than 32 bits number is refused before it is
+// made: 2 112 quads at projection_rate 1024 would be 2 · 1024² each, 4.4e9.
+TEST(Limit_surface, ClosestPointRefusesASamplingTooLargeToNumber)
+{
+  Mesh m;
+  CGAL_ext::make_torus(m, 64, 33);
+  S::Limit_surface_options options;
+  options.projection_rate = 1024;
+  const Surface surface(m, CGAL_ext::parameters::default_values(), options);
+  try {
+    surface.closest_point(Point(3, 0, 0));
+    ADD_FAILURE() << "no Size_error";
+  } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.count(), 2ull * 1024 * 1024 * m.number_of_faces());
+    EXPECT_EQ(e.limit(), 4294967295ull);
+  }
+  options.projection_rate = 2; // the same surface at a rate that fits: a point off it comes back
+  const auto e = surface.evaluate(CGAL_ext::Face_index(0), 0.5, 0.5);
+  const auto at = Surface(m, CGAL_ext::parameters::default_values(), options).closest_point(e.point + 0.1 * e.normal);
+  EXPECT_NEAR(at.squared_distance, 0.01, 1e-9);
+}
+
 // ---- Loop ----
 
 // A torus of 2 nu nv triangles, every vertex of valence 6, with rational

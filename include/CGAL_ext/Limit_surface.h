@@ -370,6 +370,8 @@ public:
   /// that rational parameter), and `squared_distance` computed from them.
   /// \throws Parameter_error if a coordinate of `query` is not a finite
   /// number, or the mesh has no face (or only degenerate ones).
+  /// \throws Size_error if the sampling would make more than 2³² − 1
+  /// triangles (a lower `projection_rate` makes fewer).
   Location closest_point(const P& query) const
   {
     std::call_once(*projection_once_, [&] {

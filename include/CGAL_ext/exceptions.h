@@ -47,10 +47,11 @@ public:
 };
 
 /// A mesh, or a result, with more elements than the 32-bit indices of
-/// `Mobius_mesh` hold (see `internal::check_mesh_size()` for the limits).
-/// Thrown before the elements are allocated; `element()` is `"vertices"`,
-/// `"edges"` or `"faces"`, `count()` how many there would be (computed in
-/// 64 bits), `limit()` the most there may be.
+/// `Mobius_mesh` hold (see `internal::check_mesh_size()` for the limits), or
+/// a search structure with more sample triangles than it numbers
+/// (`Limit_surface::closest_point()`). Thrown before the elements are
+/// allocated; `element()` says of what (below), `count()` how many there
+/// would be (computed in 64 bits), `limit()` the most there may be.
 class Size_error : public Parameter_error
 {
 public:
@@ -59,9 +60,9 @@ public:
   Size_error(const std::string& message, std::string element, unsigned long long count, unsigned long long limit)
     : Parameter_error(message), element_(std::move(element)), count_(count), limit_(limit)
   {}
-  /// The kind of element that does not fit: `"vertices"`, `"edges"` or
-  /// `"faces"`; `"bytes"` where the memory an operation would need is
-  /// more than it may take (`maximum_memory`).
+  /// The kind of element that does not fit: `"vertices"`, `"edges"`,
+  /// `"faces"` or `"triangles"`; `"bytes"` where the memory an operation
+  /// would need is more than it may take (`maximum_memory`).
   const std::string& element() const { return element_; }
   /// How many elements there would be.
   unsigned long long count() const { return count_; }

@@ -13,6 +13,7 @@
 
 #include <CGAL_ext/Limit_surface/internal/Parameterization.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/exceptions.h>
 
 #include <CGAL/AABB_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -30,6 +31,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -296,6 +298,11 @@ private:
         triangles += 2 * n * half * half;
       }
     }
+    if (triangles > std::numeric_limits<std::uint32_t>::max()) // the tree numbers them in 32 bits
+      throw Size_error("Limit_surface::closest_point: the search structure would sample " + std::to_string(triangles) +
+                         " triangles, more than the " + std::to_string(std::numeric_limits<std::uint32_t>::max()) +
+                         " it can number (lower projection_rate)",
+                       "triangles", triangles, std::numeric_limits<std::uint32_t>::max());
     tiles_.reserve(tiles);
     grid_start_.reserve(tiles);
     points_.reserve(points);
@@ -402,7 +409,6 @@ private:
     if (triangle(std::uint32_t(sources_.size() - 1)).is_degenerate())
       sources_.pop_back(); // at a corner where the surface pinches; its neighbours hold the point
   }
-
 
   // The distance from the surface at a cell's centre to the cell's triangles.
   void measure_gap(const Surface& surface, const Projection_tile& t, std::size_t first, double s, double r)
