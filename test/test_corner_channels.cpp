@@ -28,6 +28,7 @@
 #include <CGAL_ext/subdivision.h>
 
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <gtest/gtest.h>
 
@@ -337,7 +338,7 @@ TEST(CornerChannels, TriangulationAndEulerOperationsKeepValuesAtTheirVertices)
 }
 
 // The Euler operations that remove edges leave their corners without a
-// value, so that they keep none alive: after joins, a collapse and a centre
+// value, so that they keep none alive: after joins, collapses and a centre
 // vertex removed, the values left once unused ones are dropped are those of
 // the live corners, counted on their own.
 TEST(CornerChannels, RemovedEdgesNameNoValue)
@@ -386,6 +387,35 @@ TEST(CornerChannels, RemovedEdgesNameNoValue)
     uv.array()->remove_unused_values(0);
     EXPECT_EQ(uv.values().size(), named.size());
   }
+}
+
+// CGAL's generic Euler::remove_face() knows of no channel: the face's
+// halfedges turn border ones with the indices they held. Remeshing drops
+// the values that only they named, as those of the corners it removes.
+TEST(CornerChannels, BorderSlotsLeftByCgalsRemoveFaceKeepNoValue)
+{
+  Mesh m;
+  CGAL_ext::make_torus(m, 8, 6, 2.0, 0.5);
+  CGAL_ext::triangulate_faces(m);
+  fill_distinct(m);
+  CGAL::Euler::remove_face(m.halfedge(CGAL_ext::Face_index(5u)), m);
+  m.collect_garbage();
+  auto uv = *m.corner_channel<UV>("c:uv");
+  std::size_t border_indices = 0;
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    border_indices += m.is_border(h) && uv.has_value(h) ? 1 : 0;
+  EXPECT_EQ(border_indices, 3u); // the case: the removed triangle's slots kept theirs
+  CGAL_ext::isotropic_remeshing(m, 0.5, CGAL_ext::parameters::number_of_iterations(1));
+  uv = *m.corner_channel<UV>("c:uv");
+  std::set<std::uint32_t> named;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      named.insert(uv.index(m.corner(d)));
+  named.erase(uv.no_value());
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    if (m.is_border(h))
+      EXPECT_EQ(uv.index(h), uv.no_value()) << "border halfedge " << h;
+  EXPECT_EQ(uv.values().size(), named.size());
 }
 
 TEST(CornerChannels, MergingKeepsEachCornersValue)

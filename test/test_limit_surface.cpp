@@ -1106,6 +1106,8 @@ TEST(Limit_surface, ClosestPointInAnExactKernel)
 
 // A sampling of more triangles than 32 bits number is refused before it is
 // made: 2 112 quads at projection_rate 1024 would be 2 · 1024² each, 4.4e9.
+// (Were the check gone, the structure would ask for some 100 GB and this
+// test would stop on the allocation.)
 TEST(Limit_surface, ClosestPointRefusesASamplingTooLargeToNumber)
 {
   Mesh m;
@@ -1117,6 +1119,7 @@ TEST(Limit_surface, ClosestPointRefusesASamplingTooLargeToNumber)
     surface.closest_point(Point(3, 0, 0));
     ADD_FAILURE() << "no Size_error";
   } catch (const CGAL_ext::Size_error& e) {
+    EXPECT_EQ(e.element(), "triangles");
     EXPECT_EQ(e.count(), 2ull * 1024 * 1024 * m.number_of_faces());
     EXPECT_EQ(e.limit(), 4294967295ull);
   }

@@ -930,8 +930,10 @@ public:
   /// recycled slot starts without one).
   void remove_edge(Edge_index e)
   {
-    clear_corner(halfedge(e, 0));
-    clear_corner(halfedge(e, 1));
+    if (!hprops_.arrays().empty())
+      hprops_.template for_each_array<internal::Base_corner_channel>([&](internal::Base_corner_channel& c) {
+        c.indices()[halfedge(e, 0).idx()] = c.indices()[halfedge(e, 1).idx()] = internal::Base_corner_channel::no_value;
+      });
     mark(eprops_, "e:removed", removed_edges_, e.idx(), recycle_);
   }
   /// Marks `f` removed.

@@ -61,12 +61,13 @@ public:
     : Parameter_error(message), element_(std::move(element)), count_(count), limit_(limit)
   {}
   /// The kind of element that does not fit: `"vertices"`, `"edges"`,
-  /// `"faces"` or `"triangles"`; `"bytes"` where the memory an operation
-  /// would need is more than it may take (`maximum_memory`).
+  /// `"faces"`, `"triangles"` (a closest-point search structure's) or
+  /// `"corner normal values"` (`offset_mesh()`'s); `"bytes"` where the
+  /// memory an operation would need is more than it may take (`maximum_memory`).
   const std::string& element() const { return element_; }
   /// How many elements there would be.
   unsigned long long count() const { return count_; }
-  /// The most elements of that kind a mesh may have.
+  /// The most elements of that kind there may be.
   unsigned long long limit() const { return limit_; }
 
 private:

@@ -69,13 +69,29 @@ void require_valid_corner_indices(const Mobius_mesh<P>& mesh, const std::string&
     });
 }
 
-// Drops the values of every channel that no corner names (those of the
-// corners an edit removed), keeping the others in their order.
+// Drops the values of channel `c` of `mesh` that no face corner names,
+// keeping the others in their order and the first `kept_prefix` ones
+// whether named or not. The slots that hold no face corner are cleared
+// first: a removed edge's are already (Mobius_mesh::remove_edge()), but a
+// border halfedge may keep the index its face gave it, as CGAL's generic
+// Euler::remove_face() knows of no channel.
+template <class P>
+void remove_unused_values(const Mobius_mesh<P>& mesh, Base_corner_channel& c, std::size_t kept_prefix)
+{
+  Base_corner_channel::Index_array& index = c.indices();
+  for (std::size_t i = 0; i < index.size(); ++i)
+    if (mesh.is_removed(Halfedge_index(i)) || mesh.is_border(Halfedge_index(i)))
+      index[i] = Base_corner_channel::no_value;
+  c.remove_unused_values(kept_prefix);
+}
+
+// Drops the values of every channel that no face corner names (those of
+// the corners an edit removed), keeping the others in their order.
 template <class P>
 void remove_unused_corner_values(Mobius_mesh<P>& mesh)
 {
   Connectivity_access::properties<Halfedge_index>(mesh).template for_each_array<Base_corner_channel>(
-    [](Base_corner_channel& c) { c.remove_unused_values(0); });
+    [&](Base_corner_channel& c) { remove_unused_values(mesh, c, 0); });
 }
 
 } // namespace internal

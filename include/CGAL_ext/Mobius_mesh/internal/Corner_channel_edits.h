@@ -125,14 +125,12 @@ public:
   // Drops the values made since the start that no corner names any more, the
   // others renumbered in their order: most edits make a value (a move one
   // for its vertex's corners, a split one a side, a collapse one), and a loop
-  // of many passes would otherwise hold them all. Removed edges and border
-  // halfedges hold no index (`Mobius_mesh::remove_edge()` and the Euler
-  // operations clear them), so they keep no value alive. Indices taken since
-  // the start are stale after it.
+  // of many passes would otherwise hold them all. Indices taken since the
+  // start are stale after it.
   void remove_unused_values()
   {
     for (Channel& c : channels_)
-      c.array->remove_unused_values(c.values_at_start);
+      internal::remove_unused_values(m_, *c.array, c.values_at_start);
   }
 
   // Whether e is a seam of some channel: the corners of its two faces at an
