@@ -286,15 +286,34 @@ TEST(CornerChannels, SurfaceMeshConversionKeepsSeamsOnly)
     EXPECT_EQ(a[i].seam_edges, b[i].seam_edges) << a[i].name;
 }
 
+// The Euler operations' tests' surfaces: a Möbius strip or a torus of quads.
+Mesh strip_or_torus(bool mobius)
+{
+  Mesh m;
+  if (mobius)
+    CGAL_ext::make_mobius_strip(m, 10, 3);
+  else
+    CGAL_ext::make_torus(m, 6, 4, 2.0, 0.5);
+  return m;
+}
+
+// The value indices that the face corners of `m` name.
+std::set<std::uint32_t> named_indices(const Mesh& m)
+{
+  const auto uv = *m.corner_channel<UV>("c:uv");
+  std::set<std::uint32_t> named;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      if (uv.has_value(m.corner(d)))
+        named.insert(uv.index(m.corner(d)));
+  return named;
+}
+
 TEST(CornerChannels, TriangulationAndEulerOperationsKeepValuesAtTheirVertices)
 {
   for (bool mobius : {false, true}) {
     SCOPED_TRACE(mobius ? "Moebius strip" : "torus");
-    Mesh m;
-    if (mobius)
-      CGAL_ext::make_mobius_strip(m, 10, 3);
-    else
-      CGAL_ext::make_torus(m, 6, 4, 2.0, 0.5);
+    Mesh m = strip_or_torus(mobius);
     fill_distinct(m);
     const std::size_t n_faces = m.number_of_faces();
     EXPECT_EQ(CGAL_ext::triangulate_faces(m), n_faces);
@@ -345,11 +364,7 @@ TEST(CornerChannels, RemovedEdgesNameNoValue)
 {
   for (bool mobius : {false, true}) {
     SCOPED_TRACE(mobius ? "Moebius strip" : "torus");
-    Mesh m;
-    if (mobius)
-      CGAL_ext::make_mobius_strip(m, 10, 3);
-    else
-      CGAL_ext::make_torus(m, 6, 4, 2.0, 0.5);
+    Mesh m = strip_or_torus(mobius);
     CGAL_ext::triangulate_faces(m);
     fill_distinct(m);
     std::size_t joins = 0, collapses = 0;
@@ -376,11 +391,7 @@ TEST(CornerChannels, RemovedEdgesNameNoValue)
     CGAL_ext::Euler::remove_center_vertex(centre, m);
     ASSERT_TRUE(m.is_valid());
     auto uv = *m.corner_channel<UV>("c:uv");
-    std::set<std::uint32_t> named;
-    for (CGAL_ext::Face_index f : m.faces())
-      for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
-        named.insert(uv.index(m.corner(d)));
-    named.erase(uv.no_value());
+    const std::set<std::uint32_t> named = named_indices(m);
     for (std::uint32_t h = 0; h < m.num_halfedges(); ++h)
       if (m.is_removed(CGAL_ext::Halfedge_index(h)))
         EXPECT_EQ(uv.index(CGAL_ext::Halfedge_index(h)), uv.no_value()) << "removed halfedge " << h;
@@ -407,11 +418,7 @@ TEST(CornerChannels, BorderSlotsLeftByCgalsRemoveFaceKeepNoValue)
   EXPECT_EQ(border_indices, 3u); // the case: the removed triangle's slots kept theirs
   CGAL_ext::isotropic_remeshing(m, 0.5, CGAL_ext::parameters::number_of_iterations(1));
   uv = *m.corner_channel<UV>("c:uv");
-  std::set<std::uint32_t> named;
-  for (CGAL_ext::Face_index f : m.faces())
-    for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
-      named.insert(uv.index(m.corner(d)));
-  named.erase(uv.no_value());
+  const std::set<std::uint32_t> named = named_indices(m);
   for (CGAL_ext::Halfedge_index h : m.halfedges())
     if (m.is_border(h))
       EXPECT_EQ(uv.index(h), uv.no_value()) << "border halfedge " << h;
