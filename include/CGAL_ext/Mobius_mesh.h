@@ -930,10 +930,8 @@ public:
   /// recycled slot starts without one).
   void remove_edge(Edge_index e)
   {
-    if (!hprops_.arrays().empty())
-      hprops_.template for_each_array<internal::Base_corner_channel>([&](internal::Base_corner_channel& c) {
-        c.indices()[halfedge(e, 0).idx()] = c.indices()[halfedge(e, 1).idx()] = internal::Base_corner_channel::no_value;
-      });
+    clear_corner(halfedge(e, 0));
+    clear_corner(halfedge(e, 1));
     mark(eprops_, "e:removed", removed_edges_, e.idx(), recycle_);
   }
   /// Marks `f` removed.
