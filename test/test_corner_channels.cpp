@@ -2092,7 +2092,8 @@ Vec2 operator+(const Vec2& a, const Vec2& b) { return {a.u + b.u, a.v + b.v}; }
 Vec2 operator*(double w, const Vec2& a) { return {w * a.u, w * a.v}; }
 
 // Every level with threads (parallel_min_vertices 0), against the serial
-// refinement: the same indices and values, bit for bit.
+// refinement: the same indices and values, bit for bit; also with threads on
+// the levels of a serial refinement, which made no incidence tables.
 TEST(CornerChannels, ParallelIsSerialBitForBit)
 {
   const Shape s = read_shape(test::data("opensubdiv/catmark_chaikin1.obj"));
@@ -2112,16 +2113,22 @@ TEST(CornerChannels, ParallelIsSerialBitForBit)
     S::Refiner<S::Catmull_clark_mask> serial(S::Catmull_clark_mask(), options), parallel(S::Catmull_clark_mask(), options);
     serial.refine(m, 4, es, vs);
     parallel.refine<CGAL::Parallel_tag>(m, 4, es, vs);
-    std::vector<std::uint32_t> ca = base, cb = base;
-    std::vector<Vec2> va, vb;
+    std::vector<std::uint32_t> ca = base, cb = base, cc = base;
+    std::vector<Vec2> va, vb, vc;
     for (const UV& t : uv.values())
       va.push_back({t[0], t[1]});
-    vb = va;
+    for (std::size_t i = 0; i < va.size(); ++i) // values whose sums round, so that their order shows
+      va[i] = {va[i].u / 3 + 0.1 * std::sin(double(i)), va[i].v / 7 + 0.1 * std::cos(double(i))};
+    vc = vb = va;
+    serial.interpolate_face_varying<CGAL::Parallel_tag>(mode, cc, vc);
     serial.interpolate_face_varying(mode, ca, va);
     parallel.interpolate_face_varying<CGAL::Parallel_tag>(mode, cb, vb);
     EXPECT_EQ(ca, cb);
+    EXPECT_EQ(ca, cc);
     ASSERT_EQ(va.size(), vb.size());
+    ASSERT_EQ(va.size(), vc.size());
     EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(Vec2)));
+    EXPECT_EQ(0, std::memcmp(va.data(), vc.data(), va.size() * sizeof(Vec2)));
   }
 }
 #endif

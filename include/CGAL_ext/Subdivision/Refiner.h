@@ -506,6 +506,10 @@ private:
   using Level = internal::Level;
   friend struct internal::Refiner_access;
   const Level& level(unsigned k) const { return levels_[k]; }
+  const internal::Incidence* incidence_tables(unsigned k) const
+  {
+    return k < incidence_.size() && !incidence_[k].empty() ? &incidence_[k] : nullptr;
+  }
 
   // interpolate_level() into `dst`: values, or a mesh's points (internal::Point_output).
   template <class ConcurrencyTag, class Value, class Out>
@@ -824,10 +828,8 @@ private:
   void compute_weights(unsigned slot)
   {
     using Tag = Weight_tag<ConcurrencyTag>;
-    const internal::Incidence* incidence =
-      slot < incidence_.size() && !incidence_[slot].empty() ? &incidence_[slot] : nullptr;
     weight_builder_.template build<Tag>(mask_, options_.crease_method, levels_[slot], child_vertex_count(slot),
-                                        weights_[slot], child_sharpness_, incidence);
+                                        weights_[slot], child_sharpness_, incidence_tables(slot));
   }
 
   // The incidence tables of levels_[slot] if it is to be interpolated in

@@ -61,21 +61,23 @@ void for_each_index(std::uint32_t n, const Body& body)
 }
 
 // Offsets from counts, in place: `offset[i + 1]` holds the count of element
-// i on entry, `offset[0]` is 0; on return `offset[i]` is the sum of the
-// counts before i. Integer sums, so the blocks of the parallel scan give the
-// serial numbering exactly.
+// i on entry, `offset[0]` the first offset (0 for offsets from the start);
+// on return `offset[i]` is the first offset plus the counts before i.
+// Integer sums, so the blocks of the parallel scan give the serial
+// numbering exactly.
 template <class ConcurrencyTag, class T>
 void prefix_sum(T* offset, std::uint32_t n)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if constexpr (is_parallel_tag<ConcurrencyTag>) {
+    const T first = offset[0];
     tbb::parallel_scan(
       tbb::blocked_range<std::uint32_t>(1, n + 1, parallel_grain), T(0),
       [&](const tbb::blocked_range<std::uint32_t>& r, T sum, bool is_final) {
         for (std::uint32_t i = r.begin(); i != r.end(); ++i) {
           sum += offset[i];
           if (is_final)
-            offset[i] = sum;
+            offset[i] = first + sum;
         }
         return sum;
       },

@@ -13,8 +13,11 @@
 #include <CGAL_ext/Sharp_features.h>
 #include <CGAL_ext/Subdivision/Crease.h>
 #include <CGAL_ext/Subdivision/Masks.h>
+#include <CGAL_ext/Subdivision/internal/Incidence.h>
+#include <CGAL_ext/Subdivision/internal/Interpolation.h>
 #include <CGAL_ext/Subdivision/internal/Level.h>
 #include <CGAL_ext/Subdivision/internal/Stencil_splits.h>
+#include <CGAL_ext/Subdivision/internal/Weights.h>
 
 #include <boost/container/small_vector.hpp>
 
@@ -224,8 +227,8 @@ inline void gather_spans(const Level& L, const Fvar_level& F, const Fvar_ring& r
 
 // The two ends of the span of vertex value `x` in a ring whose faces hold
 // the vertex values `vv` (the first and last face, in walk order).
-inline std::pair<u32, u32> span_ends(const Fvar_level& F, const Fvar_ring& r, const std::vector<u32>& vv, u32 x,
-                                     u32 values)
+template <class Vertex_values>
+std::pair<u32, u32> span_ends(const Fvar_level& F, const Fvar_ring& r, const Vertex_values& vv, u32 x, u32 values)
 {
   const u32 m = r.faces();
   if (values == 1) { // a dart of the channel: the span starts and ends at its seam
@@ -382,17 +385,14 @@ public:
     pv_ = pv.data();
     const u32 nv = P_.nv, ne = P_.ne;
     cf.value_of.clear();
-    cf.v_offset.clear(); // cleared first: growing, it then copies nothing
-    cf.v_offset.resize(std::size_t(C_.nv) + 1); // each written below
-    cf.v_offset[0] = 0;
-    for_each_index<Tag>(C_.nv, [&](u32 c) {
-      cf.v_offset[c + 1] = c < nv ? pf.v_offset[c + 1] - pf.v_offset[c]
-                           : c < nv + ne ? ((pf.edge_tag[c - nv] & Fvar_level::mismatch) ? 2u : 1u)
-                                         : 1u;
-    });
-    prefix_sum<Tag>(cf.v_offset.data(), C_.nv);
+    number_child_values<Tag>();
     const u32 n = cf.v_offset[C_.nv];
-    cf.value_tag.assign(n, 0);
+    // The vertex points' tags are their parents' (reclassified below where
+    // semi-sharp); the edge points' are written below where not 0.
+    cf.value_tag.resize(n);
+    const u32 vertex_values = pf.v_offset[nv];
+    std::copy_n(pf.value_tag.begin(), vertex_values, cf.value_tag.begin());
+    std::fill(cf.value_tag.begin() + vertex_values, cf.value_tag.end(), std::uint8_t(0));
     cv.clear();
     cv.resize(n); // each written below: vertex, edge and face points
     cv_ = cv.data();
@@ -403,61 +403,88 @@ public:
     cf.corner.resize(2 * std::size_t(C_.ne));
     for_each_index<Tag>(ne, [&](u32 e) {
       cf.edge_tag[2 * e] = cf.edge_tag[2 * e + 1] = pf.edge_tag[e];
-      null_border_corners(e);
+      split_edge_corners(e);
     });
     std::fill(cf.edge_tag.begin() + 2 * std::size_t(ne), cf.edge_tag.end(), std::uint8_t(0));
-    for_each_index<Tag>(P_.nf, [&](u32 f) { split_corners(f); });
+    for_each_index<Tag>(P_.nf, [&](u32 f) { split_face_corners(f); });
     for_each_index<Tag>(ne, [&](u32 e) { tag_edge_point(e); });
-    for_each_index<Tag>(nv, [&](u32 v) { tag_vertex_point(v); });
+    if (!rules_.linear_boundaries && (!P_.e_sharp.empty() || !P_.v_sharp.empty()))
+      for_each_index<Tag>(nv, [&](u32 v) { reclassify_semi_sharp(v); });
     if constexpr (quad)
       for_each_index<Tag>(P_.nf, [&](u32 f) { face_point(f); });
     for_each_index<Tag>(ne, [&](u32 e) { edge_point(e); });
+    if (!linear_)
+      prepare_smooth_sums<Tag>();
     for_each_index<Tag>(nv, [&](u32 v) { vertex_point(v); });
   }
 
 private:
   using T = Fvar_level;
 
+  // The first child value of each child vertex (cf_->v_offset): the vertex
+  // points first, each with its parent's count of values (so with its
+  // parent's numbers), then the edge points (two values on a seam, one
+  // elsewhere), then the face points (one each).
+  template <class Tag>
+  void number_child_values()
+  {
+    const u32 nv = P_.nv, ne = P_.ne;
+    Array<u32>& o = cf_->v_offset;
+    o.clear(); // cleared first: growing, it then copies nothing
+    o.resize(std::size_t(C_.nv) + 1); // each written below
+    std::copy_n(pf_->v_offset.begin(), std::size_t(nv) + 1, o.begin());
+    for_each_index<Tag>(ne, [&](u32 e) { o[nv + e + 1] = (pf_->edge_tag[e] & T::mismatch) ? 2u : 1u; });
+    prefix_sum<Tag>(o.data() + nv, ne);
+    face_values_ = o[nv + ne];
+    for_each_index<Tag>(C_.nv - nv - ne, [&](u32 f) { o[nv + ne + f + 1] = face_values_ + f + 1; });
+  }
+
   const Value& parent_value(u32 vertex_value) const { return pv_[pf_->value(vertex_value)]; }
+  // A face point has one value, and the face points' values come last.
+  u32 face_value(u32 f) const { return face_values_ + f; }
+  const Value& face_point_of(u32 f) const { return cv_[face_value(f)]; }
   const Value& parent_corner(u32 h) const { return parent_value(pf_->corner[h]); }
   u32 edge_point_value(u32 h) const // the child value of the edge of h on h's side
   {
     const u32 e = dart_encoding::edge_of_halfedge(h);
     return cf_->v_offset[P_.nv + e] + ((pf_->edge_tag[e] & T::mismatch) ? (h & 1u) : 0u);
   }
-  u32 vertex_point_value(u32 h) const // the child value of the corner of h at its target
+  // The child value of the corner of h at its target: the parent's own
+  // number, as the vertex points come first and keep their values' count.
+  u32 vertex_point_value(u32 h) const { return pf_->corner[h]; }
+
+  // The child corners along parent edge e, by the layout of the split
+  // (Level.h; the four halves of e are adjacent there): on a side with a
+  // face, the half at the edge point takes the edge point's value on that
+  // side, the half at the end the parent corner's; on the border, none.
+  void split_edge_corners(u32 e)
   {
-    const u32 v = P_.h_target[h];
-    return cf_->v_offset[v] + (pf_->corner[h] - pf_->v_offset[v]);
+    Array<u32>& c = cf_->corner;
+    for (u32 side : {0u, 1u}) {
+      const u32 h = dart_encoding::halfedge_of_edge(e, side);
+      const bool face = P_.h_face[h] != null_u32;
+      c[P_.first_child(h)] = face ? edge_point_value(h) : null_u32;
+      c[P_.second_child(h)] = face ? vertex_point_value(h) : null_u32;
+    }
   }
 
-  // The child corners of face f, by the layout of the split (Level.h).
-  void split_corners(u32 f)
+  // The child corners along the edges inside face f (one per corner k of f:
+  // quads, from corner k's edge point to the face point; triangles, between
+  // the edge points of corners k and k + 1).
+  void split_face_corners(u32 f)
   {
     namespace de = dart_encoding;
     Array<u32>& c = cf_->corner;
     const u32 k0 = P_.f_offset[f], k1 = P_.f_offset[f + 1], ne = P_.ne;
     for (u32 k = k0; k < k1; ++k) {
-      const u32 kn = k + 1 == k1 ? k0 : k + 1, h = P_.corner_h[k], hn = P_.corner_h[kn];
-      c[P_.first_child(hn)] = edge_point_value(hn);
-      c[P_.second_child(h)] = vertex_point_value(h);
+      const u32 h = P_.corner_h[k];
       if constexpr (quad) {
-        c[de::halfedge_of_edge(2 * ne + kn, 0)] = cf_->v_offset[P_.nv + P_.ne + f];
+        c[de::halfedge_of_edge(2 * ne + k, 0)] = face_value(f);
         c[de::halfedge_of_edge(2 * ne + k, 1)] = edge_point_value(h);
       } else {
         c[de::halfedge_of_edge(2 * ne + k, 0)] = edge_point_value(h);
-        c[de::halfedge_of_edge(2 * ne + k, 1)] = edge_point_value(hn);
+        c[de::halfedge_of_edge(2 * ne + k, 1)] = edge_point_value(P_.corner_h[k + 1 == k1 ? k0 : k + 1]);
       }
-    }
-  }
-
-  // The child slots of the border sides of edge e hold no corner.
-  void null_border_corners(u32 e)
-  {
-    for (u32 side : {0u, 1u}) {
-      const u32 h = dart_encoding::halfedge_of_edge(e, side);
-      if (P_.h_face[h] == null_u32)
-        cf_->corner[P_.first_child(h)] = cf_->corner[P_.second_child(h)] = null_u32;
     }
   }
 
@@ -472,16 +499,16 @@ private:
       cf_->value_tag[i] = t;
   }
 
-  // A vertex point inherits its parent's tags; a semi-sharp value whose
-  // sharpness is spent becomes a crease (FVarRefinement::reclassifySemisharpValues()).
-  void tag_vertex_point(u32 v)
+  // A vertex point has its parent's tags (copied in run()), but a
+  // semi-sharp value whose sharpness is spent becomes a crease
+  // (FVarRefinement::reclassifySemisharpValues()).
+  void reclassify_semi_sharp(u32 v)
   {
-    const u32 pfirst = pf_->v_offset[v], values = pf_->v_offset[v + 1] - pfirst, cfirst = cf_->v_offset[v];
-    if (values == 0)
+    const u32 pfirst = pf_->v_offset[v], values = pf_->v_offset[v + 1] - pfirst, cfirst = pfirst;
+    if (values == 0 || !(pf_->value_tag[pfirst] & T::differs))
       return;
-    std::copy_n(pf_->value_tag.begin() + pfirst, values, cf_->value_tag.begin() + cfirst);
-    if (!(pf_->value_tag[pfirst] & T::differs) || rules_.linear_boundaries)
-      return;
+    if (P_.e_sharp.empty() && !Crease::is_semi_sharp(sharpness_of_vertex(P_, v)))
+      return; // no semi-sharp edge: nothing to reclassify (and no walk)
     Fvar_ring r;
     r.walk(P_, v);
     bool parent_semi_edges = false, child_semi_edges = false;
@@ -525,7 +552,7 @@ private:
   // The span of value j of the vertex of ring r.
   std::pair<u32, u32> span(const Fvar_ring& r, u32 j, u32 values) const
   {
-    std::vector<u32> vv(r.faces());
+    Fvar_ring::Darts vv(r.faces()); // inline: a heap allocation would cost more than the span
     for (u32 i = 0; i < r.faces(); ++i)
       vv[i] = pf_->corner[corner_slot(P_, r.dart[i])];
     const u32 v = P_.target(r.dart[0]);
@@ -538,7 +565,7 @@ private:
     Value sum = parent_corner(P_.corner_h[k0]);
     for (u32 k = k0 + 1; k < k1; ++k)
       sum = sum + parent_corner(P_.corner_h[k]);
-    cv_[cf_->v_offset[P_.nv + P_.ne + f]] = (W(1) / W(double(k1 - k0))) * sum;
+    cv_[face_value(f)] = (W(1) / W(double(k1 - k0))) * sum;
   }
 
   // The values at the source and target of face halfedge h, in its face.
@@ -567,7 +594,7 @@ private:
         if (f == null_u32)
           continue;
         if constexpr (quad)
-          x = x + w.face * cv_[cf_->v_offset[P_.nv + P_.ne + f]];
+          x = x + w.face * face_point_of(f);
         else // the corner of the triangle across from the edge
           x = x + w.face * parent_corner(de::halfedge_of_dart(P_.h_next[g]));
       }
@@ -624,10 +651,131 @@ private:
                                                unsigned(ps.size()), ps.data(), cs.data());
   }
 
-  // The vertex's own mask on the values around it (all one side of no seam).
+  // The smooth rule's sums at the vertices whose value matches their
+  // topology (one value, no seam), made as the points' passes make theirs
+  // (Interpolation.h): serially, each edge that is no seam and each face
+  // corner adds its terms to its vertices' sums, in edge then face order;
+  // in parallel, each vertex gathers them from the level's incidence tables
+  // in that order. Both give the same bits, and a vertex's terms cost a pass
+  // over the edges instead of a walk around it.
+  template <class Tag>
+  void prepare_smooth_sums()
+  {
+    vs_ = &Refiner_access::vertex_sums(r_, k_);
+    if constexpr (is_parallel_tag<Tag>) {
+      inc_ = Refiner_access::incidence(r_, k_);
+      if (!inc_) {
+        build_incidence<Tag>(P_, quad, own_incidence_);
+        inc_ = &own_incidence_;
+      }
+    } else {
+      scatter_smooth_sums();
+    }
+  }
+
+  // The values at the two ends of edge e, a seam of no value: its halfedge
+  // 0's source, then its target, read in either face.
+  std::pair<const Value*, const Value*> end_values(u32 e) const
+  {
+    namespace de = dart_encoding;
+    const u32 h0 = de::halfedge_of_edge(e, 0);
+    const u32 h = P_.h_face[h0] != null_u32 ? h0 : de::halfedge_of_edge(e, 1);
+    const Value *at_target = &parent_corner(h), *at_start = &at_source(h);
+    if (P_.h_target[h] == P_.h_target[h0])
+      return {at_start, at_target};
+    return {at_target, at_start};
+  }
+  const Value& edge_point_of(u32 e) const { return cv_[cf_->v_offset[P_.nv + e]]; }
+
+  void scatter_smooth_sums()
+  {
+    namespace de = dart_encoding;
+    const Vertex_sums& vs = *vs_;
+    Value* to[3] = {nullptr, nullptr, nullptr};
+    for (int s = 0; s < vs.count; ++s) {
+      sums_[s].resize(P_.nv);
+      for (u32 v = 0; v < P_.nv; ++v)
+        if (pf_->v_offset[v + 1] != pf_->v_offset[v]) // a vertex of no face has no value, and no term
+          sums_[s][v] = W(0) * parent_value(pf_->v_offset[v]);
+    }
+    for (Vertex_sums::Term t : {Vertex_sums::neighbours, Vertex_sums::edge_points, Vertex_sums::face_points})
+      if (vs.sum_of[t] != Vertex_sums::none)
+        to[t] = sums_[vs.sum_of[t]].data();
+    Value *neighbours = to[Vertex_sums::neighbours], *edge_points = to[Vertex_sums::edge_points];
+    for (u32 e = 0; e < P_.ne; ++e) {
+      if (pf_->edge_tag[e] & T::mismatch)
+        continue; // its ends have values of their own rules
+      const u32 h0 = de::halfedge_of_edge(e, 0), a = P_.source(de::dart(h0, false)), b = P_.h_target[h0];
+      const std::pair<const Value*, const Value*> y = end_values(e);
+      if (neighbours)
+        neighbours[a] = neighbours[a] + *y.second;
+      if (edge_points)
+        edge_points[a] = edge_points[a] + edge_point_of(e);
+      if (neighbours)
+        neighbours[b] = neighbours[b] + *y.first;
+      if (edge_points)
+        edge_points[b] = edge_points[b] + edge_point_of(e);
+    }
+    if constexpr (quad)
+      if (Value* face_points = to[Vertex_sums::face_points])
+        for (u32 f = 0; f < P_.nf; ++f)
+          for (u32 k = P_.f_offset[f]; k < P_.f_offset[f + 1]; ++k) {
+            const u32 v = P_.h_target[P_.corner_h[k]];
+            face_points[v] = face_points[v] + face_point_of(f);
+          }
+  }
+
+  // The sums of vertex v from the incidence tables, in the serial order.
+  void gather_smooth_sums(u32 v, Value* sums) const
+  {
+    namespace de = dart_encoding;
+    const Incidence& inc = *inc_;
+    const int neighbours = vs_->sum_of[Vertex_sums::neighbours], edge_points = vs_->sum_of[Vertex_sums::edge_points],
+              face_points = vs_->sum_of[Vertex_sums::face_points];
+    for (u32 i = inc.edge_offset[v]; i < inc.edge_offset[v + 1]; ++i) {
+      const u32 end = inc.edge_ends[i], e = de::edge_of_halfedge(end);
+      if (pf_->edge_tag[e] & T::mismatch)
+        continue;
+      if (neighbours != Vertex_sums::none) { // the value at the other end
+        const std::pair<const Value*, const Value*> y = end_values(e);
+        sums[neighbours] = sums[neighbours] + (de::side_of_halfedge(end) ? *y.first : *y.second);
+      }
+      if (edge_points != Vertex_sums::none)
+        sums[edge_points] = sums[edge_points] + edge_point_of(e);
+    }
+    if constexpr (quad)
+      if (face_points != Vertex_sums::none)
+        for (u32 i = inc.corner_offset[v]; i < inc.corner_offset[v + 1]; ++i)
+          sums[face_points] = sums[face_points] + face_point_of(inc.face_of_corner(inc.corners[i]));
+  }
+
+  // The vertex's own mask on its sums (Interpolation.h's vertex_point(),
+  // without a crease).
+  Value point_from_sums(const Vertex_weights<W>& w, u32 v) const
+  {
+    const Value& own = parent_value(pf_->v_offset[v]);
+    const Vertex_sums& vs = *vs_;
+    Value x = w.vertex * own;
+    if (!takes_sums(w))
+      return x;
+    const Value zero = W(0) * own;
+    Value gathered[3] = {zero, zero, zero};
+    if (inc_)
+      gather_smooth_sums(v, gathered);
+    for (int s = 0; s < vs.count; ++s)
+      if (Vertex_sums::has(w, vs.weight_of[s]))
+        x = x + Vertex_sums::weight(w, vs.weight_of[s]) * (inc_ ? gathered[s] : sums_[s][v]);
+    return x;
+  }
+
+  // The vertex's own mask on the values around it (all one side of no
+  // seam): from the sums, but where a crease's ends take a weight of their
+  // own, which needs the walk round the vertex to find their values.
   Value smooth_vertex_point(u32 v, Fvar_ring& r) const
   {
     const Vertex_weights<W>& w = r_.vertex_weights(k_, v);
+    if (!w.has_crease)
+      return point_from_sums(w, v);
     const Value x = w.vertex * parent_value(pf_->v_offset[v]);
     // An inner vertex's ring in the walk's order without building the walk
     // (most vertices: a walk per vertex costs as much as the sums).
@@ -665,7 +813,7 @@ private:
       x = x + w.crease * y;
     if constexpr (quad)
       if (w.has_face && face_dart != null_u32)
-        x = x + w.face * cv_[cf_->v_offset[P_.nv + P_.ne + P_.h_face[dart_encoding::halfedge_of_dart(face_dart)]]];
+        x = x + w.face * face_point_of(P_.h_face[dart_encoding::halfedge_of_dart(face_dart)]);
   }
 
   const Refiner& r_;
@@ -678,6 +826,11 @@ private:
   Fvar_level* cf_ = nullptr;
   const Value* pv_ = nullptr;
   Value* cv_ = nullptr;
+  u32 face_values_ = 0; // the child value of the first face point
+  const Vertex_sums* vs_ = nullptr;
+  const Incidence* inc_ = nullptr; // parallel: the tables the sums are gathered from
+  Incidence own_incidence_;        // made where the refiner has none
+  Array<Value> sums_[3];           // serial: the sums, by parent vertex
 };
 
 // A channel carried step by step: its topology on the current level (vertex

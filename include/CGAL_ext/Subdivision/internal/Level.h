@@ -219,6 +219,18 @@ struct Refiner_access
   {
     return r.level(k);
   }
+  // The incidence tables of level k, null if the refiner has none for it.
+  template <class Refiner>
+  static auto incidence(const Refiner& r, unsigned k)
+  {
+    return r.incidence_tables(k);
+  }
+  // How the vertex weights of step k group their sums (Weights.h's Vertex_sums).
+  template <class Refiner>
+  static const auto& vertex_sums(const Refiner& r, unsigned k)
+  {
+    return r.weights_[k].sums;
+  }
 };
 
 // The arrays of level `k` of refiner `r`.
