@@ -606,14 +606,14 @@ private:
     const u32 pfirst = pf_->v_offset[v], values = pf_->v_offset[v + 1] - pfirst, cfirst = cf_->v_offset[v];
     if (values == 0)
       return;
-    Fvar_ring r;
     if (!(cf_->value_tag[cfirst] & T::differs)) {
       if (linear_)
         cv_[cfirst] = parent_value(pfirst);
       else
-        cv_[cfirst] = smooth_vertex_point(v, r);
+        cv_[cfirst] = smooth_vertex_point(v);
       return;
     }
+    Fvar_ring r;
     for (u32 j = 0; j < values; ++j) {
       const std::uint8_t ct = cf_->value_tag[cfirst + j], pt = pf_->value_tag[pfirst + j];
       const Value& x = parent_value(pfirst + j);
@@ -771,7 +771,7 @@ private:
   // The vertex's own mask on the values around it (all one side of no
   // seam): from the sums, but where a crease's ends take a weight of their
   // own, which needs the walk round the vertex to find their values.
-  Value smooth_vertex_point(u32 v, Fvar_ring& r) const
+  Value smooth_vertex_point(u32 v) const
   {
     const Vertex_weights<W>& w = r_.vertex_weights(k_, v);
     if (!w.has_crease)
@@ -788,6 +788,7 @@ private:
     });
     if (!border)
       return inner;
+    Fvar_ring r;
     r.walk(P_, v);
     const u32 m = r.faces();
     Value sum = x;
