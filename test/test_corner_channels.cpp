@@ -2093,36 +2093,34 @@ Vec2 operator*(double w, const Vec2& a) { return {w * a.u, w * a.v}; }
 
 // Every level with threads (parallel_min_vertices 0), against the serial
 // refinement: the same indices and values, bit for bit; also with threads on
-// the levels of a serial refinement, which made no incidence tables.
-TEST(CornerChannels, ParallelIsSerialBitForBit)
+// the levels of a serial refinement, which made no incidence tables. The
+// channel's values are rounded in their sums, so that their order shows.
+template <class Mask>
+void expect_parallel_is_serial(const Mesh& m, CGAL_ext::Crease_method crease, const std::vector<float>& es)
 {
-  const Shape s = read_shape(test::data("opensubdiv/catmark_chaikin1.obj"));
-  const Mesh m = build(s);
   const auto uv = *m.corner_channel<UV>("c:uv");
   std::vector<std::uint32_t> base(m.number_of_halfedges());
   for (CGAL_ext::Halfedge_index h : m.halfedges())
     base[h.idx()] = m.is_border(h) ? S::internal::null_u32 : uv.index(h);
-  std::vector<float> es(m.number_of_edges()), vs(m.number_of_vertices());
-  for (CGAL_ext::Edge_index e : m.edges())
-    es[e.idx()] = (*m.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name))[e];
+  const std::vector<float> vs(m.number_of_vertices());
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 2);
   for (Face_varying_interpolation mode : all_modes) {
     S::Refinement_options options;
-    options.crease_method = s.crease_method;
+    options.crease_method = crease;
     options.parallel_min_vertices = 0;
-    S::Refiner<S::Catmull_clark_mask> serial(S::Catmull_clark_mask(), options), parallel(S::Catmull_clark_mask(), options);
+    S::Refiner<Mask> serial(Mask(), options), parallel(Mask(), options);
     serial.refine(m, 4, es, vs);
-    parallel.refine<CGAL::Parallel_tag>(m, 4, es, vs);
+    parallel.template refine<CGAL::Parallel_tag>(m, 4, es, vs);
     std::vector<std::uint32_t> ca = base, cb = base, cc = base;
     std::vector<Vec2> va, vb, vc;
-    for (const UV& t : uv.values())
-      va.push_back({t[0], t[1]});
-    for (std::size_t i = 0; i < va.size(); ++i) // values whose sums round, so that their order shows
-      va[i] = {va[i].u / 3 + 0.1 * std::sin(double(i)), va[i].v / 7 + 0.1 * std::cos(double(i))};
+    for (const UV& t : uv.values()) {
+      const double i = double(va.size());
+      va.push_back({t[0] / 3 + 0.1 * std::sin(i), t[1] / 7 + 0.1 * std::cos(i)});
+    }
     vc = vb = va;
-    serial.interpolate_face_varying<CGAL::Parallel_tag>(mode, cc, vc);
+    serial.template interpolate_face_varying<CGAL::Parallel_tag>(mode, cc, vc);
     serial.interpolate_face_varying(mode, ca, va);
-    parallel.interpolate_face_varying<CGAL::Parallel_tag>(mode, cb, vb);
+    parallel.template interpolate_face_varying<CGAL::Parallel_tag>(mode, cb, vb);
     EXPECT_EQ(ca, cb);
     EXPECT_EQ(ca, cc);
     ASSERT_EQ(va.size(), vb.size());
@@ -2130,6 +2128,40 @@ TEST(CornerChannels, ParallelIsSerialBitForBit)
     EXPECT_EQ(0, std::memcmp(va.data(), vb.data(), va.size() * sizeof(Vec2)));
     EXPECT_EQ(0, std::memcmp(va.data(), vc.data(), va.size() * sizeof(Vec2)));
   }
+}
+
+// A Möbius strip whose channel is continuous but across the sides of every
+// fifth face, a value per vertex elsewhere.
+Mesh strip_with_seamed_band(bool triangles)
+{
+  Mesh m;
+  CGAL_ext::make_mobius_strip(m, 12, 3);
+  if (triangles)
+    CGAL_ext::triangulate_faces(m);
+  auto uv = m.add_corner_channel<UV>("c:uv").first;
+  for (CGAL_ext::Vertex_index v : m.vertices())
+    uv.add_value({double(v.idx()), double(v.idx() % 5)});
+  for (CGAL_ext::Face_index f : m.faces())
+    for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      uv.set_index(m.corner(d), f.idx() % 5 == 2 ? std::uint32_t(uv.add_value({0.5, double(f.idx())}))
+                                                 : std::uint32_t(m.target(d).idx()));
+  return m;
+}
+
+TEST(CornerChannels, ParallelIsSerialBitForBit)
+{
+  const Shape s = read_shape(test::data("opensubdiv/catmark_chaikin1.obj"));
+  const Mesh m = build(s);
+  std::vector<float> es(m.number_of_edges());
+  for (CGAL_ext::Edge_index e : m.edges())
+    es[e.idx()] = (*m.property_map<CGAL_ext::Edge_index, float>(CGAL_ext::edge_sharpness_name))[e];
+  expect_parallel_is_serial<S::Catmull_clark_mask>(m, s.crease_method, es);
+  // Möbius edges, a border, and the triangle split.
+  const Mesh quads = strip_with_seamed_band(false), triangles = strip_with_seamed_band(true);
+  expect_parallel_is_serial<S::Catmull_clark_mask>(quads, CGAL_ext::Crease_method::uniform,
+                                                   std::vector<float>(quads.number_of_edges()));
+  expect_parallel_is_serial<S::Loop_mask>(triangles, CGAL_ext::Crease_method::uniform,
+                                          std::vector<float>(triangles.number_of_edges()));
 }
 #endif
 

@@ -362,8 +362,10 @@ void analyse_base(const Level& L, const Corners& user, const Fvar_rules& rules, 
 // One step of a channel from level k to level k + 1 of a refiner
 // (FVarRefinement and PrimvarRefiner::interpFVarFrom{Faces,Edges,Verts}()):
 // the child's vertex values, tags and corners, then the child values. Each
-// child value is computed on its own, so the loops may run on threads with
-// the serial result, bit for bit.
+// child value is computed on its own, but for the sums of the smooth vertex
+// rule, which the serial pass scatters and the parallel one gathers in the
+// same order; so the loops may run on threads with the serial result, bit
+// for bit.
 template <class Refiner, class Value>
 class Fvar_step
 {
@@ -454,9 +456,10 @@ private:
   u32 vertex_point_value(u32 h) const { return pf_->corner[h]; }
 
   // The child corners along parent edge e, by the layout of the split
-  // (Level.h; the four halves of e are adjacent there): on a side with a
-  // face, the half at the edge point takes the edge point's value on that
-  // side, the half at the end the parent corner's; on the border, none.
+  // (Level.h: the four child halfedges of e are adjacent there). On a side
+  // with a face, the child halfedge that ends at the edge point takes the
+  // edge point's value on that side, the one that ends at the parent's end
+  // the parent corner's; on the border, none.
   void split_edge_corners(u32 e)
   {
     Array<u32>& c = cf_->corner;
@@ -673,15 +676,18 @@ private:
     }
   }
 
-  // The values at the two ends of edge e, a seam of no value: its halfedge
-  // 0's source, then its target, read in either face.
+  // The values at the two ends of edge e, which is no seam (its faces
+  // agree at each end): at its halfedge 0's source, then at its target,
+  // read in the face of halfedge 0, or of halfedge 1 on the border, which
+  // runs the other way but on a Möbius edge.
   std::pair<const Value*, const Value*> end_values(u32 e) const
   {
     namespace de = dart_encoding;
     const u32 h0 = de::halfedge_of_edge(e, 0);
-    const u32 h = P_.h_face[h0] != null_u32 ? h0 : de::halfedge_of_edge(e, 1);
+    const bool face0 = P_.h_face[h0] != null_u32;
+    const u32 h = face0 ? h0 : de::halfedge_of_edge(e, 1);
     const Value *at_target = &parent_corner(h), *at_start = &at_source(h);
-    if (P_.h_target[h] == P_.h_target[h0])
+    if (face0 || P_.e_mobius[e])
       return {at_start, at_target};
     return {at_target, at_start};
   }
@@ -777,8 +783,8 @@ private:
     if (!w.has_crease)
       return point_from_sums(w, v);
     const Value x = w.vertex * parent_value(pf_->v_offset[v]);
-    // An inner vertex's ring in the walk's order without building the walk
-    // (most vertices: a walk per vertex costs as much as the sums).
+    // An inner vertex's ring in the walk's order without building the walk,
+    // which costs more than the sums.
     Value inner = x;
     bool border = false;
     P_.for_each_dart_at(v, [&](u32 d) {

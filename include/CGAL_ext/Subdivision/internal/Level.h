@@ -211,7 +211,8 @@ struct Level
 };
 
 // What the engine (face-varying interpolation) and the white-box tests read
-// of a Refiner beyond its interface: the arrays of its levels.
+// of a Refiner beyond its interface: the arrays of its levels, their
+// incidence tables and how their vertex weights group their sums.
 struct Refiner_access
 {
   template <class Refiner>
