@@ -764,14 +764,18 @@ private:
     Value x = w.vertex * own;
     if (!takes_sums(w))
       return x;
+    auto weigh = [&](auto sum) {
+      for (int s = 0; s < vs.count; ++s)
+        if (Vertex_sums::has(w, vs.weight_of[s]))
+          x = x + Vertex_sums::weight(w, vs.weight_of[s]) * sum(s);
+      return x;
+    };
+    if (!inc_)
+      return weigh([&](int s) -> const Value& { return sums_[s][v]; });
     const Value zero = W(0) * own;
     Value gathered[3] = {zero, zero, zero};
-    if (inc_)
-      gather_smooth_sums(v, gathered);
-    for (int s = 0; s < vs.count; ++s)
-      if (Vertex_sums::has(w, vs.weight_of[s]))
-        x = x + Vertex_sums::weight(w, vs.weight_of[s]) * (inc_ ? gathered[s] : sums_[s][v]);
-    return x;
+    gather_smooth_sums(v, gathered);
+    return weigh([&](int s) -> const Value& { return gathered[s]; });
   }
 
   // The vertex's own mask on the values around it (all one side of no
