@@ -11,6 +11,15 @@
 //   CGAL_ext_positions    catmull_clark() of the points alone
 //   CGAL_ext_vertex_map   the points and a vertex map of std::array<double, 2>
 //                         (the cost of two more doubles per vertex)
+//   CGAL_ext_vertex_map_4d  the points and a vertex map of std::array<double, 4>:
+//                         as many bytes as the channel holds (its two doubles
+//                         per value and its four 4-byte indices per quad)
+//   CGAL_ext_vertex_map_and_indices  the points and the vertex map of
+//                         std::array<double, 2>, then an index per face
+//                         corner of the result (its target vertex) written
+//                         in a pass of its own into an array such as a
+//                         channel's: what any channel that holds an index
+//                         per corner costs at the least
 //   CGAL_ext_uv_channel   the points and the corner channel "c:uv" of
 //                         std::array<double, 2> (the default rule, corners_plus1)
 //   OpenSubdiv_Far_positions   TopologyRefiner from the descriptor, RefineUniform
@@ -29,6 +38,7 @@
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/polygon_soup_to_mobius_mesh.h>
 #include <CGAL_ext/subdivision.h>
+#include <CGAL_ext/internal/Uninitialized_array.h> // the array a channel keeps its indices in
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -110,7 +120,7 @@ const Input& input(const std::string& name)
   return it->second;
 }
 
-enum class Data { positions, vertex_map, uv_channel };
+enum class Data { positions, vertex_map, vertex_map_4d, vertex_map_and_indices, uv_channel };
 
 // The input as our mesh, with the data asked for. Face p is polygon p, and a
 // corner is found by its vertex (the import may reverse a face).
@@ -118,10 +128,14 @@ Mesh our_mesh(const Input& in, Data data)
 {
   Mesh m;
   CGAL_ext::polygon_soup_to_mobius_mesh(in.points, in.faces, m);
-  if (data == Data::vertex_map) {
+  if (data == Data::vertex_map || data == Data::vertex_map_and_indices) {
     auto map = m.add_property_map<CGAL_ext::Vertex_index, Uv>("v:uv").first;
     for (CGAL_ext::Vertex_index v : m.vertices())
       map[v] = {m.point(v).x(), m.point(v).y()};
+  } else if (data == Data::vertex_map_4d) {
+    auto map = m.add_property_map<CGAL_ext::Vertex_index, std::array<double, 4>>("v:uvst").first;
+    for (CGAL_ext::Vertex_index v : m.vertices())
+      map[v] = {m.point(v).x(), m.point(v).y(), m.point(v).z(), 1.0};
   } else if (data == Data::uv_channel) {
     auto uv = m.add_corner_channel<Uv>("c:uv").first;
     uv.values() = in.uvs;
@@ -141,6 +155,17 @@ std::vector<Uv> our_uvs(const Input& in, int levels)
   return m.corner_channel<Uv>("c:uv")->values();
 }
 
+// An index per face corner of `m` (null on the border), as a channel holds
+// them, kept from the optimiser.
+void write_corner_indices(const Mesh& m)
+{
+  CGAL_ext::internal::Uninitialized_array<std::uint32_t> index(m.number_of_halfedges());
+  for (CGAL_ext::Halfedge_index h : m.halfedges())
+    index[h.idx()] = m.is_border(h) ? std::uint32_t(-1) : std::uint32_t(m.target(h).idx());
+  benchmark::DoNotOptimize(index.data());
+  benchmark::ClobberMemory();
+}
+
 void ours(benchmark::State& state, const std::string& name, Data data)
 {
   const Mesh base = our_mesh(input(name), data);
@@ -150,6 +175,8 @@ void ours(benchmark::State& state, const std::string& name, Data data)
     auto m = std::make_unique<Mesh>(base);
     state.ResumeTiming();
     CGAL_ext::Subdivision::catmull_clark(*m, CGAL_ext::parameters::number_of_iterations(levels));
+    if (data == Data::vertex_map_and_indices)
+      write_corner_indices(*m);
     state.PauseTiming();
     state.counters["faces"] = double(m->number_of_faces());
     m.reset();
@@ -288,6 +315,8 @@ void register_case(const std::string& name, int first_level, int last_level)
   };
   add("CGAL_ext_positions", ours, Data::positions);
   add("CGAL_ext_vertex_map", ours, Data::vertex_map);
+  add("CGAL_ext_vertex_map_4d", ours, Data::vertex_map_4d);
+  add("CGAL_ext_vertex_map_and_indices", ours, Data::vertex_map_and_indices);
   add("CGAL_ext_uv_channel", ours, Data::uv_channel);
 #if CGAL_EXT_HAVE_OPENSUBDIV
   add("OpenSubdiv_Far_positions", far, false);
