@@ -5,7 +5,11 @@
 // triangles), decimated to 10 % and to 1 % of its faces.
 //
 // Ours runs twice: as decimate() does by default, the collapses and then the
-// relocation of the vertices toward the input, and the collapses alone.
+// relocation of the vertices toward the input, and the collapses alone; and
+// twice more with the torus's texture coordinates as a corner channel (grid
+// node (i, j) at (i/n, j/n), cut where the grid wraps), its values weighed by
+// attribute quadrics (corner_value_weight 1, the default) or not (0). The
+// peers carry no texture coordinates.
 //
 // Timed: the decimation alone, one call per iteration; the copy of the input
 // into each library's mesh is made with the timers paused. OpenMesh also runs
@@ -19,7 +23,9 @@
 // (PMP::approximate_symmetric_Hausdorff_distance, random uniform sampling of
 // a fixed number of points with a fixed seed, and the vertices, the same for
 // all three); torus_mean, torus_p999 and torus_max, the distribution of the
-// distance from points of the result to the torus in closed form.
+// distance from points of the result to the torus in closed form;
+// uv_to_surface (with the channel), the largest distance from a vertex to
+// the torus's closed form at the texture coordinates of one of its corners.
 
 #include "heap_accounting.h"
 
@@ -53,6 +59,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -110,6 +117,74 @@ struct Ours_with
 
 using Ours = Ours_with<true>;
 using Ours_unrelocated = Ours_with<false>; // the collapses alone
+
+// The torus's texture coordinates: grid node (i, j) holds (i/n, j/n), so the
+// channel is cut along the two circles where the grid wraps.
+using Uv = std::array<double, 2>;
+void add_torus_uv(Mesh& m)
+{
+  auto uv = m.add_corner_channel<Uv>("c:uv").first;
+  for (std::size_t i = 0; i <= grid; ++i)
+    for (std::size_t j = 0; j <= grid; ++j)
+      uv.add_value({double(i) / grid, double(j) / grid});
+  const auto node = [](std::size_t i, std::size_t j) { return std::uint32_t(i * (grid + 1) + j); };
+  for (CGAL_ext::Face_index f : m.faces()) {
+    // Face p is triangle p of torus_triangle_soup(): its cell and half.
+    const std::size_t p = f.idx(), i = p / 2 / grid, j = p / 2 % grid;
+    const std::array<std::uint32_t, 3> nodes =
+      p % 2 == 0 ? std::array<std::uint32_t, 3>{node(i, j), node(i + 1, j), node(i + 1, j + 1)}
+                 : std::array<std::uint32_t, 3>{node(i, j), node(i + 1, j + 1), node(i, j + 1)};
+    const auto& corners = input_soup().triangles[p];
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      for (std::size_t k = 0; k < 3; ++k)
+        if (corners[k] == m.target(d).idx())
+          uv.set_index(m.corner(d), nodes[k]);
+  }
+}
+
+// Ours with the texture coordinates as a corner channel, the values weighed
+// by `weight` (corner_value_weight), the relocation on.
+template <int weight>
+struct Ours_uv
+{
+  using M = Mesh;
+  static void load(M& m)
+  {
+    CGAL_ext::from_surface_mesh(input_surface_mesh(), m);
+    add_torus_uv(m);
+  }
+  static void decimate(M& m, std::size_t target)
+  {
+    CGAL_ext::decimate(m, CGAL_ext::parameters::number_of_faces(target).corner_value_weight(double(weight)));
+  }
+  static std::size_t faces(const M& m) { return m.number_of_faces(); }
+  static SM to_sm(const M& m) { return Ours::to_sm(m); }
+};
+
+// The largest distance from a vertex of `m` to the torus's closed form at
+// the texture coordinates of one of its corners: how far the values have
+// strayed from their points.
+double uv_to_surface(const Mesh& m)
+{
+  const auto uv = m.corner_channel<Uv>("c:uv");
+  if (!uv)
+    return 0;
+  const double pi = std::acos(-1.0);
+  double largest = 0;
+  for (CGAL_ext::Face_index f : m.faces())
+    for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
+      const Uv& t = (*uv)[m.corner(d)];
+      const double a = 2 * pi * t[0], b = 2 * pi * t[1];
+      const Point on_torus((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b));
+      largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(m.point(m.target(d)), on_torus)));
+    }
+  return largest;
+}
+template <class Other>
+double uv_to_surface(const Other&) // the peers carry no texture coordinates
+{
+  return 0;
+}
 
 struct Cgal
 {
@@ -278,6 +353,8 @@ void decimation(benchmark::State& state, std::size_t per_mille)
   heap::counting = false;
   state.counters["peak_heap_bytes"] = double(heap::peak);
   state.counters["faces"] = double(Impl::faces(m));
+  if (const double uv = uv_to_surface(m); uv > 0)
+    state.counters["uv_to_surface"] = uv;
   // Computed once per implementation and target, not once per repetition.
   static std::map<std::size_t, std::pair<double, Torus_error>> errors;
   auto known = errors.find(target);
@@ -310,6 +387,8 @@ int main(int argc, char** argv)
                           (per_mille == 100 ? "10" : "1") + "_percent/";
     add<Ours>(c + "CGAL_ext", per_mille);
     add<Ours_unrelocated>(c + "CGAL_ext_no_relocation", per_mille);
+    add<Ours_uv<1>>(c + "CGAL_ext_uv_channel", per_mille);
+    add<Ours_uv<0>>(c + "CGAL_ext_uv_channel_weight_0", per_mille);
     add<Cgal>(c + "CGAL_edge_collapse_GH", per_mille);
 #if CGAL_EXT_HAVE_OPENMESH
     add<Open_mesh<false>>(c + "OpenMesh_Decimater_quadric", per_mille);

@@ -61,15 +61,21 @@ namespace CGAL_ext {
 /// Corner channels (texture coordinates, corner normals) are carried: the
 /// seams of each channel are feature edges (never collapsed, their ends never
 /// moved), so seams stay where they were, with their values. A collapse off
-/// the seams that meets one gives the faces it moves the seam side's values;
-/// one between two vertices off the seams gives the merged vertex one new
-/// value, interpolated along the edge at the projection of its new point (an
-/// approximation: Garland and Heckbert's attribute quadrics would weigh the
-/// values in the placement, here they follow it; the relocation moves
-/// vertices without changing their values; where one end's corners have no
-/// value, the merged corners take the other's). An edge between two vertices
-/// on seams is not collapsed. The values are renumbered at the end: those no
-/// corner names (the input's unused ones too) are dropped.
+/// the seams that meets one gives the faces it moves the seam side's values.
+/// Off the seams the values weigh in the collapses, by attribute quadrics
+/// (Garland and Heckbert 1998, in Hoppe's form of 1999): each input
+/// triangle gives its values as an affine field over its plane, a vertex
+/// sums the squared distances of a value to the fields of the triangles
+/// merged into it, and that sum, at the best value, is added to the cost of
+/// a collapse and to the quadric its point minimises; the merged vertex
+/// takes that best value, the area-weighted mean of the fields at its point.
+/// A channel is weighed so that a value off by a share of its range costs as
+/// a point off by that share of the bounding box's diagonal, and
+/// `maximum_error` bounds this sum. The relocation moves vertices without
+/// changing their values; where one end's corners have no value, the merged
+/// corners take the other's. An edge between two vertices on seams is not
+/// collapsed. The values are renumbered at the end: those no corner names
+/// (the input's unused ones too) are dropped.
 ///
 /// \param mesh a mesh without removed elements; it is garbage-collected at the end and its
 ///   unused capacity released
@@ -84,7 +90,8 @@ namespace CGAL_ext {
 ///   \cgalParamNBegin{maximum_error}
 ///     \cgalParamDescription{stop when the cheapest collapse's error is larger: its quadric's value at the
 ///                           placement divided by the area of the faces whose planes it sums (an area-weighted
-///                           mean squared distance, in squared length units)}
+///                           mean squared distance, in squared length units; with corner channels, their
+///                           values' error, weighed as above, is part of it)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_normal_deviation}
 ///     \cgalParamDescription{in degrees, (0, 180]: no face's normal may turn by more in one collapse}
@@ -99,6 +106,13 @@ namespace CGAL_ext {
 ///     \cgalParamDescription{`false` to leave the vertices where the collapses put them, without the
 ///                           copy of the input and its AABB tree that the relocation needs}
 ///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{corner_value_weight}
+///     \cgalParamDescription{finite, >= 0: how much the corner channels' values weigh against the points
+///                           in the cost and the point of a collapse, relative to their ranges (above); 0:
+///                           the points alone decide, and a merged corner takes the value interpolated
+///                           along the collapsed edge at the projection of its point}
+///     \cgalParamDefault{1}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_sharpness_map}
 ///     \cgalParamDescription{edges of sharpness > 0 are features: never collapsed, their ends never moved}

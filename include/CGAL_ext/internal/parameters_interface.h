@@ -32,6 +32,7 @@ CGAL_EXT_add_named_parameter(number_of_faces_t, number_of_faces, number_of_faces
 CGAL_EXT_add_named_parameter(face_ratio_t, face_ratio, face_ratio)
 CGAL_EXT_add_named_parameter(maximum_error_t, maximum_error, maximum_error)
 CGAL_EXT_add_named_parameter(relocate_vertices_t, relocate_vertices, relocate_vertices)
+CGAL_EXT_add_named_parameter(corner_value_weight_t, corner_value_weight, corner_value_weight)
 // decimation and isotropic remeshing
 CGAL_EXT_add_named_parameter(protect_borders_t, protect_borders, protect_borders)
 // isotropic remeshing

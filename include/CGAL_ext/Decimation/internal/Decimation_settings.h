@@ -33,6 +33,7 @@ struct Decimation_settings
   double min_cos_normal_turn = 0;
   bool protect_borders = false;
   bool relocate_vertices = true;
+  double corner_value_weight = 1; // of the corner values' error against the points'
 };
 
 template <class NP>
@@ -76,6 +77,11 @@ Decimation_settings decimation_settings(std::size_t faces, const NP& np)
   s.protect_borders = pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::protect_borders), false);
   s.relocate_vertices =
     pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::relocate_vertices), true);
+  s.corner_value_weight =
+    double(pm::choose_parameter(pm::get_parameter(np, CGAL_ext::internal_np::corner_value_weight), 1.0));
+  if (!(s.corner_value_weight >= 0) || !std::isfinite(s.corner_value_weight))
+    throw Parameter_error(std::string(fn) + "corner_value_weight must be a finite number >= 0, not " +
+                          std::to_string(s.corner_value_weight));
   return s;
 }
 

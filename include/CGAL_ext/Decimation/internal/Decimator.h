@@ -8,6 +8,7 @@
 #define CGAL_EXT_DECIMATION_INTERNAL_DECIMATOR_H
 
 #include <CGAL_ext/Decimation/Decimation_result.h>
+#include <CGAL_ext/Decimation/internal/Attribute_quadrics.h>
 #include <CGAL_ext/Mobius_mesh/internal/Corner_channel_edits.h>
 #include <CGAL_ext/Decimation/internal/Decimation_settings.h>
 #include <CGAL_ext/Decimation/internal/Quadric.h>
@@ -43,8 +44,9 @@ struct Collapse_candidate
 
 // The Garland–Heckbert state of a decimation: per-vertex quadrics and plane
 // areas, feature flags and costs per edge, CGAL's modifiable priority queue
-// of the edges by cost (one entry per edge, updated in place), and the corner
-// channels' seams and merges (Corner_channel_edits.h).
+// of the edges by cost (one entry per edge, updated in place), the corner
+// channels' seams and merges (Corner_channel_edits.h) and their values'
+// quadrics (Attribute_quadrics.h).
 template <class P>
 class Decimator
 {
@@ -52,7 +54,8 @@ public:
   Decimator(Mobius_mesh<P>& mesh, const Decimation_settings& settings, std::vector<char> feature)
     : m_(mesh), s_(settings), feature_(std::move(feature)), cost_(mesh.num_edges(), 0.0),
       refused_(mesh.num_edges(), 0), quadric_(mesh.num_vertices()), area_(mesh.num_vertices(), 0.0),
-      queue_(mesh.num_edges(), Cheaper{&cost_}), corners_(mesh, feature_)
+      queue_(mesh.num_edges(), Cheaper{&cost_}), corners_(mesh, feature_),
+      values_(mesh, corners_, settings.corner_value_weight)
   {
     options_.min_cos_normal_turn = settings.min_cos_normal_turn;
     options_.is_protected = [this](Edge_index e) { return feature_[e.idx()] != 0; };
@@ -135,6 +138,19 @@ private:
 
   Point_d pt(Vertex_index v) const { return to_point_d(m_.point(v)); }
 
+  // What the corner values add to the cost of merging p and q: the
+  // attribute quadrics of the ends off the seams (a seam vertex keeps its
+  // values, and its faces hold several).
+  Quadric values_residual(Vertex_index p, Vertex_index q) const
+  {
+    const bool seam_p = corners_.is_seam_vertex(p), seam_q = corners_.is_seam_vertex(q);
+    if (seam_p && seam_q)
+      return Quadric();
+    if (seam_p || seam_q)
+      return values_.residual({seam_p ? q : p});
+    return values_.residual({p, q});
+  }
+
   bool fixed(Vertex_index v) const
   {
     for (Edge_index e : CGAL_ext::edges_around_target(m_.halfedge(v), m_))
@@ -149,7 +165,7 @@ private:
   {
     const Dart d = m_.halfedge(e);
     const Vertex_index p = m_.source(d), q = m_.target(d);
-    const Quadric sum = quadric_[p.idx()] + quadric_[q.idx()];
+    const Quadric sum = quadric_[p.idx()] + quadric_[q.idx()] + values_residual(p, q);
     Collapse_candidate c;
     const bool fp = fixed(p), fq = fixed(q);
     if (fp || fq) {
@@ -245,6 +261,7 @@ private:
   Collapse_options options_;
   CGAL::Modifiable_priority_queue<Edge_index, Cheaper, Edge_id> queue_;
   Corner_channel_edits<P> corners_; // after feature_, to which it adds the seams
+  Attribute_quadrics<P> values_;    // after corners_, which reads the values
 };
 
 // Collapses the edge `e` to `c` if check_collapse() allows it one way or the
@@ -274,7 +291,10 @@ bool Decimator<P>::collapse(Edge_index e, const Collapse_candidate& c)
   std::vector<std::pair<char, float>> side_values; // read before the collapse removes one of each pair
   for (Edge_index s : sides)
     side_values.emplace_back(feature_[s.idx()], sharpness_ ? (*sharpness_)[s] : 0.f);
-  const typename Corner_channel_edits<P>::Plan corner_plan = corners_.plan(d, point); // read before the collapse
+  std::vector<std::vector<double>> fitted; // the merged values, where neither end is on a seam
+  if (!corners_.is_seam_vertex(p) && !corners_.is_seam_vertex(q))
+    fitted = values_.fitted({p, q}, to_point_d(point));
+  const typename Corner_channel_edits<P>::Plan corner_plan = corners_.plan(d, point, &fitted); // read before the collapse
   Euler::collapse_edge(d, m_, Euler::unchecked); // check_collapse() checked the link condition
   corners_.apply(corner_plan, q);
   corners_.merge_flags(p, q);
@@ -283,6 +303,7 @@ bool Decimator<P>::collapse(Edge_index e, const Collapse_candidate& c)
       queue_.erase(s);
   m_.points()[q] = point;
   quadric_[q.idx()] += quadric_[p.idx()];
+  values_.merge(p, q);
   area_[q.idx()] += area_[p.idx()];
   // The two sides of a collapsed triangle become one edge: a feature if either was.
   for (std::size_t i = 0; i < apexes.size(); ++i) {

@@ -57,10 +57,11 @@ inline std::array<double, 3> barycentric_d(const Point_d& a, const Point_d& b, c
 //   edge hold at the seam vertex: the region of the channel grows over them,
 //   every value stays as it was;
 // * where neither is, each end has one index per channel, and the kept
-//   vertex's corners take one value made from both, interpolated along the
-//   edge at the projection of the collapse's point onto it (a new value, so
-//   that corners of other vertices sharing an index keep theirs). Along the
-//   edge rather than at the nearest point of the triangles round it: the
+//   vertex's corners take one new value (so that corners of other vertices
+//   sharing an index keep theirs): the one the caller fitted (decimation,
+//   from its attribute quadrics), else one made from both ends, interpolated
+//   along the edge at the projection of the collapse's point onto it. Along
+//   the edge rather than at the nearest point of the triangles round it: the
 //   point of a collapse lies off the surface where it bends, and its nearest
 //   point on a triangle can then slide far across the triangle, taking the
 //   far corner's value (up to three times the error, measured on a torus).
@@ -71,8 +72,8 @@ inline std::array<double, 3> barycentric_d(const Point_d& a, const Point_d& b, c
 // seams (remeshing, which projects onto the input), else of its star before
 // the move. Values are made, never changed: corners of other vertices may
 // share an index.
-// This is the approximation of the values (Garland and Heckbert's attribute
-// quadrics would weigh them in the placement; here they follow it).
+// Outside decimation, the values follow the points that the loop places:
+// they do not weigh in the placement.
 template <class P>
 class Corner_channel_edits
 {
@@ -90,7 +91,7 @@ public:
         using L = Linear_value<W, K, T>;
         if constexpr (L::defined) {
           if (const auto c = mesh.template corner_channel<T>(name))
-            channels_.push_back({c->array(), c->number_of_values(),
+            channels_.push_back({c->array(), c->number_of_values(), doubles_of<K, T>(*c),
                                  [c = *c](const u32* index, const double* weight, std::size_t n) {
                                    // The first weight is 1 minus the others in W: they sum to 1
                                    // exactly with an exact kernel.
@@ -121,6 +122,19 @@ public:
   }
 
   bool has_channels() const { return !channels_.empty(); }
+  std::size_t number_of_channels() const { return channels_.size(); }
+  // The doubles a value of channel k is read as (0: it is not).
+  std::size_t value_size(std::size_t k) const { return channels_[k].doubles.size; }
+  // The value of the corner of face(h) at target(h) in channel k, as
+  // value_size(k) doubles into x; false if the corner has none.
+  bool read_corner(std::size_t k, Dart h, double* x) const
+  {
+    const u32 i = channels_[k].array->indices()[m_.corner(h).idx()];
+    if (i == Base_corner_channel::no_value || channels_[k].doubles.size == 0)
+      return false;
+    channels_[k].doubles.read(i, x);
+    return true;
+  }
 
   // Drops the values made since the start that no corner names any more, the
   // others renumbered in their order: most edits make a value (a move one
@@ -173,7 +187,11 @@ public:
     std::vector<u32> at_x, at_y, at_kept; // by channel
   };
   using Plan = Triangles_round_collapse<Face_corners>;
-  Plan plan(Dart d, const P& point) const
+  // `fitted`, if given, holds by channel the value (as doubles) that a
+  // collapse between two vertices off the seams gives the merged corners
+  // where it makes a new value (decimation's attribute quadrics); an empty
+  // one, or none, interpolates along the edge.
+  Plan plan(Dart d, const P& point, const std::vector<std::vector<double>>* fitted = nullptr) const
   {
     if (channels_.empty())
       return Plan();
@@ -187,7 +205,8 @@ public:
       const std::vector<u32> ip = indices_at(at_p);
       const double t = parameter_along(p, q, point);
       for (std::size_t k = 0; k < channels_.size(); ++k)
-        moved[k] = merged(channels_[k], ip[k], moved[k], t);
+        moved[k] = merged(channels_[k], ip[k], moved[k], t,
+                          fitted && k < fitted->size() && !(*fitted)[k].empty() ? (*fitted)[k].data() : nullptr);
     }
     return Plan(m_, d, [&](const typename Plan::Darts& f) {
       const bool keeps = m_.target(f.at_end) == p ? seam_p : seam_q;
@@ -327,10 +346,29 @@ public:
   }
 
 private:
+  // A channel's values as doubles (Value_doubles), where they can be.
+  struct Doubles
+  {
+    std::size_t size = 0; // per value; 0: not read as doubles
+    std::function<void(u32 index, double* x)> read;
+    std::function<u32(const double* x)> make; // appends the value, returns its index
+  };
+  template <class K, class T, class Channel_map>
+  static Doubles doubles_of(const Channel_map& c)
+  {
+    using D = Value_doubles<K, T>;
+    if constexpr (D::defined)
+      return {D::size, [c](u32 i, double* x) { D::read(c.values()[i], x); },
+              [c](const double* x) { return c.add_value(D::make(x)); }};
+    else
+      return {};
+  }
+
   struct Channel
   {
     Base_corner_channel* array;
     std::size_t values_at_start; // kept where they are: callers hold their indices
+    Doubles doubles;
     // Appends the combination of the n values of `index` with weights
     // `weight` (the first one's taken as 1 minus the others), returns its index.
     std::function<u32(const u32* index, const double* weight, std::size_t n)> mix;
@@ -408,13 +446,16 @@ private:
   // The one index of two ends that each have one: theirs where they agree
   // or the point is at an end, the other's where one end's corners have no
   // value (the merged region has one value or none: the one there is, rather
-  // than dropping it), else a new value between them.
-  static u32 merged(const Channel& c, u32 ip, u32 iq, double t)
+  // than dropping it), else a new value: `fitted` where given, else the
+  // value between them at t.
+  static u32 merged(const Channel& c, u32 ip, u32 iq, double t, const double* fitted = nullptr)
   {
     if (ip == iq || iq == Base_corner_channel::no_value || t == 0)
       return ip == Base_corner_channel::no_value ? iq : ip;
     if (ip == Base_corner_channel::no_value || t == 1)
       return iq;
+    if (fitted)
+      return c.doubles.make(fitted);
     const u32 index[2] = {ip, iq};
     const double weight[2] = {1 - t, t};
     return c.mix(index, weight, 2);

@@ -111,6 +111,69 @@ struct Linear_value<W, K, std::array<E, N>, std::enable_if_t<Linear_value<W, K, 
   }
 };
 
+// A value of type T as a vector of doubles, and back: for what works on
+// values in double (decimation's attribute quadrics). Floating-point
+// numbers, the kernel's 2D and 3D points and vectors (their coordinates, made
+// back exactly from the doubles with an exact kernel), arrays of them.
+template <class K, class T, class = void>
+struct Value_doubles
+{
+  static constexpr bool defined = false;
+  static constexpr std::size_t size = 0;
+};
+template <class K, class T>
+struct Value_doubles<K, T, std::enable_if_t<std::is_floating_point_v<T>>>
+{
+  static constexpr bool defined = true;
+  static constexpr std::size_t size = 1;
+  static void read(const T& t, double* x) { x[0] = double(t); }
+  static T make(const double* x) { return T(x[0]); }
+};
+template <class K, class T>
+struct Value_doubles<K, T, std::enable_if_t<std::is_same_v<T, typename K::Point_2> || std::is_same_v<T, typename K::Vector_2>>>
+{
+  static constexpr bool defined = true;
+  static constexpr std::size_t size = 2;
+  static void read(const T& t, double* x)
+  {
+    x[0] = CGAL::to_double(t.x());
+    x[1] = CGAL::to_double(t.y());
+  }
+  static T make(const double* x) { return T(typename K::FT(x[0]), typename K::FT(x[1])); }
+};
+template <class K, class T>
+struct Value_doubles<K, T, std::enable_if_t<std::is_same_v<T, typename K::Point_3> || std::is_same_v<T, typename K::Vector_3>>>
+{
+  static constexpr bool defined = true;
+  static constexpr std::size_t size = 3;
+  static void read(const T& t, double* x)
+  {
+    x[0] = CGAL::to_double(t.x());
+    x[1] = CGAL::to_double(t.y());
+    x[2] = CGAL::to_double(t.z());
+  }
+  static T make(const double* x) { return T(typename K::FT(x[0]), typename K::FT(x[1]), typename K::FT(x[2])); }
+};
+template <class K, class E, std::size_t N>
+struct Value_doubles<K, std::array<E, N>, std::enable_if_t<Value_doubles<K, E>::defined>>
+{
+  using Element = Value_doubles<K, E>;
+  static constexpr bool defined = true;
+  static constexpr std::size_t size = N * Element::size;
+  static void read(const std::array<E, N>& t, double* x)
+  {
+    for (std::size_t i = 0; i < N; ++i)
+      Element::read(t[i], x + i * Element::size);
+  }
+  static std::array<E, N> make(const double* x)
+  {
+    std::array<E, N> t{};
+    for (std::size_t i = 0; i < N; ++i)
+      t[i] = Element::make(x + i * Element::size);
+    return t;
+  }
+};
+
 // The vertex value types whose maps are interpolated: a list, as the maps'
 // types are known only at run time (by name and type_info).
 template <class K, class F>
