@@ -1,5 +1,6 @@
 // decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders]
-//          [--no-relocation] [--no-hausdorff] [--limit-distance] [--no-tags]
+//          [--no-relocation] [--no-hausdorff] [--limit-distance] [--corner-value-weight W]
+//          [--drop-corner-data] [--no-tags]
 //
 // Simplifies a polygon mesh (.obj, .off, .ply), orientable or not, by
 // Garland–Heckbert edge collapses and writes the result. Prints one line of
@@ -36,6 +37,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -49,7 +51,7 @@ using Mesh = CGAL_ext::Mobius_mesh<Kernel::Point_3>;
 const examples::Tool_usage usage{
   "decimate",
   "decimate IN OUT (--faces N | --ratio R | --max-error E) [--max-angle DEG] [--protect-borders] [--no-relocation] "
-  "[--no-hausdorff] [--limit-distance] [--drop-corner-data] [--no-tags]",
+  "[--no-hausdorff] [--limit-distance] [--corner-value-weight W] [--drop-corner-data] [--no-tags]",
   "Reads a polygon mesh (.obj, .off, .ply), orientable or not, triangulates it and collapses\n"
   "edges, cheapest first by Garland-Heckbert quadric error, until a stop condition holds (give\n"
   "one or more; the first reached stops):\n"
@@ -64,6 +66,8 @@ const examples::Tool_usage usage{
   "                     meshes its sampling can take longer than the decimation.\n"
   "  --limit-distance   take IN as a subdivision cage and say how far the result lies from\n"
   "                     its Catmull-Clark limit surface (limit_distance in the JSON line).\n"
+  "  --corner-value-weight W  how much texture coordinates and normals weigh against the points\n"
+  "                     in each collapse, W >= 0 (default 1; 0: the points alone decide).\n"
   "  --drop-corner-data  go on without the input's texture coordinates and normals.\n"
   "  --no-tags          an OBJ OUT without OpenSubdiv's tag lines (the kept creases), which\n"
   "                     CGAL's reader refuses.\n"
@@ -96,7 +100,7 @@ std::optional<double> hausdorff_distance(const Mesh& a, const Mesh& b)
 int decimate(int argc, char** argv)
 {
   const examples::Arguments args = examples::parse_arguments(
-    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle"},
+    argc, argv, {"--faces", "--ratio", "--max-error", "--max-angle", "--corner-value-weight"},
     {"--protect-borders", "--no-relocation", "--no-hausdorff", "--limit-distance", examples::drop_corner_data_flag,
      examples::no_tags_flag});
   if (args.positional.size() != 2)
@@ -117,6 +121,11 @@ int decimate(int argc, char** argv)
   const double angle = examples::real_argument("--max-angle", args.value("--max-angle", "90"));
   if (!(angle > 0 && angle <= 180))
     throw examples::Usage_error("--max-angle '" + args.value("--max-angle", "") + "' is not in (0, 180]");
+  const double value_weight =
+    examples::real_argument("--corner-value-weight", args.value("--corner-value-weight", "1"));
+  if (!(value_weight >= 0) || !std::isfinite(value_weight))
+    throw examples::Usage_error("--corner-value-weight '" + args.value("--corner-value-weight", "") +
+                                "' is not a finite number >= 0");
 
   Mesh input;
   CGAL_ext::IO::check_output_file(args.positional[1]); // before the work, not after it
@@ -133,7 +142,8 @@ int decimate(int argc, char** argv)
                                .maximum_error(error)
                                .maximum_normal_deviation(angle)
                                .protect_borders(args.has("--protect-borders"))
-                               .relocate_vertices(!args.has("--no-relocation")));
+                               .relocate_vertices(!args.has("--no-relocation"))
+                               .corner_value_weight(value_weight));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CGAL_ext::IO::write_polygon_mesh(args.positional[1], mesh, examples::write_parameters(args));
   std::optional<double> to_limit;

@@ -52,6 +52,9 @@ cgal_ext_tool_fails(decimate.fails.missing_file decimate
 cgal_ext_tool_fails(decimate.fails.ratio decimate
   "${_data}/mobius_min_5tris.obj;${_out}/x.obj;--ratio;2"
   "^decimate: --ratio '2' is not in \\[0, 1\\]; usage: [^\n]+\n$")
+cgal_ext_tool_fails(decimate.fails.corner_value_weight decimate
+  "${_data}/mobius_min_5tris.obj;${_out}/x.obj;--ratio;0.5;--corner-value-weight;-1"
+  "^decimate: --corner-value-weight '-1' is not a finite number >= 0; usage: [^\n]+\n$")
 
 # A surface without area (three points in line): nothing to sample for the
 # Hausdorff distance, which is null; a point beyond +-1e60: one line, exit 2.
@@ -92,3 +95,11 @@ add_test(NAME decimate.corner_channels_carried
                  "-DEXPECT_INFO=\"euler_characteristic\":2,\"valid\":true,${_seams}"
                  -P ${CMAKE_CURRENT_SOURCE_DIR}/corner_data_tool.cmake)
 set_tests_properties(decimate.corner_channels_carried PROPERTIES FIXTURES_REQUIRED decimate_cube_uv)
+# Weighed 0, the points alone choose the collapses; the channels are carried alike.
+add_test(NAME decimate.corner_channels_carried_weight_0
+         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> -DMESH_INFO=$<TARGET_FILE:mesh_info>
+                 "-DARGS=${_cube_uv};${_out}/decimate_cube_uv_0.obj;--ratio;0.5;--no-hausdorff;--corner-value-weight;0"
+                 -DOUT=${_out}/decimate_cube_uv_0.obj "-DEXPECT=\"faces\":3[0-8][0-9],.*\"corner_values_interpolated\":[1-9][0-9]*}"
+                 "-DEXPECT_INFO=\"euler_characteristic\":2,\"valid\":true,${_seams}"
+                 -P ${CMAKE_CURRENT_SOURCE_DIR}/corner_data_tool.cmake)
+set_tests_properties(decimate.corner_channels_carried_weight_0 PROPERTIES FIXTURES_REQUIRED decimate_cube_uv)
