@@ -23,8 +23,9 @@ struct Decimation_result
   /// input (see `relocate_vertices`).
   std::size_t relocations = 0;
   /// Values of the corner channels (all channels together) that the result
-  /// holds and that collapses made by interpolating two values along the
-  /// collapsed edge; the others are the input's own.
+  /// holds and that collapses made (from the attribute quadrics, or with
+  /// `corner_value_weight` 0 by interpolating two values along the collapsed
+  /// edge); the others are the input's own.
   std::size_t corner_values_interpolated = 0;
 };
 

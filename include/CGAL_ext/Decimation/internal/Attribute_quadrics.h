@@ -64,15 +64,20 @@ public:
   bool empty() const { return stride_ == 0; }
 
   // The quadric in the point that the values' error adds to a collapse
-  // merging the ends given (those off the seams: none, one or both).
-  Quadric residual(std::initializer_list<Vertex_index> ends) const
+  // merging the ends given (those off the seams: none, one or both), at
+  // the best value; or, where `kept_at` is a dart of a face (along the
+  // collapsed edge), at the values of its corner, which the collapse keeps
+  // (a channel without a value there is taken at its best).
+  Quadric residual(std::initializer_list<Vertex_index> ends, Dart kept_at = Dart()) const
   {
     Quadric q;
     if (empty())
       return q;
     sum_terms(ends);
-    for (const Channel& c : channels_)
-      q += residual_of(c, &sum_[c.offset]);
+    for (const Channel& c : channels_) {
+      const bool kept = kept_at.is_valid() && c_.read_corner(c.index, kept_at, value_.data());
+      q += kept ? residual_at(c, &sum_[c.offset], value_.data()) : residual_of(c, &sum_[c.offset]);
+    }
     return q;
   }
 
@@ -90,9 +95,11 @@ public:
         continue;
       std::vector<double>& s = values[c.index];
       s.resize(c.m);
+      // Kept within the channel's bounding box: the fields meet at the
+      // point only approximately, and extrapolated they could run far.
       for (std::size_t j = 0; j < c.m; ++j) {
         const double* g = t + 11 + 3 * j;
-        s[j] = (g[0] * x[0] + g[1] * x[1] + g[2] * x[2] + t[11 + 3 * c.m + j]) / t[0];
+        s[j] = std::clamp((g[0] * x[0] + g[1] * x[1] + g[2] * x[2] + t[11 + 3 * c.m + j]) / t[0], c.lo[j], c.hi[j]);
       }
     }
     return values;
@@ -116,6 +123,7 @@ private:
   {
     std::size_t index, m, offset;
     double weight;
+    std::vector<double> lo, hi; // the bounding box of its values
   };
 
   void lay_out(double weight)
@@ -136,11 +144,15 @@ private:
         for (Dart h : CGAL_ext::halfedges_around_face(m_.halfedge(f), m_))
           if (c_.read_corner(k, h, x.data()) && all_finite(x))
             values.add(x.data(), m);
-      const double range = values.diagonal(), w = weight * (size / range) * (size / range);
-      if (!(range > 0) || !(size > 0) || !std::isfinite(range) || !std::isfinite(w))
+      const double range = values.diagonal();
+      if (!(range > 0) || !(size > 0) || !std::isfinite(range))
         continue; // one value (or none, or values beyond double's range): nothing to weigh
-      channels_.push_back({k, m, stride_, w});
+      const double w = weight * (size / range) * (size / range);
+      if (!std::isfinite(w))
+        continue;
+      channels_.push_back({k, m, stride_, w, values.lo, values.hi});
       stride_ += 11 + 4 * m;
+      value_.resize((std::max)(value_.size(), m));
     }
     sum_.resize(stride_);
   }
@@ -155,8 +167,8 @@ private:
     const Point_d e2 = minus_d(to_point_d(m_.point(m_.target(d2))), p0);
     const double a11 = dot_d(e1, e1), a12 = dot_d(e1, e2), a22 = dot_d(e2, e2);
     const double det = a11 * a22 - a12 * a12;
-    if (!(det > 1e-14 * a11 * a22))
-      return; // no plane: no field
+    if (!(det > 1e-8 * a11 * a22))
+      return; // a sliver (an angle under 1e-4): its field's gradient would be a rounding error
     const double area = 0.5 * std::sqrt(det);
     std::vector<double> s0, s1, s2, terms;
     for (const Channel& c : channels_) {
@@ -193,6 +205,27 @@ private:
   static bool all_finite(const std::vector<double>& x)
   {
     return std::all_of(x.begin(), x.end(), [](double y) { return std::isfinite(y); });
+  }
+
+  // The channel's terms t at the given value s0 (m doubles): the quadric
+  // x^T H x + 2 (h - Gs^T s0).x + k - 2 s0.ds + A |s0|^2, weighted.
+  static Quadric residual_at(const Channel& c, const double* t, const double* s0)
+  {
+    Quadric q;
+    if (!(t[0] > 0))
+      return q;
+    for (int i = 0; i < 6; ++i)
+      q.a[std::size_t(i)] = c.weight * t[1 + i];
+    double b[3] = {t[7], t[8], t[9]}, k = t[10];
+    for (std::size_t j = 0; j < c.m; ++j) {
+      for (int i = 0; i < 3; ++i)
+        b[i] -= t[11 + 3 * j + std::size_t(i)] * s0[j];
+      k += t[0] * s0[j] * s0[j] - 2 * s0[j] * t[11 + 3 * c.m + j];
+    }
+    for (int i = 0; i < 3; ++i)
+      q.b[std::size_t(i)] = c.weight * b[i];
+    q.c = c.weight * k;
+    return q;
   }
 
   // Adds w g g^T to the upper triangle `a` (xx xy xz yy yz zz).
@@ -275,7 +308,8 @@ private:
   std::vector<Channel> channels_;
   std::size_t stride_ = 0;
   std::vector<double> terms_;       // by vertex, stride_ each
-  mutable std::vector<double> sum_; // the terms of a collapse's ends
+  mutable std::vector<double> sum_;   // the terms of a collapse's ends
+  mutable std::vector<double> value_; // a kept value, read
 };
 
 } // namespace internal

@@ -138,17 +138,22 @@ private:
 
   Point_d pt(Vertex_index v) const { return to_point_d(m_.point(v)); }
 
-  // What the corner values add to the cost of merging p and q: the
-  // attribute quadrics of the ends off the seams (a seam vertex keeps its
-  // values, and its faces hold several).
-  Quadric values_residual(Vertex_index p, Vertex_index q) const
+  // What the corner values add to the cost of collapsing d: the attribute
+  // quadrics of its ends off the seams (a seam vertex keeps its values, and
+  // its faces hold several), at the best value, or at the values of `kept`
+  // where the collapse keeps them (it is on a seam, or the point is its own).
+  Quadric values_residual(Dart d, Vertex_index kept = Vertex_index()) const
   {
+    if (values_.empty())
+      return Quadric();
+    const Vertex_index p = m_.source(d), q = m_.target(d);
     const bool seam_p = corners_.is_seam_vertex(p), seam_q = corners_.is_seam_vertex(q);
     if (seam_p && seam_q)
       return Quadric();
+    const Dart kept_at = kept.is_valid() ? corners_.dart_along(d, kept) : Dart();
     if (seam_p || seam_q)
-      return values_.residual({seam_p ? q : p});
-    return values_.residual({p, q});
+      return values_.residual({seam_p ? q : p}, kept_at);
+    return values_.residual({p, q}, kept_at);
   }
 
   bool fixed(Vertex_index v) const
@@ -165,7 +170,7 @@ private:
   {
     const Dart d = m_.halfedge(e);
     const Vertex_index p = m_.source(d), q = m_.target(d);
-    const Quadric sum = quadric_[p.idx()] + quadric_[q.idx()] + values_residual(p, q);
+    const Quadric points = quadric_[p.idx()] + quadric_[q.idx()];
     Collapse_candidate c;
     const bool fp = fixed(p), fq = fixed(q);
     if (fp || fq) {
@@ -173,9 +178,10 @@ private:
       const Vertex_index seam = corners_.seam_end(d);
       c.at_end = seam.is_valid() ? seam : fp ? p : q;
       c.point = pt(c.at_end);
-      c.cost = sum(c.point);
+      c.cost = (points + values_residual(d, c.at_end))(c.point);
       return c;
     }
+    const Quadric sum = points + values_residual(d);
     const Point_d a = pt(p), b = pt(q);
     const Point_d mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
     const int determined = sum.minimizer_near(mid, c.point);
@@ -187,7 +193,7 @@ private:
     const Point_d ab = minus_d(b, a);
     const double rounding = 1e-12 * (sum.a[0] + sum.a[3] + sum.a[5]) * dot_d(ab, ab);
     for (Vertex_index end : {p, q}) {
-      const double cost = sum(pt(end));
+      const double cost = (points + values_residual(d, end))(pt(end)); // the end's values kept
       if (cost <= c.cost + rounding) {
         c.cost = cost;
         c.at_end = end;

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace CGAL_ext {
 namespace internal {
@@ -60,7 +61,11 @@ struct Quadric
     const double ax1 = a[1] * x[0] + a[3] * x[1] + a[4] * x[2];
     const double ax2 = a[2] * x[0] + a[4] * x[1] + a[5] * x[2];
     const double value = x[0] * ax0 + x[1] * ax1 + x[2] * ax2 + 2 * (b[0] * x[0] + b[1] * x[1] + b[2] * x[2]) + c;
-    return value > 0 ? value : 0; // a sum of squares: below zero is rounding
+    // A sum of squares: below zero is rounding; NaN, an overflow, counts as
+    // the largest cost rather than none.
+    if (std::isnan(value))
+      return std::numeric_limits<double>::infinity();
+    return value > 0 ? value : 0;
   }
 
   /// The point nearest to `centre` among those that minimise the quadric

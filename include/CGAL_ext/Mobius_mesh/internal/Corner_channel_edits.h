@@ -197,21 +197,35 @@ public:
       return Plan();
     const Vertex_index p = m_.source(d), q = m_.target(d);
     const bool seam_p = is_seam_vertex(p), seam_q = is_seam_vertex(q);
-    // A face along the edge and its darts that end at p and at q.
-    const Dart along = m_.is_border(d) ? m_.opposite(d) : d;
-    const Dart at_q = along == d ? d : m_.prev(along), at_p = along == d ? m_.prev(d) : along;
+    const Dart at_p = dart_along(d, p), at_q = dart_along(d, q);
     std::vector<u32> moved = indices_at(seam_p ? at_p : at_q); // what the corners at an end off the seams take
     if (!seam_p && !seam_q) {
       const std::vector<u32> ip = indices_at(at_p);
       const double t = parameter_along(p, q, point);
-      for (std::size_t k = 0; k < channels_.size(); ++k)
-        moved[k] = merged(channels_[k], ip[k], moved[k], t,
-                          fitted && k < fitted->size() && !(*fitted)[k].empty() ? (*fitted)[k].data() : nullptr);
+      // A fitted value stands wherever the point is not an end's own (its
+      // projection onto the edge may still fall on an end).
+      const double t_fitted = point == m_.point(p) ? 0.0 : point == m_.point(q) ? 1.0 : 0.5;
+      for (std::size_t k = 0; k < channels_.size(); ++k) {
+        const bool fits = fitted && k < fitted->size() && !(*fitted)[k].empty();
+        moved[k] = merged(channels_[k], ip[k], moved[k], fits ? t_fitted : t, fits ? (*fitted)[k].data() : nullptr);
+      }
     }
     return Plan(m_, d, [&](const typename Plan::Darts& f) {
       const bool keeps = m_.target(f.at_end) == p ? seam_p : seam_q;
       return Face_corners{indices_at(f.at_x), indices_at(f.at_y), keeps ? indices_at(f.at_end) : moved};
     });
+  }
+
+  // The dart of a face along the edge of d (d's own, or its opposite's on
+  // the border) that ends at `end`, an end of d: where the corner of `end`
+  // that a collapse of d hands on lies.
+  Dart dart_along(Dart d, Vertex_index end) const
+  {
+    const Dart along = m_.is_border(d) ? m_.opposite(d) : d;
+    const bool at_target = end == m_.target(d);
+    if (along == d)
+      return at_target ? d : m_.prev(d);
+    return at_target ? m_.prev(along) : along;
   }
 
   // Writes the plan's indices into the faces round `kept`, after the collapse.
