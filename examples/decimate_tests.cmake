@@ -88,18 +88,17 @@ add_test(NAME decimate.corner_channels.setup
          COMMAND subdivide ${PROJECT_SOURCE_DIR}/test/data/opensubdiv/catmark_cube.obj ${_cube_uv} --levels 3)
 set_tests_properties(decimate.corner_channels.setup PROPERTIES FIXTURES_SETUP decimate_cube_uv)
 set(_seams "\"corner_channels\":\\[\\{\"name\":\"c:uv\",\"values\":[0-9]+,\"seam_edges\":56,\"corners_without_value\":0,[^}]*\\},\\{\"name\":\"c:normal\",\"values\":[0-9]+,\"seam_edges\":96,\"corners_without_value\":0,")
-add_test(NAME decimate.corner_channels_carried
-         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> -DMESH_INFO=$<TARGET_FILE:mesh_info>
-                 "-DARGS=${_cube_uv};${_out}/decimate_cube_uv.obj;--ratio;0.5;--no-hausdorff"
-                 -DOUT=${_out}/decimate_cube_uv.obj "-DEXPECT=\"faces\":3[0-8][0-9],.*\"corner_values_interpolated\":[1-9][0-9]*}"
-                 "-DEXPECT_INFO=\"euler_characteristic\":2,\"valid\":true,${_seams}"
-                 -P ${CMAKE_CURRENT_SOURCE_DIR}/corner_data_tool.cmake)
-set_tests_properties(decimate.corner_channels_carried PROPERTIES FIXTURES_REQUIRED decimate_cube_uv)
-# Weighed 0, the points alone choose the collapses; the channels are carried alike.
-add_test(NAME decimate.corner_channels_carried_weight_0
-         COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> -DMESH_INFO=$<TARGET_FILE:mesh_info>
-                 "-DARGS=${_cube_uv};${_out}/decimate_cube_uv_0.obj;--ratio;0.5;--no-hausdorff;--corner-value-weight;0"
-                 -DOUT=${_out}/decimate_cube_uv_0.obj "-DEXPECT=\"faces\":3[0-8][0-9],.*\"corner_values_interpolated\":[1-9][0-9]*}"
-                 "-DEXPECT_INFO=\"euler_characteristic\":2,\"valid\":true,${_seams}"
-                 -P ${CMAKE_CURRENT_SOURCE_DIR}/corner_data_tool.cmake)
-set_tests_properties(decimate.corner_channels_carried_weight_0 PROPERTIES FIXTURES_REQUIRED decimate_cube_uv)
+# Carried alike when weighed 0 (the points alone choose the collapses).
+foreach(_weight 1 0)
+  set(_name decimate.corner_channels_carried)
+  if(_weight EQUAL 0)
+    set(_name ${_name}_weight_0)
+  endif()
+  add_test(NAME ${_name}
+           COMMAND ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:decimate> -DMESH_INFO=$<TARGET_FILE:mesh_info>
+                   "-DARGS=${_cube_uv};${_out}/${_name}.obj;--ratio;0.5;--no-hausdorff;--corner-value-weight;${_weight}"
+                   -DOUT=${_out}/${_name}.obj "-DEXPECT=\"faces\":3[0-8][0-9],.*\"corner_values_interpolated\":[1-9][0-9]*}"
+                   "-DEXPECT_INFO=\"euler_characteristic\":2,\"valid\":true,${_seams}"
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/corner_data_tool.cmake)
+  set_tests_properties(${_name} PROPERTIES FIXTURES_REQUIRED decimate_cube_uv)
+endforeach()

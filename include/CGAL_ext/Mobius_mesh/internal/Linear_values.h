@@ -130,29 +130,29 @@ struct Value_doubles<K, T, std::enable_if_t<std::is_floating_point_v<T>>>
   static T make(const double* x) { return T(x[0]); }
 };
 template <class K, class T>
-struct Value_doubles<K, T, std::enable_if_t<std::is_same_v<T, typename K::Point_2> || std::is_same_v<T, typename K::Vector_2>>>
-{
-  static constexpr bool defined = true;
-  static constexpr std::size_t size = 2;
-  static void read(const T& t, double* x)
-  {
-    x[0] = CGAL::to_double(t.x());
-    x[1] = CGAL::to_double(t.y());
-  }
-  static T make(const double* x) { return T(typename K::FT(x[0]), typename K::FT(x[1])); }
-};
+constexpr std::size_t kernel_dimension = std::is_same_v<T, typename K::Point_2> || std::is_same_v<T, typename K::Vector_2>
+                                           ? 2
+                                         : std::is_same_v<T, typename K::Point_3> || std::is_same_v<T, typename K::Vector_3>
+                                           ? 3
+                                           : 0;
 template <class K, class T>
-struct Value_doubles<K, T, std::enable_if_t<std::is_same_v<T, typename K::Point_3> || std::is_same_v<T, typename K::Vector_3>>>
+struct Value_doubles<K, T, std::enable_if_t<kernel_dimension<K, T> != 0>>
 {
   static constexpr bool defined = true;
-  static constexpr std::size_t size = 3;
+  static constexpr std::size_t size = kernel_dimension<K, T>;
   static void read(const T& t, double* x)
   {
-    x[0] = CGAL::to_double(t.x());
-    x[1] = CGAL::to_double(t.y());
-    x[2] = CGAL::to_double(t.z());
+    for (std::size_t i = 0; i < size; ++i)
+      x[i] = CGAL::to_double(t.cartesian(int(i)));
   }
-  static T make(const double* x) { return T(typename K::FT(x[0]), typename K::FT(x[1]), typename K::FT(x[2])); }
+  static T make(const double* x)
+  {
+    using FT = typename K::FT;
+    if constexpr (size == 2)
+      return T(FT(x[0]), FT(x[1]));
+    else
+      return T(FT(x[0]), FT(x[1]), FT(x[2]));
+  }
 };
 template <class K, class E, std::size_t N>
 struct Value_doubles<K, std::array<E, N>, std::enable_if_t<Value_doubles<K, E>::defined>>
