@@ -15,7 +15,8 @@
 //   subdivision cage stands for)][,"corner_values_interpolated":N (the
 //   output has texture coordinates or normals: kept along their seams, where
 //   edges are not collapsed, and elsewhere merged by attribute quadrics,
-//   which weigh the values in the cost and the point of each collapse; N
+//   which weigh the values in the cost and the point of each collapse, or
+//   with --corner-value-weight 0 interpolated along the collapsed edge; N
 //   values of the output were so made)][,"corner_channels_dropped":[...]]}
 // A bad file or option: one line on stderr, exit status 2.
 
@@ -74,8 +75,9 @@ const examples::Tool_usage usage{
   "Edges with sharpness tags (OBJ 't crease') are kept. Texture coordinates and normals are\n"
   "carried: their seams are kept with their values, and elsewhere the values weigh in the cost\n"
   "and the point of each collapse (attribute quadrics), which gives the merged corners their\n"
-  "values. Writes OUT and prints its counts, topology, the time taken and the Hausdorff\n"
-  "distance to the input as one line of JSON.\n"};
+  "values (with --corner-value-weight 0, interpolated along the collapsed edge). Writes OUT and\n"
+  "prints its counts, topology, the time taken and the Hausdorff distance to the input as one\n"
+  "line of JSON.\n"};
 
 // The symmetric Hausdorff distance between the surfaces of two meshes, by
 // CGAL on their Surface_mesh copies (cut along the seams, same geometry);

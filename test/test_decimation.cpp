@@ -11,6 +11,7 @@
 #include <CGAL_ext/Decimation/internal/Attribute_quadrics.h>
 #include <CGAL_ext/IO/polygon_mesh_io.h>
 #include <CGAL_ext/Mobius_mesh.h>
+#include <CGAL_ext/Mobius_mesh/Euler_operations.h>
 #include <CGAL_ext/Mobius_mesh/corner_data.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
 #include <CGAL_ext/Mobius_mesh/topology.h>
@@ -785,6 +786,34 @@ TEST(DecimationCornerChannels, AttributeQuadricsFitTheFieldsAtThePoint)
     EXPECT_NEAR(values.residual({p, q})(x), 0.0, 1e-13);
     // Weighed 0, there are no quadrics: the values are left to interpolation.
     EXPECT_TRUE(Attribute_quadrics<Point>(m, corners, 0.0).fitted({p, q}, x)[0].empty());
+  }
+  {
+    // Through a collapse onto a point past q along the edge: the kept
+    // vertex's corners take the value fitted there, where the edge's clamped
+    // parameter would give q's own.
+    Mesh m = bent_field_square<Point>(4, affine_field);
+    Corner_channel_edits<Point> corners(m);
+    const Attribute_quadrics<Point> values(m, corners, 1.0);
+    Dart d;
+    for (Dart h : CGAL_ext::halfedges_around_target(m.halfedge(q), m))
+      if (m.source(h) == p)
+        d = h;
+    ASSERT_TRUE(d.is_valid());
+    const std::array<double, 3> beyond{0.25, 0.6, 0}; // p at y = 1/4, q at 1/2
+    const auto fitted = values.fitted({p, q}, beyond);
+    const auto plan = corners.plan(d, Point(beyond[0], beyond[1], beyond[2]), &fitted);
+    CGAL_ext::Euler::collapse_edge(d, m, CGAL_ext::Euler::unchecked);
+    corners.apply(plan, q);
+    const auto uv = m.corner_channel<CGAL_ext::Corner_uv<Point>>(CGAL_ext::corner_uv_name);
+    const auto field = affine_field(beyond[0], beyond[1]);
+    int corners_of_q = 0;
+    for (Dart h : CGAL_ext::halfedges_around_target(m.halfedge(q), m))
+      if (!m.is_border(h)) {
+        ++corners_of_q;
+        EXPECT_NEAR((*uv)[m.corner(h)].x(), field[0], 1e-14);
+        EXPECT_NEAR((*uv)[m.corner(h)].y(), field[1], 1e-14);
+      }
+    EXPECT_EQ(corners_of_q, 8); // two valence-6 vertices merged, less the two triangles of the edge
   }
   {
     Mesh m = bent_field_square<Point>(4);

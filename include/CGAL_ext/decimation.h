@@ -70,8 +70,8 @@ namespace CGAL_ext {
 /// a collapse and to the quadric its point minimises; the merged vertex
 /// takes that best value, the area-weighted mean of the fields at its point
 /// (kept within the bounding box of the channel's values). Where a collapse
-/// keeps an end's values instead (the end is on a seam, or the point is its
-/// own), the cost is taken at those values.
+/// keeps a value instead (an end is on a seam, the point is an end's own, or
+/// both ends hold the value), the cost is taken at that value.
 /// A channel is weighed so that a value off by a share of its range costs as
 /// a point off by that share of the bounding box's diagonal, and
 /// `maximum_error` bounds this sum. The relocation moves vertices without

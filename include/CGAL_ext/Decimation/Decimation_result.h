@@ -23,9 +23,10 @@ struct Decimation_result
   /// input (see `relocate_vertices`).
   std::size_t relocations = 0;
   /// Values of the corner channels (all channels together) that the result
-  /// holds and that collapses made (from the attribute quadrics, or with
-  /// `corner_value_weight` 0 by interpolating two values along the collapsed
-  /// edge); the others are the input's own.
+  /// holds and that collapses made: from the attribute quadrics, or by
+  /// interpolating two values along the collapsed edge where there are none
+  /// (`corner_value_weight` 0, a channel of one value, faces without a
+  /// field); the others are the input's own.
   std::size_t corner_values_interpolated = 0;
 };
 

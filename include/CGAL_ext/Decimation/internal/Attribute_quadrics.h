@@ -64,19 +64,21 @@ public:
   bool empty() const { return stride_ == 0; }
 
   // The quadric in the point that the values' error adds to a collapse
-  // merging the ends given (those off the seams: none, one or both), at
-  // the best value; or, where `kept_at` is a dart of a face (along the
-  // collapsed edge), at the values of its corner, which the collapse keeps
-  // (a channel without a value there is taken at its best).
-  Quadric residual(std::initializer_list<Vertex_index> ends, Dart kept_at = Dart()) const
+  // merging the ends given (those off the seams: none, one or both). `a`
+  // and `b` are the darts (of a face along the collapsed edge) whose
+  // corners' values the merged corners take or make: a channel is taken at
+  // a value the collapse keeps (the same at both, or the one of the two that
+  // has one; pass one dart twice for an end whose values are kept), else at
+  // its best value (none given: at its best everywhere).
+  Quadric residual(std::initializer_list<Vertex_index> ends, Dart a = Dart(), Dart b = Dart()) const
   {
     Quadric q;
     if (empty())
       return q;
     sum_terms(ends);
     for (const Channel& c : channels_) {
-      const bool kept = kept_at.is_valid() && c_.read_corner(c.index, kept_at, value_.data());
-      q += kept ? residual_at(c, &sum_[c.offset], value_.data()) : residual_of(c, &sum_[c.offset]);
+      const double* kept = a.is_valid() ? kept_value(c, a, b) : nullptr;
+      q += kept ? residual_at(c, &sum_[c.offset], kept) : residual_of(c, &sum_[c.offset]);
     }
     return q;
   }
@@ -153,6 +155,7 @@ private:
       channels_.push_back({k, m, stride_, w, values.lo, values.hi});
       stride_ += 11 + 4 * m;
       value_.resize((std::max)(value_.size(), m));
+      other_.resize(value_.size());
     }
     sum_.resize(stride_);
   }
@@ -166,9 +169,10 @@ private:
     const Point_d e1 = minus_d(to_point_d(m_.point(m_.target(d1))), p0);
     const Point_d e2 = minus_d(to_point_d(m_.point(m_.target(d2))), p0);
     const double a11 = dot_d(e1, e1), a12 = dot_d(e1, e2), a22 = dot_d(e2, e2);
-    const double det = a11 * a22 - a12 * a12;
-    if (!(det > 1e-8 * a11 * a22))
-      return; // a sliver (an angle under 1e-4): its field's gradient would be a rounding error
+    const double det = a11 * a22 - a12 * a12; // twice the area, squared
+    const double longest = (std::max)({a11, a22, a11 + a22 - 2 * a12}); // squared
+    if (!(det > 1e-8 * longest * longest))
+      return; // a sliver (height under 1e-4 of its longest side): its field's gradient would be a rounding error
     const double area = 0.5 * std::sqrt(det);
     std::vector<double> s0, s1, s2, terms;
     for (const Channel& c : channels_) {
@@ -205,6 +209,17 @@ private:
   static bool all_finite(const std::vector<double>& x)
   {
     return std::all_of(x.begin(), x.end(), [](double y) { return std::isfinite(y); });
+  }
+
+  // The value of channel c that a collapse keeps, given the corners of its
+  // two ends along the edge (merged() in Corner_channel_edits.h): theirs if
+  // they agree, the one there is if one has none; null if it makes one.
+  const double* kept_value(const Channel& c, Dart a, Dart b) const
+  {
+    const bool at_a = c_.read_corner(c.index, a, value_.data()), at_b = c_.read_corner(c.index, b, other_.data());
+    if (at_a && at_b)
+      return std::equal(value_.begin(), value_.begin() + std::ptrdiff_t(c.m), other_.begin()) ? value_.data() : nullptr;
+    return at_a ? value_.data() : at_b ? other_.data() : nullptr;
   }
 
   // The channel's terms t at the given value s0 (m doubles): the quadric
@@ -309,7 +324,7 @@ private:
   std::size_t stride_ = 0;
   std::vector<double> terms_;       // by vertex, stride_ each
   mutable std::vector<double> sum_;   // the terms of a collapse's ends
-  mutable std::vector<double> value_; // a kept value, read
+  mutable std::vector<double> value_, other_; // the values of a collapse's two ends, read
 };
 
 } // namespace internal

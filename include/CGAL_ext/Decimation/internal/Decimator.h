@@ -140,8 +140,9 @@ private:
 
   // What the corner values add to the cost of collapsing d: the attribute
   // quadrics of its ends off the seams (a seam vertex keeps its values, and
-  // its faces hold several), at the best value, or at the values of `kept`
-  // where the collapse keeps them (it is on a seam, or the point is its own).
+  // its faces hold several), at the values the collapse keeps or makes:
+  // `kept`'s where it keeps that end's (it is on a seam, or the point is its
+  // own), else those that agree at both ends, else the best.
   Quadric values_residual(Dart d, Vertex_index kept = Vertex_index()) const
   {
     if (values_.empty())
@@ -150,10 +151,11 @@ private:
     const bool seam_p = corners_.is_seam_vertex(p), seam_q = corners_.is_seam_vertex(q);
     if (seam_p && seam_q)
       return Quadric();
-    const Dart kept_at = kept.is_valid() ? corners_.dart_along(d, kept) : Dart();
+    const Dart a = corners_.dart_along(d, kept.is_valid() ? kept : p);
+    const Dart b = corners_.dart_along(d, kept.is_valid() ? kept : q);
     if (seam_p || seam_q)
-      return values_.residual({seam_p ? q : p}, kept_at);
-    return values_.residual({p, q}, kept_at);
+      return values_.residual({seam_p ? q : p}, a, b);
+    return values_.residual({p, q}, a, b);
   }
 
   bool fixed(Vertex_index v) const
