@@ -174,8 +174,7 @@ double uv_to_surface(const Mesh& m)
   for (CGAL_ext::Face_index f : m.faces())
     for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
       const Uv& t = (*uv)[m.corner(d)];
-      const double a = 2 * pi * t[0], b = 2 * pi * t[1];
-      const Point on_torus((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b));
+      const Point on_torus = bench_shapes::torus_point<Point>(2 * pi * t[0], 2 * pi * t[1]);
       largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(m.point(m.target(d)), on_torus)));
     }
   return largest;

@@ -23,6 +23,13 @@ struct Triangle_soup
 
 /// An n x n torus (radii 2 and 1) of quads, each split along one diagonal:
 /// n² points, 2 n² triangles.
+// The torus of radii 2 and 1 at angles a (round its axis) and b (round its tube).
+template <class Point>
+Point torus_point(double a, double b)
+{
+  return Point((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b));
+}
+
 template <class Point>
 Triangle_soup<Point> torus_triangle_soup(std::size_t n)
 {
@@ -31,8 +38,7 @@ Triangle_soup<Point> torus_triangle_soup(std::size_t n)
   s.points.reserve(n * n);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
-      const double u = 2 * pi * double(i) / double(n), v = 2 * pi * double(j) / double(n);
-      s.points.emplace_back((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
+      s.points.push_back(torus_point<Point>(2 * pi * double(i) / double(n), 2 * pi * double(j) / double(n)));
     }
   const auto at = [n](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
   s.triangles.reserve(2 * n * n);

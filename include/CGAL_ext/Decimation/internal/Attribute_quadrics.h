@@ -57,8 +57,9 @@ public:
     if (stride_ == 0)
       return;
     terms_.assign(mesh.num_vertices() * stride_, 0.0);
+    Face_values scratch; // reused from face to face: no allocation per face
     for (Face_index f : mesh.faces())
-      add_face(f);
+      add_face(f, scratch);
   }
 
   bool empty() const { return stride_ == 0; }
@@ -160,9 +161,15 @@ private:
     sum_.resize(stride_);
   }
 
+  // A face's three corner values in one channel, and its terms.
+  struct Face_values
+  {
+    std::vector<double> s0, s1, s2, terms;
+  };
+
   // The field of triangle f in each channel whose three corners have values,
   // weighted by its area, added to its corners' vertices.
-  void add_face(Face_index f)
+  void add_face(Face_index f, Face_values& scratch)
   {
     const Dart d0 = m_.halfedge(f), d1 = m_.next(d0), d2 = m_.next(d1);
     const Point_d p0 = to_point_d(m_.point(m_.target(d0)));
@@ -174,7 +181,7 @@ private:
     if (!(det > 1e-8 * longest * longest))
       return; // a sliver (height under 1e-4 of its longest side): its field's gradient would be a rounding error
     const double area = 0.5 * std::sqrt(det);
-    std::vector<double> s0, s1, s2, terms;
+    auto& [s0, s1, s2, terms] = scratch;
     for (const Channel& c : channels_) {
       s0.resize(c.m);
       s1.resize(c.m);
