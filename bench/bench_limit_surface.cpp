@@ -34,6 +34,11 @@
 //                                        not join them); the surface's
 //                                        construction included in both. The same
 //                                        density as CGAL_ext_uniform_2_levels.
+//                                        ..._parallel/threads:N on N TBB threads:
+//                                        ours tessellate<CGAL::Parallel_tag>(4)
+//                                        (the serial mesh, bit for bit); Bfr's
+//                                        faces in blocks of 256, each block a
+//                                        soup of its own, joined in face order.
 //   limit_surface/tessellate_rate8/...   the same at rate 8 (64 facets a face:
 //                                        6.6 M quads of the torus, 8.4 M
 //                                        triangles of the octahedron; Bfr 13.1 M
@@ -68,6 +73,7 @@
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #endif
 
@@ -325,14 +331,20 @@ void bfr(benchmark::State& state, const std::string& name, int threads)
 }
 #endif
 
+// Serially with threads = 0, else under CGAL::Parallel_tag on that many threads.
 template <class Mask>
-void tessellate_ours(benchmark::State& state, const std::string& name, int rate)
+void tessellate_ours(benchmark::State& state, const std::string& name, int rate, int threads)
 {
   const Input& in = input(name);
+  const Thread_cap cap(threads);
   std::size_t faces = 0;
   for (auto _ : state) {
     const Surface<Mask> surface(in.mesh);
+#ifdef CGAL_LINKED_WITH_TBB
+    const Mesh t = threads > 0 ? surface.template tessellate<CGAL::Parallel_tag>(rate) : surface.tessellate(rate);
+#else
     const Mesh t = surface.tessellate(rate);
+#endif
     faces = t.number_of_faces();
     benchmark::DoNotOptimize(faces);
   }
@@ -340,43 +352,86 @@ void tessellate_ours(benchmark::State& state, const std::string& name, int rate)
 }
 
 #if CGAL_EXT_HAVE_OPENSUBDIV
-// Per face: Bfr's tessellation at `rate` (triangles), its coordinates
-// evaluated with first derivatives (for the normals), points and facets
-// appended to one soup.
+// A soup of Bfr's tessellations: points, their first derivatives (for the
+// normals), and triangles.
+struct Bfr_soup
+{
+  std::vector<double> points, derivatives;
+  std::vector<int> facets;
+};
+
+// Per face of [begin, end): Bfr's tessellation at `rate` (triangles), its
+// coordinates evaluated with first derivatives, points and facets appended to `soup`.
+void tessellate_bfr_faces(const Bfr::RefinerSurfaceFactory<>& factory, const Osd_input& o, int rate, std::size_t begin,
+                          std::size_t end, Bfr_soup& soup)
+{
+  Bfr::Surface<double> surface;
+  std::vector<double> patch_points, coords;
+  for (std::size_t f = begin; f < end; ++f) {
+    factory.InitVertexSurface(int(f), &surface);
+    patch_points.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
+    surface.PreparePatchPoints(o.xyz.data(), 3, patch_points.data(), 3);
+    const Bfr::Tessellation tessellation(surface.GetParameterization(), rate);
+    coords.resize(2 * std::size_t(tessellation.GetNumCoords()));
+    tessellation.GetCoords(coords.data());
+    const int first = int(soup.points.size() / 3);
+    for (std::size_t i = 0; i < coords.size(); i += 2) {
+      double p[3], du[3], dv[3];
+      surface.Evaluate(&coords[i], patch_points.data(), 3, p, du, dv);
+      soup.points.insert(soup.points.end(), p, p + 3);
+      soup.derivatives.insert(soup.derivatives.end(), {du[0], du[1], du[2], dv[0], dv[1], dv[2]});
+    }
+    const std::size_t at = soup.facets.size();
+    soup.facets.resize(at + 3 * std::size_t(tessellation.GetNumFacets()));
+    tessellation.GetFacets(soup.facets.data() + at);
+    for (std::size_t i = at; i < soup.facets.size(); ++i)
+      soup.facets[i] += first;
+  }
+}
+
+// The whole mesh into one soup: serially with threads = 0; else blocks of
+// faces on `threads` TBB threads (one factory, a Surface per block), each
+// into a soup of its own, joined in face order.
 template <class Mask>
-void tessellate_bfr(benchmark::State& state, const std::string& name, int rate)
+void tessellate_bfr(benchmark::State& state, const std::string& name, int rate, int threads)
 {
   const Input& in = input(name);
   const Osd_input o = osd_input(in.mesh);
+  const Thread_cap cap(threads);
+  const std::size_t nf = in.mesh.number_of_faces();
   std::size_t facets = 0;
   for (auto _ : state) {
     const auto refiner = osd_refiner<Mask>(o);
     const Bfr::RefinerSurfaceFactory<> factory(*refiner);
-    Bfr::Surface<double> surface;
-    std::vector<double> patch_points, coords, points, derivatives;
-    std::vector<int> facet_indices;
-    for (std::size_t f = 0; f < in.mesh.number_of_faces(); ++f) {
-      factory.InitVertexSurface(int(f), &surface);
-      patch_points.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
-      surface.PreparePatchPoints(o.xyz.data(), 3, patch_points.data(), 3);
-      const Bfr::Tessellation tessellation(surface.GetParameterization(), rate);
-      coords.resize(2 * std::size_t(tessellation.GetNumCoords()));
-      tessellation.GetCoords(coords.data());
-      const int first = int(points.size() / 3);
-      for (std::size_t i = 0; i < coords.size(); i += 2) {
-        double p[3], du[3], dv[3];
-        surface.Evaluate(&coords[i], patch_points.data(), 3, p, du, dv);
-        points.insert(points.end(), p, p + 3);
-        derivatives.insert(derivatives.end(), {du[0], du[1], du[2], dv[0], dv[1], dv[2]});
+    Bfr_soup soup;
+    if (threads == 0) {
+      tessellate_bfr_faces(factory, o, rate, 0, nf, soup);
+    } else {
+#ifdef CGAL_LINKED_WITH_TBB
+      constexpr std::size_t block = 256;
+      std::vector<Bfr_soup> parts((nf + block - 1) / block);
+      tbb::parallel_for(std::size_t(0), parts.size(), [&](std::size_t b) {
+        tessellate_bfr_faces(factory, o, rate, b * block, std::min(nf, (b + 1) * block), parts[b]);
+      });
+      std::size_t points = 0, corners = 0;
+      for (const Bfr_soup& part : parts) {
+        points += part.points.size();
+        corners += part.facets.size();
       }
-      const std::size_t at = facet_indices.size();
-      facet_indices.resize(at + 3 * std::size_t(tessellation.GetNumFacets()));
-      tessellation.GetFacets(facet_indices.data() + at);
-      for (std::size_t i = at; i < facet_indices.size(); ++i)
-        facet_indices[i] += first;
+      soup.points.reserve(points);
+      soup.derivatives.reserve(2 * points);
+      soup.facets.reserve(corners);
+      for (const Bfr_soup& part : parts) {
+        const int first = int(soup.points.size() / 3);
+        soup.points.insert(soup.points.end(), part.points.begin(), part.points.end());
+        soup.derivatives.insert(soup.derivatives.end(), part.derivatives.begin(), part.derivatives.end());
+        for (int i : part.facets)
+          soup.facets.push_back(i + first);
+      }
+#endif
     }
-    facets = facet_indices.size() / 3;
-    benchmark::DoNotOptimize(points.data());
+    facets = soup.facets.size() / 3;
+    benchmark::DoNotOptimize(soup.points.data());
   }
   state.counters["facets"] = double(facets);
 }
@@ -428,6 +483,24 @@ void add(const std::string& benchmark_name, Args&&... args)
     ->UseRealTime();
 }
 
+// Ours and Bfr's tessellation at `rate`, serially and on each thread count.
+template <class Mask>
+void register_tessellation(const std::string& group, const std::string& name, int rate)
+{
+  add(group + "CGAL_ext_Limit_surface", tessellate_ours<Mask>, name, rate, 0);
+#ifdef CGAL_LINKED_WITH_TBB
+  for (int t : thread_counts())
+    add(group + "CGAL_ext_Limit_surface_parallel/threads:" + std::to_string(t), tessellate_ours<Mask>, name, rate, t);
+#endif
+#if CGAL_EXT_HAVE_OPENSUBDIV
+  add(group + "OpenSubdiv_Bfr", tessellate_bfr<Mask>, name, rate, 0);
+#ifdef CGAL_LINKED_WITH_TBB
+  for (int t : thread_counts())
+    add(group + "OpenSubdiv_Bfr_parallel/threads:" + std::to_string(t), tessellate_bfr<Mask>, name, rate, t);
+#endif
+#endif
+}
+
 template <class Mask>
 void register_case(const std::string& name)
 {
@@ -445,10 +518,7 @@ void register_case(const std::string& name)
 #endif
 #endif
   add(group + "CGAL_ext_uniform_2_levels", refinement<Mask>, name, 2);
-  add("limit_surface/tessellate/" + name + "/CGAL_ext_Limit_surface", tessellate_ours<Mask>, name, 4);
-#if CGAL_EXT_HAVE_OPENSUBDIV
-  add("limit_surface/tessellate/" + name + "/OpenSubdiv_Bfr", tessellate_bfr<Mask>, name, 4);
-#endif
+  register_tessellation<Mask>("limit_surface/tessellate/" + name + "/", name, 4);
   add("limit_surface/closest_point/" + name + "/CGAL_ext_Limit_surface", closest_points<Mask>, name);
 }
 
@@ -458,10 +528,7 @@ template <class Mask>
 void register_large_tessellation(const std::string& name)
 {
   const std::string group = "limit_surface/tessellate_rate8/" + name + "/";
-  add(group + "CGAL_ext_Limit_surface", tessellate_ours<Mask>, name, 8);
-#if CGAL_EXT_HAVE_OPENSUBDIV
-  add(group + "OpenSubdiv_Bfr", tessellate_bfr<Mask>, name, 8);
-#endif
+  register_tessellation<Mask>(group, name, 8);
   add(group + "CGAL_ext_uniform_3_levels", refinement<Mask>, name, 3);
 }
 

@@ -6,6 +6,7 @@
 // and a Möbius strip against Bfr on its orientation double cover.
 #include "opensubdiv_tags.h"
 #include "test_util.h"
+#include "uv_grid.h"
 
 #include <CGAL_ext/Limit_surface.h>
 #include <CGAL_ext/Mobius_mesh/generators.h>
@@ -15,8 +16,14 @@
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Random.h>
+#include <CGAL/tags.h>
 
 #include <gtest/gtest.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
 
 #ifdef CGAL_EXT_HAVE_OPENSUBDIV
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
@@ -29,6 +36,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <optional>
@@ -857,6 +865,95 @@ TEST(Limit_surface, TessellationIsWatertight)
   EXPECT_FALSE(CGAL_ext::is_orientable(Surface(strip).tessellate(3)));
   EXPECT_THROW(Surface(strip).tessellate(0), CGAL_ext::Parameter_error);
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// Whether two tessellations are the same, byte for byte: connectivity,
+// points, normals, corner normals, and each corner channel's values and indices.
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b)
+{
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+template <class Map>
+std::vector<typename Map::value_type> values_of(const std::optional<Map>& map, std::size_t n)
+{
+  std::vector<typename Map::value_type> out;
+  if (map)
+    for (std::size_t i = 0; i < n; ++i)
+      out.push_back((*map)[typename Map::key_type(i)]);
+  return out;
+}
+
+void expect_same_tessellation(const Mesh& a, const Mesh& b, const std::string& what)
+{
+  ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices()) << what;
+  ASSERT_EQ(a.number_of_faces(), b.number_of_faces()) << what;
+  std::vector<std::uint64_t> la, lb;
+  for (const Mesh* m : {&a, &b}) {
+    auto& l = m == &a ? la : lb;
+    for (CGAL_ext::Halfedge_index h : m->halfedges())
+      l.insert(l.end(), {m->target(h).idx(), m->next(CGAL_ext::Dart(h)).bits(), m->face(h).idx()});
+    for (CGAL_ext::Face_index f : m->faces())
+      l.push_back(m->halfedge(f).bits());
+  }
+  EXPECT_TRUE(la == lb) << what << ": connectivity";
+  EXPECT_TRUE(same_bytes(a.points().data(), b.points().data())) << what << ": points";
+  using V = K::Vector_3;
+  EXPECT_TRUE(same_bytes(values_of(a.property_map<CGAL_ext::Vertex_index, V>("v:normal"), a.number_of_vertices()),
+                         values_of(b.property_map<CGAL_ext::Vertex_index, V>("v:normal"), b.number_of_vertices())))
+    << what << ": normals";
+  const auto ha = a.property_map<CGAL_ext::Halfedge_index, V>("h:normal");
+  const auto hb = b.property_map<CGAL_ext::Halfedge_index, V>("h:normal");
+  EXPECT_EQ(ha.has_value(), hb.has_value()) << what;
+  EXPECT_TRUE(same_bytes(values_of(ha, a.number_of_halfedges()), values_of(hb, b.number_of_halfedges())))
+    << what << ": corner normals";
+  EXPECT_EQ(a.corner_channels(), b.corner_channels()) << what;
+  for (const std::string& name : a.corner_channels()) {
+    const auto ca = a.corner_channel<CGAL_ext::Corner_uv<Point>>(name), cb = b.corner_channel<CGAL_ext::Corner_uv<Point>>(name);
+    ASSERT_TRUE(ca && cb) << what << ": " << name;
+    EXPECT_TRUE(same_bytes(ca->values(), cb->values())) << what << ": " << name << " values";
+    for (CGAL_ext::Halfedge_index h : a.halfedges())
+      if (!a.is_border(h))
+        ASSERT_EQ(ca->index(a.corner(CGAL_ext::Dart(h))), cb->index(b.corner(CGAL_ext::Dart(h)))) << what << ": " << name;
+  }
+}
+
+// Under CGAL::Parallel_tag, on four threads, the serial tessellation bit for
+// bit: uniform rates and rates from a tolerance, meshes large enough for
+// several batches of samples, with corner normals (a Möbius strip), a
+// texture channel with seams, holes and a pinch between them, both schemes.
+TEST(Limit_surface, ParallelTessellationIsTheSerialOne)
+{
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
+  tbb::task_arena arena(4);
+  const Mesh strip = test::Uv_grid{60, 8, false}.mesh<Point>(), torus = test::Uv_grid{48, 24, true}.mesh<Point>();
+  const Mesh quads = build(read_shape(test::data("opensubdiv/catmark_nonquads.obj")));
+  const auto holes = CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none);
+  std::size_t most = 0; // samples
+  const auto both = [&](const std::string& what, const auto& surface, int rate, double tolerance) {
+    arena.execute([&] {
+      const Mesh serial = surface.tessellate(rate);
+      most = std::max<std::size_t>(most, serial.number_of_vertices());
+      expect_same_tessellation(serial, surface.template tessellate<CGAL::Parallel_tag>(rate),
+                               what + " rate " + std::to_string(rate));
+      expect_same_tessellation(surface.tessellate_to_tolerance(tolerance),
+                               surface.template tessellate_to_tolerance<CGAL::Parallel_tag>(tolerance),
+                               what + " tolerance " + sci(tolerance));
+    });
+  };
+  both("strip", Surface(strip), 7, 1e-3);
+  both("loop strip", Loop_surface(strip), 9, 1e-3);
+  both("torus", Surface(torus), 10, 1e-3);
+  both("strip without its borders' faces", Surface(strip, holes), 5, 1e-2);
+  both("catmark_nonquads", Surface(quads), 20, 1e-4);
+  EXPECT_GT(most, 2 * (std::size_t(1) << 16)); // several batches of samples
+  arena.execute([&] {
+    expect_same_tessellation(S::tessellate<S::Loop_mask, CGAL::Parallel_tag>(strip, 4), Loop_surface(strip).tessellate(4),
+                             "the free function");
+  });
+}
+#endif
 
 // At rate 1 a quad mesh tessellates to its limit points, exactly those of limit_point().
 TEST(Limit_surface, TessellationAtRateOneIsTheLimitPoints)

@@ -24,11 +24,13 @@
 #include <CGAL_ext/Subdivision/Masks.h>
 #include <CGAL_ext/Subdivision/limit.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Parallel_loops.h>
 #include <CGAL_ext/subdivision.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -460,14 +462,19 @@ public:
   /// each sampled on its own limit surface (`Corner_channel_limit_surface`)
   /// at the same samples, with the constructor's `face_varying_interpolation`:
   /// a sample on a seam has a value per side.
+  ///
+  /// With `CGAL::Parallel_tag` (and TBB) the samples are evaluated and the
+  /// mesh is built on the threads of the current task arena; the result is
+  /// the serial one, bit for bit.
   /// \throws Parameter_error if `rate` is not positive, or a corner channel
   /// has values without a linear combination (before any work).
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
   Mobius_mesh<P> tessellate(int rate) const
   {
     if (rate < 1)
       throw Parameter_error("Limit_surface::tessellate: the rate " + std::to_string(rate) + " is not positive");
     CGAL_ext::internal::require_interpolated_channels<FT>(base_.mesh, "Limit_surface::tessellate");
-    return tessellate_at(
+    return tessellate_at<ConcurrencyTag>(
       internal::Tessellation_rates::uniform(base_.mesh.number_of_edges(), base_.mesh.number_of_faces(), rate));
   }
 
@@ -502,19 +509,24 @@ public:
   /// the samples of each edge by a strip of triangles. Shared samples, the
   /// normals, and the orientation of the facets are as in `tessellate()`:
   /// the result is watertight and a one-sided surface stays one-sided.
-  /// Corner channels are carried as by `tessellate()`.
+  /// Corner channels are carried as by `tessellate()`. With
+  /// `CGAL::Parallel_tag` the rates are chosen, the samples evaluated and the
+  /// mesh built on the task arena's threads, with the serial result.
   /// \throws Parameter_error if `tolerance` is not positive and finite, or
   /// a corner channel has values without a linear combination (before any work).
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
   Mobius_mesh<P> tessellate_to_tolerance(double tolerance) const
   {
     if (!(tolerance > 0) || !std::isfinite(tolerance))
       throw Parameter_error("Limit_surface::tessellate_to_tolerance: the tolerance " + std::to_string(tolerance) +
                             " is not positive and finite");
     CGAL_ext::internal::require_interpolated_channels<FT>(base_.mesh, "Limit_surface::tessellate_to_tolerance");
-    return tessellate_at(internal::tolerance_rates(*this, base_.mesh, tolerance, max_tessellation_rate_, is_loop));
+    return tessellate_at<ConcurrencyTag>(
+      internal::tolerance_rates<ConcurrencyTag>(*this, base_.mesh, tolerance, max_tessellation_rate_, is_loop));
   }
 
 private:
+  template <class ConcurrencyTag>
   Mobius_mesh<P> tessellate_at(const internal::Tessellation_rates& rates) const
   {
     const auto& m = base_.mesh;
@@ -542,9 +554,9 @@ private:
     };
     internal::Limit_tessellator<Limit_surface, P, decltype(corner_point)> tessellator(*this, m, rates, corner_point,
                                                                                      is_loop);
-    Mobius_mesh<P> out = tessellator.run();
+    Mobius_mesh<P> out = tessellator.template run<ConcurrencyTag>();
     if (!m.corner_channels().empty())
-      carry_corner_channels(rates, tessellator.facets(), [&](Vertex_index v) { return tessellator.sample_of(v); }, out);
+      carry_corner_channels<ConcurrencyTag>(rates, tessellator.facets(), [&](Vertex_index v) { return tessellator.sample_of(v); }, out);
     if (!holes_.empty())
       remove_vertices_of_holes(out);
     return out;
@@ -564,7 +576,7 @@ private:
   // Each corner channel of the mesh on the tessellation: its limit surface
   // sampled where the mesh's is, each facet corner taking the value its
   // face sees there (so a seam stays a seam).
-  template <class SampleOf>
+  template <class ConcurrencyTag, class SampleOf>
   void carry_corner_channels(const internal::Tessellation_rates& rates, const CGAL_ext::internal::Face_list& facets,
                              const SampleOf& sample_of, Mobius_mesh<P>& out) const
   {
@@ -581,31 +593,39 @@ private:
           if (carried || !m.template corner_channel<T>(name))
             return;
           carried = true;
-          auto [indices, values] = Corner_channel_limit_surface<Mask, P, T>(m, name, np, surface_options()).tessellated(rates);
+          auto sampled = Corner_channel_limit_surface<Mask, P, T>(m, name, np, surface_options())
+                           .template tessellated<ConcurrencyTag>(rates);
+          const CGAL_ext::internal::Face_list& indices = sampled.first;
+          std::vector<T>& values = sampled.second;
           auto channel = out.template add_corner_channel<T>(name).first;
+          // The value index of each corner of facet f of the result.
+          const auto for_each_corner = [&](std::uint32_t f, const auto& take) {
+            const auto first = facets.vertex.begin() + facets.offset[f], end = facets.vertex.begin() + facets.offset[f + 1];
+            for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(Face_index(f)), out)) {
+              const auto c = std::find(first, end, sample_of(out.target(d))) - facets.vertex.begin();
+              take(d, indices.vertex[std::size_t(c)]);
+            }
+          };
+          if (holes_.empty()) {
+            channel.values() = std::move(values);
+            CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(out.number_of_faces()), [&](std::uint32_t f) {
+              for_each_corner(f, [&](Dart d, std::uint32_t i) { channel.set_index(out.corner(d), i); });
+            });
+            return;
+          }
           // With holes, the channel's samples that only holes reach (cage
           // points, not values of its surface) are left out: the values are
           // kept in order of first use.
           constexpr std::uint32_t unused = std::uint32_t(-1);
-          std::vector<std::uint32_t> kept(holes_.empty() ? 0 : values.size(), unused);
-          if (holes_.empty())
-            channel.values() = std::move(values);
-          for (Face_index f : out.faces()) {
-            const auto first = facets.vertex.begin() + facets.offset[f.idx()];
-            const auto end = facets.vertex.begin() + facets.offset[f.idx() + 1];
-            for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out)) {
-              const auto c = std::find(first, end, sample_of(out.target(d))) - facets.vertex.begin();
-              std::uint32_t i = indices.vertex[std::size_t(c)];
-              if (!holes_.empty()) {
-                if (kept[i] == unused) {
-                  kept[i] = std::uint32_t(channel.values().size());
-                  channel.values().push_back(values[i]);
-                }
-                i = kept[i];
+          std::vector<std::uint32_t> kept(values.size(), unused);
+          for (Face_index f : out.faces())
+            for_each_corner(std::uint32_t(f.idx()), [&](Dart d, std::uint32_t i) {
+              if (kept[i] == unused) {
+                kept[i] = std::uint32_t(channel.values().size());
+                channel.values().push_back(values[i]);
               }
-              channel.set_index(out.corner(d), i);
-            }
-          }
+              channel.set_index(out.corner(d), kept[i]);
+            });
         }
       });
       if (!carried)
@@ -776,13 +796,15 @@ private:
 /// `Loop_mask`) tessellated uniformly at `rate` samples per base edge:
 /// `Limit_surface<Mask, P>(mesh, np, options).tessellate(rate)` (see there
 /// for the layout, the watertightness and the normals).
+/// With `ConcurrencyTag` `CGAL::Parallel_tag`, in parallel (the same mesh).
 /// \throws Parameter_error as the constructor of `Limit_surface` and
 /// `Limit_surface::tessellate()`.
-template <class Mask, class P, class NP = parameters::Default_named_parameters>
+template <class Mask, class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NP = parameters::Default_named_parameters>
 Mobius_mesh<P> tessellate(const Mobius_mesh<P>& mesh, int rate, const NP& np = parameters::default_values(),
                           const Limit_surface_options& options = Limit_surface_options())
 {
-  return Limit_surface<Mask, P>(mesh, np, options).tessellate(rate);
+  return Limit_surface<Mask, P>(mesh, np, options).template tessellate<ConcurrencyTag>(rate);
 }
 
 /// \ingroup PkgSubdivision
@@ -791,14 +813,16 @@ Mobius_mesh<P> tessellate(const Mobius_mesh<P>& mesh, int rate, const NP& np = p
 /// `tolerance` of the surface:
 /// `Limit_surface<Mask, P>(mesh, np, options).tessellate_to_tolerance(tolerance)`
 /// (see there for the rates and the layout).
+/// With `ConcurrencyTag` `CGAL::Parallel_tag`, in parallel (the same mesh).
 /// \throws Parameter_error as the constructor of `Limit_surface` and
 /// `Limit_surface::tessellate_to_tolerance()`.
-template <class Mask, class P, class NP = parameters::Default_named_parameters>
+template <class Mask, class ConcurrencyTag = CGAL::Sequential_tag, class P,
+          class NP = parameters::Default_named_parameters>
 Mobius_mesh<P> tessellate_to_tolerance(const Mobius_mesh<P>& mesh, double tolerance,
                                        const NP& np = parameters::default_values(),
                                        const Limit_surface_options& options = Limit_surface_options())
 {
-  return Limit_surface<Mask, P>(mesh, np, options).tessellate_to_tolerance(tolerance);
+  return Limit_surface<Mask, P>(mesh, np, options).template tessellate_to_tolerance<ConcurrencyTag>(tolerance);
 }
 
 /// \ingroup PkgSubdivision

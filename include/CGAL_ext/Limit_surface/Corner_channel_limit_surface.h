@@ -236,11 +236,13 @@ private:
   // Limit_surface::tessellate() makes it): the cage tessellated at the same
   // rates has the same facets, a sample per value of each sample (a seam's
   // samples twice). Returns the value index of each facet's corners, in the
-  // order the tessellator made them (the mesh's facet lists' layout), and the values.
+  // order the tessellator made them (the mesh's facet lists' layout), and
+  // the values (evaluated in parallel for `CGAL::Parallel_tag`, the same).
+  template <class ConcurrencyTag>
   std::pair<CGAL_ext::internal::Face_list, std::vector<T>> tessellated(const internal::Tessellation_rates& rates) const
   {
-    internal::Tessellation_rates cage_rates;
-    cage_rates.inner = rates.inner;
+    internal::Tessellation_rates cage_rates{std::vector<int>(), rates.inner};
+    cage_rates.edge.reserve(cage_.edge_of.size());
     for (std::uint32_t e : cage_.edge_of)
       cage_rates.edge.push_back(rates.edge[e]);
     CGAL_ext::internal::Face_list facets;
@@ -249,7 +251,7 @@ private:
     for (std::size_t first = 0; first < dimension; first += 3) {
       const Lane_surface lane{this, first};
       internal::Limit_tessellator<Lane_surface, P, decltype(evaluated)> t(lane, cage_.mesh, cage_rates, evaluated, is_loop);
-      t.run();
+      t.template sample<ConcurrencyTag>();
       if (first == 0) {
         facets = t.facets();
         values.resize(t.points().size());

@@ -6,7 +6,9 @@
 // whose rates are all one is laid out as Bfr lays it out (quads preserved
 // under Catmull–Clark, a triangle's domain under Loop), and a face whose
 // rates differ has Bfr's interior grid at its inner rates joined to the
-// samples of its edges by a strip of triangles.
+// samples of its edges by a strip of triangles. The layout runs in face
+// order; the evaluations it asks for run in batches, on threads under
+// `CGAL::Parallel_tag`, and give the serial result bit for bit.
 
 #ifndef CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
 #define CGAL_EXT_LIMIT_SURFACE_INTERNAL_TESSELLATION_H
@@ -14,11 +16,15 @@
 #include <CGAL_ext/Limit_surface/internal/Parameterization.h>
 #include <CGAL_ext/Mobius_mesh.h>
 #include <CGAL_ext/Mobius_mesh/internal/Connectivity_builder.h>
+#include <CGAL_ext/Subdivision/Refiner.h>
 #include <CGAL_ext/exceptions.h>
+#include <CGAL_ext/internal/Parallel_loops.h>
+#include <CGAL_ext/internal/Uninitialized_array.h>
 
 #include <CGAL/Origin.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/squared_distance_3.h>
+#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <array>
@@ -69,33 +75,87 @@ public:
       : s_(surface), m_(mesh), rates_(rates), corner_point_(corner_point), triangle_domain_(triangle_domain)
   {}
 
-  // The result, with "v:normal" and, where the base has Möbius edges, "h:normal".
+  // The result, with "v:normal" and, where the base has Möbius edges,
+  // "h:normal": sample() then build().
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
   Mobius_mesh<P> run()
+  {
+    sample<ConcurrencyTag>();
+    return build<ConcurrencyTag>();
+  }
+
+  // Lays out the samples and facets of every face, in face order, and
+  // evaluates the samples in batches as they are laid out: in parallel for
+  // `CGAL::Parallel_tag`, each sample one evaluation of its own, so that the
+  // points and normals are the serial ones bit for bit.
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
+  void sample()
   {
     bool mobius = false;
     for (Edge_index e : m_.edges())
       mobius = mobius || m_.is_mobius(e);
     corner_normals_ = mobius;
+    points_.reserve(expected_samples());
+    normals_.reserve(points_.capacity());
     points_.assign(m_.number_of_vertices(), P(CGAL::ORIGIN));
     normals_.assign(m_.number_of_vertices(), Vector(CGAL::NULL_VECTOR));
+    n_samples_ = m_.number_of_vertices();
     vertex_done_.assign(m_.number_of_vertices(), false);
     edge_owner_.assign(m_.number_of_edges(), Dart());
     edge_first_.assign(m_.number_of_edges(), none);
     for (Vertex_index v : m_.vertices())
       points_[v.idx()] = m_.point(v); // an isolated vertex stays where it is
-    for (Face_index f : m_.faces())
+    for (Face_index f : m_.faces()) {
       if (!s_.is_hole(f)) // a hole's edges are sampled by its neighbours
         add_face(f);
-    return build();
+      if (pending_.size() >= batch_size)
+        evaluate_pending<ConcurrencyTag>();
+    }
+    evaluate_pending<ConcurrencyTag>();
   }
 
-  // After run(): the corners of each facet of the result (facet f is face f
-  // of the result), as sample ids in the order the facet was made; the same
-  // layout at the same rates on another mesh of the same faces (a channel's cage).
+  // After sample(): the mesh of the facets, built at once from their lists
+  // (facet f is face f, its corners in the facet's order), as the soup
+  // import builds (in parallel for `CGAL::Parallel_tag`, the same mesh).
+  template <class ConcurrencyTag = CGAL::Sequential_tag>
+  Mobius_mesh<P> build()
+  {
+    Mobius_mesh<P> out;
+    try {
+      // The parallel builder does more work in all: with one thread, or few
+      // samples a thread, the serial one is faster (the same mesh).
+      CGAL_ext::internal::with_concurrency<ConcurrencyTag>(
+        runs_in_parallel(std::uint32_t(points_.size()), Refinement_options::automatic), [&](auto tag) {
+          copies_ = CGAL_ext::internal::build_connectivity_from_faces<decltype(tag)>(
+            facets_.view(std::uint32_t(points_.size())), true, out);
+        });
+    } catch (const Soup_error& e) {
+      throw Parameter_error(std::string("Limit_surface::tessellate: internal error, a facet was refused: ") + e.what());
+    }
+    auto vn = out.template add_property_map<Vertex_index, Vector>("v:normal", Vector(CGAL::NULL_VECTOR)).first;
+    auto points = out.points();
+    CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(points_.size()), [&](std::uint32_t v) {
+      points[Vertex_index(v)] = points_[v];
+      vn[Vertex_index(v)] = normals_[v];
+    });
+    for (const CGAL_ext::internal::Split_vertex& copy : copies_) {
+      const Vertex_index v = out.add_vertex(points_[copy.original]);
+      out.set_halfedge(v, Dart::from_bits(copy.dart));
+      vn[v] = normals_[copy.original];
+    }
+    if (corner_normals_)
+      add_corner_normals<ConcurrencyTag>(out);
+    return out;
+  }
+
+  // After sample(): the corners of each facet of the result (facet f is face
+  // f of the result), as sample ids in the order the facet was made; the
+  // same layout at the same rates on another mesh of the same faces (a
+  // channel's cage).
   const CGAL_ext::internal::Face_list& facets() const { return facets_; }
-  // After run(): the point of each sample id.
-  const std::vector<P>& points() const { return points_; }
-  // After run(): the sample id of vertex v of the result. Holes can leave
+  // After sample(): the point of each sample id.
+  const CGAL_ext::internal::Uninitialized_array<P>& points() const { return points_; }
+  // After build(): the sample id of vertex v of the result. Holes can leave
   // faces with a surface meeting at one vertex only (their other neighbours
   // holes): the result has a copy of that vertex per further fan, at the end.
   std::uint32_t sample_of(Vertex_index v) const
@@ -104,14 +164,39 @@ public:
   }
 
 private:
-  // One face: its corners' darts and samples, and the normals of its
-  // boundary samples seen from it.
+  // The samples laid out and not yet evaluated, at most about this many at
+  // once: enough work for the threads of a batch, and a bounded list.
+  static constexpr std::size_t batch_size = std::size_t(1) << 16;
+
+  // An evaluation to make: at parameter uv of face f, into sample `target`
+  // (its point and normal), or with `normal_only` into the normal that a
+  // face sees at a base vertex that another face evaluated first.
+  struct Pending
+  {
+    Face_index f;
+    std::array<FT, 2> uv;
+    std::size_t target;
+    bool normal_only;
+  };
+
+  // Where a facet corner takes its normal from (corner normals only): a
+  // sample's normal, or its negation (across a Möbius edge), or a normal of
+  // its face's own evaluation (`seen`).
+  struct Normal_source
+  {
+    enum Kind : std::uint8_t { sample, negated_sample, seen };
+    std::size_t index;
+    Kind kind;
+  };
+
+  // One face: its corners' darts and samples, and where the normals of its
+  // boundary samples seen from it come from.
   struct Face_state
   {
     Face_index f;
     std::vector<Dart> darts;          // darts[k] runs from corner k to corner k + 1
     std::vector<std::size_t> corners; // the sample of each corner
-    std::unordered_map<std::size_t, Vector> boundary_normals; // in f's orientation
+    std::unordered_map<std::size_t, Normal_source> boundary_normals; // in f's orientation
   };
 
   // A sample of the ring that a strip joins to an edge, at fraction
@@ -125,36 +210,42 @@ private:
   int sides(const Face_state& st) const { return int(st.darts.size()); }
   int edge_rate(const Face_state& st, int k) const { return rates_.edge[m_.edge(st.darts[std::size_t(k)]).idx()]; }
 
-  Evaluation eval(Face_index f, const std::array<FT, 2>& uv) const { return s_.evaluate(f, uv[0], uv[1]); }
-
-  std::size_t add_sample(const Evaluation& e)
+  // A new sample at parameter uv of face f, evaluated with its batch.
+  std::size_t add_sample(Face_index f, const std::array<FT, 2>& uv)
   {
-    points_.push_back(e.point);
-    normals_.push_back(e.normal);
-    return points_.size() - 1;
+    pending_.push_back({f, uv, n_samples_, false});
+    return n_samples_++;
   }
 
-  // The sample of corner k of the face: the base vertex, its point given once.
+  // The sample of corner k of the face: the base vertex, its point given
+  // once, by the first face to reach it.
   std::size_t corner(Face_state& st, int k)
   {
     const Vertex_index v = m_.source(st.darts[std::size_t(k)]);
-    const Evaluation e = eval(st.f, corner_parameter<FT>(sides(st), triangle_domain_, k));
-    if (!vertex_done_[v.idx()]) {
+    const std::array<FT, 2> uv = corner_parameter<FT>(sides(st), triangle_domain_, k);
+    const bool first = !vertex_done_[v.idx()];
+    if (first) {
       vertex_done_[v.idx()] = true;
-      points_[v.idx()] = corner_point_(v, st.f, e.point);
-      normals_[v.idx()] = e.normal;
+      pending_.push_back({st.f, uv, v.idx(), false});
     }
-    if (corner_normals_)
-      st.boundary_normals[v.idx()] = e.normal;
+    if (corner_normals_) {
+      if (first) {
+        st.boundary_normals[v.idx()] = {v.idx(), Normal_source::sample};
+      } else {
+        st.boundary_normals[v.idx()] = {seen_normals_.size(), Normal_source::seen};
+        pending_.push_back({st.f, uv, seen_normals_.size(), true});
+        seen_normals_.push_back(Vector(CGAL::NULL_VECTOR));
+      }
+    }
     return v.idx();
   }
 
   // The sample at fraction i / N (0 < i < N, N the edge's rate) along edge k
-  // from corner k. The first face to reach an edge evaluates its samples,
-  // in the order from its dart's source; another dart reads them backwards
-  // if it runs the other way, as a neighbour of the same orientation does,
-  // and forwards if it runs the same way: across a Möbius edge, whose far
-  // face sees the surface from the other side, so its normal is the negation.
+  // from corner k. The first face to reach an edge makes its samples, in
+  // the order from its dart's source; another dart reads them backwards if
+  // it runs the other way, as a neighbour of the same orientation does, and
+  // forwards if it runs the same way: across a Möbius edge, whose far face
+  // sees the surface from the other side, so its normal is the negation.
   std::size_t edge_sample(Face_state& st, int k, int i)
   {
     const Dart d = st.darts[std::size_t(k)];
@@ -162,15 +253,15 @@ private:
     const int N = rates_.edge[e.idx()];
     if (edge_first_[e.idx()] == none) {
       edge_owner_[e.idx()] = d;
-      edge_first_[e.idx()] = points_.size();
+      edge_first_[e.idx()] = n_samples_;
       for (int j = 1; j < N; ++j)
-        add_sample(eval(st.f, edge_parameter<FT>(sides(st), triangle_domain_, k, j, N)));
+        add_sample(st.f, edge_parameter<FT>(sides(st), triangle_domain_, k, j, N));
     }
     const Dart owner = edge_owner_[e.idx()];
     const bool same_way = m_.source(owner) == m_.source(d); // an edge's ends differ
     const std::size_t id = edge_first_[e.idx()] + std::size_t(same_way ? i - 1 : N - i - 1);
     if (corner_normals_)
-      st.boundary_normals[id] = same_way && !(owner == d) ? -normals_[id] : normals_[id];
+      st.boundary_normals[id] = {id, same_way && !(owner == d) ? Normal_source::negated_sample : Normal_source::sample};
     return id;
   }
 
@@ -247,7 +338,7 @@ private:
     }
     for (int j = 1; j < N; ++j)
       for (int i = 1; i + j < N; ++i)
-        at(i, j) = add_sample(eval(st.f, {FT(i) / FT(N), FT(j) / FT(N)}));
+        at(i, j) = add_sample(st.f, {FT(i) / FT(N), FT(j) / FT(N)});
     const int lo = strips ? 1 : 0, hi = strips ? N - 1 : N;
     for (int j = lo; j < hi; ++j)
       for (int i = lo; i + j < hi; ++i) {
@@ -291,7 +382,7 @@ private:
     }
     for (int j = 1; j < V; ++j) // rows, as Bfr orders its interior points
       for (int i = 1; i < U; ++i)
-        at(i, j) = add_sample(eval(st.f, {FT(i) / FT(U), FT(j) / FT(V)}));
+        at(i, j) = add_sample(st.f, {FT(i) / FT(U), FT(j) / FT(V)});
     const int lo = strips ? 1 : 0;
     for (int j = lo; j < V - lo; ++j)
       for (int i = lo; i < U - lo; ++i)
@@ -335,14 +426,14 @@ private:
       }
     std::size_t centre = none;
     if (even || n > 3)
-      centre = add_sample(eval(st.f, sub_face_parameter(n, 0, FT(1), FT(1))));
+      centre = add_sample(st.f, sub_face_parameter(n, 0, FT(1), FT(1)));
     for (int k = 0; k < n; ++k) {
       for (int j = 1; j <= M; ++j)
         for (int i = 1; i <= M; ++i) {
           if (even && i == M && j == M)
             at(k, i, j) = centre;
           else if (!(even && i == M)) // G_k(M, j) is the next sub-face's row M
-            at(k, i, j) = add_sample(eval(st.f, sub_face_parameter(n, k, FT(2 * i) / FT(N), FT(2 * j) / FT(N))));
+            at(k, i, j) = add_sample(st.f, sub_face_parameter(n, k, FT(2 * i) / FT(N), FT(2 * j) / FT(N)));
         }
     }
     if (even)
@@ -383,10 +474,10 @@ private:
     if (corner_normals_)
       for (std::size_t id : facet) {
         const auto it = st.boundary_normals.find(id);
-        facet_normals_.push_back(it != st.boundary_normals.end() ? it->second : normals_[id]);
+        facet_normals_.push_back(it != st.boundary_normals.end() ? it->second : Normal_source{id, Normal_source::sample});
       }
     // The facet lists index samples and corners in 32 bits.
-    if (points_.size() > std::size_t(std::uint32_t(-1)) ||
+    if (n_samples_ > std::size_t(std::uint32_t(-1)) ||
         facets_.vertex.size() + facet.size() > std::size_t(std::uint32_t(-1)))
       throw Parameter_error("Limit_surface::tessellate: the tessellation would have 2^32 samples or facet corners");
     std::uint32_t ids[4]; // a facet is a triangle or a quad
@@ -396,31 +487,66 @@ private:
     facets_.add(ids, ids + n);
   }
 
-  // The mesh of the facets, built at once from their lists (facet f is
-  // face f, its corners in the facet's order), as the soup import builds.
-  Mobius_mesh<P> build()
+  // Evaluates the samples laid out since the last batch (their points and
+  // normals first written here, by the threads that evaluate them). A base
+  // vertex's point is the corner point that the first face to reach it gives.
+  template <class ConcurrencyTag>
+  void evaluate_pending()
   {
-    Mobius_mesh<P> out;
-    try {
-      copies_ = CGAL_ext::internal::build_mesh_from_faces(
-        facets_.view(std::uint32_t(points_.size())), [&](std::uint32_t v) { return points_[v]; }, true, out);
-    } catch (const Soup_error& e) {
-      throw Parameter_error(std::string("Limit_surface::tessellate: internal error, a facet was refused: ") + e.what());
+    points_.resize(n_samples_);
+    normals_.resize(n_samples_);
+    CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(pending_.size()), [&](std::uint32_t i) {
+      const Pending& p = pending_[i];
+      const Evaluation e = s_.evaluate(p.f, p.uv[0], p.uv[1]);
+      if (p.normal_only) {
+        seen_normals_[p.target] = e.normal;
+        return;
+      }
+      points_[p.target] =
+        p.target < m_.number_of_vertices() ? corner_point_(Vertex_index(p.target), p.f, e.point) : e.point;
+      normals_[p.target] = e.normal;
+    });
+    pending_.clear();
+  }
+
+  // About as many samples as the rates give (the vectors' first capacity).
+  std::size_t expected_samples() const
+  {
+    std::size_t n = m_.number_of_vertices();
+    for (Edge_index e : m_.edges())
+      n += std::size_t(rates_.edge[e.idx()] - 1);
+    for (Face_index f : m_.faces()) {
+      const std::size_t u = std::size_t(rates_.inner[f.idx()][0]), v = std::size_t(rates_.inner[f.idx()][1]);
+      const std::size_t sides = m_.degree(f);
+      n += sides == 4 ? (u - 1) * (v - 1) : sides * (u / 2 + 1) * (u / 2 + 1);
     }
-    auto vn = out.template add_property_map<Vertex_index, Vector>("v:normal", Vector(CGAL::NULL_VECTOR)).first;
-    for (Vertex_index v : out.vertices())
-      vn[v] = normals_[sample_of(v)];
-    if (!corner_normals_)
-      return out;
+    return n;
+  }
+
+  // "h:normal": for each halfedge of a facet, the normal at its target
+  // seen from the facet, as the facet's corner recorded it.
+  template <class ConcurrencyTag>
+  void add_corner_normals(Mobius_mesh<P>& out) const
+  {
     auto hn = out.template add_property_map<Halfedge_index, Vector>("h:normal", Vector(CGAL::NULL_VECTOR)).first;
-    for (Face_index f : out.faces()) {
-      const std::uint32_t first = facets_.offset[f.idx()], end = facets_.offset[f.idx() + 1];
+    const auto normal = [&](const Normal_source& s) {
+      switch (s.kind) {
+      case Normal_source::negated_sample:
+        return Vector(-normals_[s.index]);
+      case Normal_source::seen:
+        return seen_normals_[s.index];
+      default:
+        return normals_[s.index];
+      }
+    };
+    CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(out.number_of_faces()), [&](std::uint32_t i) {
+      const Face_index f(i);
+      const std::uint32_t first = facets_.offset[i], end = facets_.offset[i + 1];
       for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(f), out))
         for (std::uint32_t c = first; c < end; ++c)
           if (facets_.vertex[c] == sample_of(out.target(d)))
-            hn[d.halfedge()] = facet_normals_[c];
-    }
-    return out;
+            hn[d.halfedge()] = normal(facet_normals_[c]);
+    });
   }
 
   const Surface& s_;
@@ -429,14 +555,17 @@ private:
   const CornerPoint& corner_point_;
   bool triangle_domain_ = false;
   bool corner_normals_ = false;
-  std::vector<P> points_;
-  std::vector<Vector> normals_;
+  std::size_t n_samples_ = 0;
+  CGAL_ext::internal::Uninitialized_array<P> points_;
+  CGAL_ext::internal::Uninitialized_array<Vector> normals_;
   std::vector<bool> vertex_done_;
   std::vector<Dart> edge_owner_; // the dart whose face evaluated the edge's samples
   std::vector<std::size_t> edge_first_;
   CGAL_ext::internal::Face_list facets_;
+  std::vector<Pending> pending_;  // laid out, not yet evaluated
+  std::vector<Vector> seen_normals_; // with corner normals: Normal_source::seen
   std::vector<CGAL_ext::internal::Split_vertex> copies_; // the result's vertices past the samples
-  std::vector<Vector> facet_normals_; // with corner normals: one per facet corner, as facets_.vertex
+  std::vector<Normal_source> facet_normals_; // with corner normals: one per facet corner, as facets_.vertex
 };
 
 // The smallest rate in [1, max_rate] at which `within(rate)` holds (else
@@ -595,33 +724,48 @@ std::vector<std::vector<std::array<FT, 4>>> inner_lines(int sides, bool triangle
 }
 
 // Rates whose samples lie within about `tolerance` of the surface: each edge
-// the smallest rate whose segments do (edge_rate_within()); each face the
-// larger of the inner rates that Bfr infers from its edges' (the mean of
-// opposite edges' for a quad, of all edges' for another face) and those at
-// which the segments along its inner lines do (inner_lines()). A quad with
-// an inner rate of 1 one way and more the other takes 2: Bfr puts only its
-// centre inside at 1, which would drop the other way's samples.
-template <class Surface, class P>
+// the smallest rate whose segments do (edge_rate_within(), from the first
+// face in face order that has the edge); each face the larger of the inner
+// rates that Bfr infers from its edges' (the mean of opposite edges' for a
+// quad, of all edges' for another face) and those at which the segments
+// along its inner lines do (inner_lines()). A quad with an inner rate of 1
+// one way and more the other takes 2: Bfr puts only its centre inside at 1,
+// which would drop the other way's samples. Edges, then faces, are measured
+// in parallel for `CGAL::Parallel_tag`, each on its own: the same rates.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class Surface, class P>
 Tessellation_rates tolerance_rates(const Surface& surface, const Mobius_mesh<P>& m, double tolerance, int max_rate,
                                    bool triangle_domain)
 {
   using FT = typename Surface::FT;
   Tessellation_rates rates = Tessellation_rates::uniform(m.number_of_edges(), m.number_of_faces(), 1);
-  std::vector<char> edge_done(m.number_of_edges(), 0);
+  std::vector<Face_index> faces;
+  std::vector<std::pair<Face_index, int>> edge_side(m.number_of_edges()); // the face that measures it, and its side
   for (Face_index f : m.faces()) {
     if (surface.is_hole(f))
       continue;
-    std::vector<int> outer;
-    const int n = int(m.degree(f));
-    const Face_surface<Surface> face{surface, f, n, triangle_domain};
+    faces.push_back(f);
     int k = 0;
     for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m)) {
       const Edge_index e = m.edge(m.next(d)); // edge k runs from corner k
-      if (!std::exchange(edge_done[e.idx()], 1))
-        rates.edge[e.idx()] = edge_rate_within(face, k, m.is_border(e), tolerance, max_rate);
-      outer.push_back(rates.edge[e.idx()]);
+      if (edge_side[e.idx()].first == Face_index())
+        edge_side[e.idx()] = {f, k};
       ++k;
     }
+  }
+  CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(edge_side.size()), [&](std::uint32_t e) {
+    const auto [f, k] = edge_side[e];
+    if (f == Face_index())
+      return;
+    const Face_surface<Surface> face{surface, f, int(m.degree(f)), triangle_domain};
+    rates.edge[e] = edge_rate_within(face, k, m.is_border(Edge_index(e)), tolerance, max_rate);
+  });
+  CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(faces.size()), [&](std::uint32_t i) {
+    const Face_index f = faces[i];
+    std::vector<int> outer;
+    for (Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
+      outer.push_back(rates.edge[m.edge(m.next(d)).idx()]);
+    const int n = int(outer.size());
+    const Face_surface<Surface> face{surface, f, n, triangle_domain};
     const auto lines = inner_lines<FT>(n, triangle_domain);
     const int per_unit = n == 4 ? 1 : 2;
     if (n == 4) {
@@ -634,7 +778,7 @@ Tessellation_rates tolerance_rates(const Surface& surface, const Mobius_mesh<P>&
         sum += r;
       rates.inner[f.idx()].fill(std::max(sum / n, lines_rate_within(face, lines[0], per_unit, tolerance, max_rate)));
     }
-  }
+  });
   return rates;
 }
 
