@@ -17,7 +17,8 @@
 // included; the factory's cache is Bfr's default. Implementations:
 // CGAL_ext_Limit_surface (serial), CGAL_ext_Limit_surface_parallel/threads:N
 // (faces split among N TBB threads, one surface), OpenSubdiv_Bfr and
-// OpenSubdiv_Bfr_parallel/threads:N (one factory; a Surface per thread), and
+// OpenSubdiv_Bfr_parallel/threads:N (one factory whose cache threads may
+// share, Bfr::SurfaceFactoryCacheThreaded; a Surface per thread), and
 // CGAL_ext_uniform_2_levels: uniform refinement (catmull_clark() or
 // loop()) to about the same number of points (16 or 10 per face; points of
 // the level, not of the limit).
@@ -65,6 +66,7 @@
 
 #if CGAL_EXT_HAVE_OPENSUBDIV
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surfaceFactoryCache.h>
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/bfr/tessellation.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -84,7 +86,9 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <shared_mutex>
 #include <string>
 #include <thread>
 #include <type_traits>
@@ -203,7 +207,7 @@ std::unique_ptr<Far::TopologyRefiner> osd_refiner(const Osd_input& o)
 
 // Bfr on faces [begin, end), one Surface and one buffer of patch points
 // for the range; `out` (if given) receives the positions.
-double evaluate_bfr(const Bfr::RefinerSurfaceFactory<>& factory, const Osd_input& o, const Input& in,
+double evaluate_bfr(const Bfr::SurfaceFactory& factory, const Osd_input& o, const Input& in,
                     std::size_t begin, std::size_t end, std::vector<double>* out = nullptr)
 {
   Bfr::Surface<double> surface;
@@ -314,6 +318,25 @@ void refinement(benchmark::State& state, const std::string& name, int levels)
 }
 
 #if CGAL_EXT_HAVE_OPENSUBDIV
+// A cache that threads may share: the factory's default one may not be
+// (OpenSubdiv's refinerSurfaceFactory.h), and irregular faces write to it.
+using Shared_cache = Bfr::SurfaceFactoryCacheThreaded<std::shared_mutex, std::shared_lock<std::shared_mutex>,
+                                                      std::unique_lock<std::shared_mutex>>;
+
+// Calls body(factory) with a factory on `refiner` whose cache several
+// threads may use if `shared`, else Bfr's default one.
+template <class Body>
+void with_bfr_factory(const Far::TopologyRefiner& refiner, bool shared, const Body& body)
+{
+  if (shared) {
+    const Bfr::RefinerSurfaceFactory<Shared_cache> factory(refiner);
+    body(factory);
+  } else {
+    const Bfr::RefinerSurfaceFactory<> factory(refiner);
+    body(factory);
+  }
+}
+
 template <class Mask>
 void bfr(benchmark::State& state, const std::string& name, int threads)
 {
@@ -322,10 +345,11 @@ void bfr(benchmark::State& state, const std::string& name, int threads)
   const Thread_cap cap(threads);
   for (auto _ : state) {
     const auto refiner = osd_refiner<Mask>(o);
-    const Bfr::RefinerSurfaceFactory<> factory(*refiner);
-    benchmark::DoNotOptimize(over_faces(in.mesh.number_of_faces(), threads, [&](std::size_t b, std::size_t e) {
-      return evaluate_bfr(factory, o, in, b, e);
-    }));
+    with_bfr_factory(*refiner, threads > 1, [&](const Bfr::SurfaceFactory& factory) {
+      benchmark::DoNotOptimize(over_faces(in.mesh.number_of_faces(), threads, [&](std::size_t b, std::size_t e) {
+        return evaluate_bfr(factory, o, in, b, e);
+      }));
+    });
   }
   state.counters["points"] = double(in.parameters.size());
 }
@@ -362,7 +386,7 @@ struct Bfr_soup
 
 // Per face of [begin, end): Bfr's tessellation at `rate` (triangles), its
 // coordinates evaluated with first derivatives, points and facets appended to `soup`.
-void tessellate_bfr_faces(const Bfr::RefinerSurfaceFactory<>& factory, const Osd_input& o, int rate, std::size_t begin,
+void tessellate_bfr_faces(const Bfr::SurfaceFactory& factory, const Osd_input& o, int rate, std::size_t begin,
                           std::size_t end, Bfr_soup& soup)
 {
   Bfr::Surface<double> surface;
@@ -389,8 +413,43 @@ void tessellate_bfr_faces(const Bfr::RefinerSurfaceFactory<>& factory, const Osd
   }
 }
 
+#ifdef CGAL_LINKED_WITH_TBB
+// Faces [0, nf) in blocks of 256 on the TBB threads, each block into a soup
+// of its own, the soups joined in face order into `soup`.
+inline void tessellate_bfr_in_blocks(const Bfr::SurfaceFactory& factory, const Osd_input& o, int rate, std::size_t nf,
+                                     Bfr_soup& soup)
+{
+  constexpr std::size_t block = 256;
+  std::vector<Bfr_soup> parts((nf + block - 1) / block);
+  tbb::parallel_for(std::size_t(0), parts.size(), [&](std::size_t b) {
+    tessellate_bfr_faces(factory, o, rate, b * block, std::min(nf, (b + 1) * block), parts[b]);
+  });
+  std::size_t points = 0, corners = 0;
+  for (const Bfr_soup& part : parts) {
+    points += part.points.size();
+    corners += part.facets.size();
+  }
+  soup.points.reserve(points);
+  soup.derivatives.reserve(2 * points);
+  soup.facets.reserve(corners);
+  for (const Bfr_soup& part : parts) {
+    const int first = int(soup.points.size() / 3);
+    soup.points.insert(soup.points.end(), part.points.begin(), part.points.end());
+    soup.derivatives.insert(soup.derivatives.end(), part.derivatives.begin(), part.derivatives.end());
+    for (int i : part.facets)
+      soup.facets.push_back(i + first);
+  }
+}
+#else
+inline void tessellate_bfr_in_blocks(const Bfr::SurfaceFactory& factory, const Osd_input& o, int rate, std::size_t nf,
+                                     Bfr_soup& soup)
+{
+  tessellate_bfr_faces(factory, o, rate, 0, nf, soup);
+}
+#endif
+
 // The whole mesh into one soup: serially with threads = 0; else blocks of
-// faces on `threads` TBB threads (one factory, a Surface per block), each
+// faces on `threads` TBB threads (one factory with a shared cache, a Surface per block), each
 // into a soup of its own, joined in face order.
 template <class Mask>
 void tessellate_bfr(benchmark::State& state, const std::string& name, int rate, int threads)
@@ -402,34 +461,13 @@ void tessellate_bfr(benchmark::State& state, const std::string& name, int rate, 
   std::size_t facets = 0;
   for (auto _ : state) {
     const auto refiner = osd_refiner<Mask>(o);
-    const Bfr::RefinerSurfaceFactory<> factory(*refiner);
     Bfr_soup soup;
-    if (threads == 0) {
-      tessellate_bfr_faces(factory, o, rate, 0, nf, soup);
-    } else {
-#ifdef CGAL_LINKED_WITH_TBB
-      constexpr std::size_t block = 256;
-      std::vector<Bfr_soup> parts((nf + block - 1) / block);
-      tbb::parallel_for(std::size_t(0), parts.size(), [&](std::size_t b) {
-        tessellate_bfr_faces(factory, o, rate, b * block, std::min(nf, (b + 1) * block), parts[b]);
-      });
-      std::size_t points = 0, corners = 0;
-      for (const Bfr_soup& part : parts) {
-        points += part.points.size();
-        corners += part.facets.size();
-      }
-      soup.points.reserve(points);
-      soup.derivatives.reserve(2 * points);
-      soup.facets.reserve(corners);
-      for (const Bfr_soup& part : parts) {
-        const int first = int(soup.points.size() / 3);
-        soup.points.insert(soup.points.end(), part.points.begin(), part.points.end());
-        soup.derivatives.insert(soup.derivatives.end(), part.derivatives.begin(), part.derivatives.end());
-        for (int i : part.facets)
-          soup.facets.push_back(i + first);
-      }
-#endif
-    }
+    with_bfr_factory(*refiner, threads > 0, [&](const Bfr::SurfaceFactory& factory) {
+      if (threads == 0)
+        tessellate_bfr_faces(factory, o, rate, 0, nf, soup);
+      else
+        tessellate_bfr_in_blocks(factory, o, rate, nf, soup);
+    });
     facets = soup.facets.size() / 3;
     benchmark::DoNotOptimize(soup.points.data());
   }

@@ -607,20 +607,16 @@ void tessellation_against_bfr(const std::string& name, std::optional<CGAL_ext::B
 
 TEST_P(Tessellation_against_bfr, SameSamplesAndFacets) { tessellation_against_bfr<Surface>(GetParam()); }
 
-TEST(Limit_surface, TessellationLeavesOutHoles)
-{
-  for (const char* name : {"catmark_edgecorner", "catmark_nonquads"})
-    tessellation_against_bfr<Surface>(name, CGAL_ext::Boundary_interpolation::none);
-  tessellation_against_bfr<Loop_surface>("loop_triangle_edgeonly", CGAL_ext::Boundary_interpolation::none);
+#endif // CGAL_EXT_HAVE_OPENSUBDIV
 
-  // Faces with a surface that meet at one vertex only, between holes: a
-  // 6 x 6 grid of unit quads in the plane without the cells (1, 1) and
-  // (4, 4) keeps a surface on two blocks of 2 x 2 cells, (1..2, 3..4) and
-  // (3..4, 1..2), which meet at the point (3, 3) (the cells to its
-  // north-east and south-west reach the cut-out cells' corners). At rate 2
-  // each block is 5 x 5 samples, the point (3, 3) once per block. The
-  // texture channel (x, y) / 6 is affine in the points, and so is its limit
-  // on these regular faces: each corner keeps its point's value.
+// Faces with a surface that meet at one vertex only, between holes (under
+// Boundary_interpolation::none): a 6 x 6 grid of unit quads in the plane
+// without the cells (1, 1) and (4, 4) keeps a surface on two blocks of
+// 2 x 2 cells, (1..2, 3..4) and (3..4, 1..2), which meet at the point
+// (3, 3) (the cells to its north-east and south-west reach the cut-out
+// cells' corners). With the texture channel (x, y) / 6 in "c:uv".
+Mesh pinched_grid()
+{
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> cells;
   for (int j = 0; j <= 6; ++j)
@@ -638,7 +634,21 @@ TEST(Limit_surface, TessellationLeavesOutHoles)
   for (CGAL_ext::Face_index f : m.faces())
     for (CGAL_ext::Dart d : CGAL_ext::halfedges_around_face(m.halfedge(f), m))
       uv.set_index(m.corner(d), std::uint32_t(m.target(d).idx()));
-  const Surface surface(m, CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none));
+  return m;
+}
+
+#ifdef CGAL_EXT_HAVE_OPENSUBDIV
+TEST(Limit_surface, TessellationLeavesOutHoles)
+{
+  for (const char* name : {"catmark_edgecorner", "catmark_nonquads"})
+    tessellation_against_bfr<Surface>(name, CGAL_ext::Boundary_interpolation::none);
+  tessellation_against_bfr<Loop_surface>("loop_triangle_edgeonly", CGAL_ext::Boundary_interpolation::none);
+
+  // On the pinched grid at rate 2 each block is 5 x 5 samples, the point
+  // (3, 3) once per block. The texture channel is affine in the points, and
+  // so is its limit on these regular faces: each corner keeps its point's value.
+  const auto holes = CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none);
+  const Surface surface(pinched_grid(), holes);
   const Mesh out = surface.tessellate(2);
   EXPECT_EQ(out.number_of_faces(), 32u);
   EXPECT_EQ(out.number_of_vertices(), 50u);
@@ -885,6 +895,27 @@ std::vector<typename Map::value_type> values_of(const std::optional<Map>& map, s
   return out;
 }
 
+// Whether `a` has a channel `name` of values T; if so, expects `b`'s to hold
+// the same values and indices.
+template <class T>
+bool same_channel(const Mesh& a, const Mesh& b, const std::string& name, const std::string& what)
+{
+  const auto ca = a.corner_channel<T>(name);
+  if (!ca)
+    return false;
+  const auto cb = b.corner_channel<T>(name);
+  EXPECT_TRUE(cb.has_value()) << what << ": " << name;
+  if (!cb)
+    return true;
+  EXPECT_TRUE(same_bytes(ca->values(), cb->values())) << what << ": " << name << " values";
+  for (CGAL_ext::Halfedge_index h : a.halfedges())
+    if (!a.is_border(h) && ca->index(a.corner(CGAL_ext::Dart(h))) != cb->index(b.corner(CGAL_ext::Dart(h)))) {
+      ADD_FAILURE() << what << ": " << name << " indices";
+      break;
+    }
+  return true;
+}
+
 void expect_same_tessellation(const Mesh& a, const Mesh& b, const std::string& what)
 {
   ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices()) << what;
@@ -909,48 +940,54 @@ void expect_same_tessellation(const Mesh& a, const Mesh& b, const std::string& w
   EXPECT_TRUE(same_bytes(values_of(ha, a.number_of_halfedges()), values_of(hb, b.number_of_halfedges())))
     << what << ": corner normals";
   EXPECT_EQ(a.corner_channels(), b.corner_channels()) << what;
-  for (const std::string& name : a.corner_channels()) {
-    const auto ca = a.corner_channel<CGAL_ext::Corner_uv<Point>>(name), cb = b.corner_channel<CGAL_ext::Corner_uv<Point>>(name);
-    ASSERT_TRUE(ca && cb) << what << ": " << name;
-    EXPECT_TRUE(same_bytes(ca->values(), cb->values())) << what << ": " << name << " values";
-    for (CGAL_ext::Halfedge_index h : a.halfedges())
-      if (!a.is_border(h))
-        ASSERT_EQ(ca->index(a.corner(CGAL_ext::Dart(h))), cb->index(b.corner(CGAL_ext::Dart(h)))) << what << ": " << name;
-  }
+  for (const std::string& name : a.corner_channels())
+    EXPECT_TRUE((same_channel<CGAL_ext::Corner_uv<Point>>(a, b, name, what) ||
+                 same_channel<std::array<double, 2>>(a, b, name, what)))
+      << what << ": " << name << " holds neither type";
 }
 
 // Under CGAL::Parallel_tag, on four threads, the serial tessellation bit for
 // bit: uniform rates and rates from a tolerance, meshes large enough for
-// several batches of samples, with corner normals (a Möbius strip), a
-// texture channel with seams, holes and a pinch between them, both schemes.
+// several batches of samples and the parallel mesh builder, with corner
+// normals (a Möbius strip), a texture channel with seams, holes, and a pinch
+// between holes, both schemes, and a cache too small for the faces' patches.
+// The parallel call comes first, on a surface of its own, so that its
+// threads build the faces' patches as they meet them.
 TEST(Limit_surface, ParallelTessellationIsTheSerialOne)
 {
   tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
   tbb::task_arena arena(4);
   const Mesh strip = test::Uv_grid{60, 8, false}.mesh<Point>(), torus = test::Uv_grid{48, 24, true}.mesh<Point>();
-  const Mesh quads = build(read_shape(test::data("opensubdiv/catmark_nonquads.obj")));
+  const Mesh quads = build(read_shape(test::data("opensubdiv/catmark_nonquads.obj"))), pinched = pinched_grid();
   const auto holes = CGAL_ext::parameters::boundary_interpolation(CGAL_ext::Boundary_interpolation::none);
+  Mesh quad_strip;
+  CGAL_ext::make_mobius_strip(quad_strip, 12, 3);
+  S::Limit_surface_options small;
+  small.max_cache_bytes = 2048; // a few faces kept, the others built for each evaluation
   std::size_t most = 0; // samples
-  const auto both = [&](const std::string& what, const auto& surface, int rate, double tolerance) {
+  const auto both = [&](const std::string& what, const auto& make, int rate, double tolerance) {
     arena.execute([&] {
-      const Mesh serial = surface.tessellate(rate);
+      const Mesh parallel = make().template tessellate<CGAL::Parallel_tag>(rate);
+      const Mesh serial = make().tessellate(rate);
       most = std::max<std::size_t>(most, serial.number_of_vertices());
-      expect_same_tessellation(serial, surface.template tessellate<CGAL::Parallel_tag>(rate),
-                               what + " rate " + std::to_string(rate));
-      expect_same_tessellation(surface.tessellate_to_tolerance(tolerance),
-                               surface.template tessellate_to_tolerance<CGAL::Parallel_tag>(tolerance),
+      expect_same_tessellation(serial, parallel, what + " rate " + std::to_string(rate));
+      const Mesh parallel_to_tolerance = make().template tessellate_to_tolerance<CGAL::Parallel_tag>(tolerance);
+      expect_same_tessellation(make().tessellate_to_tolerance(tolerance), parallel_to_tolerance,
                                what + " tolerance " + sci(tolerance));
     });
   };
-  both("strip", Surface(strip), 7, 1e-3);
-  both("loop strip", Loop_surface(strip), 9, 1e-3);
-  both("torus", Surface(torus), 10, 1e-3);
-  both("strip without its borders' faces", Surface(strip, holes), 5, 1e-2);
-  both("catmark_nonquads", Surface(quads), 20, 1e-4);
+  both("strip", [&] { return Surface(strip); }, 7, 1e-3);
+  both("loop strip", [&] { return Loop_surface(strip); }, 9, 1e-3);
+  both("torus", [&] { return Surface(torus); }, 10, 1e-3);
+  both("quad strip, a small cache", [&] { return Surface(quad_strip, CGAL_ext::parameters::default_values(), small); }, 6,
+       1e-3);
+  both("strip without its borders' faces", [&] { return Surface(strip, holes); }, 5, 1e-2);
+  both("pinched grid", [&] { return Surface(pinched, holes); }, 9, 1e-3);
+  both("catmark_nonquads", [&] { return Surface(quads); }, 20, 1e-4);
   EXPECT_GT(most, 2 * (std::size_t(1) << 16)); // several batches of samples
   arena.execute([&] {
-    expect_same_tessellation(S::tessellate<S::Loop_mask, CGAL::Parallel_tag>(strip, 4), Loop_surface(strip).tessellate(4),
-                             "the free function");
+    const Mesh parallel = S::tessellate<S::Loop_mask, CGAL::Parallel_tag>(strip, 4);
+    expect_same_tessellation(Loop_surface(strip).tessellate(4), parallel, "the free function");
   });
 }
 #endif

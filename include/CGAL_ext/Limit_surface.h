@@ -556,7 +556,8 @@ private:
                                                                                      is_loop);
     Mobius_mesh<P> out = tessellator.template run<ConcurrencyTag>();
     if (!m.corner_channels().empty())
-      carry_corner_channels<ConcurrencyTag>(rates, tessellator.facets(), [&](Vertex_index v) { return tessellator.sample_of(v); }, out);
+      carry_corner_channels<ConcurrencyTag>(
+        rates, tessellator.facets(), [&](Vertex_index v) { return tessellator.sample_of(v); }, out);
     if (!holes_.empty())
       remove_vertices_of_holes(out);
     return out;
@@ -600,7 +601,8 @@ private:
           auto channel = out.template add_corner_channel<T>(name).first;
           // The value index of each corner of facet f of the result.
           const auto for_each_corner = [&](std::uint32_t f, const auto& take) {
-            const auto first = facets.vertex.begin() + facets.offset[f], end = facets.vertex.begin() + facets.offset[f + 1];
+            const auto first = facets.vertex.begin() + facets.offset[f];
+            const auto end = facets.vertex.begin() + facets.offset[f + 1];
             for (Dart d : CGAL_ext::halfedges_around_face(out.halfedge(Face_index(f)), out)) {
               const auto c = std::find(first, end, sample_of(out.target(d))) - facets.vertex.begin();
               take(d, indices.vertex[std::size_t(c)]);
@@ -608,9 +610,10 @@ private:
           };
           if (holes_.empty()) {
             channel.values() = std::move(values);
-            CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(out.number_of_faces()), [&](std::uint32_t f) {
+            const auto set_indices = [&](std::uint32_t f) {
               for_each_corner(f, [&](Dart d, std::uint32_t i) { channel.set_index(out.corner(d), i); });
-            });
+            };
+            CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(out.number_of_faces()), set_indices);
             return;
           }
           // With holes, the channel's samples that only holes reach (cage

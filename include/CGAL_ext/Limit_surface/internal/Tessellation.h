@@ -474,7 +474,8 @@ private:
     if (corner_normals_)
       for (std::size_t id : facet) {
         const auto it = st.boundary_normals.find(id);
-        facet_normals_.push_back(it != st.boundary_normals.end() ? it->second : Normal_source{id, Normal_source::sample});
+        const bool own = it != st.boundary_normals.end();
+        facet_normals_.push_back(own ? it->second : Normal_source{id, Normal_source::sample});
       }
     // The facet lists index samples and corners in 32 bits.
     if (n_samples_ > std::size_t(std::uint32_t(-1)) ||
@@ -509,18 +510,24 @@ private:
     pending_.clear();
   }
 
-  // About as many samples as the rates give (the vectors' first capacity).
+  // About as many samples as the rates give (exactly at a uniform rate):
+  // the vectors' first capacity. None past the 2^32 samples that the facet
+  // lists can index, which the layout refuses with its own error. Counted
+  // in double, as the rates of many faces can overflow an integer.
   std::size_t expected_samples() const
   {
-    std::size_t n = m_.number_of_vertices();
+    double n = double(m_.number_of_vertices());
     for (Edge_index e : m_.edges())
-      n += std::size_t(rates_.edge[e.idx()] - 1);
+      n += double(rates_.edge[e.idx()] - 1);
     for (Face_index f : m_.faces()) {
-      const std::size_t u = std::size_t(rates_.inner[f.idx()][0]), v = std::size_t(rates_.inner[f.idx()][1]);
-      const std::size_t sides = m_.degree(f);
-      n += sides == 4 ? (u - 1) * (v - 1) : sides * (u / 2 + 1) * (u / 2 + 1);
+      const double u = rates_.inner[f.idx()][0], v = rates_.inner[f.idx()][1], sides = double(m_.degree(f));
+      const double half = std::floor(u / 2);
+      if (is_triangle_domain(int(sides), triangle_domain_))
+        n += (u - 1) * (u - 2) / 2;
+      else
+        n += sides == 4 ? (u - 1) * (v - 1) : sides * half * half + 1;
     }
-    return n;
+    return n < double(std::uint32_t(-1)) ? std::size_t(n) : 0;
   }
 
   // "h:normal": for each halfedge of a facet, the normal at its target
