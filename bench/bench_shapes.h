@@ -21,15 +21,15 @@ struct Triangle_soup
   std::vector<std::array<std::size_t, 3>> triangles;
 };
 
-/// An n x n torus (radii 2 and 1) of quads, each split along one diagonal:
-/// n² points, 2 n² triangles.
-// The torus of radii 2 and 1 at angles a (round its axis) and b (round its tube).
+/// The torus of radii 2 and 1 at angles a (round its axis) and b (round its tube).
 template <class Point>
 Point torus_point(double a, double b)
 {
   return Point((2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b));
 }
 
+/// An n x n torus (radii 2 and 1) of quads, each split along one diagonal:
+/// n² points, 2 n² triangles.
 template <class Point>
 Triangle_soup<Point> torus_triangle_soup(std::size_t n)
 {

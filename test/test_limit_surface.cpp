@@ -5,6 +5,7 @@
 // double and exactly with rationals; against limit_point() at the corners;
 // and a Möbius strip against Bfr on its orientation double cover.
 #include "opensubdiv_tags.h"
+#include "same_mesh.h"
 #include "test_util.h"
 #include "uv_grid.h"
 
@@ -36,7 +37,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <optional>
@@ -879,11 +879,7 @@ TEST(Limit_surface, TessellationIsWatertight)
 #ifdef CGAL_LINKED_WITH_TBB
 // Whether two tessellations are the same, byte for byte: connectivity,
 // points, normals, corner normals, and each corner channel's values and indices.
-template <class T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b)
-{
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
+using test::same_bytes;
 
 template <class Map>
 std::vector<typename Map::value_type> values_of(const std::optional<Map>& map, std::size_t n)
@@ -920,15 +916,7 @@ void expect_same_tessellation(const Mesh& a, const Mesh& b, const std::string& w
 {
   ASSERT_EQ(a.number_of_vertices(), b.number_of_vertices()) << what;
   ASSERT_EQ(a.number_of_faces(), b.number_of_faces()) << what;
-  std::vector<std::uint64_t> la, lb;
-  for (const Mesh* m : {&a, &b}) {
-    auto& l = m == &a ? la : lb;
-    for (CGAL_ext::Halfedge_index h : m->halfedges())
-      l.insert(l.end(), {m->target(h).idx(), m->next(CGAL_ext::Dart(h)).bits(), m->face(h).idx()});
-    for (CGAL_ext::Face_index f : m->faces())
-      l.push_back(m->halfedge(f).bits());
-  }
-  EXPECT_TRUE(la == lb) << what << ": connectivity";
+  EXPECT_TRUE(test::same_connectivity(a, b)) << what << ": connectivity";
   EXPECT_TRUE(same_bytes(a.points().data(), b.points().data())) << what << ": points";
   using V = K::Vector_3;
   EXPECT_TRUE(same_bytes(values_of(a.property_map<CGAL_ext::Vertex_index, V>("v:normal"), a.number_of_vertices()),

@@ -2,6 +2,7 @@
 // on OpenSubdiv's shapes and on generated meshes large enough to be split
 // among threads, the incidence tables, the thresholds and the tuner that
 // decides when threads pay, and the carried property maps.
+#include "same_mesh.h"
 #include "subdivision_shapes.h"
 #include "test_util.h"
 
@@ -22,7 +23,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <initializer_list>
 #include <limits>
 #include <string>
@@ -34,50 +34,13 @@ namespace subdivision_parallel_tests {
 namespace {
 
 using namespace subdivision_shapes;
+using test::Connectivity;
+using test::connectivity_of;
+using test::same_bytes;
+using test::same_connectivity;
 
 #if defined(CGAL_EXT_SUBDIVISION_PARALLEL)
 // ----------------------------------------------------------------- parallel stages
-
-// A mesh's connectivity, array by array, read through its public accessors.
-struct Connectivity
-{
-  std::vector<std::uint32_t> target, next, prev, face, vertex_dart, face_dart;
-  std::vector<std::uint8_t> mobius;
-};
-
-Connectivity connectivity_of(const Mesh& m)
-{
-  Connectivity c;
-  for (auto h : m.halfedges()) {
-    const CGAL_ext::Dart d(h, false);
-    c.target.push_back(m.target(d).idx());
-    c.next.push_back(m.next(d).bits());
-    c.prev.push_back(m.prev(d).bits());
-    c.face.push_back(m.face(h).is_valid() ? m.face(h).idx() : ~0u);
-  }
-  for (auto e : m.edges())
-    c.mobius.push_back(m.is_mobius(e) ? 1 : 0);
-  for (auto v : m.vertices())
-    c.vertex_dart.push_back(m.halfedge(v).bits());
-  for (auto f : m.faces())
-    c.face_dart.push_back(m.halfedge(f).bits());
-  return c;
-}
-
-template <class T, class A, class B>
-bool same_bytes(const std::vector<T, A>& a, const std::vector<T, B>& b)
-{
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-// Whether two meshes have the same connectivity arrays, byte for byte.
-bool same_connectivity(const Mesh& a, const Mesh& b)
-{
-  const Connectivity ca = connectivity_of(a), cb = connectivity_of(b);
-  return same_bytes(ca.target, cb.target) && same_bytes(ca.next, cb.next) && same_bytes(ca.prev, cb.prev) &&
-         same_bytes(ca.face, cb.face) && same_bytes(ca.mobius, cb.mobius) &&
-         same_bytes(ca.vertex_dart, cb.vertex_dart) && same_bytes(ca.face_dart, cb.face_dart);
-}
 
 struct Refined
 {

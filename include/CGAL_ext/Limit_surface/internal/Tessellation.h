@@ -126,23 +126,16 @@ public:
       // samples a thread, the serial one is faster (the same mesh).
       CGAL_ext::internal::with_concurrency<ConcurrencyTag>(
         runs_in_parallel(std::uint32_t(points_.size()), Refinement_options::automatic), [&](auto tag) {
-          copies_ = CGAL_ext::internal::build_connectivity_from_faces<decltype(tag)>(
-            facets_.view(std::uint32_t(points_.size())), true, out);
+          copies_ = CGAL_ext::internal::build_mesh_from_faces<decltype(tag)>(
+            facets_.view(std::uint32_t(points_.size())), [&](std::uint32_t v) { return points_[v]; }, true, out);
         });
     } catch (const Soup_error& e) {
       throw Parameter_error(std::string("Limit_surface::tessellate: internal error, a facet was refused: ") + e.what());
     }
     auto vn = out.template add_property_map<Vertex_index, Vector>("v:normal", Vector(CGAL::NULL_VECTOR)).first;
-    auto points = out.points();
-    CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(points_.size()), [&](std::uint32_t v) {
-      points[Vertex_index(v)] = points_[v];
-      vn[Vertex_index(v)] = normals_[v];
+    CGAL_ext::internal::for_each_index<ConcurrencyTag>(std::uint32_t(out.number_of_vertices()), [&](std::uint32_t v) {
+      vn[Vertex_index(v)] = normals_[sample_of(Vertex_index(v))];
     });
-    for (const CGAL_ext::internal::Split_vertex& copy : copies_) {
-      const Vertex_index v = out.add_vertex(points_[copy.original]);
-      out.set_halfedge(v, Dart::from_bits(copy.dart));
-      vn[v] = normals_[copy.original];
-    }
     if (corner_normals_)
       add_corner_normals<ConcurrencyTag>(out);
     return out;

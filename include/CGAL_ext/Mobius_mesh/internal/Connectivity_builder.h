@@ -636,17 +636,18 @@ std::vector<Split_vertex> build_connectivity_from_faces(const Face_lists& faces,
 /// Builds `out` (empty) from face lists: the connectivity through the
 /// builder, written straight into the mesh's arrays, and the point of each
 /// vertex from `point_of(v)` (a copy made by splitting a non-manifold vertex
-/// takes its original's point). Returns the copies.
-template <class P, class PointOf>
+/// takes its original's point). Returns the copies. With
+/// `CGAL::Parallel_tag` the connectivity and the points are written in
+/// parallel (`point_of` is then called from several threads), the same mesh.
+template <class ConcurrencyTag = CGAL::Sequential_tag, class P, class PointOf>
 std::vector<Split_vertex> build_mesh_from_faces(const Face_lists& faces, PointOf point_of,
                                                 bool split_non_manifold_vertices, Mobius_mesh<P>& out,
                                                 bool split_non_manifold_edges = false)
 {
-  const std::vector<Split_vertex> copies =
-    build_connectivity_from_faces(faces, split_non_manifold_vertices, out, split_non_manifold_edges);
+  const std::vector<Split_vertex> copies = build_connectivity_from_faces<ConcurrencyTag>(
+    faces, split_non_manifold_vertices, out, split_non_manifold_edges);
   auto points = out.points();
-  for (std::uint32_t v = 0; v < faces.n_vertices; ++v)
-    points[Vertex_index(v)] = point_of(v);
+  for_each_index<ConcurrencyTag>(faces.n_vertices, [&](std::uint32_t v) { points[Vertex_index(v)] = point_of(v); });
   for (const Split_vertex& copy : copies) {
     const Vertex_index v = out.add_vertex(points[Vertex_index(copy.original)]);
     out.set_halfedge(v, Dart::from_bits(copy.dart));
